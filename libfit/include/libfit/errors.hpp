@@ -1,0 +1,44 @@
+// Error types of libfit. Each maps to one documented exit code of the CLI (docs/cli.md).
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace metalfit {
+
+// Where in an input file something went wrong: a line (1-based) or a field name, or neither.
+struct InputLocation {
+    InputLocation(std::filesystem::path file_, int line_ = 0, std::string field_ = {})
+        : file(std::move(file_)), line(line_), field(std::move(field_)) {}
+
+    std::filesystem::path file;
+    int line = 0;       // 0: unknown
+    std::string field;  // e.g. "DATA[0].coefficients"; empty: unknown
+};
+
+// A bad input file or bad data in it (exit code 3). what() is one line: "file:line: message" or
+// "file: field: message".
+class InputError : public std::runtime_error {
+public:
+    InputError(const InputLocation& where, const std::string& message);
+    const InputLocation& location() const noexcept { return where_; }
+
+private:
+    InputLocation where_;
+};
+
+// A colour-management problem: OCIO config missing, unreadable, or without a needed role or colour
+// space (exit code 4). The message names the config.
+class ColorConfigError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// A request that cannot be understood: unknown material, source or option value (exit code 2).
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace metalfit

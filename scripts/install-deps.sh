@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the Debian packages metalfit needs, only those that are missing.
+# The list below is the single place where the project's system dependencies are named.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config     # toolchain
+  libgtest-dev                         # tests
+  libceres-dev libeigen3-dev           # fitting, linear algebra
+  libopencolorio-dev opencolorio-tools # colour management (ociocheck is used by a test)
+  libopenimageio-dev libopenexr-dev    # images
+  nlohmann-json3-dev                   # JSON
+  libyaml-cpp-dev                      # refractiveindex.info YAML
+  libcli11-dev                         # command line
+  libssl-dev                           # SHA-256 of data files (OpenSSL libcrypto)
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+echo "install-deps: installing ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,65 @@
+// metalfit list: the built-in materials with their sources and wavelength coverage.
+#include <nlohmann/json.hpp>
+
+#include <iomanip>
+#include <sstream>
+
+#include "commands.hpp"
+#include "libfit/catalog.hpp"
+
+namespace metalfit::cli {
+namespace {
+
+struct ListOptions {
+    bool json = false;
+    std::filesystem::path output;
+};
+
+nlohmann::json describe(const CatalogEntry& entry, const Material& m) {
+    const WavelengthRange r = m.index.range();
+    nlohmann::json alternates = nlohmann::json::array();
+    for (const auto& a : entry.alternates) alternates.push_back(a.source);
+    return {{"id", entry.id},
+            {"name", entry.name},
+            {"kind", entry.kind},
+            {"source", entry.primary.source},
+            {"alternates", alternates},
+            {"range_nm", {r.min_nm, r.max_nm}},
+            {"points_360_830", m.index.n.tabulated_points_in(kVisibleRange)},
+            {"covers_360_830", r.covers(kVisibleRange)},
+            {"reference", entry.primary.reference}};
+}
+
+std::string table(const nlohmann::json& rows) {
+    std::ostringstream out;
+    out << std::left << std::setw(16) << "id" << std::setw(18) << "name" << std::setw(22) << "source"
+        << std::setw(18) << "range (nm)" << std::setw(8) << "points" << "alternates\n";
+    for (const auto& row : rows) {
+        std::ostringstream range;
+        range << std::fixed << std::setprecision(0) << row["range_nm"][0].get<double>() << "–"
+              << row["range_nm"][1].get<double>();
+        std::string alternates;
+        for (const auto& a : row["alternates"]) alternates += (alternates.empty() ? "" : ", ") + a.get<std::string>();
+        out << std::setw(16) << row["id"].get<std::string>() << std::setw(18) << row["name"].get<std::string>()
+            << std::setw(22) << row["source"].get<std::string>() << std::setw(20) << range.str() << std::setw(8)
+            << row["points_360_830"].get<std::size_t>() << alternates << "\n";
+    }
+    out << "points: samples inside 360–830 nm\n";
+    return out.str();
+}
+
+}  // namespace
+
+std::function<void()> add_list_command(CLI::App& app, const GlobalOptions& global) {
+    auto options = std::make_shared<ListOptions>();
+    app.add_flag("--json", options->json, "Print JSON");
+    app.add_option("-o,--output", options->output, "Write to this file instead of stdout");
+    return [options, &global] {
+        const Catalog catalog = Catalog::load(global.data_dir);
+        nlohmann::json rows = nlohmann::json::array();
+        for (const auto& entry : catalog.entries()) rows.push_back(describe(entry, load_material(catalog, entry.id)));
+        emit(options->json ? rows.dump(2) + "\n" : table(rows), options->output);
+    };
+}
+
+}  // namespace metalfit::cli

@@ -1,0 +1,29 @@
+// The metalfit subcommands: each registers its options on a CLI11 app and runs over libfit.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace metalfit::cli {
+
+// Options every subcommand shares.
+struct GlobalOptions {
+    std::filesystem::path data_dir;                    // built-in database
+    std::optional<std::filesystem::path> ocio_config;  // --ocio-config ($OCIO wins when set)
+};
+
+// Each returns the function that runs the subcommand once the command line is parsed.
+std::function<void()> add_list_command(CLI::App& app, const GlobalOptions& global);
+std::function<void()> add_show_command(CLI::App& app, const GlobalOptions& global);
+
+// Prints to stdout, or writes atomically to `output` when it is not empty.
+void emit(const std::string& text, const std::filesystem::path& output);
+
+// "metalfit: warning: ..." on stderr.
+void warn(const std::string& message);
+
+}  // namespace metalfit::cli

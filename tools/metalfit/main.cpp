@@ -1,0 +1,63 @@
+// metalfit: measured metal n,k → shader-ready Fresnel constants. A thin layer over libfit.
+// Exit codes (docs/cli.md): 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 colour configuration.
+#include <iostream>
+
+#include "commands.hpp"
+#include "libfit/atomic_file.hpp"
+#include "libfit/data_dir.hpp"
+#include "libfit/errors.hpp"
+
+namespace metalfit::cli {
+
+void emit(const std::string& text, const std::filesystem::path& output) {
+    if (output.empty()) std::cout << text << std::flush;
+    else write_file_atomically(output, text);
+}
+
+void warn(const std::string& message) { std::cerr << "metalfit: warning: " << message << "\n"; }
+
+}  // namespace metalfit::cli
+
+int main(int argc, char** argv) {
+    using namespace metalfit;
+    enum ExitCode { ok = 0, internal = 1, usage = 2, bad_input = 3, colour_config = 4 };
+
+    CLI::App app{"metalfit: fit shader Fresnel models to measured spectral n,k of metals"};
+    app.set_version_flag("--version", std::string("metalfit ") + METALFIT_VERSION);
+    app.require_subcommand(1);
+    app.fallthrough();
+    cli::GlobalOptions global{default_data_dir(), std::nullopt};
+    app.add_option("--data-dir", global.data_dir, "Built-in database folder (default: $METALFIT_DATA or the source tree's data/)")
+        ->check(CLI::ExistingDirectory);
+    app.add_option("--ocio-config", global.ocio_config, "OCIO config to use when $OCIO is not set (default: data/ocio/config.ocio)");
+
+    std::function<void()> run;
+    auto& list = *app.add_subcommand("list", "List the built-in materials");
+    auto run_list = cli::add_list_command(list, global);
+    auto& show = *app.add_subcommand("show", "Reference reflectance of one material (F0, F82, R at a few angles)");
+    auto run_show = cli::add_show_command(show, global);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? ok : usage;
+    }
+    try {
+        if (list.parsed()) run_list();
+        if (show.parsed()) run_show();
+        return ok;
+    } catch (const UsageError& e) {
+        std::cerr << "metalfit: " << e.what() << "\n";
+        return usage;
+    } catch (const InputError& e) {
+        std::cerr << "metalfit: " << e.what() << "\n";
+        return bad_input;
+    } catch (const ColorConfigError& e) {
+        std::cerr << "metalfit: " << e.what() << "\n";
+        return colour_config;
+    } catch (const std::exception& e) {
+        std::cerr << "metalfit: internal error: " << e.what() << "\n";
+        return internal;
+    }
+}
