@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# The main job on the embedded default (the built-in database), written into a folder (default: out/).
+# Installs what is missing, builds, then runs metalfit on the built-in catalog:
+#   list.txt / list.json            every material, its source and wavelength coverage
+#   show-<id>.txt / show-<id>.json  reference reflectance (F0, F82, R at μ = 0.5, 0.25, 0.1) of a few metals
+# Later stages (fit, export, report, preview) are added here as they land.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out="${1:-out}"
+bash scripts/build.sh release --target metalfit
+metalfit=build/bin/metalfit
+mkdir -p "$out"
+"$metalfit" list -o "$out/list.txt"
+"$metalfit" list --json -o "$out/list.json"
+for material in Au Ag Cu Al Cr Ti TiN Cu-Zn; do
+  "$metalfit" show "$material" -o "$out/show-$material.txt"
+  "$metalfit" show "$material" --json -o "$out/show-$material.json"
+done
+echo "main job: wrote $(ls "$out" | wc -l) files into $out/"

@@ -1,0 +1,183 @@
+// Atomic output files and file digests.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "libfit/atomic_file.hpp"
+#include "libfit/errors.hpp"
+#include "libfit/file_digest.hpp"
+
+namespace metalfit {
+namespace {
+
+namespace fs = std::filesystem;
+
+::testing::AssertionResult Contains(const std::string& haystack, const std::string& needle) {
+    if (haystack.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "'" << haystack << "' does not contain '" << needle << "'";
+}
+
+class TempDir {
+public:
+    TempDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        path_ = fs::temp_directory_path() /
+                ("metalfit-test-" + std::string(info->test_suite_name()) + "-" + info->name() + "-" +
+                 std::to_string(::getpid()));
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ec);
+        fs::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    const fs::path& path() const { return path_; }
+
+private:
+    fs::path path_;
+};
+
+std::string read(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::string> list(const fs::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string join(const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+    return s;
+}
+
+TEST(AtomicFile, WritesContentsAndLeavesNoTemporary) {
+    TempDir dir;
+    const fs::path target = dir.path() / "out.json";
+    const std::string contents = "{\"a\": 1}\nsecond line\n";
+    write_file_atomically(target, contents);
+    EXPECT_EQ(read(target), contents);
+    const auto names = list(dir.path());
+    EXPECT_EQ(names, std::vector<std::string>{"out.json"}) << join(names);
+}
+
+TEST(AtomicFile, WritesBinaryAndEmptyContents) {
+    TempDir dir;
+    const std::string binary("a\0b\r\n\xff", 6);
+    write_file_atomically(dir.path() / "bin", binary);
+    EXPECT_EQ(read(dir.path() / "bin"), binary);
+    write_file_atomically(dir.path() / "empty", "");
+    EXPECT_TRUE(fs::exists(dir.path() / "empty"));
+    EXPECT_EQ(fs::file_size(dir.path() / "empty"), 0u);
+    EXPECT_EQ(list(dir.path()), (std::vector<std::string>{"bin", "empty"}));
+}
+
+TEST(AtomicFile, OverwritingKeepsOnlyTheNewContent) {
+    TempDir dir;
+    const fs::path target = dir.path() / "report.html";
+    write_file_atomically(target, std::string(10000, 'x'));
+    write_file_atomically(target, "short");
+    EXPECT_EQ(read(target), "short");
+    EXPECT_EQ(fs::file_size(target), 5u);
+    const auto names = list(dir.path());
+    EXPECT_EQ(names, std::vector<std::string>{"report.html"}) << join(names);
+}
+
+TEST(AtomicFile, MissingDirectoryThrowsAndCreatesNothing) {
+    TempDir dir;
+    const fs::path target = dir.path() / "no-such-dir" / "out.txt";
+    try {
+        write_file_atomically(target, "data");
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(Contains(e.what(), target.string()));
+        EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+    }
+    EXPECT_FALSE(fs::exists(dir.path() / "no-such-dir"));
+    EXPECT_TRUE(list(dir.path()).empty()) << join(list(dir.path()));
+}
+
+TEST(AtomicFile, ReadOnlyDirectoryThrowsAndLeavesNothing) {
+    TempDir dir;
+    const fs::path target = dir.path() / "existing.txt";
+    write_file_atomically(target, "old");
+    fs::permissions(dir.path(), fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                                    fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec,
+                    fs::perm_options::replace);
+    {
+        // Running as root (or with CAP_DAC_OVERRIDE) makes a 0555 directory writable anyway.
+        const fs::path probe = dir.path() / "probe";
+        bool writable = false;
+        {
+            std::ofstream out(probe);
+            writable = static_cast<bool>(out);
+        }
+        if (writable) {
+            std::error_code ec;
+            fs::remove(probe, ec);
+            GTEST_SKIP() << "the read-only directory is writable (running as root?)";
+        }
+    }
+    for (const char* name : {"new.txt", "existing.txt"}) {
+        const fs::path t = dir.path() / name;
+        try {
+            write_file_atomically(t, "new contents");
+            ADD_FAILURE() << "expected InputError for " << t;
+        } catch (const InputError& e) {
+            EXPECT_TRUE(Contains(e.what(), t.string()));
+        }
+    }
+    EXPECT_EQ(read(target), "old");  // the old file is untouched
+    const auto names = list(dir.path());
+    EXPECT_EQ(names, std::vector<std::string>{"existing.txt"}) << join(names);
+}
+
+TEST(AtomicFileDigest, Sha256OfAbc) {
+    TempDir dir;
+    const fs::path file = dir.path() / "abc.txt";
+    std::ofstream(file, std::ios::binary) << "abc";
+    EXPECT_EQ(sha256_file(file), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+}
+
+TEST(AtomicFileDigest, Sha256OfEmptyAndOfALargeFile) {
+    TempDir dir;
+    const fs::path empty = dir.path() / "empty";
+    std::ofstream(empty, std::ios::binary).flush();
+    EXPECT_EQ(sha256_file(empty), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+    // One million 'a' (FIPS 180-2 test vector), larger than any single read buffer.
+    const fs::path big = dir.path() / "million-a";
+    std::ofstream(big, std::ios::binary) << std::string(1000000, 'a');
+    EXPECT_EQ(sha256_file(big), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
+TEST(AtomicFileDigest, WrittenFileDigestMatches) {
+    TempDir dir;
+    write_file_atomically(dir.path() / "abc", "abc");
+    EXPECT_EQ(sha256_file(dir.path() / "abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+}
+
+TEST(AtomicFileDigest, MissingFileThrowsInputError) {
+    TempDir dir;
+    const fs::path file = dir.path() / "missing";
+    try {
+        (void)sha256_file(file);
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_TRUE(Contains(e.what(), file.string()));
+    }
+}
+
+}  // namespace
+}  // namespace metalfit

@@ -1,0 +1,266 @@
+// The built-in catalog: lookup by id, name and alias, sources, load_material, path detection.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "libfit/catalog.hpp"
+#include "libfit/errors.hpp"
+
+namespace metalfit {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kFixtures{METALFIT_TEST_FIXTURES};
+const fs::path kData{METALFIT_TEST_DATA};
+
+::testing::AssertionResult Contains(const std::string& haystack, const std::string& needle) {
+    if (haystack.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "'" << haystack << "' does not contain '" << needle << "'";
+}
+
+class TempDir {
+public:
+    TempDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        path_ = fs::temp_directory_path() /
+                ("metalfit-test-" + std::string(info->test_suite_name()) + "-" + info->name() + "-" +
+                 std::to_string(::getpid()));
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    const fs::path& path() const { return path_; }
+    fs::path write(const std::string& name, const std::string& contents) const {
+        const fs::path p = path_ / name;
+        std::ofstream(p, std::ios::binary) << contents;
+        return p;
+    }
+
+private:
+    fs::path path_;
+};
+
+// Changes the working directory for the lifetime of the object.
+class ScopedCwd {
+public:
+    explicit ScopedCwd(const fs::path& dir) : previous_(fs::current_path()) { fs::current_path(dir); }
+    ~ScopedCwd() {
+        std::error_code ec;
+        fs::current_path(previous_, ec);
+    }
+    ScopedCwd(const ScopedCwd&) = delete;
+    ScopedCwd& operator=(const ScopedCwd&) = delete;
+
+private:
+    fs::path previous_;
+};
+
+class CatalogTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() { catalog_ = new Catalog(Catalog::load(kData)); }
+    static void TearDownTestSuite() {
+        delete catalog_;
+        catalog_ = nullptr;
+    }
+    static const Catalog& catalog() { return *catalog_; }
+
+private:
+    static Catalog* catalog_;
+};
+Catalog* CatalogTest::catalog_ = nullptr;
+
+TEST_F(CatalogTest, LoadsAllMaterials) {
+    EXPECT_EQ(catalog().entries().size(), 29u);
+    EXPECT_EQ(catalog().data_dir(), kData);
+    for (const auto& e : catalog().entries()) {
+        SCOPED_TRACE(e.id);
+        EXPECT_FALSE(e.id.empty());
+        EXPECT_FALSE(e.name.empty());
+        EXPECT_FALSE(e.primary.source.empty());
+        EXPECT_TRUE(e.primary.file.is_absolute() || kData.is_relative()) << e.primary.file;
+        EXPECT_TRUE(fs::is_regular_file(e.primary.file)) << e.primary.file;
+        for (const auto& a : e.alternates) EXPECT_TRUE(fs::is_regular_file(a.file)) << a.file;
+    }
+}
+
+TEST_F(CatalogTest, FindIsCaseInsensitiveOnIdNameAndAlias) {
+    const CatalogEntry* gold = catalog().find("GOLD");
+    ASSERT_NE(gold, nullptr);
+    EXPECT_EQ(gold->id, "Au");
+    EXPECT_EQ(gold->name, "gold");
+    EXPECT_EQ(catalog().find("au"), gold);
+    EXPECT_EQ(catalog().find("Au"), gold);
+    EXPECT_EQ(catalog().find("gOlD"), gold);
+    const CatalogEntry* brass = catalog().find("brass");
+    ASSERT_NE(brass, nullptr);
+    EXPECT_EQ(brass->id, "Cu-Zn");
+    EXPECT_EQ(catalog().find("BRASS"), brass);
+    EXPECT_EQ(catalog().find("cu70zn30"), brass);  // alias
+    ASSERT_NE(catalog().find("Aluminum"), nullptr);  // alias spelling
+    EXPECT_EQ(catalog().find("Aluminum")->id, "Al");
+    ASSERT_NE(catalog().find("STAINLESS STEEL"), nullptr);
+    EXPECT_EQ(catalog().find("STAINLESS STEEL")->id, "stainless-steel");
+    EXPECT_EQ(catalog().find("unobtainium"), nullptr);
+    EXPECT_EQ(catalog().find(""), nullptr);
+    EXPECT_EQ(catalog().find("gol"), nullptr);  // no prefix matching
+}
+
+TEST_F(CatalogTest, FindSource) {
+    const CatalogEntry* gold = catalog().find("Au");
+    ASSERT_NE(gold, nullptr);
+    EXPECT_EQ(&gold->find_source(""), &gold->primary);
+    EXPECT_EQ(gold->find_source("").source, "Johnson");
+    EXPECT_EQ(&gold->find_source("johnson"), &gold->primary);
+    const CatalogSource& mcpeak = gold->find_source("mcpeak");
+    EXPECT_EQ(mcpeak.source, "McPeak");
+    EXPECT_NE(&mcpeak, &gold->primary);
+    EXPECT_EQ(mcpeak.file.filename(), "McPeak.yml");
+    try {
+        (void)gold->find_source("Palik");
+        FAIL() << "unknown source must throw";
+    } catch (const UsageError& e) {
+        const std::string what = e.what();
+        EXPECT_TRUE(Contains(what, "Palik"));
+        for (const char* s : {"Johnson", "McPeak", "Babar", "Rakic-LD", "Olmon-ev"}) EXPECT_TRUE(Contains(what, s));
+    }
+}
+
+TEST_F(CatalogTest, LoadMaterialByName) {
+    const Material m = load_material(catalog(), "gold");
+    EXPECT_EQ(m.id, "Au");
+    EXPECT_EQ(m.name, "gold");
+    EXPECT_EQ(m.source, "Johnson");
+    EXPECT_EQ(m.provenance.file, catalog().find("Au")->primary.file);
+    EXPECT_TRUE(Contains(m.provenance.references, "Johnson"));
+    EXPECT_EQ(m.provenance.sha256.size(), 64u);
+    EXPECT_TRUE(m.index.range().covers(kVisibleRange));
+
+    const Material alt = load_material(catalog(), "AU", "mcpeak");
+    EXPECT_EQ(alt.id, "Au");
+    EXPECT_EQ(alt.source, "McPeak");
+    EXPECT_NE(alt.provenance.sha256, m.provenance.sha256);
+    EXPECT_NE(alt.index(550.0), m.index(550.0));
+
+    const Material brass = load_material(catalog(), "brass");
+    EXPECT_EQ(brass.id, "Cu-Zn");
+    EXPECT_EQ(brass.name, "brass");
+}
+
+TEST_F(CatalogTest, LoadMaterialUnknownNameOrSourceIsUsageError) {
+    try {
+        (void)load_material(catalog(), "unobtainium");
+        FAIL();
+    } catch (const UsageError& e) {
+        EXPECT_TRUE(Contains(e.what(), "unobtainium"));
+    }
+    EXPECT_THROW((void)load_material(catalog(), "gold", "Palik"), UsageError);
+}
+
+TEST_F(CatalogTest, LoadMaterialFromAFixturePath) {
+    const fs::path file = kFixtures / "valid-unsorted-duplicates.yml";
+    const Material m = load_material(catalog(), file.string());
+    EXPECT_EQ(m.id, "valid-unsorted-duplicates");
+    EXPECT_EQ(m.provenance.file, file);
+    ASSERT_NE(m.index.n.tabulated(), nullptr);
+    EXPECT_EQ(m.index.n.tabulated()->size(), 23u);
+    const Material csv = load_material(catalog(), (kFixtures / "valid-nk.csv").string());
+    EXPECT_EQ(csv.provenance.format, "CSV");
+    // A bad file is an input error, not a usage error.
+    EXPECT_THROW((void)load_material(catalog(), (kFixtures / "bad-row.csv").string()), InputError);
+    // A source only applies to catalog materials.
+    EXPECT_THROW((void)load_material(catalog(), file.string(), "Johnson"), UsageError);
+}
+
+TEST(CatalogPaths, LooksLikePath) {
+    EXPECT_FALSE(looks_like_path("gold"));
+    EXPECT_FALSE(looks_like_path("Cu-Zn"));
+    EXPECT_FALSE(looks_like_path("stainless steel"));
+    EXPECT_TRUE(looks_like_path("au.yml"));
+    EXPECT_TRUE(looks_like_path("au.YAML"));
+    EXPECT_TRUE(looks_like_path("table.CSV"));
+    EXPECT_TRUE(looks_like_path("dir/gold"));
+    EXPECT_TRUE(looks_like_path("./gold"));
+    EXPECT_TRUE(looks_like_path("/abs/path/file.txt"));
+    EXPECT_FALSE(looks_like_path("gold.txt"));  // not existing, no separator, other extension
+}
+
+TEST(CatalogPaths, AnExistingFileLooksLikeAPath) {
+    TempDir dir;
+    dir.write("gold", "not a catalog name here\n");
+    ScopedCwd cwd(dir.path());
+    EXPECT_TRUE(looks_like_path("gold"));
+    EXPECT_FALSE(looks_like_path("silver"));
+}
+
+TEST(CatalogErrors, MalformedCatalogJsonIsInputError) {
+    TempDir dir;
+    dir.write("catalog.json", "{ \"materials\": [ { \"id\": \"Au\", \n");
+    try {
+        (void)Catalog::load(dir.path());
+        FAIL() << "malformed JSON must throw";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_TRUE(Contains(what, "catalog.json"));
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        EXPECT_EQ(e.location().file, dir.path() / "catalog.json");
+    }
+}
+
+TEST(CatalogErrors, MissingFieldIsNamed) {
+    TempDir dir;
+    dir.write("catalog.json", R"({"materials": [{"id": "Au", "name": "gold"}]})");
+    try {
+        (void)Catalog::load(dir.path());
+        FAIL() << "a material without primary must throw";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(Contains(e.what(), "catalog.json"));
+        EXPECT_TRUE(Contains(e.what(), "materials[0].primary"));
+    }
+    dir.write("catalog.json", R"({"stuff": []})");
+    try {
+        (void)Catalog::load(dir.path());
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_TRUE(Contains(e.what(), "materials"));
+    }
+}
+
+TEST(CatalogErrors, MissingCatalogIsInputError) {
+    TempDir dir;
+    try {
+        (void)Catalog::load(dir.path());
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_TRUE(Contains(e.what(), "catalog.json"));
+    }
+}
+
+TEST(CatalogErrors, MinimalCatalogResolvesFilesAgainstItsDirectory) {
+    TempDir dir;
+    fs::create_directories(dir.path() / "nk");
+    fs::copy_file(kFixtures / "valid-nk.csv", dir.path() / "nk/table.csv");
+    dir.write("catalog.json", R"({"materials": [{"id": "Xx", "name": "test metal", "aliases": ["tm"],
+        "primary": {"source": "Me", "file": "nk/table.csv", "reference": "nobody", "licence": "CC0"}}]})");
+    const Catalog c = Catalog::load(dir.path());
+    ASSERT_EQ(c.entries().size(), 1u);
+    EXPECT_EQ(c.entries()[0].primary.file, dir.path() / "nk/table.csv");
+    EXPECT_TRUE(c.entries()[0].alternates.empty());
+    const Material m = load_material(c, "TM");
+    EXPECT_EQ(m.id, "Xx");
+    EXPECT_EQ(m.name, "test metal");
+    EXPECT_EQ(m.source, "Me");
+    EXPECT_EQ(m.provenance.format, "CSV");
+}
+
+}  // namespace
+}  // namespace metalfit

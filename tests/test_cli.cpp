@@ -1,0 +1,169 @@
+// End-to-end tests of the metalfit executable: outputs, exit codes, one-line errors, no partial files.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <algorithm>
+#include <sstream>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+    int exit_code;
+    std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("metalfit-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    // Runs metalfit with `args` (already shell-quoted) and an optional environment prefix.
+    Result run(const std::string& args, const std::string& env = "OCIO=") const {
+        const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+        const std::string command = "env " + env + " '" + std::string(METALFIT_EXE) + "' " + args + " >'" +
+                                    out.string() + "' 2>'" + err.string() + "' </dev/null";
+        const int status = std::system(command.c_str());
+        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+    }
+
+    static void expect_one_line_error(const Result& r, const std::string& must_contain) {
+        EXPECT_FALSE(r.err.empty());
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(must_contain), std::string::npos) << r.err;
+        EXPECT_TRUE(r.out.empty()) << r.out;
+    }
+
+    fs::path dir_;
+};
+
+const std::string kFixtures = METALFIT_TEST_FIXTURES;
+
+TEST_F(Cli, ShowJsonHasTheDocumentedKeys) {
+    const Result r = run("show gold --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["material"], "Au");
+    EXPECT_EQ(j["space"], "Linear Rec.709 (sRGB)");
+    ASSERT_EQ(j["F0"].size(), 3u);
+    ASSERT_EQ(j["F82"].size(), 3u);
+    EXPECT_GT(j["F0"][0].get<double>(), 1.0);  // kept out of gamut
+    EXPECT_EQ(j["out_of_gamut"][0]["quantity"], "F0");
+    EXPECT_EQ(j["provenance"]["sha256"].get<std::string>().size(), 64u);
+    EXPECT_EQ(j["provenance"]["cmf"], "CIE 1931 2°");
+}
+
+TEST_F(Cli, ShowOptionsChangeTheResult) {
+    const auto base = nlohmann::json::parse(run("show Cu --json").out);
+    for (const char* option : {"--cmf 1964", "--illuminant A", "--interp pchip", "--space ACEScg", "--source McPeak"}) {
+        const Result r = run(std::string("show Cu --json ") + option);
+        ASSERT_EQ(r.exit_code, 0) << option << ": " << r.err;
+        const auto j = nlohmann::json::parse(r.out);
+        EXPECT_NE(j["F0"], base["F0"]) << option;
+    }
+}
+
+TEST_F(Cli, UserFilesWorkLikeCatalogNames) {
+    const Result yaml = run("show '" + kFixtures + "/valid-unsorted-duplicates.yml' --json");
+    ASSERT_EQ(yaml.exit_code, 0) << yaml.err;
+    const Result csv = run("show '" + kFixtures + "/valid-nk.csv' --json");
+    ASSERT_EQ(csv.exit_code, 0) << csv.err;
+    // Both hold Johnson & Christy's gold rows from 300 to 892 nm: the same colour as the catalog's gold.
+    const auto gold = nlohmann::json::parse(run("show Au --json").out);
+    for (const auto& r : {yaml, csv}) {
+        const auto j = nlohmann::json::parse(r.out);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(j["F0"][c].get<double>(), gold["F0"][c].get<double>(), 1e-9);
+    }
+}
+
+TEST_F(Cli, TwoRunsAreByteIdentical) {
+    const Result a = run("show Au --json"), b = run("show Au --json");
+    EXPECT_EQ(a.out, b.out);
+    EXPECT_EQ(run("list --json").out, run("list --json").out);
+}
+
+TEST_F(Cli, ListCoversTheWholeCatalog) {
+    const Result r = run("list --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j.size(), 29u);
+    for (const auto& m : j) {
+        EXPECT_TRUE(m["covers_360_830"].get<bool>()) << m["id"];
+        EXPECT_GT(m["points_360_830"].get<int>(), 0) << m["id"];
+    }
+}
+
+TEST_F(Cli, MalformedFilesExitWithCode3AndOneLineNamingTheFile) {
+    for (const char* name : {"bad-non-numeric.yml", "bad-negative-k.yml", "bad-empty-data.yml", "bad-no-data.yml",
+                             "bad-unknown-type.yml", "bad-truncated.yml", "bad-short-range.yml",
+                             "bad-wrong-columns.yml", "bad-header.csv", "bad-row.csv", "bad-negative-k.csv"}) {
+        const Result r = run("show '" + kFixtures + "/" + name + "' --json");
+        EXPECT_EQ(r.exit_code, 3) << name << ": " << r.err;
+        expect_one_line_error(r, name);
+    }
+}
+
+TEST_F(Cli, UsageErrorsExitWithCode2) {
+    expect_one_line_error(run("show unobtainium"), "unobtainium");
+    EXPECT_EQ(run("show unobtainium").exit_code, 2);
+    EXPECT_EQ(run("show gold --source Nobody").exit_code, 2);
+    EXPECT_EQ(run("show gold --cmf 1976").exit_code, 2);
+    EXPECT_EQ(run("frobnicate").exit_code, 2);
+    EXPECT_EQ(run("").exit_code, 2);
+}
+
+TEST_F(Cli, ColourConfigurationErrorsExitWithCode4) {
+    const Result missing = run("show gold", "OCIO=/nonexistent/config.ocio");
+    EXPECT_EQ(missing.exit_code, 4);
+    expect_one_line_error(missing, "/nonexistent/config.ocio");
+    const Result space = run("show gold --space 'No Such Space'");
+    EXPECT_EQ(space.exit_code, 4);
+    expect_one_line_error(space, "No Such Space");
+}
+
+TEST_F(Cli, OcioEnvironmentVariableTakesPrecedence) {
+    const std::string config = std::string(METALFIT_TEST_DATA) + "/ocio/config.ocio";
+    const Result r = run("show gold --json --ocio-config /nonexistent.ocio", "OCIO='" + config + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["provenance"]["ocio_config_origin"], "$OCIO");
+    EXPECT_NE(r.err.find("--ocio-config is ignored"), std::string::npos);
+    // Without $OCIO, the command-line config is used (and here it does not exist).
+    EXPECT_EQ(run("show gold --ocio-config /nonexistent.ocio").exit_code, 4);
+}
+
+TEST_F(Cli, OutputFilesAreWrittenWholeOrNotAtAll) {
+    const fs::path target = dir_ / "gold.json";
+    const Result ok = run("show gold --json -o '" + target.string() + "'");
+    ASSERT_EQ(ok.exit_code, 0) << ok.err;
+    EXPECT_EQ(slurp(target), run("show gold --json").out);
+
+    const fs::path nowhere = dir_ / "missing-dir" / "gold.json";
+    const Result bad_dir = run("show gold --json -o '" + nowhere.string() + "'");
+    EXPECT_EQ(bad_dir.exit_code, 3);
+    EXPECT_FALSE(fs::exists(nowhere.parent_path()));
+
+    // A failing computation leaves an existing output untouched and creates no temporary file.
+    const std::string before = slurp(target);
+    const Result failing = run("show '" + kFixtures + "/bad-row.csv' --json -o '" + target.string() + "'");
+    EXPECT_EQ(failing.exit_code, 3);
+    EXPECT_EQ(slurp(target), before);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 3)  // gold.json, stdout, stderr
+        << "a temporary file was left behind";
+}
+
+}  // namespace

@@ -1,0 +1,242 @@
+// Importer for user n,k tables in CSV, and extension dispatch.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "libfit/errors.hpp"
+#include "libfit/io_csv.hpp"
+#include "libfit/io_refractiveindex.hpp"
+
+namespace metalfit {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kFixtures{METALFIT_TEST_FIXTURES};
+const fs::path kData{METALFIT_TEST_DATA};
+
+::testing::AssertionResult Contains(const std::string& haystack, const std::string& needle) {
+    if (haystack.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "'" << haystack << "' does not contain '" << needle << "'";
+}
+
+::testing::AssertionResult StartsWith(const std::string& s, const std::string& prefix) {
+    if (s.rfind(prefix, 0) == 0) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "'" << s << "' does not start with '" << prefix << "'";
+}
+
+class TempDir {
+public:
+    TempDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        path_ = fs::temp_directory_path() /
+                ("metalfit-test-" + std::string(info->test_suite_name()) + "-" + info->name() + "-" +
+                 std::to_string(::getpid()));
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    const fs::path& path() const { return path_; }
+    fs::path write(const std::string& name, const std::string& contents) const {
+        const fs::path p = path_ / name;
+        std::ofstream(p, std::ios::binary) << contents;
+        return p;
+    }
+
+private:
+    fs::path path_;
+};
+
+const Spectrum& tabulated(const SpectralCurve& c) {
+    const Spectrum* s = c.tabulated();
+    if (s == nullptr) throw std::runtime_error("curve is " + c.kind() + ", not tabulated");
+    return *s;
+}
+
+std::size_t index_of(const Spectrum& s, double nm) {
+    for (std::size_t i = 0; i < s.size(); ++i)
+        if (std::abs(s.wavelengths()[i] - nm) < 1e-9) return i;
+    return s.size();
+}
+
+std::string read(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(IoCsv, NanometreAndMicrometreFilesGiveTheSameSpectrumAsJohnson) {
+    const Material nm = load_nk_csv(kFixtures / "valid-nk.csv");
+    const Material um = load_nk_csv(kFixtures / "valid-um.csv");
+    const Material johnson = load_refractiveindex_yaml(kData / "nk/Au/Johnson.yml");
+    const Spectrum& n_nm = tabulated(nm.index.n);
+    const Spectrum& k_nm = tabulated(nm.index.k);
+    const Spectrum& n_um = tabulated(um.index.n);
+    const Spectrum& k_um = tabulated(um.index.k);
+    const Spectrum& jn = tabulated(johnson.index.n);
+    const Spectrum& jk = tabulated(johnson.index.k);
+    ASSERT_EQ(n_nm.size(), 23u);
+    ASSERT_EQ(k_nm.size(), 23u);
+    ASSERT_EQ(n_um.size(), 23u);
+    ASSERT_EQ(k_um.size(), 23u);
+    EXPECT_NEAR(n_nm.range().min_nm, 300.9, 1e-9);
+    EXPECT_NEAR(n_nm.range().max_nm, 892.0, 1e-9);
+    EXPECT_NEAR(n_um.range().min_nm, 300.9, 1e-9);
+    EXPECT_NEAR(n_um.range().max_nm, 892.0, 1e-9);
+    const std::size_t offset = index_of(jn, 300.9);
+    ASSERT_LT(offset + 22, jn.size());
+    for (std::size_t i = 0; i < 23; ++i) {
+        // Wavelengths: λ (nm) vs λ (µm) × 1000 may differ in the last bit only.
+        EXPECT_NEAR(n_nm.wavelengths()[i], n_um.wavelengths()[i], 1e-9) << i;
+        EXPECT_NEAR(n_nm.wavelengths()[i], jn.wavelengths()[offset + i], 1e-9) << i;
+        EXPECT_NEAR(k_nm.wavelengths()[i], jk.wavelengths()[offset + i], 1e-9) << i;
+        // Values are the same decimal numbers: exactly equal.
+        EXPECT_EQ(n_nm.values()[i], n_um.values()[i]) << i;
+        EXPECT_EQ(k_nm.values()[i], k_um.values()[i]) << i;
+        EXPECT_EQ(n_nm.values()[i], jn.values()[offset + i]) << i;
+        EXPECT_EQ(k_nm.values()[i], jk.values()[offset + i]) << i;
+    }
+    for (int w = 360; w <= 830; ++w) {
+        EXPECT_NEAR(nm.index(w).real(), um.index(w).real(), 1e-12) << w;
+        EXPECT_NEAR(nm.index(w).imag(), um.index(w).imag(), 1e-12) << w;
+        EXPECT_NEAR(nm.index(w).real(), johnson.index(w).real(), 1e-12) << w;
+        EXPECT_NEAR(nm.index(w).imag(), johnson.index(w).imag(), 1e-12) << w;
+    }
+    // Row `548.6,0.43,2.455`.
+    EXPECT_EQ(n_nm.values()[index_of(n_nm, 548.6)], 0.43);
+    EXPECT_EQ(k_nm.values()[index_of(k_nm, 548.6)], 2.455);
+    EXPECT_EQ(nm.provenance.format, "CSV");
+    EXPECT_EQ(nm.provenance.sha256.size(), 64u);
+    EXPECT_NE(nm.provenance.sha256, um.provenance.sha256);
+    EXPECT_EQ(nm.id, "valid-nk");
+    EXPECT_TRUE(nm.warnings.empty());
+}
+
+struct BadCsv {
+    const char* file;
+    int line;
+    const char* message;
+};
+
+void PrintTo(const BadCsv& b, std::ostream* os) { *os << b.file; }
+
+class IoCsvMalformed : public ::testing::TestWithParam<BadCsv> {};
+
+TEST_P(IoCsvMalformed, ThrowsInputErrorNamingFileAndLine) {
+    const BadCsv& c = GetParam();
+    const fs::path file = kFixtures / c.file;
+    ASSERT_TRUE(fs::exists(file)) << file;
+    try {
+        (void)load_nk_csv(file);
+        FAIL() << "expected InputError for " << file;
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_TRUE(StartsWith(what, file.string() + ":" + std::to_string(c.line) + ": "));
+        EXPECT_EQ(e.location().line, c.line);
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        EXPECT_TRUE(Contains(what, c.message));
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Fixtures, IoCsvMalformed,
+                         ::testing::Values(BadCsv{"bad-header.csv", 1, "wavelength_nm,n,k"},
+                                           BadCsv{"bad-row.csv", 17, "abc"},
+                                           BadCsv{"bad-negative-k.csv", 17, "negative"}),
+                         [](const ::testing::TestParamInfo<BadCsv>& info) {
+                             std::string name = info.param.file;
+                             name = name.substr(0, name.find('.'));
+                             for (char& ch : name)
+                                 if (ch == '-') ch = '_';
+                             return name;
+                         });
+
+TEST(IoCsv, CommentsAndBlankLinesAreIgnoredAndLinesStillCounted) {
+    TempDir dir;
+    const fs::path file = dir.write("table.csv",
+                                    "# a comment\n"
+                                    "\n"
+                                    "wavelength_nm,n,k\n"
+                                    "400,1.5,2.0\n"
+                                    "# another\n"
+                                    "500,1.0,3.0\n"
+                                    "\n"
+                                    "600,x,4.0\n");
+    try {
+        (void)load_nk_csv(file);
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_TRUE(StartsWith(e.what(), file.string() + ":8: "));
+    }
+    const fs::path good = dir.write("good.csv", "# c\nwavelength_nm,n,k\n\n400,1.5,2.0\n# x\n500,1.0,3.0\n");
+    const Material m = load_nk_csv(good);
+    EXPECT_EQ(tabulated(m.index.n).size(), 2u);
+    EXPECT_DOUBLE_EQ(m.index(450.0).real(), 1.25);
+    EXPECT_DOUBLE_EQ(m.index(450.0).imag(), 2.5);
+}
+
+TEST(IoCsv, LoadNkFileDispatchesOnExtension) {
+    const Material csv = load_nk_file(kFixtures / "valid-nk.csv");
+    EXPECT_EQ(csv.provenance.format, "CSV");
+    const Material yml = load_nk_file(kFixtures / "valid-unsorted-duplicates.yml");
+    EXPECT_EQ(yml.provenance.format, "refractiveindex.info YAML");
+    EXPECT_EQ(tabulated(yml.index.n).size(), 23u);
+
+    TempDir dir;
+    const std::string contents = read(kFixtures / "valid-nk.csv");
+    ASSERT_FALSE(contents.empty());
+    // Upper-case extensions are the same extension.
+    const Material upper = load_nk_file(dir.write("UPPER.CSV", contents));
+    EXPECT_EQ(upper.provenance.format, "CSV");
+    EXPECT_EQ(tabulated(upper.index.n).size(), 23u);
+    // A .yaml extension goes to the YAML reader.
+    const Material yaml = load_nk_file(dir.write("copy.yaml", read(kFixtures / "valid-unsorted-duplicates.yml")));
+    EXPECT_EQ(yaml.provenance.format, "refractiveindex.info YAML");
+}
+
+TEST(IoCsv, LoadNkFileRejectsUnknownExtension) {
+    TempDir dir;
+    const fs::path txt = dir.write("table.txt", read(kFixtures / "valid-nk.csv"));
+    try {
+        (void)load_nk_file(txt);
+        FAIL() << "a .txt file must be refused";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_TRUE(StartsWith(what, txt.string()));
+        EXPECT_TRUE(Contains(what, ".txt"));
+        EXPECT_EQ(what.find('\n'), std::string::npos);
+    }
+    EXPECT_THROW((void)load_nk_file(dir.path() / "no-extension"), InputError);
+}
+
+TEST(IoCsv, MissingFileIsAnInputError) {
+    const fs::path file = kFixtures / "does-not-exist.csv";
+    try {
+        (void)load_nk_file(file);
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_TRUE(StartsWith(e.what(), file.string()));
+    }
+}
+
+TEST(IoCsv, HeaderOnlyFileIsAnInputError) {
+    TempDir dir;
+    const fs::path file = dir.write("empty.csv", "wavelength_nm,n,k\n");
+    try {
+        (void)load_nk_csv(file);
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_TRUE(StartsWith(e.what(), file.string()));
+    }
+}
+
+}  // namespace
+}  // namespace metalfit
