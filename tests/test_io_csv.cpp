@@ -147,7 +147,7 @@ TEST_P(IoCsvMalformed, ThrowsInputErrorNamingFileAndLine) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Fixtures, IoCsvMalformed,
+INSTANTIATE_TEST_SUITE_P(IoCsv, IoCsvMalformed,
                          ::testing::Values(BadCsv{"bad-header.csv", 1, "wavelength_nm,n,k"},
                                            BadCsv{"bad-row.csv", 17, "abc"},
                                            BadCsv{"bad-negative-k.csv", 17, "negative"}),

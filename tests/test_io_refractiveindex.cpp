@@ -252,10 +252,11 @@ TEST(IoRefractiveIndexDuplicates, UnsortedWithIdenticalDuplicateEqualsJohnsonRow
         EXPECT_EQ(k.wavelengths()[i], jk.wavelengths()[offset + i]) << i;
         EXPECT_EQ(k.values()[i], jk.values()[offset + i]) << i;
     }
-    for (int nm = 360; nm <= 830; ++nm) {
-        EXPECT_EQ(m.index(nm), johnson.index(nm)) << nm;
+    for (int nm = 360; nm <= 830; ++nm) EXPECT_EQ(m.index(nm), johnson.index(nm)) << nm;
+    // PCHIP end slopes depend on the data set's ends, so the last interval (821.1–892 nm) of the
+    // 23-row subset legitimately differs from the full table; every interval before it is the same.
+    for (int nm = 360; nm <= 821; ++nm)
         EXPECT_EQ(m.index(nm, Interpolation::pchip), johnson.index(nm, Interpolation::pchip)) << nm;
-    }
     // Identical repeats are harmless: no conflict warning.
     for (const auto& w : m.warnings) EXPECT_FALSE(Contains(w, "mean")) << w;
 }
@@ -355,12 +356,14 @@ TEST_P(IoRefractiveIndexMalformed, ThrowsOneLineInputErrorNamingFileLineAndField
             EXPECT_TRUE(Contains(what, c.field));
             EXPECT_TRUE(Contains(e.location().field, c.field));
         }
-        if (*c.message != '\0') EXPECT_TRUE(Contains(what, c.message));
+        if (*c.message != '\0') {
+            EXPECT_TRUE(Contains(what, c.message));
+        }
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Fixtures, IoRefractiveIndexMalformed,
+    IoRefractiveIndex, IoRefractiveIndexMalformed,
     ::testing::Values(Malformed{"bad-non-numeric.yml", {28}, "DATA[0].data", "1.2x3"},
                       Malformed{"bad-negative-k.yml", {28}, "DATA[0].data", "-2.455"},
                       Malformed{"bad-empty-data.yml", {12}, "DATA[0].data", ""},
