@@ -1,6 +1,8 @@
 // Atomic output files and file digests.
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <unistd.h>
 
 #include <filesystem>
@@ -15,40 +17,9 @@
 namespace metalfit {
 namespace {
 
+using namespace metalfit::test;
+
 namespace fs = std::filesystem;
-
-::testing::AssertionResult Contains(const std::string& haystack, const std::string& needle) {
-    if (haystack.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "'" << haystack << "' does not contain '" << needle << "'";
-}
-
-class TempDir {
-public:
-    TempDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = fs::temp_directory_path() /
-                ("metalfit-test-" + std::string(info->test_suite_name()) + "-" + info->name() + "-" +
-                 std::to_string(::getpid()));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ec);
-        fs::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return path_; }
-
-private:
-    fs::path path_;
-};
-
-std::string read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 std::vector<std::string> list(const fs::path& dir) {
     std::vector<std::string> names;
@@ -68,7 +39,7 @@ TEST(AtomicFile, WritesContentsAndLeavesNoTemporary) {
     const fs::path target = dir.path() / "out.json";
     const std::string contents = "{\"a\": 1}\nsecond line\n";
     write_file_atomically(target, contents);
-    EXPECT_EQ(read(target), contents);
+    EXPECT_EQ(read_file(target), contents);
     const auto names = list(dir.path());
     EXPECT_EQ(names, std::vector<std::string>{"out.json"}) << join(names);
 }
@@ -77,7 +48,7 @@ TEST(AtomicFile, WritesBinaryAndEmptyContents) {
     TempDir dir;
     const std::string binary("a\0b\r\n\xff", 6);
     write_file_atomically(dir.path() / "bin", binary);
-    EXPECT_EQ(read(dir.path() / "bin"), binary);
+    EXPECT_EQ(read_file(dir.path() / "bin"), binary);
     write_file_atomically(dir.path() / "empty", "");
     EXPECT_TRUE(fs::exists(dir.path() / "empty"));
     EXPECT_EQ(fs::file_size(dir.path() / "empty"), 0u);
@@ -89,7 +60,7 @@ TEST(AtomicFile, OverwritingKeepsOnlyTheNewContent) {
     const fs::path target = dir.path() / "report.html";
     write_file_atomically(target, std::string(10000, 'x'));
     write_file_atomically(target, "short");
-    EXPECT_EQ(read(target), "short");
+    EXPECT_EQ(read_file(target), "short");
     EXPECT_EQ(fs::file_size(target), 5u);
     const auto names = list(dir.path());
     EXPECT_EQ(names, std::vector<std::string>{"report.html"}) << join(names);
@@ -139,7 +110,7 @@ TEST(AtomicFile, ReadOnlyDirectoryThrowsAndLeavesNothing) {
             EXPECT_TRUE(Contains(e.what(), t.string()));
         }
     }
-    EXPECT_EQ(read(target), "old");  // the old file is untouched
+    EXPECT_EQ(read_file(target), "old");  // the old file is untouched
     const auto names = list(dir.path());
     EXPECT_EQ(names, std::vector<std::string>{"existing.txt"}) << join(names);
 }

@@ -1,6 +1,8 @@
 // The built-in catalog: lookup by id, name and alias, sources, load_material, path detection.
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <unistd.h>
 
 #include <filesystem>
@@ -13,42 +15,9 @@
 namespace metalfit {
 namespace {
 
+using namespace metalfit::test;
+
 namespace fs = std::filesystem;
-
-const fs::path kFixtures{METALFIT_TEST_FIXTURES};
-const fs::path kData{METALFIT_TEST_DATA};
-
-::testing::AssertionResult Contains(const std::string& haystack, const std::string& needle) {
-    if (haystack.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "'" << haystack << "' does not contain '" << needle << "'";
-}
-
-class TempDir {
-public:
-    TempDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = fs::temp_directory_path() /
-                ("metalfit-test-" + std::string(info->test_suite_name()) + "-" + info->name() + "-" +
-                 std::to_string(::getpid()));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return path_; }
-    fs::path write(const std::string& name, const std::string& contents) const {
-        const fs::path p = path_ / name;
-        std::ofstream(p, std::ios::binary) << contents;
-        return p;
-    }
-
-private:
-    fs::path path_;
-};
 
 // Changes the working directory for the lifetime of the object.
 class ScopedCwd {

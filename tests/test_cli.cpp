@@ -1,5 +1,7 @@
 // End-to-end tests of the metalfit executable: outputs, exit codes, one-line errors, no partial files.
 #include <gtest/gtest.h>
+
+#include "test_support.hpp"
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
@@ -11,6 +13,8 @@
 
 namespace {
 
+using metalfit::test::read_file;
+
 namespace fs = std::filesystem;
 
 struct Result {
@@ -18,10 +22,6 @@ struct Result {
     std::string out, err;
 };
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 class Cli : public ::testing::Test {
 protected:
@@ -39,7 +39,7 @@ protected:
         const std::string command = "env " + env + " '" + std::string(METALFIT_EXE) + "' " + args + " >'" +
                                     out.string() + "' 2>'" + err.string() + "' </dev/null";
         const int status = std::system(command.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
     }
 
     static void expect_one_line_error(const Result& r, const std::string& must_contain) {
@@ -52,7 +52,7 @@ protected:
     fs::path dir_;
 };
 
-const std::string kFixtures = METALFIT_TEST_FIXTURES;
+const std::string kFixtures = metalfit::test::kFixtures.string();
 
 TEST_F(Cli, ShowJsonHasTheDocumentedKeys) {
     const Result r = run("show gold --json");
@@ -150,7 +150,7 @@ TEST_F(Cli, OutputFilesAreWrittenWholeOrNotAtAll) {
     const fs::path target = dir_ / "gold.json";
     const Result ok = run("show gold --json -o '" + target.string() + "'");
     ASSERT_EQ(ok.exit_code, 0) << ok.err;
-    EXPECT_EQ(slurp(target), run("show gold --json").out);
+    EXPECT_EQ(read_file(target), run("show gold --json").out);
 
     const fs::path nowhere = dir_ / "missing-dir" / "gold.json";
     const Result bad_dir = run("show gold --json -o '" + nowhere.string() + "'");
@@ -158,10 +158,10 @@ TEST_F(Cli, OutputFilesAreWrittenWholeOrNotAtAll) {
     EXPECT_FALSE(fs::exists(nowhere.parent_path()));
 
     // A failing computation leaves an existing output untouched and creates no temporary file.
-    const std::string before = slurp(target);
+    const std::string before = read_file(target);
     const Result failing = run("show '" + kFixtures + "/bad-row.csv' --json -o '" + target.string() + "'");
     EXPECT_EQ(failing.exit_code, 3);
-    EXPECT_EQ(slurp(target), before);
+    EXPECT_EQ(read_file(target), before);
     EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 3)  // gold.json, stdout, stderr
         << "a temporary file was left behind";
 }

@@ -1,6 +1,8 @@
 // OCIO colour spaces: the shipped config's transforms against matrices derived from primaries.
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <Eigen/Dense>
 
 #include <cstdlib>
@@ -14,7 +16,9 @@
 namespace metalfit {
 namespace {
 
-const std::filesystem::path kConfig = std::filesystem::path(METALFIT_TEST_DATA) / "ocio" / "config.ocio";
+using namespace metalfit::test;
+
+const std::filesystem::path kConfig = kData / "ocio" / "config.ocio";
 const OcioConfigChoice kShipped{kConfig, "test"};
 
 // RGB → XYZ from primaries and white chromaticities (SMPTE RP 177), computed independently of OCIO.
@@ -62,7 +66,7 @@ TEST(ColorSpace, WideGamutSpacesAreTheMatricesOfTheirPrimaries) {
 }
 
 TEST(ColorSpace, PerfectReflectorUnderD65IsWhiteInEverySpace) {
-    const XYZ white = Colorimetry::load(METALFIT_TEST_DATA, Observer::cie1931_2deg, Illuminant::D65).white();
+    const XYZ white = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::D65).white();
     for (const char* space : {"Linear Rec.709 (sRGB)", "ACEScg", "ACES2065-1", "Linear P3-D65", "Linear Rec.2020"}) {
         const RGB rgb = ColorSpaceConverter::create(kShipped, space)(white);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(rgb[c], 1.0, 1e-3) << space << " channel " << c;

@@ -1,6 +1,8 @@
 // Colorimetry: white normalisation and chromaticities against published values and table sums.
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <vector>
 
 #include "libfit/colorimetry.hpp"
@@ -8,6 +10,8 @@
 
 namespace metalfit {
 namespace {
+
+using namespace metalfit::test;
 
 struct Chromaticity {
     double x, y;
@@ -17,7 +21,7 @@ Chromaticity chromaticity(const XYZ& c) { return {c.X / (c.X + c.Y + c.Z), c.Y /
 TEST(Colorimetry, PerfectReflectorHasUnitLuminanceForEveryObserverAndIlluminant) {
     for (Observer o : {Observer::cie1931_2deg, Observer::cie1964_10deg})
         for (Illuminant i : {Illuminant::D65, Illuminant::A, Illuminant::E}) {
-            const Colorimetry c = Colorimetry::load(METALFIT_TEST_DATA, o, i);
+            const Colorimetry c = Colorimetry::load(kData, o, i);
             EXPECT_NEAR(c.white().Y, 1.0, 1e-12) << to_string(o) << " " << to_string(i);
             ASSERT_EQ(c.wavelengths_nm().size(), 471u);
             EXPECT_EQ(c.wavelengths_nm().front(), 360.0);
@@ -27,26 +31,26 @@ TEST(Colorimetry, PerfectReflectorHasUnitLuminanceForEveryObserverAndIlluminant)
 
 TEST(Colorimetry, WhitePointsMatchPublishedChromaticities) {
     // CIE 15:2004 Table T.3 (1 nm data): D65 2° (0.31272, 0.32903), 10° (0.31382, 0.33100); A 2° (0.44757, 0.40745).
-    const auto d65 = chromaticity(Colorimetry::load(METALFIT_TEST_DATA, Observer::cie1931_2deg, Illuminant::D65).white());
+    const auto d65 = chromaticity(Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::D65).white());
     EXPECT_NEAR(d65.x, 0.31272, 5e-5);
     EXPECT_NEAR(d65.y, 0.32903, 5e-5);
-    const auto d65_10 = chromaticity(Colorimetry::load(METALFIT_TEST_DATA, Observer::cie1964_10deg, Illuminant::D65).white());
+    const auto d65_10 = chromaticity(Colorimetry::load(kData, Observer::cie1964_10deg, Illuminant::D65).white());
     EXPECT_NEAR(d65_10.x, 0.31382, 5e-5);
     EXPECT_NEAR(d65_10.y, 0.33100, 5e-5);
-    const auto a = chromaticity(Colorimetry::load(METALFIT_TEST_DATA, Observer::cie1931_2deg, Illuminant::A).white());
+    const auto a = chromaticity(Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::A).white());
     EXPECT_NEAR(a.x, 0.44757, 5e-5);
     EXPECT_NEAR(a.y, 0.40745, 5e-5);
 }
 
 TEST(Colorimetry, EqualEnergyWhiteIsTheRatioOfTheTableSums) {
     // data/cie/SOURCES.md: Σx̄, Σȳ, Σz̄ over 360–830 nm at 1 nm = 106.8655, 106.8569, 106.8923.
-    const XYZ w = Colorimetry::load(METALFIT_TEST_DATA, Observer::cie1931_2deg, Illuminant::E).white();
+    const XYZ w = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::E).white();
     EXPECT_NEAR(w.X, 106.8655 / 106.8569, 2e-6);
     EXPECT_NEAR(w.Z, 106.8923 / 106.8569, 2e-6);
 }
 
 TEST(Colorimetry, IntegrationIsLinearInReflectance) {
-    const Colorimetry c = Colorimetry::load(METALFIT_TEST_DATA, Observer::cie1931_2deg, Illuminant::D65);
+    const Colorimetry c = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::D65);
     const std::vector<double> grey(c.wavelengths_nm().size(), 0.25);
     const XYZ g = c.integrate(grey);
     EXPECT_NEAR(g.X, 0.25 * c.white().X, 1e-14);

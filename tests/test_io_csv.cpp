@@ -1,6 +1,8 @@
 // Importer for user n,k tables in CSV, and extension dispatch.
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <unistd.h>
 
 #include <cmath>
@@ -15,64 +17,9 @@
 namespace metalfit {
 namespace {
 
+using namespace metalfit::test;
+
 namespace fs = std::filesystem;
-
-const fs::path kFixtures{METALFIT_TEST_FIXTURES};
-const fs::path kData{METALFIT_TEST_DATA};
-
-::testing::AssertionResult Contains(const std::string& haystack, const std::string& needle) {
-    if (haystack.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "'" << haystack << "' does not contain '" << needle << "'";
-}
-
-::testing::AssertionResult StartsWith(const std::string& s, const std::string& prefix) {
-    if (s.rfind(prefix, 0) == 0) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "'" << s << "' does not start with '" << prefix << "'";
-}
-
-class TempDir {
-public:
-    TempDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = fs::temp_directory_path() /
-                ("metalfit-test-" + std::string(info->test_suite_name()) + "-" + info->name() + "-" +
-                 std::to_string(::getpid()));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return path_; }
-    fs::path write(const std::string& name, const std::string& contents) const {
-        const fs::path p = path_ / name;
-        std::ofstream(p, std::ios::binary) << contents;
-        return p;
-    }
-
-private:
-    fs::path path_;
-};
-
-const Spectrum& tabulated(const SpectralCurve& c) {
-    const Spectrum* s = c.tabulated();
-    if (s == nullptr) throw std::runtime_error("curve is " + c.kind() + ", not tabulated");
-    return *s;
-}
-
-std::size_t index_of(const Spectrum& s, double nm) {
-    for (std::size_t i = 0; i < s.size(); ++i)
-        if (std::abs(s.wavelengths()[i] - nm) < 1e-9) return i;
-    return s.size();
-}
-
-std::string read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 TEST(IoCsv, NanometreAndMicrometreFilesGiveTheSameSpectrumAsJohnson) {
     const Material nm = load_nk_csv(kFixtures / "valid-nk.csv");
@@ -191,20 +138,20 @@ TEST(IoCsv, LoadNkFileDispatchesOnExtension) {
     EXPECT_EQ(tabulated(yml.index.n).size(), 23u);
 
     TempDir dir;
-    const std::string contents = read(kFixtures / "valid-nk.csv");
+    const std::string contents = read_file(kFixtures / "valid-nk.csv");
     ASSERT_FALSE(contents.empty());
     // Upper-case extensions are the same extension.
     const Material upper = load_nk_file(dir.write("UPPER.CSV", contents));
     EXPECT_EQ(upper.provenance.format, "CSV");
     EXPECT_EQ(tabulated(upper.index.n).size(), 23u);
     // A .yaml extension goes to the YAML reader.
-    const Material yaml = load_nk_file(dir.write("copy.yaml", read(kFixtures / "valid-unsorted-duplicates.yml")));
+    const Material yaml = load_nk_file(dir.write("copy.yaml", read_file(kFixtures / "valid-unsorted-duplicates.yml")));
     EXPECT_EQ(yaml.provenance.format, "refractiveindex.info YAML");
 }
 
 TEST(IoCsv, LoadNkFileRejectsUnknownExtension) {
     TempDir dir;
-    const fs::path txt = dir.write("table.txt", read(kFixtures / "valid-nk.csv"));
+    const fs::path txt = dir.write("table.txt", read_file(kFixtures / "valid-nk.csv"));
     try {
         (void)load_nk_file(txt);
         FAIL() << "a .txt file must be refused";

@@ -1,6 +1,8 @@
 // Importer for refractiveindex.info YAML: every fixture in tests/fixtures and every catalog file.
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <unistd.h>
 
 #include <cmath>
@@ -18,60 +20,9 @@
 namespace metalfit {
 namespace {
 
+using namespace metalfit::test;
+
 namespace fs = std::filesystem;
-
-const fs::path kFixtures{METALFIT_TEST_FIXTURES};
-const fs::path kData{METALFIT_TEST_DATA};
-
-::testing::AssertionResult Contains(const std::string& haystack, const std::string& needle) {
-    if (haystack.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "'" << haystack << "' does not contain '" << needle << "'";
-}
-
-::testing::AssertionResult StartsWith(const std::string& s, const std::string& prefix) {
-    if (s.rfind(prefix, 0) == 0) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "'" << s << "' does not start with '" << prefix << "'";
-}
-
-class TempDir {
-public:
-    TempDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path_ = fs::temp_directory_path() /
-                ("metalfit-test-" + std::string(info->test_suite_name()) + "-" + info->name() + "-" +
-                 std::to_string(::getpid()));
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return path_; }
-    fs::path write(const std::string& name, const std::string& contents) const {
-        const fs::path p = path_ / name;
-        std::ofstream(p, std::ios::binary) << contents;
-        return p;
-    }
-
-private:
-    fs::path path_;
-};
-
-const Spectrum& tabulated(const SpectralCurve& c) {
-    const Spectrum* s = c.tabulated();
-    if (s == nullptr) throw std::runtime_error("curve is " + c.kind() + ", not tabulated");
-    return *s;
-}
-
-// Index of the sample at `nm` (to 1e-9 nm) or size() if none.
-std::size_t index_of(const Spectrum& s, double nm) {
-    for (std::size_t i = 0; i < s.size(); ++i)
-        if (std::abs(s.wavelengths()[i] - nm) < 1e-9) return i;
-    return s.size();
-}
 
 bool is_lower_hex(const std::string& s) {
     for (char c : s)

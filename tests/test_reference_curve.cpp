@@ -1,6 +1,8 @@
 // Reference curves R_c(μ): white balance, known metal colours, and an independent evaluator.
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <Eigen/Dense>
 
 #include <filesystem>
@@ -15,7 +17,8 @@
 namespace metalfit {
 namespace {
 
-const std::filesystem::path kData = METALFIT_TEST_DATA;
+using namespace metalfit::test;
+
 const OcioConfigChoice kShipped{kData / "ocio" / "config.ocio", "test"};
 
 class ReferenceCurveTest : public ::testing::Test {
@@ -143,7 +146,7 @@ TEST_F(ReferenceCurveTest, SpectrallyFlatMaterialsAreGreyWithTheirOwnReflectance
 }
 
 TEST_F(ReferenceCurveTest, DataNotCoveringTheVisibleRangeIsAnErrorNamingTheFile) {
-    const auto file = std::filesystem::path(METALFIT_TEST_FIXTURES) / "bad-short-range.yml";
+    const auto file = kFixtures / "bad-short-range.yml";
     const Material m = load_nk_file(file);
     try {
         curve(m);

@@ -1,6 +1,8 @@
 // Spectrum: construction (sorting, duplicates), linear and PCHIP interpolation, range handling.
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -12,10 +14,7 @@
 namespace metalfit {
 namespace {
 
-::testing::AssertionResult Contains(const std::string& haystack, const std::string& needle) {
-    if (haystack.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << "'" << haystack << "' does not contain '" << needle << "'";
-}
+using namespace metalfit::test;
 
 Spectrum make(const std::vector<double>& x, const std::vector<double>& y) {
     std::vector<SpectrumSample> s;

@@ -1,0 +1,80 @@
+// Helpers shared by the test files: fixture paths, message matchers, temporary folders.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "libfit/complex_index.hpp"
+
+namespace metalfit::test {
+
+namespace fs = std::filesystem;
+
+inline const fs::path kFixtures{METALFIT_TEST_FIXTURES};
+inline const fs::path kData{METALFIT_TEST_DATA};
+
+inline ::testing::AssertionResult Contains(const std::string& haystack, const std::string& needle) {
+    if (haystack.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "'" << haystack << "' does not contain '" << needle << "'";
+}
+
+inline ::testing::AssertionResult StartsWith(const std::string& s, const std::string& prefix) {
+    if (s.rfind(prefix, 0) == 0) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "'" << s << "' does not start with '" << prefix << "'";
+}
+
+inline std::string read_file(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A fresh folder per test (named after it and the process), removed with everything in it.
+class TempDir {
+public:
+    TempDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        path_ = fs::temp_directory_path() / ("metalfit-test-" + std::string(info->test_suite_name()) + "-" +
+                                             info->name() + "-" + std::to_string(::getpid()));
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ec);  // a test may make it read-only
+        fs::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+
+    const fs::path& path() const { return path_; }
+    fs::path write(const std::string& name, const std::string& contents) const {
+        const fs::path p = path_ / name;
+        std::ofstream(p, std::ios::binary) << contents;
+        return p;
+    }
+
+private:
+    fs::path path_;
+};
+
+// The tabulated spectrum behind a curve (throws when it is a formula or a constant).
+inline const Spectrum& tabulated(const SpectralCurve& c) {
+    const Spectrum* s = c.tabulated();
+    if (s == nullptr) throw std::runtime_error("curve is " + c.kind() + ", not tabulated");
+    return *s;
+}
+
+// Index of the sample at `nm` (to 1e-9 nm), or size() if there is none.
+inline std::size_t index_of(const Spectrum& s, double nm) {
+    for (std::size_t i = 0; i < s.size(); ++i)
+        if (std::abs(s.wavelengths()[i] - nm) < 1e-9) return i;
+    return s.size();
+}
+
+}  // namespace metalfit::test
