@@ -191,18 +191,18 @@ private:
             if (columns == 2) second.push_back({nm, v[2]});
         }
         if (first.empty()) throw InputError({file_, line_of(data), field}, "no data rows");
+        Spectrum values(std::move(first));
         std::optional<SpectralCurve> k;
-        if (columns == 2) k.emplace(make_spectrum(std::move(second), field, "k"));
-        return {make_spectrum(std::move(first), field, is_k ? "k" : "n"), std::move(k)};
-    }
-
-    Spectrum make_spectrum(std::vector<SpectrumSample> samples, const std::string& field,
-                           const char* what) {
-        Spectrum s(std::move(samples));
-        if (s.conflicting_duplicates() > 0)
-            warnings_.push_back(file_.string() + ": " + field + ": " + std::to_string(s.conflicting_duplicates()) +
-                                " repeated wavelength(s) with different " + what + " values: their mean is used");
-        return s;
+        std::size_t conflicts = values.conflicting_duplicates();
+        if (columns == 2) {
+            Spectrum k_values(std::move(second));
+            conflicts = std::max(conflicts, k_values.conflicting_duplicates());
+            k.emplace(std::move(k_values));
+        }
+        if (conflicts > 0)
+            warnings_.push_back(file_.string() + ": " + field + ": " + std::to_string(conflicts) +
+                                " repeated wavelength(s) with different values: their mean is used");
+        return {std::move(values), std::move(k)};
     }
 
     SellmeierFormula formula(const YAML::Node& block, const std::string& where, bool squared) const {

@@ -39,6 +39,23 @@ std::string fixed(double v, int digits = 5) {
     return buffer;
 }
 
+// REFERENCES as one line of plain text: refractiveindex.info writes HTML over several lines.
+std::string one_line(const std::string& text) {
+    std::string out;
+    bool in_tag = false, space = false;
+    for (char c : text) {
+        if (c == '<') in_tag = true;
+        else if (c == '>') in_tag = false;
+        else if (!in_tag && (c == '\n' || c == ' ' || c == '\t')) space = !out.empty();
+        else if (!in_tag) {
+            if (space) out += ' ';
+            out += c;
+            space = false;
+        }
+    }
+    return out;
+}
+
 void run_show(const ShowOptions& o, const GlobalOptions& global) {
     const Catalog catalog = Catalog::load(global.data_dir);
     const Material material = load_material(catalog, o.material, o.source);
@@ -100,10 +117,13 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
     s << material.name << " (" << material.id << "), source " << material.source << "\n"
       << "  file        " << material.provenance.file.string() << "\n"
       << "  sha256      " << material.provenance.sha256 << "\n"
-      << "  reference   " << material.provenance.references << "\n"
+      << "  reference   " << one_line(material.provenance.references) << "\n"
       << "  data        " << material.provenance.data_type << ", " << fixed(range.min_nm, 1) << "–"
-      << fixed(range.max_nm, 1) << " nm, " << material.index.n.tabulated_points_in(kVisibleRange)
-      << " points in 360–830 nm, " << o.interpolation << " interpolation\n"
+      << fixed(range.max_nm, 1) << " nm, "
+      << (material.index.n.tabulated() ? std::to_string(material.index.n.tabulated_points_in(kVisibleRange)) +
+                                             " points in 360–830 nm, " + o.interpolation + " interpolation"
+                                       : std::string("analytic n"))
+      << "\n"
       << "  colour      " << to_string(colorimetry.observer()) << ", " << to_string(colorimetry.illuminant()) << ", "
       << curve.converter().space() << " (" << config.path.string() << ", " << config.origin << ")\n"
       << "  white       raw perfect reflector (" << fixed(white.r, 6) << ", " << fixed(white.g, 6) << ", "
