@@ -18,22 +18,27 @@ using detail::parse_number;
 constexpr const char* kSupportedTypes =
     "tabulated nk, tabulated n, tabulated k, formula 1, formula 2";
 
-std::vector<std::string> read_lines(const std::filesystem::path& file) {
+std::string read_text(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw InputError({file}, "cannot open file");
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
     std::vector<std::string> lines;
+    std::istringstream in(text);
     for (std::string line; std::getline(in, line);) lines.push_back(line);
     return lines;
 }
 
 class Reader {
 public:
-    explicit Reader(std::filesystem::path file) : file_(std::move(file)), lines_(read_lines(file_)) {}
+    explicit Reader(std::filesystem::path file) : file_(std::move(file)), text_(read_text(file_)), lines_(split_lines(text_)) {}
 
     Material read() {
         YAML::Node root;
         try {
-            root = YAML::LoadFile(file_.string());
+            root = YAML::Load(text_);
         } catch (const YAML::ParserException& e) {
             throw InputError({file_, e.mark.line + 1}, "invalid YAML: " + e.msg);
         } catch (const YAML::Exception& e) {
@@ -220,7 +225,8 @@ private:
     }
 
     std::filesystem::path file_;
-    std::vector<std::string> lines_;
+    std::string text_;
+    std::vector<std::string> lines_;  // to tell block scalars from plain ones
     std::vector<std::string> warnings_;
 };
 
