@@ -23,12 +23,7 @@ std::map<int, std::vector<double>> read_cie_table(const std::filesystem::path& f
         if (line.empty() || line_number == 1) continue;  // header
         const auto fields = detail::split_commas(line);
         if (fields.size() != columns + 1) throw InputError({file, line_number}, "expected " + std::to_string(columns + 1) + " fields");
-        std::vector<double> v;
-        for (auto f : fields) {
-            auto x = detail::parse_number(f);
-            if (!x) throw InputError({file, line_number}, "non-numeric value '" + std::string(f) + "'");
-            v.push_back(*x);
-        }
+        const std::vector<double> v = detail::parse_row(fields, {file, line_number});
         rows[static_cast<int>(std::lround(v[0]))] = std::vector<double>(v.begin() + 1, v.end());
     }
     return rows;

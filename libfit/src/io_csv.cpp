@@ -34,15 +34,8 @@ Material load_nk_csv(const std::filesystem::path& file) {
         }
         if (fields.size() != 3)
             throw InputError(here, "expected 3 fields (wavelength, n, k), found " + std::to_string(fields.size()));
-        double v[3];
-        for (std::size_t c = 0; c < 3; ++c) {
-            auto x = detail::parse_number(fields[c]);
-            if (!x) throw InputError(here, "non-numeric value '" + std::string(fields[c]) + "'");
-            v[c] = *x;
-        }
-        if (v[0] <= 0.0) throw InputError(here, "wavelength must be positive");
-        if (v[1] < 0.0) throw InputError(here, "negative refractive index n = " + std::string(fields[1]));
-        if (v[2] < 0.0) throw InputError(here, "negative extinction coefficient k = " + std::string(fields[2]));
+        const std::vector<double> v = detail::parse_row(fields, here);
+        detail::check_optical_row(v, fields, "nk", here);
         n.push_back({v[0] * to_nm, v[1]});
         k.push_back({v[0] * to_nm, v[2]});
     }

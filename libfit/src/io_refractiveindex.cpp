@@ -13,7 +13,6 @@
 namespace metalfit {
 namespace {
 
-using detail::parse_number;
 
 constexpr const char* kSupportedTypes =
     "tabulated nk, tabulated n, tabulated k, formula 1, formula 2";
@@ -134,19 +133,11 @@ private:
 
     // Numbers of a field that is a space-separated string ("0.21 6.7") or a YAML list.
     std::vector<double> numbers(const YAML::Node& node, const std::string& field) const {
-        std::vector<double> out;
-        auto add = [&](std::string_view token) {
-            auto v = parse_number(token);
-            if (!v) throw InputError({file_, line_of(node), field}, "non-numeric value '" + std::string(token) + "'");
-            out.push_back(*v);
-        };
-        if (node.IsSequence()) {
-            for (const auto& item : node) add(scalar(item, field));
-        } else {
-            const std::string s = scalar(node, field);
-            for (auto token : detail::split_whitespace(s)) add(token);
-        }
-        return out;
+        const InputLocation where{file_, line_of(node), field};
+        if (!node.IsSequence()) return detail::parse_row(detail::split_whitespace(scalar(node, field)), where);
+        std::vector<std::string> items;
+        for (const auto& item : node) items.push_back(scalar(item, field));
+        return detail::parse_row(std::vector<std::string_view>(items.begin(), items.end()), where);
     }
 
     // The first file line of a scalar's contents: block scalars (| or >) start below their key.
@@ -178,19 +169,8 @@ private:
             if (static_cast<int>(fields.size()) != columns + 1)
                 throw InputError(here, "expected " + std::to_string(columns + 1) + " numbers per row, found " +
                                            std::to_string(fields.size()));
-            double v[3] = {};
-            for (std::size_t c = 0; c < fields.size(); ++c) {
-                auto x = parse_number(fields[c]);
-                if (!x) throw InputError(here, "non-numeric value '" + std::string(fields[c]) + "'");
-                v[c] = *x;
-            }
-            if (v[0] <= 0.0) throw InputError(here, "wavelength must be positive");
-            if (v[1] < 0.0)
-                throw InputError(here, std::string(is_k ? "negative extinction coefficient k = "
-                                                              : "negative refractive index n = ") +
-                                           std::string(fields[1]));
-            if (columns == 2 && v[2] < 0.0)
-                throw InputError(here, "negative extinction coefficient k = " + std::string(fields[2]));
+            const std::vector<double> v = detail::parse_row(fields, here);
+            detail::check_optical_row(v, fields, columns == 2 ? "nk" : is_k ? "k" : "n", here);
             const double nm = v[0] * 1000.0;  // µm → nm
             first.push_back({nm, v[1]});
             if (columns == 2) second.push_back({nm, v[2]});

@@ -5,7 +5,10 @@
 #include <cmath>
 #include <optional>
 #include <string_view>
+#include <string>
 #include <vector>
+
+#include "libfit/errors.hpp"
 
 namespace metalfit::detail {
 
@@ -50,6 +53,29 @@ inline std::string_view trim(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
     while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
     return s;
+}
+
+// Every field of a table row as a number; the first that is not one is an InputError at `where`.
+inline std::vector<double> parse_row(const std::vector<std::string_view>& fields, const InputLocation& where) {
+    std::vector<double> values;
+    for (auto field : fields) {
+        const auto x = parse_number(field);
+        if (!x) throw InputError(where, "non-numeric value '" + std::string(field) + "'");
+        values.push_back(*x);
+    }
+    return values;
+}
+
+// A row "wavelength value..." of an optical-constants table: the wavelength must be positive and
+// every value non-negative. `names` says what each value is ("nk", "n" or "k").
+inline void check_optical_row(const std::vector<double>& row, const std::vector<std::string_view>& fields,
+                              std::string_view names, const InputLocation& where) {
+    if (row[0] <= 0.0) throw InputError(where, "wavelength must be positive");
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (row[i + 1] < 0.0)
+            throw InputError(where, std::string(names[i] == 'k' ? "negative extinction coefficient k = "
+                                                                : "negative refractive index n = ") +
+                                        std::string(fields[i + 1]));
 }
 
 }  // namespace metalfit::detail
