@@ -14,6 +14,7 @@ namespace metalfit {
 struct ColorSpaceConverter::Impl {
     OCIO::ConstConfigRcPtr config;
     OCIO::ConstCPUProcessorRcPtr cpu;
+    OCIO::ConstCPUProcessorRcPtr inverse;
 };
 
 namespace {
@@ -56,6 +57,7 @@ ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, 
     }
     try {
         impl->cpu = config->getProcessor(xyz_space.c_str(), target_space->getName())->getDefaultCPUProcessor();
+        impl->inverse = config->getProcessor(target_space->getName(), xyz_space.c_str())->getDefaultCPUProcessor();
     } catch (const OCIO::Exception& e) {
         throw ColorConfigError(describe(choice) + ": no transform from '" + xyz_space + "' to '" +
                                target_space->getName() + "': " + e.what());
@@ -80,6 +82,12 @@ ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, 
 RGB ColorSpaceConverter::operator()(const XYZ& xyz) const {
     float pixel[3] = {static_cast<float>(xyz.X), static_cast<float>(xyz.Y), static_cast<float>(xyz.Z)};
     impl_->cpu->applyRGB(pixel);
+    return {pixel[0], pixel[1], pixel[2]};
+}
+
+XYZ ColorSpaceConverter::to_xyz(const RGB& rgb) const {
+    float pixel[3] = {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b)};
+    impl_->inverse->applyRGB(pixel);
     return {pixel[0], pixel[1], pixel[2]};
 }
 

@@ -35,6 +35,8 @@ public:
     static ColorSpaceConverter create(const OcioConfigChoice& config, const std::string& target = {});
 
     RGB operator()(const XYZ& xyz) const;
+    // The inverse, RGB of the target space → XYZ (for colour differences of model colours).
+    XYZ to_xyz(const RGB& rgb) const;
 
     const std::string& space() const { return space_; }  // resolved colour space name
     const OcioConfigChoice& config() const { return config_; }

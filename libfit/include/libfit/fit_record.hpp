@@ -1,0 +1,33 @@
+// The fit record: the versioned JSON of `metalfit fit --json` (docs/fit-record.md), which exports read.
+// Deterministic: the same inputs give byte-identical text (no times, no thread-dependent order).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+#include "libfit/color_space.hpp"
+#include "libfit/colorimetry.hpp"
+#include "libfit/fit.hpp"
+
+namespace metalfit {
+
+inline constexpr const char* kFitRecordSchema = "metalfit.fit/1";
+
+// How the curves were made, for the record's provenance.
+struct FitRecordContext {
+    OcioConfigChoice config;
+    std::string space;  // resolved colour space name
+    Observer observer = Observer::cie1931_2deg;
+    Illuminant illuminant = Illuminant::D65;
+    SpectralOptions spectral;
+    ErrorSettings error;
+};
+
+nlohmann::ordered_json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContext& context);
+
+// The JSON of one model's results (the value under materials.<id>.models.<model id>).
+nlohmann::ordered_json model_record(const ModelResult& result);
+
+}  // namespace metalfit

@@ -1,0 +1,41 @@
+// Arithmetic shared by the model definitions, written once for double, float and Ceres Jets.
+#pragma once
+
+#include <cmath>
+
+namespace metalfit::model_math {
+
+// (1 − μ)^5, the Schlick weight, by multiplication (as the GLSL does).
+template <class T>
+T schlick_weight(const T& mu) {
+    const T m = T(1) - mu;
+    const T m2 = m * m;
+    return m2 * m2 * m;
+}
+
+// √x that is 0 with a zero derivative at and below 0, so that Jets never see 1/(2√0).
+template <class T>
+T sqrt_or_zero(const T& x) {
+    using std::sqrt;
+    if (!(x > T(0))) return T(0);
+    return sqrt(x);
+}
+
+// Exact unpolarised Fresnel reflectance of η = n + i k from vacuum, in the thesis's real form (eq. 1.5–1.6)
+// rearranged so that nothing is divided by μ and nothing cancels for large k (see conductor_rgb.glsl, the same
+// function): t = n² − k² − s², r = sqrt(t² + 4n²k²) = |η² − s²|, a = Re sqrt(η² − s²), s² = 1 − μ².
+// Takes k² (r uses 4n²k²) and nk (only where t < 0, a = nk / b), so that Gulbrandsen's k² = 0 keeps its derivative.
+template <class T>
+T conductor_fresnel(const T& n, const T& k2, const T& nk, const T& mu) {
+    const T s2 = T(1) - mu * mu;
+    const T t = n * n - k2 - s2;
+    const T r = sqrt_or_zero(t * t + T(4) * n * n * k2);
+    if (!(mu > T(0))) return r > T(0) ? T(1) : T(0);  // grazing limit; η = 1 has no interface
+    const T a = t >= T(0) ? sqrt_or_zero(T(0.5) * (r + t)) : nk / sqrt_or_zero(T(0.5) * (r - t));
+    const T mu2 = mu * mu;
+    const T Fs = (r - T(2) * a * mu + mu2) / (r + T(2) * a * mu + mu2);
+    const T Fp = Fs * (mu2 * r - T(2) * a * s2 * mu + s2 * s2) / (mu2 * r + T(2) * a * s2 * mu + s2 * s2);
+    return T(0.5) * (Fs + Fp);
+}
+
+}  // namespace metalfit::model_math
