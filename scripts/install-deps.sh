@@ -13,6 +13,7 @@ PACKAGES=(
   libyaml-cpp-dev                      # refractiveindex.info YAML
   libcli11-dev                         # command line
   libssl-dev                           # SHA-256 of data files (OpenSSL libcrypto)
+  glslang-tools                        # glslangValidator: compiles the models' GLSL in the tests
 )
 
 missing=()

@@ -3,7 +3,10 @@
 # Installs what is missing, builds, then runs metalfit on the built-in catalog:
 #   list.txt / list.json            every material, its source and wavelength coverage
 #   show-<id>.txt / show-<id>.json  reference reflectance (F0, F82, R at μ = 0.5, 0.25, 0.1) of a few metals
-# Later stages (fit, export, report, preview) are added here as they land.
+#   fit.txt / fit.json              closed forms and Ceres fits of every model for every catalog material
+#                                   (docs/fitting.md, docs/fit-record.md); fit-timings.txt: where the time went;
+#                                   fit-summary.md: worst-channel rel_rms of every model, fit / closed form
+# Later stages (export, report, preview) are added here as they land.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-out}"
@@ -16,4 +19,8 @@ for material in Au Ag Cu Al Cr Ti TiN Cu-Zn; do
   "$metalfit" show "$material" -o "$out/show-$material.txt"
   "$metalfit" show "$material" --json -o "$out/show-$material.json"
 done
+"$metalfit" fit --all --model all --json -o "$out/fit.json" --timings 2> "$out/fit-timings.txt" \
+  || { cat "$out/fit-timings.txt" >&2; exit 1; }
+"$metalfit" fit --all --model all -o "$out/fit.txt"
+python3 scripts/fit-summary.py "$out/fit.json" > "$out/fit-summary.md"
 echo "main job: wrote $(ls "$out" | wc -l) files into $out/"

@@ -166,4 +166,133 @@ TEST_F(Cli, OutputFilesAreWrittenWholeOrNotAtAll) {
         << "a temporary file was left behind";
 }
 
+// --- metalfit fit ---------------------------------------------------------------------------------------------
+
+TEST_F(Cli, FitJsonRecordHasTheDocumentedShape) {
+    const Result r = run("fit gold --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["schema"], "metalfit.fit/1");
+    const auto& p = j["provenance"];
+    EXPECT_EQ(p["nodes"], 128);
+    EXPECT_EQ(p["metric"], "rel");
+    EXPECT_EQ(p["weight"], "uniform");
+    EXPECT_EQ(p["cmf"], "CIE 1931 2°");
+    EXPECT_EQ(p["illuminant"], "D65");
+    EXPECT_EQ(p["color_space"], "Linear Rec.709 (sRGB)");
+    EXPECT_EQ(p["ocio_config"]["sha256"].get<std::string>().size(), 64u);
+    EXPECT_FALSE(p["metalfit_version"].get<std::string>().empty());
+
+    const auto& gold = j["materials"]["Au"];
+    // The data file's digest is the one show reports.
+    EXPECT_EQ(gold["data"]["sha256"], nlohmann::json::parse(run("show gold --json").out)["provenance"]["sha256"]);
+    EXPECT_EQ(gold["out_of_gamut_F0"], nlohmann::json::array({"red"}));
+    const std::vector<std::string> models = {"schlick", "lazanyi", "lazanyi-comp", "f82-tint", "conductor-rgb", "gulbrandsen"};
+    ASSERT_EQ(gold["models"].size(), models.size());
+    std::vector<std::string> keys = {"rel_rms", "abs_rms", "max_rel", "max_abs", "de2000_mean", "de2000_max", "albedo_err"};
+    std::sort(keys.begin(), keys.end());  // nlohmann::json iterates keys sorted
+    for (const auto& id : models) {
+        SCOPED_TRACE(id);
+        const auto& m = gold["models"][id];
+        const auto& fit = m["fit"];
+        std::vector<std::string> metric_keys;
+        for (const auto& [key, value] : fit["metrics"].items()) metric_keys.push_back(key);
+        EXPECT_EQ(metric_keys, keys);
+        for (const auto& [name, values] : fit["params"].items()) EXPECT_EQ(values.size(), 3u) << name;
+        EXPECT_EQ(fit["params"].size(), m["parameters"].size());
+        EXPECT_EQ(fit["solver"]["termination"].size(), 3u);
+        EXPECT_EQ(fit["metrics"]["rel_rms"].size(), 3u);
+        EXPECT_TRUE(fit["metrics"]["de2000_max"].is_number());
+        // "closed" is the best closed form, or says why none is defined.
+        const auto& closed = m["closed"];
+        ASSERT_TRUE(closed.contains("params") != closed.contains("undefined")) << closed.dump();
+        if (closed.contains("params")) {
+            for (int c = 0; c < 3; ++c)
+                EXPECT_LE(fit["metrics"]["rel_rms"][c].get<double>(), closed["metrics"]["rel_rms"][c].get<double>() + 1e-12);
+        }
+    }
+    // F0 above 1 is kept by the models whose F0 is a free parameter.
+    EXPECT_GT(gold["models"]["schlick"]["fit"]["params"]["F0"][0].get<double>(), 1.0);
+    EXPECT_GT(gold["models"]["f82-tint"]["fit"]["params"]["F0"][0].get<double>(), 1.0);
+}
+
+TEST_F(Cli, FitRunsAreByteIdenticalWhateverTheThreads) {
+    const Result a = run("fit --all --model schlick,f82-tint --json -j 1");
+    const Result b = run("fit --all --model schlick,f82-tint --json -j 2");
+    ASSERT_EQ(a.exit_code, 0) << a.err;
+    EXPECT_EQ(a.out, b.out);
+    EXPECT_EQ(nlohmann::json::parse(a.out)["materials"].size(), 29u);
+    EXPECT_EQ(run("fit Cu --json").out, run("fit Cu --json").out);
+}
+
+TEST_F(Cli, FitOptionsReachTheRecord) {
+    const Result r = run("fit Al --model f82-tint,schlick --metric abs --weight cosine --nodes 64 --space ACEScg --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["provenance"]["metric"], "abs");
+    EXPECT_EQ(j["provenance"]["weight"], "cosine");
+    EXPECT_EQ(j["provenance"]["nodes"], 64);
+    EXPECT_EQ(j["provenance"]["color_space"], "ACEScg");
+    const auto& models = j["materials"]["Al"]["models"];
+    ASSERT_EQ(models.size(), 2u);
+    EXPECT_LT(r.out.find("\"f82-tint\""), r.out.find("\"schlick\""));  // the order asked for
+    const auto base = nlohmann::json::parse(run("fit Al --model schlick --json").out);
+    EXPECT_NE(models["schlick"]["fit"]["params"], base["materials"]["Al"]["models"]["schlick"]["fit"]["params"]);
+}
+
+TEST_F(Cli, FitHumanOutputIsOneTablePerMaterial) {
+    const Result r = run("fit gold --model f82-tint,lazanyi-comp");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("gold (Au"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("out of gamut, kept"), std::string::npos);
+    EXPECT_NE(r.out.find("closed r1-r82"), std::string::npos);
+    EXPECT_NE(r.out.find("lazanyi-comp"), std::string::npos);
+    EXPECT_EQ(r.out.find("schlick "), std::string::npos) << "only the models asked for";
+}
+
+TEST_F(Cli, FitErrorsAreOneLineWithTheirExitCode) {
+    const Result unknown_model = run("fit gold --model schlick,nope");
+    EXPECT_EQ(unknown_model.exit_code, 2);
+    expect_one_line_error(unknown_model, "f82-tint");  // lists the known models
+    EXPECT_EQ(run("fit").exit_code, 2);
+    EXPECT_EQ(run("fit gold --all").exit_code, 2);
+    EXPECT_EQ(run("fit gold --nodes 1").exit_code, 2);
+    EXPECT_EQ(run("fit gold --metric rms").exit_code, 2);
+    const Result bad_file = run("fit '" + kFixtures + "/bad-row.csv'");
+    EXPECT_EQ(bad_file.exit_code, 3);
+    expect_one_line_error(bad_file, "bad-row.csv");
+}
+
+TEST_F(Cli, FitOfAMaterialThatReflectsNothingNeedsTheAbsoluteMetric) {
+    // n = 1, k = 0: no interface, R = 0 for every angle, so the relative error is undefined.
+    const fs::path vacuum = dir_ / "vacuum.csv";
+    {
+        std::ofstream f(vacuum);
+        f << "wavelength_nm,n,k\n";
+        for (int nm = 300; nm <= 900; nm += 50) f << nm << ",1,0\n";
+    }
+    const Result rel = run("fit '" + vacuum.string() + "' --model schlick");
+    EXPECT_EQ(rel.exit_code, 3);
+    expect_one_line_error(rel, "--metric abs");
+    EXPECT_NE(rel.err.find("vacuum.csv"), std::string::npos);
+
+    const Result abs = run("fit '" + vacuum.string() + "' --model schlick,conductor-rgb --metric abs --json");
+    ASSERT_EQ(abs.exit_code, 0) << abs.err;
+    const auto record = nlohmann::json::parse(abs.out);
+    const auto& models = record["materials"]["vacuum"]["models"];
+    EXPECT_TRUE(models["schlick"]["fit"]["metrics"]["rel_rms"][0].is_null());  // undefined, written as null
+    EXPECT_LT(models["conductor-rgb"]["fit"]["metrics"]["abs_rms"][0].get<double>(), 1e-6);
+}
+
+TEST_F(Cli, FitOutputIsWrittenWholeOrNotAtAll) {
+    const fs::path target = dir_ / "fit.json";
+    ASSERT_EQ(run("fit Ag --model schlick --json -o '" + target.string() + "'").exit_code, 0);
+    const std::string before = read_file(target);
+    EXPECT_EQ(before, run("fit Ag --model schlick --json").out);
+    EXPECT_EQ(run("fit Ag --model nope --json -o '" + target.string() + "'").exit_code, 2);
+    EXPECT_EQ(run("fit Ag --model schlick --json -o '" + (dir_ / "no" / "fit.json").string() + "'").exit_code, 3);
+    EXPECT_EQ(read_file(target), before);
+    EXPECT_FALSE(fs::exists(dir_ / "no"));
+}
+
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "colour_options.hpp"
 #include "commands.hpp"
 #include "libfit/catalog.hpp"
 #include "libfit/reference_curve.hpp"
@@ -14,11 +15,7 @@ namespace {
 struct ShowOptions {
     std::string material;
     std::string source;
-    std::string space;  // empty: role scene_linear
-    std::string cmf = "1931";
-    std::string illuminant = "D65";
-    std::string interpolation = "linear";
-    bool extrapolate = false;
+    ColourOptions colour;
     bool json = false;
     std::filesystem::path output;
 };
@@ -61,13 +58,10 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
     const Material material = load_material(catalog, o.material, o.source);
     for (const auto& w : material.warnings) warn(w);
 
-    const auto config = choose_ocio_config(global.ocio_config, global.data_dir);
-    if (global.ocio_config && config.origin == "$OCIO")
-        warn("--ocio-config is ignored because $OCIO is set (" + config.path.string() + ")");
-    const SpectralOptions spectral{o.interpolation == "pchip" ? Interpolation::pchip : Interpolation::linear,
-                                   o.extrapolate ? OutOfRange::clamp : OutOfRange::error};
-    const Colorimetry colorimetry = Colorimetry::load(global.data_dir, parse_observer(o.cmf), parse_illuminant(o.illuminant));
-    const ReferenceCurve curve(material, colorimetry, ColorSpaceConverter::create(config, o.space), spectral);
+    const ColourSetup setup = resolve_colour_options(o.colour, global);
+    const auto& config = setup.config;
+    const auto& colorimetry = setup.colorimetry;
+    const ReferenceCurve curve(material, colorimetry, setup.converter, setup.spectral);
 
     const std::vector<Sample> samples = {{"F0", 1.0, curve(1.0)},
                                          {"F82", kMuF82, curve(kMuF82)},
@@ -103,8 +97,8 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
                            {"points_360_830", material.index.n.tabulated_points_in(kVisibleRange)},
                            {"cmf", to_string(colorimetry.observer())},
                            {"illuminant", to_string(colorimetry.illuminant())},
-                           {"interpolation", o.interpolation},
-                           {"extrapolate", o.extrapolate},
+                           {"interpolation", o.colour.interpolation},
+                           {"extrapolate", o.colour.extrapolate},
                            {"ocio_config", config.path.string()},
                            {"ocio_config_origin", config.origin},
                            {"white_raw_rgb", rgb_json(white)},
@@ -121,7 +115,7 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
       << "  data        " << material.provenance.data_type << ", " << fixed(range.min_nm, 1) << "–"
       << fixed(range.max_nm, 1) << " nm, "
       << (material.index.n.tabulated() ? std::to_string(material.index.n.tabulated_points_in(kVisibleRange)) +
-                                             " points in 360–830 nm, " + o.interpolation + " interpolation"
+                                             " points in 360–830 nm, " + o.colour.interpolation + " interpolation"
                                        : std::string("analytic n"))
       << "\n"
       << "  colour      " << to_string(colorimetry.observer()) << ", " << to_string(colorimetry.illuminant()) << ", "
@@ -146,11 +140,7 @@ std::function<void()> add_show_command(CLI::App& app, const GlobalOptions& globa
     auto o = std::make_shared<ShowOptions>();
     app.add_option("material", o->material, "Catalog material (id, name or alias) or a .yml/.csv file")->required();
     app.add_option("--source", o->source, "Alternate source of a catalog material (default: its primary)");
-    app.add_option("--space", o->space, "Target colour space or role of the OCIO config (default: role scene_linear)");
-    app.add_option("--cmf", o->cmf, "Colour matching functions")->check(CLI::IsMember({"1931", "1964"}));
-    app.add_option("--illuminant", o->illuminant, "Illuminant")->check(CLI::IsMember({"D65", "A", "E"}));
-    app.add_option("--interp", o->interpolation, "Interpolation of n and k")->check(CLI::IsMember({"linear", "pchip"}));
-    app.add_flag("--extrapolate", o->extrapolate, "Hold end values outside the measured range (default: error)");
+    add_colour_options(app, o->colour);
     app.add_flag("--json", o->json, "Print one JSON object");
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
     return [o, &global] { run_show(*o, global); };

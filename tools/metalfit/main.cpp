@@ -36,6 +36,10 @@ int main(int argc, char** argv) {
     auto run_list = cli::add_list_command(list, global);
     auto& show = *app.add_subcommand("show", "Reference reflectance of one material (F0, F82, R at a few angles)");
     auto run_show = cli::add_show_command(show, global);
+    auto& fit = *app.add_subcommand("fit", "Fit cheap Fresnel models (closed forms and Ceres) to one material or --all");
+    auto run_fit = cli::add_fit_command(fit, global);
+    auto& models = *app.add_subcommand("models", "The Fresnel models: parameters, bounds and GLSL");
+    auto run_models = cli::add_models_command(models, global);
 
     try {
         app.parse(argc, argv);
@@ -46,6 +50,8 @@ int main(int argc, char** argv) {
     try {
         if (list.parsed()) run_list();
         if (show.parsed()) run_show();
+        if (fit.parsed()) run_fit();
+        if (models.parsed()) run_models();
         return ok;
     } catch (const UsageError& e) {
         std::cerr << "metalfit: " << e.what() << "\n";

@@ -1,0 +1,36 @@
+// The colour options shared by every subcommand that computes reference curves (show, fit, ...).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+#include "commands.hpp"
+#include "libfit/color_space.hpp"
+#include "libfit/colorimetry.hpp"
+#include "libfit/reference_curve.hpp"
+
+namespace metalfit::cli {
+
+struct ColourOptions {
+    std::string space;  // empty: role scene_linear
+    std::string cmf = "1931";
+    std::string illuminant = "D65";
+    std::string interpolation = "linear";
+    bool extrapolate = false;
+};
+
+void add_colour_options(CLI::App& app, ColourOptions& options);
+
+// What the options resolve to: the OCIO config in use, the colorimetry, the converter and the spectral options.
+struct ColourSetup {
+    OcioConfigChoice config;
+    Colorimetry colorimetry;
+    ColorSpaceConverter converter;
+    SpectralOptions spectral;
+};
+
+// Warns when --ocio-config is overridden by $OCIO.
+ColourSetup resolve_colour_options(const ColourOptions& options, const GlobalOptions& global);
+
+}  // namespace metalfit::cli
