@@ -65,7 +65,9 @@ TEST(Ciede2000, MatchesSharmaWuDalalTestData) {
 }
 
 TEST(Ciede2000, IsSymmetricOnTheTestData) {
-    // None of the published pairs has |h1' − h2'| exactly 180°, where the mean hue jumps.
+    // Swapping the colours negates ΔL', ΔC', Δh' and ΔH' and leaves the means unchanged, so ΔE00 is
+    // symmetric; the paper's discontinuity (|h1' − h2'| = 180°, pairs 9–16 lie near it) is a jump in
+    // value, not an asymmetry.
     for (std::size_t i = 0; i < std::size(kSharma); ++i) {
         const auto& p = kSharma[i];
         EXPECT_NEAR(ciede2000(p.first, p.second), ciede2000(p.second, p.first), 1e-12) << "pair " << i + 1;

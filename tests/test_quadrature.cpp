@@ -30,7 +30,7 @@ double error_at_degree_2n(int n) {
 }
 
 TEST(Quadrature, RejectsInvalidNodeCounts) {
-    for (int n : {0, -1, -1000, 4097, 1 << 20}) EXPECT_THROW(gauss_legendre_unit(n), std::invalid_argument) << n;
+    for (int n : {0, -1, -1000, 4097, 10000}) EXPECT_THROW(gauss_legendre_unit(n), std::invalid_argument) << n;
     EXPECT_NO_THROW(gauss_legendre_unit(1));
     EXPECT_NO_THROW(gauss_legendre_unit(4096));
 }

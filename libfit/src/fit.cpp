@@ -9,10 +9,14 @@ namespace metalfit {
 
 namespace {
 
-std::vector<NamedStart> starts_for_channel(const Model& model, const std::vector<ClosedFormResult>& closed, int c) {
+std::vector<NamedStart> starts_for_channel(const Model& model, const std::vector<ClosedFormResult>& closed, int c,
+                                          const ChannelTarget& target) {
     std::vector<NamedStart> starts;
     for (const ClosedFormResult& form : closed)
         if (form.value) starts.push_back({"closed " + form.id, form.value->params[c]});
+    const auto projected = model.target_starts(target);
+    for (std::size_t i = 0; i < projected.size(); ++i)
+        starts.push_back({"projected " + std::to_string(i + 1), projected[i]});
     const auto neutral = model.neutral_starts();
     for (std::size_t i = 0; i < neutral.size(); ++i) starts.push_back({"neutral " + std::to_string(i + 1), neutral[i]});
     return starts;
@@ -74,8 +78,9 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
     clock.charge(t.metrics);
     FitResult& fit = result.fit;
     for (int c = 0; c < 3; ++c) {
-        const auto starts = starts_for_channel(model, result.closed_forms, c);
-        ChannelFit channel = model.fit(reference.target(c), starts);
+        const ChannelTarget target = reference.target(c);
+        const auto starts = starts_for_channel(model, result.closed_forms, c, target);
+        ChannelFit channel = model.fit(target, starts);
         fit.value.params[c] = channel.params;
         fit.solver[c] = channel.solver;
     }

@@ -65,14 +65,18 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         }
         ceres::Solver::Summary summary;
         ceres::Solve(options, &problem, &summary);
-        if (!std::isfinite(summary.final_cost)) continue;
-        if (summary.final_cost < best.solver.final_cost) {
+        // With an active bound the summary's final cost can differ (1e-4 relative) from the cost of the parameters
+        // returned: evaluate them, so that starts are compared and reported on what is kept.
+        double final_cost = std::numeric_limits<double>::quiet_NaN();
+        problem.Evaluate(ceres::Problem::EvaluateOptions(), &final_cost, nullptr, nullptr, nullptr);
+        if (!std::isfinite(final_cost)) continue;
+        if (final_cost < best.solver.final_cost) {
             best.params = x;
             best.solver.start = starts[s].name;
             best.solver.iterations = static_cast<int>(summary.iterations.size()) - 1;
             best.solver.termination = ceres::TerminationTypeToString(summary.termination_type);
             best.solver.initial_cost = summary.initial_cost;
-            best.solver.final_cost = summary.final_cost;
+            best.solver.final_cost = final_cost;
         }
     }
     best.solver.starts = static_cast<int>(starts.size());

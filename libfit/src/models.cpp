@@ -30,6 +30,10 @@ public:
         return M::closed_forms(input);
     }
     std::vector<ChannelParameters> neutral_starts() const override { return M::neutral_starts(); }
+    std::vector<ChannelParameters> target_starts(const ChannelTarget& target) const override {
+        if constexpr (requires { M::target_starts(target); }) return M::target_starts(target);
+        else return {};
+    }
     ChannelFit fit(const ChannelTarget& target, std::span<const NamedStart> starts) const override {
         return detail::fit_channel<M>(target, starts);
     }

@@ -94,6 +94,9 @@ public:
     virtual std::vector<ClosedForm> closed_forms(const ClosedFormInput& input) const = 0;
     // Starts that do not depend on the data, tried next to the closed forms.
     virtual std::vector<ChannelParameters> neutral_starts() const = 0;
+    // Starts computed from the target itself, where a model has parameters it is linear in (solved exactly for a grid
+    // of the others: variable projection). Empty for most models.
+    virtual std::vector<ChannelParameters> target_starts(const ChannelTarget& target) const = 0;
     // Ceres fit of one channel from each start (clamped into the bounds); the best result wins.
     virtual ChannelFit fit(const ChannelTarget& target, std::span<const NamedStart> starts) const = 0;
 

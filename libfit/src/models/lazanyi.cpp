@@ -23,6 +23,24 @@ ClosedFormChannel nk_from_F0(double F0, double measured_n) {
 
 }  // namespace
 
+ChannelParameters Lazanyi::nk_with_F0(double F0) {
+    if (!(F0 < 1.0 - 1e-12)) return {kParameters[0].lower, kParameters[1].upper};
+    if (!(F0 > 0.0)) return {1.0, 0.0};
+    return {1.0, 2.0 * std::sqrt(F0 / (1.0 - F0))};
+}
+
+std::vector<ChannelParameters> Lazanyi::target_starts(const ChannelTarget& t) {
+    // residual_i = s_i (F0 (1 − w_i) − (R_i − w_i)), w = (1 − μ)^5.
+    double xx = 0.0, xy = 0.0;
+    for (std::size_t i = 0; i < t.mu.size(); ++i) {
+        const double w = model_math::schlick_weight(t.mu[i]);
+        const double x = t.scale[i] * (1.0 - w), y = t.scale[i] * (t.value[i] - w);
+        xx += x * x;
+        xy += x * y;
+    }
+    return {nk_with_F0(xy / xx)};
+}
+
 std::vector<ClosedForm> Lazanyi::closed_forms(const ClosedFormInput& input) {
     ClosedForm sampled = detail::closed_form_from_wavelengths(
         input, detail::kThesisWavelengths, "n, k of the data at 700, 550, 435 nm (the thesis)",

@@ -34,6 +34,12 @@ struct Lazanyi {
     // and k solved (k = 0 and n solved where F0 is below the dielectric value; undefined where R(1) ≥ 1).
     static std::vector<ClosedForm> closed_forms(const ClosedFormInput& input);
     static std::vector<ChannelParameters> neutral_starts() { return {{1.0, 3.0}}; }
+    // The least-squares F0 of the target (F* is linear in F0), as n, k.
+    static std::vector<ChannelParameters> target_starts(const ChannelTarget& target);
+
+    // An n, k with the given F0: n = 1, k = 2 sqrt(F0 / (1 − F0)); F0 ≥ 1 (out of gamut) goes to the corner of the
+    // bounds nearest it (n lowest, k highest), where k no longer moves F0 and a solver started lower would stall.
+    static ChannelParameters nk_with_F0(double F0);
 };
 
 }  // namespace metalfit::models

@@ -33,6 +33,10 @@ struct LazanyiComp {
     // second order), α from the match at μ = 0.15. Undefined where a = 0, the logarithm's argument is ≤ 0 or α leaves
     // its bounds (the construction diverges).
     static std::vector<ClosedForm> closed_forms(const ClosedFormInput& input);
+    // Variable projection: F** is linear in F0 and a, so for each α of a log-spaced grid over the bounds both are
+    // solved exactly (F0 capped at 1); the best few α become starts. Without them Levenberg–Marquardt from the
+    // closed forms or neutral starts stops in local minima (gold blue: 1.41 % instead of 1.24 %).
+    static std::vector<ChannelParameters> target_starts(const ChannelTarget& target);
     static std::vector<ChannelParameters> neutral_starts() {
         return {{1.0, 3.0, 0.0, 6.0}, {1.0, 3.0, 0.3, 2.0}, {1.0, 3.0, -0.3, 2.0}, {1.0, 3.0, 0.3, 12.0}};
     }
