@@ -3,11 +3,14 @@
 
 #include "test_support.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "libfit/atomic_file.hpp"
@@ -64,6 +67,24 @@ TEST(AtomicFile, OverwritingKeepsOnlyTheNewContent) {
     EXPECT_EQ(fs::file_size(target), 5u);
     const auto names = list(dir.path());
     EXPECT_EQ(names, std::vector<std::string>{"report.html"}) << join(names);
+}
+
+TEST(AtomicFile, ANonRegularTargetIsWrittenInPlaceNotReplaced) {
+    // -o /dev/null or a pipe: renaming a file over it would replace the device itself. A FIFO stands in for it.
+    TempDir dir;
+    const fs::path fifo = dir.path() / "pipe";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    std::string received;
+    std::thread reader([&] {
+        std::ifstream in(fifo, std::ios::binary);
+        received.assign(std::istreambuf_iterator<char>(in), {});
+    });
+    write_file_atomically(fifo, "through the pipe");
+    reader.join();
+    EXPECT_EQ(received, "through the pipe");
+    EXPECT_TRUE(fs::is_fifo(fifo));
+    EXPECT_EQ(list(dir.path()), std::vector<std::string>{"pipe"});
+    EXPECT_THROW(write_file_atomically(dir.path(), "x"), metalfit::InputError);  // a directory is refused
 }
 
 TEST(AtomicFile, MissingDirectoryThrowsAndCreatesNothing) {

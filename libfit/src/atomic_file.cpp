@@ -14,6 +14,16 @@ void write_file_atomically(const std::filesystem::path& target, std::string_view
     namespace fs = std::filesystem;
     const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
     std::error_code ec;
+    // A device, FIFO or terminal (-o /dev/null, -o /dev/stdout) is written in place: renaming a regular file over it
+    // would replace the device itself.
+    if (fs::exists(target, ec) && !fs::is_regular_file(target, ec)) {
+        if (fs::is_directory(target, ec)) throw InputError({target}, "cannot write: it is a directory");
+        std::ofstream out(target, std::ios::binary);
+        out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
+        out.flush();
+        if (!out) throw InputError({target}, "cannot write");
+        return;
+    }
     if (!fs::is_directory(dir, ec))
         throw InputError({target}, "cannot write: directory " + dir.string() + " does not exist");
     std::string temporary_name = ".";
