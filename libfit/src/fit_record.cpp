@@ -8,8 +8,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr const char* kChannelNames[] = {"red", "green", "blue"};
-
 Json per_channel(const PerChannel& v) { return Json::array({v[0], v[1], v[2]}); }
 Json rgb_json(const RGB& v) { return Json::array({v.r, v.g, v.b}); }
 

@@ -118,10 +118,9 @@ RgbParameters ClosedForm::params() const {
 }
 
 std::string ClosedForm::undefined_reason() const {
-    static constexpr const char* kNames[] = {"red", "green", "blue"};
     std::string reason;
     for (int c = 0; c < 3; ++c)
-        if (!channel[c].params) reason += (reason.empty() ? "" : "; ") + std::string(kNames[c]) + ": " + channel[c].undefined;
+        if (!channel[c].params) reason += (reason.empty() ? "" : "; ") + std::string(kChannelNames[c]) + ": " + channel[c].undefined;
     return reason;
 }
 

@@ -39,13 +39,12 @@ SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSetti
     }
     for (int i = 0; i <= kDenseIntervals; ++i) dense_.push_back(sample(double(i) / kDenseIntervals, 0.0, 0.0));
 
-    static constexpr const char* kNames[] = {"red", "green", "blue"};
     for (const auto* samples : {&nodes_, &dense_})
         for (const Sample& s : *samples)
             for (int c = 0; c < 3 && !rel_undefined_; ++c)
                 if (!(s.value[c] > 0.0)) {
                     char text[160];
-                    std::snprintf(text, sizeof text, "the reference's %s channel is %.3g at mu = %.4g", kNames[c],
+                    std::snprintf(text, sizeof text, "the reference's %s channel is %.3g at mu = %.4g", kChannelNames[c],
                                   s.value[c], s.mu);
                     rel_undefined_ = text;
                 }

@@ -20,6 +20,9 @@ struct RGB {
     double min() const { return r < g ? (r < b ? r : b) : (g < b ? g : b); }
 };
 
+// Channel names in messages and records, in R, G, B order.
+inline constexpr const char* kChannelNames[3] = {"red", "green", "blue"};
+
 inline RGB operator/(const RGB& a, const RGB& b) { return {a.r / b.r, a.g / b.g, a.b / b.b}; }
 
 }  // namespace metalfit
