@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <iostream>
 #include <mutex>
 #include <sstream>
@@ -47,9 +47,7 @@ std::vector<MaterialFit> fit_in_parallel(const std::vector<std::function<Materia
     std::atomic<std::size_t> next{0}, done{0};
     std::mutex progress_mutex;
     const bool progress = count > 1 && isatty(STDERR_FILENO);
-    const auto worker = [&] {
-        // One OCIO processor per thread.
-        const ColorSpaceConverter converter = ColorSpaceConverter::create(setup.config, setup.converter.space());
+    const auto worker = [&](const ColorSpaceConverter& converter) {
         for (std::size_t i = next++; i < count; i = next++) {
             try {
                 const Material material = loaders[i]();
@@ -66,10 +64,14 @@ std::vector<MaterialFit> fit_in_parallel(const std::vector<std::function<Materia
         }
     };
     const int threads = std::max(1, std::min<int>(jobs, static_cast<int>(count)));
+    // One OCIO processor per thread: the calling thread uses setup's; the others' are made here, before any thread
+    // starts, so that a failure is an ordinary error and not an exception inside a thread.
+    std::vector<ColorSpaceConverter> converters;
+    for (int t = 1; t < threads; ++t) converters.push_back(ColorSpaceConverter::create(setup.config, setup.converter.space()));
     {
         std::vector<std::jthread> pool;
-        for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-        worker();
+        for (const ColorSpaceConverter& converter : converters) pool.emplace_back(worker, std::cref(converter));
+        worker(setup.converter);
     }
     if (progress) std::fprintf(stderr, "\r%*s\r", 40, "");
     std::vector<MaterialFit> fits;
@@ -78,13 +80,6 @@ std::vector<MaterialFit> fit_in_parallel(const std::vector<std::function<Materia
         fits.push_back(std::move(*results[i]));
     }
     return fits;
-}
-
-std::string fixed(double v, int digits) {
-    if (std::isnan(v)) return "-";
-    char text[32];
-    std::snprintf(text, sizeof text, "%.*f", digits, v);
-    return text;
 }
 
 std::string params_text(const Model& model, const RgbParameters& p) {

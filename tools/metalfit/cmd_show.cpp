@@ -30,12 +30,6 @@ constexpr const char* kChannels[] = {"R", "G", "B"};
 
 nlohmann::json rgb_json(const RGB& c) { return nlohmann::json::array({c.r, c.g, c.b}); }
 
-std::string fixed(double v, int digits = 5) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.*f", digits, v);
-    return buffer;
-}
-
 // REFERENCES as one line of plain text: refractiveindex.info writes HTML over several lines.
 std::string one_line(const std::string& text) {
     std::string out;

@@ -28,4 +28,7 @@ void emit(const std::string& text, const std::filesystem::path& output);
 // "metalfit: warning: ..." on stderr.
 void warn(const std::string& message);
 
+// v with `digits` decimals for human-readable tables; "-" for NaN (an undefined metric).
+std::string fixed(double v, int digits = 5);
+
 }  // namespace metalfit::cli

@@ -1,5 +1,7 @@
 // metalfit: measured metal n,k → shader-ready Fresnel constants. A thin layer over libfit.
 // Exit codes (docs/cli.md): 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 colour configuration.
+#include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "commands.hpp"
@@ -15,6 +17,13 @@ void emit(const std::string& text, const std::filesystem::path& output) {
 }
 
 void warn(const std::string& message) { std::cerr << "metalfit: warning: " << message << "\n"; }
+
+std::string fixed(double v, int digits) {
+    if (std::isnan(v)) return "-";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f", digits, v);
+    return text;
+}
 
 }  // namespace metalfit::cli
 
