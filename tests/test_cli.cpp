@@ -265,21 +265,16 @@ TEST_F(Cli, FitErrorsAreOneLineWithTheirExitCode) {
 
 TEST_F(Cli, FitOfAMaterialThatReflectsNothingNeedsTheAbsoluteMetric) {
     // n = 1, k = 0: no interface, R = 0 for every angle, so the relative error is undefined.
-    const fs::path vacuum = dir_ / "vacuum.csv";
-    {
-        std::ofstream f(vacuum);
-        f << "wavelength_nm,n,k\n";
-        for (int nm = 300; nm <= 900; nm += 50) f << nm << ",1,0\n";
-    }
-    const Result rel = run("fit '" + vacuum.string() + "' --model schlick");
+    const std::string vacuum = kFixtures + "/fit-vacuum.csv";
+    const Result rel = run("fit '" + vacuum + "' --model schlick");
     EXPECT_EQ(rel.exit_code, 3);
     expect_one_line_error(rel, "--metric abs");
-    EXPECT_NE(rel.err.find("vacuum.csv"), std::string::npos);
+    EXPECT_NE(rel.err.find("fit-vacuum.csv"), std::string::npos);
 
-    const Result abs = run("fit '" + vacuum.string() + "' --model schlick,conductor-rgb --metric abs --json");
+    const Result abs = run("fit '" + vacuum + "' --model schlick,conductor-rgb --metric abs --json");
     ASSERT_EQ(abs.exit_code, 0) << abs.err;
     const auto record = nlohmann::json::parse(abs.out);
-    const auto& models = record["materials"]["vacuum"]["models"];
+    const auto& models = record["materials"]["fit-vacuum"]["models"];
     EXPECT_TRUE(models["schlick"]["fit"]["metrics"]["rel_rms"][0].is_null());  // undefined, written as null
     EXPECT_LT(models["conductor-rgb"]["fit"]["metrics"]["abs_rms"][0].get<double>(), 1e-6);
 }

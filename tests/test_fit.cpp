@@ -123,13 +123,18 @@ std::string params_text(const ChannelParameters& p) {
 // The objective, written out here: rms(p) = sqrt(Σ scale_i² (M(p, μ_i) − R_i)²) — the chosen-metric RMS of one
 // channel (SampledReference::target documents ½ Σ residual² = ½ rms²).
 
-double channel_rms(const Model& model, const ChannelParameters& p, const ChannelTarget& t) {
-    double sum = 0.0;
+// The same for any curve μ → value.
+double rms_of(const ChannelTarget& t, const auto& curve) {
+    double sum = 0;
     for (std::size_t i = 0; i < t.mu.size(); ++i) {
-        const double d = t.scale[i] * (model.evaluate(std::span<const double>(p), t.mu[i]) - t.value[i]);
+        const double d = t.scale[i] * (curve(t.mu[i]) - t.value[i]);
         sum += d * d;
     }
     return std::sqrt(sum);
+}
+
+double channel_rms(const Model& model, const ChannelParameters& p, const ChannelTarget& t) {
+    return rms_of(t, [&](double mu) { return model.evaluate(std::span<const double>(p), mu); });
 }
 
 struct Optimum {
@@ -227,15 +232,6 @@ Linear2 box_least_squares(const std::vector<double>& A, const std::vector<double
 
 // Schlick weight and the curve families written out independently of libfit's model code.
 double w5(double mu) { return std::pow(1.0 - mu, 5.0); }
-double rms_of(const ChannelTarget& t, const auto& curve) {
-    double sum = 0;
-    for (std::size_t i = 0; i < t.mu.size(); ++i) {
-        const double d = t.scale[i] * (curve(t.mu[i]) - t.value[i]);
-        sum += d * d;
-    }
-    return std::sqrt(sum);
-}
-
 // The range of F0 = ((n − 1)² + k²)/((n + 1)² + k²) over Lazányi's (n, k) box: 0 (n = 1, k = 0) up to its value at
 // the largest k and one end of n (for fixed k, 4n/((n + 1)² + k²) is unimodal in n).
 double lazanyi_F0_max(const Model& lazanyi) {
