@@ -13,6 +13,7 @@ PACKAGES=(
   libyaml-cpp-dev                      # refractiveindex.info YAML
   libcli11-dev                         # command line
   libssl-dev                           # SHA-256 of data files (OpenSSL libcrypto)
+  libpugixml-dev                       # XML: MaterialX exports written and checked with pugixml
   glslang-tools                        # glslangValidator: compiles the models' GLSL in the tests
 )
 
