@@ -1,0 +1,14 @@
+// Test probe: reflection_lookup for given (x, R) pairs, and the cube map's texel value at the lookup direction.
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer Rays { vec4 rays[]; };  // x (relative to o), R: two vec4 per ray
+layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };  // lookup direction, cube texel
+uniform int u_count;
+
+void main() {
+    int i = int(gl_GlobalInvocationID.x);
+    if (i >= u_count) return;
+    vec3 x = rays[2 * i].xyz, R = rays[2 * i + 1].xyz;
+    vec3 lookup = reflection_lookup(x, R);
+    results[2 * i] = vec4(lookup, 0.0);
+    results[2 * i + 1] = textureLod(u_env, lookup, 0.0);
+}

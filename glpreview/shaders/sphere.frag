@@ -1,0 +1,39 @@
+// One mirror sphere: ray-cast against the sphere, reflect, find the reflected radiance (reflection_lookup into the
+// captured cube map, or the image at infinity), multiply by the Fresnel of μ = cos θ.
+// FRESNEL_REFERENCE: the exact curve R_c(μ) from libfit as a 1D RGB texture; otherwise FRESNEL_CALL is a libfit model
+// function (its GLSL is libfit's single definition, prepended).
+uniform vec3 u_sphere_center;
+uniform float u_sphere_radius;
+layout(location = 0) out vec4 out_color;
+
+#if defined(FRESNEL_REFERENCE)
+uniform sampler1D u_fresnel_lut;  // texel i holds R_c(i / (n − 1))
+vec3 fresnel(float mu) {
+    float n = float(textureSize(u_fresnel_lut, 0));
+    return textureLod(u_fresnel_lut, (mu * (n - 1.0) + 0.5) / n, 0.0).rgb;
+}
+#else
+uniform vec3 u_param[4];  // the model's parameters, one vec3 (R, G, B) each, in libfit's order
+vec3 fresnel(float mu) { return FRESNEL_CALL; }
+#endif
+
+void main() {
+    vec3 d = camera_ray(gl_FragCoord.xy);
+    vec3 oc = u_camera_position - u_sphere_center;
+    float b = dot(oc, d);
+    float h = b * b - (dot(oc, oc) - u_sphere_radius * u_sphere_radius);
+    if (h < 0.0) discard;
+    float t = -b - sqrt(h);
+    if (t <= 0.0) discard;
+    vec3 p = u_camera_position + t * d;
+    vec3 N = (p - u_sphere_center) / u_sphere_radius;
+    float mu = clamp(-dot(d, N), 0.0, 1.0);
+    vec3 R = reflect(d, N);
+#if defined(ENV_EQUIRECT)
+    vec3 L = environment_trace(p, R).rgb;  // at infinity: the direction alone
+#else
+    vec3 L = textureLod(u_env, reflection_lookup(p - u_reference, R), 0.0).rgb;
+#endif
+    out_color = vec4(fresnel(mu) * L, 1.0);
+    gl_FragDepth = t / (t + 1.0);
+}

@@ -1,0 +1,103 @@
+#include "glpreview/sphere_fresnel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "libfit/errors.hpp"
+#include "libfit/fit.hpp"
+#include "libfit/reference_curve.hpp"
+
+namespace metalfit::glpreview {
+
+RGB SphereFresnel::operator()(double mu) const {
+    mu = std::clamp(mu, 0.0, 1.0);
+    if (model) {
+        std::array<double, 3> value{};
+        for (int c = 0; c < 3; ++c) {
+            std::array<float, 8> p{};
+            std::copy(parameters[c].begin(), parameters[c].end(), p.begin());
+            value[c] = model->evaluate(std::span<const float>(p.data(), parameters[c].size()), static_cast<float>(mu));
+        }
+        return {value[0], value[1], value[2]};
+    }
+    const double x = mu * (static_cast<double>(lut.size()) - 1);
+    const std::size_t i = std::min(static_cast<std::size_t>(x), lut.size() - 2);
+    const double f = x - static_cast<double>(i);
+    const RGB& a = lut[i];
+    const RGB& b = lut[i + 1];
+    return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b)};
+}
+
+FresnelLibrary::FresnelLibrary(const std::filesystem::path& data_dir, const OcioConfigChoice& config,
+                               const std::filesystem::path& scene_file)
+    : catalog_(Catalog::load(data_dir)),
+      colorimetry_(Colorimetry::load(data_dir, Observer::cie1931_2deg, Illuminant::D65)),
+      converter_(ColorSpaceConverter::create(config)),
+      scene_file_(scene_file) {}
+
+const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string& field) {
+    const std::string key = sphere.material + "|" + sphere.source + "|" + sphere.fresnel + "|" +
+                            (sphere.fresnel == "reference" ? "" : sphere.params);
+    if (auto it = cache_.find(key); it != cache_.end()) return *it->second;
+
+    std::string material_argument = sphere.material;
+    if (looks_like_path(material_argument) && std::filesystem::path(material_argument).is_relative())
+        material_argument = (scene_file_.parent_path() / material_argument).string();
+    Material material;
+    try {
+        material = load_material(catalog_, material_argument, sphere.source);
+    } catch (const UsageError& e) {
+        throw InputError(InputLocation(scene_file_, 0, field + ".material"), e.what());
+    }
+    auto result = std::make_unique<SphereFresnel>();
+    result->material = material.name;
+    result->source = material.source;
+    result->fresnel = sphere.fresnel;
+    const SpectralOptions spectral{};
+    if (sphere.fresnel == "reference") {
+        const ReferenceCurve curve(material, colorimetry_, converter_, spectral);
+        for (int i = 0; i < kReferenceLutSize; ++i) result->lut.push_back(curve(i / double(kReferenceLutSize - 1)));
+    } else {
+        const Model* model = nullptr;
+        try {
+            model = &find_model(sphere.fresnel);
+        } catch (const UsageError& e) {
+            throw InputError(InputLocation(scene_file_, 0, field + ".fresnel"), std::string(e.what()) + " (or 'reference')");
+        }
+        MaterialFitRequest request{spectral, ErrorSettings{}, {model}};
+        const MaterialFit fit = fit_material(material, colorimetry_, converter_, request);
+        const ModelResult& r = fit.models.front();
+        result->model = model;
+        result->params = sphere.params;
+        const EvaluatedParameters* chosen = &r.fit.value;
+        if (sphere.params == "closed") {
+            if (!r.best_closed)
+                throw InputError(InputLocation(scene_file_, 0, field + ".params"),
+                                 "no closed form of " + sphere.fresnel + " is defined for " + material.name + ": " +
+                                     (r.closed_forms.empty() ? std::string("none") : r.closed_forms.front().undefined));
+            chosen = &*r.closed_forms[*r.best_closed].value;
+        }
+        result->parameters = chosen->params;
+        result->worst_rel_rms = worst_channel(chosen->metrics.rel_rms);
+    }
+    return *cache_.emplace(key, std::move(result)).first->second;
+}
+
+std::string FresnelLibrary::best_model(const std::string& material_name) {
+    const Material material = load_material(catalog_, material_name);
+    std::vector<const Model*> models(all_models().begin(), all_models().end());
+    const MaterialFit fit = fit_material(material, colorimetry_, converter_, {SpectralOptions{}, ErrorSettings{}, models});
+    std::string best;
+    double best_error = std::numeric_limits<double>::infinity();
+    for (const ModelResult& r : fit.models) {
+        const double e = worst_channel(r.fit.value.metrics.rel_rms);
+        if (e < best_error) {
+            best_error = e;
+            best = std::string(r.model->id());
+        }
+    }
+    return best;
+}
+
+}  // namespace metalfit::glpreview
