@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <system_error>
+#include <vector>
 
 #include "libfit/errors.hpp"
 
@@ -46,6 +47,48 @@ void write_file_atomically(const std::filesystem::path& target, std::string_view
     if (ec) {
         fs::remove(temporary, ec);
         throw InputError({target}, "cannot rename temporary file into place");
+    }
+}
+
+}  // namespace metalfit
+
+namespace metalfit {
+
+void write_files_atomically(std::span<const OutputFile> files) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    std::vector<fs::path> temporaries;
+    const auto remove_temporaries = [&] {
+        for (const fs::path& t : temporaries) fs::remove(t, ec);
+    };
+    for (const OutputFile& f : files) {
+        if (fs::exists(f.path, ec) && !fs::is_regular_file(f.path, ec))
+            throw InputError({f.path}, "cannot write: it exists and is not a regular file");
+        const fs::path dir = f.path.has_parent_path() ? f.path.parent_path() : fs::path(".");
+        const fs::path temporary = dir / ("." + f.path.filename().string() + ".tmp." + std::to_string(::getpid()));
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out) {
+            remove_temporaries();
+            throw InputError({f.path}, "cannot write: directory " + dir.string() + " is not writable");
+        }
+        temporaries.push_back(temporary);
+        out.write(f.contents.data(), static_cast<std::streamsize>(f.contents.size()));
+        out.flush();
+        if (!out) {
+            remove_temporaries();
+            throw InputError({f.path}, "cannot write (disk full?)");
+        }
+    }
+    std::vector<fs::path> renamed_new;  // targets that did not exist before
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        const bool existed = fs::exists(files[i].path, ec);
+        fs::rename(temporaries[i], files[i].path, ec);
+        if (ec) {
+            for (std::size_t j = i; j < temporaries.size(); ++j) fs::remove(temporaries[j], ec);
+            for (const fs::path& p : renamed_new) fs::remove(p, ec);
+            throw InputError({files[i].path}, "cannot rename temporary file into place");
+        }
+        if (!existed) renamed_new.push_back(files[i].path);
     }
 }
 

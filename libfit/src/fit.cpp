@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <limits>
+#include <memory>
 
 #include "libfit/errors.hpp"
 
@@ -109,13 +110,14 @@ MaterialFit fit_material(const Material& material, const Colorimetry& colorimetr
     PhaseClock clock;
     FitTimings timings;
     const ReferenceCurve curve(material, colorimetry, converter, request.spectral);
-    const SampledReference reference(curve, request.error);
+    auto shared_reference = std::make_shared<const SampledReference>(curve, request.error);
+    const SampledReference& reference = *shared_reference;
     clock.charge(timings.reference);
     if (request.error.metric == ErrorMetric::rel && reference.rel_undefined())
         throw InputError(InputLocation(material.provenance.file),
                          "relative error undefined for " + material.id + ": " + *reference.rel_undefined() +
                              " (use --metric abs)");
-    MaterialFit result{material, curve.raw_white(), curve(1.0), {}, {}};
+    MaterialFit result{material, curve.raw_white(), curve(1.0), {}, {}, shared_reference};
     const ClosedFormInput input = closed_form_input(curve, material, request.spectral);
     for (const Model* model : request.models) result.models.push_back(fit_model(*model, reference, input, &timings));
     result.timings = timings;

@@ -14,6 +14,7 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "fit_parallel.hpp"
 #include "libfit/catalog.hpp"
 #include "libfit/errors.hpp"
 #include "libfit/fit.hpp"
@@ -36,51 +37,6 @@ struct FitOptions {
     bool timings = false;
     std::filesystem::path output;
 };
-
-// Runs fit_material for every material on `jobs` threads; results in input order (the output does not depend on
-// the threads). A progress line goes to stderr when it is a terminal. The first error, in input order, is rethrown.
-std::vector<MaterialFit> fit_in_parallel(const std::vector<std::function<Material()>>& loaders, const ColourSetup& setup,
-                                         const MaterialFitRequest& request, int jobs) {
-    const std::size_t count = loaders.size();
-    std::vector<std::optional<MaterialFit>> results(count);
-    std::vector<std::exception_ptr> errors(count);
-    std::atomic<std::size_t> next{0}, done{0};
-    std::mutex progress_mutex;
-    const bool progress = count > 1 && isatty(STDERR_FILENO);
-    const auto worker = [&](const ColorSpaceConverter& converter) {
-        for (std::size_t i = next++; i < count; i = next++) {
-            try {
-                const Material material = loaders[i]();
-                results[i] = fit_material(material, setup.colorimetry, converter, request);
-            } catch (...) {
-                errors[i] = std::current_exception();
-            }
-            const std::size_t finished = ++done;
-            if (progress) {
-                std::lock_guard lock(progress_mutex);
-                std::fprintf(stderr, "\rmetalfit fit: %zu/%zu materials", finished, count);
-                std::fflush(stderr);
-            }
-        }
-    };
-    const int threads = std::max(1, std::min<int>(jobs, static_cast<int>(count)));
-    // One OCIO processor per thread: the calling thread uses setup's; the others' are made here, before any thread
-    // starts, so that a failure is an ordinary error and not an exception inside a thread.
-    std::vector<ColorSpaceConverter> converters;
-    for (int t = 1; t < threads; ++t) converters.push_back(ColorSpaceConverter::create(setup.config, setup.converter.space()));
-    {
-        std::vector<std::jthread> pool;
-        for (const ColorSpaceConverter& converter : converters) pool.emplace_back(worker, std::cref(converter));
-        worker(setup.converter);
-    }
-    if (progress) std::fprintf(stderr, "\r%*s\r", 40, "");
-    std::vector<MaterialFit> fits;
-    for (std::size_t i = 0; i < count; ++i) {
-        if (errors[i]) std::rethrow_exception(errors[i]);
-        fits.push_back(std::move(*results[i]));
-    }
-    return fits;
-}
 
 std::string params_text(const Model& model, const RgbParameters& p) {
     std::string text;
@@ -163,14 +119,7 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
     if (o.all == !o.material.empty()) throw UsageError("fit: give a material (or file) or --all, not both");
     if (o.all && !o.source.empty()) throw UsageError("fit: --source needs a single material");
     const Catalog catalog = Catalog::load(global.data_dir);
-    std::vector<std::function<Material()>> loaders;
-    if (o.all) {
-        for (const CatalogEntry& entry : catalog.entries())
-            loaders.push_back([&catalog, id = entry.id] { return load_material(catalog, id, ""); });
-    } else {
-        const Material material = load_material(catalog, o.material, o.source);  // errors before any work
-        loaders.push_back([material] { return material; });
-    }
+    const auto loaders = material_loaders(catalog, o.all, o.material, o.source);
 
     const ColourSetup setup = resolve_colour_options(o.colour, global);
     const ErrorSettings error{o.nodes, parse_error_metric(o.metric), parse_angular_weight(o.weight)};

@@ -49,6 +49,8 @@ int main(int argc, char** argv) {
     auto run_fit = cli::add_fit_command(fit, global);
     auto& models = *app.add_subcommand("models", "The Fresnel models: parameters, bounds and GLSL");
     auto run_models = cli::add_models_command(models, global);
+    auto& export_ = *app.add_subcommand("export", "Write shader-ready constants: JSON, GLSL, HLSL, MaterialX, OpenPBR, C++");
+    auto run_export = cli::add_export_command(export_, global);
 
     try {
         app.parse(argc, argv);
@@ -61,6 +63,7 @@ int main(int argc, char** argv) {
         if (show.parsed()) run_show();
         if (fit.parsed()) run_fit();
         if (models.parsed()) run_models();
+        if (export_.parsed()) run_export();
         return ok;
     } catch (const UsageError& e) {
         std::cerr << "metalfit: " << e.what() << "\n";

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -72,6 +73,8 @@ struct MaterialFit {
     RGB F0;  // R(1), for the out-of-gamut flag
     std::vector<ModelResult> models;
     FitTimings timings;
+    // The sampled reference the metrics were computed on, so that exports can re-evaluate the parameters they write.
+    std::shared_ptr<const SampledReference> reference;
 };
 
 // Everything for one material. Throws InputError naming the material's file when the data do not cover the
