@@ -251,8 +251,9 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         if (length(cross(scene.camera.look_at - scene.camera.position, scene.camera.up)) < 1e-9)
             r.fail("camera.up", "is parallel to the viewing direction");
     }
-    if (top.has("environment")) {
-        const json& env = top.at("environment");
+    {
+        static const json no_environment = json::object();  // the default room, with its default panels
+        const json& env = top.has("environment") ? top.at("environment") : no_environment;
         Environment& e = scene.environment;
         std::string type = "room";
         if (env.is_object() && env.contains("type")) {

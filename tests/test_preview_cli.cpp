@@ -1,0 +1,99 @@
+// The glpreview command line end to end: files written, exit codes, one-line errors, nothing half-written.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "test_support.hpp"
+
+namespace metalfit::test {
+namespace {
+
+struct CommandRun {
+    int exit_code;
+    std::string out, err;
+};
+
+CommandRun glpreview(const std::string& arguments, const TempDir& dir) {
+    const fs::path out = dir.path() / "stdout.txt", err = dir.path() / "stderr.txt";
+    const std::string command = std::string("OCIO= ") + GLPREVIEW_EXE + " " + arguments + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    return {WEXITSTATUS(status), read_file(out), read_file(err)};
+}
+
+TEST(PreviewCli, MalformedSceneIsOneLineErrorExit3AndWritesNothing) {
+    TempDir dir;
+    const fs::path scene = dir.write("bad.json", R"({"spheres": [{"center": [0, 1, 0], "iterations": -2}]})");
+    const CommandRun run = glpreview(scene.string() + " -o " + (dir.path() / "out").string(), dir);
+    EXPECT_EQ(run.exit_code, 3);
+    EXPECT_TRUE(Contains(run.err, "bad.json: spheres[0].iterations: must be in [0, 64]"));
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
+TEST(PreviewCli, UnknownMaterialNamesTheField) {
+    TempDir dir;
+    const fs::path scene = dir.write("s.json", R"({"spheres": [{"center": [0, 1, 0], "material": "unobtainium"}]})");
+    const CommandRun run = glpreview(scene.string() + " -o " + (dir.path() / "out").string(), dir);
+    EXPECT_EQ(run.exit_code, 3);
+    EXPECT_TRUE(Contains(run.err, "spheres[0].material"));
+}
+
+TEST(PreviewCli, ExplainPrintsThePlanAndRendersNothing) {
+    TempDir dir;
+    const fs::path scene = dir.write("s.json", R"({"spheres": [{"center": [0, 1, 0], "reflection": "classic"}],
+                                                    "outputs": {"difference": false}})");
+    const CommandRun run = glpreview(scene.string() + " --explain -o " + (dir.path() / "out").string(), dir);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_TRUE(Contains(run.out, "capture-environment"));
+    EXPECT_TRUE(Contains(run.out, "distance channel: no sphere uses the distance impostor"));
+    EXPECT_TRUE(Contains(run.out, "difference: culled"));
+    EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
+TEST(PreviewCli, WritesTheRequestedFilesAndMetrics) {
+    TempDir dir;
+    const fs::path scene = dir.write("s.json", R"({"image": {"width": 64, "height": 48},
+        "camera": {"position": [0, 1.2, 2.5], "look_at": [0, 1, 0]},
+        "spheres": [{"center": [-0.5, 1, 0], "radius": 0.4, "material": "Cu", "fresnel": "schlick", "reflection": "box-parallax"},
+                    {"center": [0.5, 1, 0], "radius": 0.4, "strategy": "mixed", "iterations": 2}],
+        "outputs": {"png": false}})");
+    const CommandRun run = glpreview(scene.string() + " -o " + (dir.path() / "out").string(), dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    std::vector<std::string> files;
+    for (const auto& entry : fs::directory_iterator(dir.path() / "out")) files.push_back(entry.path().filename().string());
+    std::sort(files.begin(), files.end());
+    EXPECT_EQ(files, (std::vector<std::string>{"beauty.exr", "difference.exr", "metrics.json", "reference.exr"}));
+    const auto metrics = nlohmann::json::parse(read_file(dir.path() / "out" / "metrics.json"));
+    ASSERT_EQ(metrics["spheres"].size(), 2u);
+    EXPECT_EQ(metrics["spheres"][0]["material"], "copper");
+    EXPECT_EQ(metrics["spheres"][0]["mode"], "box-parallax");
+    EXPECT_TRUE(metrics["spheres"][0]["strategy"].is_null());
+    EXPECT_EQ(metrics["spheres"][1]["strategy"], "mixed");
+    EXPECT_EQ(metrics["spheres"][1]["iterations"], 2);
+    EXPECT_GE(metrics["frame_ms"].size(), 5u);
+    EXPECT_GT(metrics["ms_per_frame"].get<double>(), 0.0);
+    for (const auto& s : metrics["spheres"]) {
+        EXPECT_GT(s["pixels"].get<int>(), 100);
+        EXPECT_GE(s["rmse"].get<double>(), s["mean_abs"].get<double>());  // RMS ≥ mean of |·|
+    }
+}
+
+// An output that cannot be replaced (a folder where beauty.exr should go, which root cannot overwrite either):
+// a one-line error naming the file, exit 3, and no temporary file left behind.
+TEST(PreviewCli, AnOutputThatCannotBeWrittenIsAnErrorAndLeavesNoPartialFile) {
+    TempDir dir;
+    const fs::path scene = dir.write("s.json", R"({"image": {"width": 16, "height": 16}, "spheres": [{"center": [0, 1.5, 0]}],
+                                                  "outputs": {"png": false, "reference": false, "difference": false, "metrics": false}})");
+    fs::create_directories(dir.path() / "out" / "beauty.exr" / "occupied");
+    const CommandRun run = glpreview(scene.string() + " -o " + (dir.path() / "out").string(), dir);
+    EXPECT_EQ(run.exit_code, 3);
+    EXPECT_TRUE(Contains(run.err, "beauty.exr: cannot write the image"));
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    std::vector<std::string> left;
+    for (const auto& entry : fs::directory_iterator(dir.path() / "out")) left.push_back(entry.path().filename().string());
+    EXPECT_EQ(left, (std::vector<std::string>{"beauty.exr"}));
+}
+
+}  // namespace
+}  // namespace metalfit::test

@@ -1,0 +1,182 @@
+// glpreview without GL: strict scene parsing, the plan (features and culled passes), the CPU environment tracer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "glpreview/environment.hpp"
+#include "glpreview/plan.hpp"
+#include "glpreview/scene.hpp"
+#include "libfit/errors.hpp"
+#include "test_support.hpp"
+
+namespace metalfit::glpreview {
+namespace {
+
+const char* kMinimal = R"({"spheres": [{"center": [0, 1, 0]}]})";
+
+std::string parse_error(const std::string& json) {
+    try {
+        parse_scene(json, "bad.json");
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        return what;
+    }
+    ADD_FAILURE() << "no error for " << json;
+    return {};
+}
+
+TEST(PreviewScene, DefaultsForAMinimalScene) {
+    const Scene scene = parse_scene(kMinimal, "s.json");
+    ASSERT_EQ(scene.spheres.size(), 1u);
+    EXPECT_EQ(scene.environment.type, EnvironmentType::room);
+    EXPECT_EQ(scene.spheres[0].fresnel, "reference");
+    EXPECT_EQ(scene.spheres[0].reflection, ReflectionMode::distance_impostor);
+    EXPECT_EQ(scene.environment.room.panels.size(), 4u);  // the default 2 × 2 ceiling panels
+    const Vec3 o = scene.environment.reference();
+    EXPECT_DOUBLE_EQ(o.y, 1.5);
+}
+
+TEST(PreviewScene, MalformedScenesAreOneLineErrorsNamingTheField) {
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "radius": "big"}]})"),
+                               "bad.json: spheres[0].radius: expected a number"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "colour": 1}]})"),
+                               "spheres[0].colour: unknown key"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1]}]})"),
+                               "spheres[0].center: expected an array of 3 numbers"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "strategy": "bisection"}]})"),
+                               "spheres[0].strategy: unknown value 'bisection' (known: secant, false-position, mixed)"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "iterations": 2.5}]})"),
+                               "spheres[0].iterations: expected an integer"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": []})"), "spheres: at least one sphere"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"image": {"width": 0}, "spheres": [{"center": [0,1,0]}]})"),
+                               "image.width: must be in [1, 8192]"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"type": "cave"}, "spheres": [{"center": [0,1,0]}]})"),
+                               "environment.type: unknown value 'cave'"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"boxes": [{"min": [0,0,0], "max": [1,-1,1]}]}, "spheres": [{"center": [0,1,0]}]})"),
+                               "environment.boxes[0].max: min must be below max"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"type": "equirect", "file": "sky.exr"}, "spheres": [{"center": [0,1,0]}]})"),
+                               "spheres[0].reflection: an equirect environment is at infinity"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"camera": {"position": [0,1,0], "look_at": [0,2,0]}, "spheres": [{"center": [0,1,0]}]})"),
+                               "camera.up: is parallel"));
+    EXPECT_TRUE(test::Contains(parse_error("{\n  \"spheres\": [\n  {\"center\": [0, 1, 0],}\n]}"), "bad.json:3: invalid JSON"));
+}
+
+Scene scene_with(const std::string& spheres, const std::string& outputs = "{}", const std::string& environment = "{}") {
+    return parse_scene(R"({"environment": )" + environment + R"(, "spheres": )" + spheres + R"(, "outputs": )" + outputs + "}",
+                       "s.json");
+}
+
+TEST(PreviewPlan, FeaturesFollowTheScene) {
+    Features f = plan_features(scene_with(R"([{"center": [0,1,0], "reflection": "classic"}])"));
+    EXPECT_TRUE(f.environment_capture);
+    EXPECT_FALSE(f.distance_channel);  // nobody uses the impostor
+    EXPECT_TRUE(f.reference_lut);
+    EXPECT_FALSE(f.model_fits);
+    f = plan_features(scene_with(R"([{"center": [0,1,0], "fresnel": "f82-tint"}, {"center": [1,1,0], "fresnel": "schlick", "reflection": "box-parallax"}])"));
+    EXPECT_TRUE(f.distance_channel);
+    EXPECT_FALSE(f.reference_lut);
+    EXPECT_EQ(f.models, (std::set<std::string>{"f82-tint", "schlick"}));
+    EXPECT_EQ(f.shader_variants.size(), 2u);
+    f = plan_features(scene_with(R"([{"center": [0,1,0], "reflection": "classic"}])", "{}",
+                                 R"({"type": "equirect", "file": "sky.exr"})"));
+    EXPECT_FALSE(f.environment_capture);
+    EXPECT_TRUE(f.equirect_image);
+}
+
+TEST(PreviewPlan, PassesNobodyReadsAreCulled) {
+    // Only the CPU reference image: no GPU pass at all.
+    Plan plan = build_plan(scene_with(R"([{"center": [0,1,0]}])",
+                                      R"({"beauty": false, "difference": false, "metrics": false, "png": false})"));
+    EXPECT_TRUE(plan.runs("cpu-reference"));
+    EXPECT_FALSE(plan.runs("beauty"));
+    EXPECT_FALSE(plan.runs("capture-environment"));
+    EXPECT_FALSE(plan.runs("timing"));
+    EXPECT_EQ(plan.outputs, (std::vector<std::string>{"reference.exr"}));
+    // Only the beauty image: no CPU reference, no timing.
+    plan = build_plan(scene_with(R"([{"center": [0,1,0]}])", R"({"reference": false, "difference": false, "metrics": false})"));
+    EXPECT_TRUE(plan.runs("beauty"));
+    EXPECT_TRUE(plan.runs("capture-environment"));
+    EXPECT_FALSE(plan.runs("cpu-reference"));
+    EXPECT_FALSE(plan.runs("timing"));
+    // Metrics need the reference, the beauty and the frame times, even when no image is written.
+    plan = build_plan(scene_with(R"([{"center": [0,1,0]}])", R"({"beauty": false, "reference": false, "difference": false})"));
+    for (const char* pass : {"beauty", "cpu-reference", "timing", "metrics", "capture-environment"}) EXPECT_TRUE(plan.runs(pass)) << pass;
+    EXPECT_FALSE(plan.runs("difference"));
+    const std::string text = explain(plan, scene_with(R"([{"center": [0,1,0]}])"));
+    EXPECT_TRUE(test::Contains(text, "difference: culled"));
+}
+
+TEST(PreviewPlan, PassOrderRespectsDependencies) {
+    const Plan plan = build_plan(scene_with(R"([{"center": [0,1,0], "fresnel": "schlick"}])"));
+    std::map<std::string, std::size_t> written_at;
+    for (std::size_t i = 0; i < plan.passes.size(); ++i)
+        for (const auto& w : plan.passes[i].writes) written_at[w] = i;
+    for (std::size_t i = 0; i < plan.passes.size(); ++i)
+        for (const auto& r : plan.passes[i].reads)
+            if (written_at.count(r)) {
+                EXPECT_LT(written_at[r], i) << plan.passes[i].name << " reads " << r;
+            }
+}
+
+// The CPU tracer against geometry worked out by hand.
+TEST(PreviewEnvironment, RoomHitsAndRadianceRules) {
+    Environment env = scene_with(R"([{"center": [0,1,0]}])", "{}",
+                                 R"({"min": [-2, 0, -3], "max": [2, 3, 3], "checker": 1.0,
+                                     "panels": [{"min": [-0.5, -0.5], "max": [0.5, 0.5], "radiance": [7, 8, 9]}],
+                                     "boxes": [{"min": [1, 0, -0.5], "max": [1.5, 1, 0.5], "color": [0.5, 0.4, 0.3]}]})")
+                          .environment;
+    const EnvironmentTracer tracer(env);
+    const Vec3 o{0, 1, 0};
+    EnvironmentHit up = tracer.trace(o, {0, 1, 0});  // the ceiling panel
+    EXPECT_DOUBLE_EQ(up.t, 2.0);
+    EXPECT_DOUBLE_EQ(up.radiance.y, 8.0);
+    EnvironmentHit box = tracer.trace({0, 0.5, 0}, {1, 0, 0});  // the box's −x face, shade 0.7
+    EXPECT_DOUBLE_EQ(box.t, 1.0);
+    EXPECT_DOUBLE_EQ(box.radiance.x, 0.7 * 0.5);
+    EnvironmentHit wall = tracer.trace({0, 0.5, 0.2}, {-1, 0, 0});  // left wall at x = −2, check (z 0.2, y 0.5): even
+    EXPECT_DOUBLE_EQ(wall.t, 2.0);
+    EXPECT_DOUBLE_EQ(wall.radiance.x, env.room.wall_x_min.x);
+    EXPECT_DOUBLE_EQ(tracer.trace({0, 1.5, 0.2}, {-1, 0, 0}).radiance.x, 0.75 * env.room.wall_x_min.x);  // odd check
+    const Vec3 d = normalize({0.3, -1, 0.2});  // the floor at y = 0, t = 1/|d.y|
+    EnvironmentHit floor = tracer.trace(o, d);
+    EXPECT_NEAR(floor.t, 1.0 / std::abs(d.y), 1e-12);
+    const Vec3 p = o + floor.t * d;
+    const bool even = ((int(std::floor(p.x)) + int(std::floor(p.z))) & 1) == 0;
+    EXPECT_DOUBLE_EQ(floor.radiance.x, even ? env.room.floor_light.x : env.room.floor_dark.x);
+}
+
+TEST(PreviewEnvironment, SphereRoomDistanceIsTheClosedForm) {
+    Environment env;
+    env.type = EnvironmentType::sphere_room;
+    env.sphere_room.radius = 4;
+    env.reference_point = Vec3{0, 1, 0};
+    const EnvironmentTracer tracer(env);
+    const Vec3 x{0.5, -0.3, 0.8}, r = normalize({1, 2, -0.5});
+    const double xr = dot(x, r);
+    EXPECT_NEAR(tracer.trace(Vec3{0, 1, 0} + x, r).t, -xr + std::sqrt(xr * xr - dot(x, x) + 16), 1e-12);
+    EXPECT_DOUBLE_EQ(tracer.trace({0, 1, 0}, {1, 0, 0}).t, 4.0);
+}
+
+TEST(PreviewEnvironment, EquirectSamplesTexelCentresExactlyAndWraps) {
+    Image image(8, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 8; ++x) image.set(x, y, {double(x), double(y), 1});
+    // Texel (x, y) centre: u = (x + 0.5)/8, v = (y + 0.5)/4; direction from u = 0.5 + atan2(dx, −dz)/2π, v = acos(dy)/π.
+    for (int x : {0, 3, 7})
+        for (int y : {0, 2}) {
+            const double phi = ((x + 0.5) / 8 - 0.5) * 2 * std::numbers::pi, theta = (y + 0.5) / 4 * std::numbers::pi;
+            const Vec3 d{std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
+            const Vec3 v = sample_equirect(image, d);
+            EXPECT_NEAR(v.x, x, 1e-9);
+            EXPECT_NEAR(v.y, y, 1e-9);
+        }
+    // Half-way across the seam between column 7 and column 0: the mean of the two.
+    const double theta = 1.5 / 4 * std::numbers::pi;
+    const Vec3 seam{0, std::cos(theta), std::sin(theta)};  // u = 0 (and 1): atan2(0, −z) = ±π
+    EXPECT_NEAR(sample_equirect(image, seam).x, 3.5, 1e-9);
+}
+
+}  // namespace
+}  // namespace metalfit::glpreview
