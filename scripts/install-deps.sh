@@ -15,6 +15,7 @@ PACKAGES=(
   libssl-dev                           # SHA-256 of data files (OpenSSL libcrypto)
   libpugixml-dev                       # XML: MaterialX exports written and checked with pugixml
   glslang-tools                        # glslangValidator: compiles the models' GLSL in the tests
+  libbenchmark-dev                     # Google Benchmark: bench/ (metalfit_benchmarks)
 )
 
 missing=()

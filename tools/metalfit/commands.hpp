@@ -21,6 +21,7 @@ std::function<void()> add_list_command(CLI::App& app, const GlobalOptions& globa
 std::function<void()> add_show_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_models_command(CLI::App& app, const GlobalOptions& global);
+std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& global);
 
 // Prints to stdout, or writes atomically to `output` when it is not empty.

@@ -49,6 +49,8 @@ int main(int argc, char** argv) {
     auto run_fit = cli::add_fit_command(fit, global);
     auto& models = *app.add_subcommand("models", "The Fresnel models: parameters, bounds and GLSL");
     auto run_models = cli::add_models_command(models, global);
+    auto& bench = *app.add_subcommand("bench", "What accuracy costs: model evaluation, fit, SPIR-V and GPU timings against accuracy");
+    auto run_bench = cli::add_bench_command(bench, global);
     auto& export_ = *app.add_subcommand("export", "Write shader-ready constants: JSON, GLSL, HLSL, MaterialX, OpenPBR, C++");
     auto run_export = cli::add_export_command(export_, global);
 
@@ -63,6 +65,7 @@ int main(int argc, char** argv) {
         if (show.parsed()) run_show();
         if (fit.parsed()) run_fit();
         if (models.parsed()) run_models();
+        if (bench.parsed()) run_bench();
         if (export_.parsed()) run_export();
         return ok;
     } catch (const UsageError& e) {

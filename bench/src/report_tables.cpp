@@ -1,0 +1,155 @@
+#include "report_tables.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "metalfit_bench/eval_kernels.hpp"
+
+namespace metalfit::bench::detail {
+namespace {
+
+std::string format(const char* spec, double v) {
+    if (std::isnan(v)) return "-";
+    char text[64];
+    std::snprintf(text, sizeof text, spec, v);
+    return text;
+}
+
+// rel_rms in % with three significant digits (0.0213, 1.09, 10.8).
+std::string percent(double v) {
+    if (std::isnan(v)) return "-";
+    if (v == 0) return "0";
+    const double p = 100 * v;
+    return format(p >= 10 ? "%.1f" : p >= 1 ? "%.2f" : p >= 0.1 ? "%.3f" : "%.2g", p);
+}
+
+std::string ns(double v) { return format(v >= 100 ? "%.0f" : v >= 10 ? "%.1f" : "%.2f", v); }
+
+// Three significant digits (0.0712, 1.00, 7.38, 1038) and the noise with the same number of decimals.
+std::string ratio_text(const Ratio& r) {
+    const char* spec = r.median >= 100 ? "%.0f" : r.median >= 10 ? "%.1f" : r.median >= 1 ? "%.2f" : r.median >= 0.1 ? "%.3f" : "%.4f";
+    return format(spec, r.median) + " ±" + format(spec, r.noise);
+}
+
+std::string front_text(const CostRow::Front& f) {
+    std::string s;
+    if (f.cpu) s = "CPU";
+    if (f.gpu && *f.gpu) s += s.empty() ? "GPU" : " GPU";
+    return s.empty() ? "" : "* " + s;
+}
+
+}  // namespace
+
+std::string run_line(const BenchReport& r) {
+    return std::string(r.quick ? "quick run" : "full run") + ": evaluation of " + r.material + "'s fitted parameters, " +
+           std::to_string(r.timing.rounds) + " interleaved rounds of " + format("%.0f", 1e3 * r.timing.seconds_per_sample) +
+           " ms per kernel; accuracy over " + std::to_string(r.catalog_materials) +
+           " catalog materials (worst channel rel_rms, 128 nodes); wall " + format("%.1f", r.seconds) + " s";
+}
+
+std::vector<std::string> skipped_lines(const BenchReport& r) {
+    std::vector<std::string> lines;
+    if (!r.spirv_skipped.empty()) lines.push_back("SPIR-V section skipped: " + r.spirv_skipped);
+    const bool shaders = !r.shaders.value, localization = !r.localization.value;
+    if (shaders && localization && r.shaders.skipped == r.localization.skipped)
+        lines.push_back("GPU sections skipped: " + r.shaders.skipped);
+    else {
+        if (shaders) lines.push_back("GPU shader section skipped: " + r.shaders.skipped);
+        if (localization) lines.push_back("GPU localization section skipped: " + r.localization.skipped);
+    }
+    return lines;
+}
+
+std::vector<Table> report_tables(const BenchReport& r) {
+    std::vector<Table> tables;
+
+    Table main{"Accuracy against cost (ratios to " + std::string(kBaselineKernel) + ", measured in this run)",
+               {"model", "params/ch", "median rel_rms %", "worst rel_rms %", "ns/eval", "ns/eval array", "ratio",
+                "ratio array", "fit ms", "SPIR-V ops", "shader ratio", "front models", "front all"},
+               {},
+               {}};
+    for (const CostRow& row : r.rows)
+        main.rows.push_back({row.id, row.params_per_channel ? std::to_string(*row.params_per_channel) : "-",
+                             percent(row.median_rel_rms), percent(row.worst_rel_rms), ns(row.ns_scalar),
+                             ns(row.ns_array), ratio_text(row.ratio_scalar), ratio_text(row.ratio_array),
+                             row.fit_ms ? format("%.1f", *row.fit_ms) : "-",
+                             row.spirv_ops ? std::to_string(*row.spirv_ops) : "-",
+                             row.shader_ratio ? format("%.2f", *row.shader_ratio) : "-", front_text(row.front_models),
+                             front_text(row.front_all)});
+    main.notes = {
+        "ns/eval: one RGB evaluation (3 channels), float, one μ at a time; array: a loop over 1024 μ the compiler may "
+        "vectorise. Ratios: median over rounds of the per-round ratio, ± half its interquartile range.",
+        "exact-complex: libfit's complex Fresnel in double with conductor-rgb's fitted n,k; spectral-reference: 471 "
+        "wavelengths × CMF + OCIO per μ; lut-N: N float RGB entries, linear interpolation (accuracy: the table "
+        "against the reference).",
+        "fit ms: fit_model() per material (closed forms, every Ceres start, metrics), median over the catalog.",
+        "Pareto front (*): no other row is both cheaper and more accurate (median rel_rms), among the models only and "
+        "among all rows; CPU on the scalar ratio, GPU on the shader ratio; costs within " +
+        format("%.0f", 100 * r.tolerance.cost) + " % and errors within " + format("%.0f", 100 * r.tolerance.error) +
+        " % are ties."};
+    tables.push_back(std::move(main));
+
+    Table thesis{"Against the thesis's Table 3.2 (time relative to the exact Fresnel, %)",
+                 {"model", "thesis", "CPU scalar", "CPU array", "SPIR-V ops", "GPU shader"}, {}, {}};
+    const auto pct = [](const std::optional<double>& v) { return v ? format("%.0f", *v) : std::string("-"); };
+    for (const ThesisComparison& t : thesis_comparison(r))
+        thesis.rows.push_back({t.model, format("%.0f", t.thesis_percent), pct(t.cpu_scalar_percent),
+                               pct(t.cpu_array_percent), pct(t.spirv_percent), pct(t.shader_percent)});
+    thesis.notes = {"The exact Fresnel here is conductor-rgb (the thesis's real form, float); SPIR-V ops: counted "
+                    "instructions relative to conductor-rgb's."};
+    tables.push_back(std::move(thesis));
+
+    if (!r.spirv.empty()) {
+        Table spirv{"SPIR-V instructions per category (glslangValidator -V -Os, fragment shader around each function)",
+                    {"shader", "arithmetic", "transcendental", "texture", "other", "counted"}, {}, {}};
+        for (const SpirvRow& s : r.spirv) {
+            if (s.counts)
+                spirv.rows.push_back({s.id, std::to_string(s.counts->arithmetic), std::to_string(s.counts->transcendental),
+                                      std::to_string(s.counts->texture), std::to_string(s.counts->other),
+                                      std::to_string(s.counts->compute())});
+            else
+                spirv.rows.push_back({s.id, "error: " + s.error, "", "", "", ""});
+        }
+        spirv.notes = {"counted = arithmetic + transcendental + texture; \"other\" (loads, stores, composites, "
+                       "compares, selects, returns) includes the wrapper's own, shown in the row \"wrapper\"."};
+        tables.push_back(std::move(spirv));
+    }
+
+    Table convergence{"Gauss–Legendre convergence on " + r.material + " (spectral integration cost; change of each "
+                      "fit's worst-channel rel_rms against " + std::to_string(r.convergence_reference_nodes) + " nodes)",
+                      {"nodes", "integration ms"}, {}, {}};
+    for (const std::string& m : r.convergence_models) convergence.headers.push_back(m);
+    for (const ConvergenceRow& c : r.convergence) {
+        std::vector<std::string> row{std::to_string(c.nodes), format("%.2f", c.integration_ms)};
+        for (double v : c.rel_rms_change) row.push_back(format("%.1e", v));
+        convergence.rows.push_back(std::move(row));
+    }
+    convergence.notes = {"integration ms: the exact spectral reference at the N nodes (N × 471 wavelengths + OCIO), "
+                         "once; the model columns are relative changes (1e-3 = 0.1 % of the rel_rms itself)."};
+    tables.push_back(std::move(convergence));
+
+    if (r.shaders.value) {
+        const ShaderBench& b = *r.shaders.value;
+        Table t{"GPU: full-screen model pass at " + std::to_string(b.width) + "x" + std::to_string(b.height) + ", " +
+                    std::to_string(b.frames) + " frames (" + b.renderer + ")",
+                {"shader", "ms/frame", "ratio to conductor-rgb"}, {}, {}};
+        for (const ShaderTiming& s : b.models)
+            t.rows.push_back({s.model, format("%.3f", s.ms_per_frame), format("%.2f", s.ratio_to_conductor_rgb)});
+        tables.push_back(std::move(t));
+    }
+    if (r.localization.value) {
+        const LocalizationBench& b = *r.localization.value;
+        Table t{"GPU: localization at " + std::to_string(b.width) + "x" + std::to_string(b.height) + " (" + b.renderer +
+                    "), error against the CPU ray-traced reference",
+                {"room", "mode", "strategy", "iterations", "ms/frame", "ratio to classic", "rmse", "mean abs"}, {}, {}};
+        for (const LocalizationRoom& room : b.rooms)
+            for (const LocalizationRow& row : room.rows)
+                t.rows.push_back({room.room, row.mode, row.strategy.value_or("-"), std::to_string(row.iterations),
+                                  format("%.3f", row.ms_per_frame), format("%.2f", row.ratio_to_classic),
+                                  format("%.4g", row.rmse), format("%.4g", row.mean_abs)});
+        tables.push_back(std::move(t));
+    }
+    return tables;
+}
+
+}  // namespace metalfit::bench::detail
