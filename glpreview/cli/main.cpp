@@ -6,8 +6,12 @@
 #include <cstdio>
 #include <iostream>
 #include <regex>
+#include <sstream>
 
 #include "glpreview/gl_context.hpp"
+#include "glpreview/image_io.hpp"
+#include "glpreview/sphere_sheet.hpp"
+#include "libfit/atomic_file.hpp"
 #include "glpreview/plan.hpp"
 #include "glpreview/preview.hpp"
 #include "glpreview/scene.hpp"
@@ -34,6 +38,10 @@ int main(int argc, char** argv) {
     app.add_option("scene", scene_file, "Scene JSON (docs/scene.md)")->required();
     app.add_option("-o,--output", output_dir, "Output folder (default: preview/)");
     app.add_option("--size", size, "Image size WxH (overrides the scene's image)");
+    std::string sheet;
+    app.add_option("--sheet", sheet,
+                   "Sphere sheet instead of the scene's outputs: comma-separated materials, one row each "
+                   "(reference | best fitted model | |difference| x 10); the scene holds one sphere");
     app.add_flag("--explain", explain_only, "Print the plan (passes, why they run, what is skipped) and render nothing");
     app.add_option("--data-dir", data_dir, "Built-in database folder")->check(CLI::ExistingDirectory);
     app.add_option("--ocio-config", ocio_config, "OCIO config when $OCIO is not set (default: data/ocio/config.ocio)");
@@ -58,6 +66,26 @@ int main(int argc, char** argv) {
             return ok;
         }
         PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir), output_dir, 0};
+        if (!sheet.empty()) {
+            std::vector<std::string> materials;
+            std::stringstream list(sheet);
+            for (std::string m; std::getline(list, m, ',');)
+                if (!m.empty()) materials.push_back(m);
+            GlContext context = GlContext::create();
+            const SphereSheet result = render_sphere_sheet(scene, materials, options, context);
+            std::filesystem::create_directories(output_dir);
+            const DisplayTransform display = DisplayTransform::create(options.ocio);
+            write_exr(output_dir / "sheet.exr", result.image);
+            write_png(output_dir / "sheet.png", result.image, display);
+            write_file_atomically(output_dir / "sheet.json", result.record.dump(2) + "\n");
+            for (const auto& row : result.record)
+                std::printf("%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f\n",
+                            row["material"].get<std::string>().c_str(), row["model"].get<std::string>().c_str(),
+                            row["model_worst_rel_rms"].get<double>(), kSheetDifferenceScale,
+                            row["image_rmse_model_vs_reference"].get<double>());
+            std::cout << (output_dir / "sheet.png").string() << "\n";
+            return ok;
+        }
         const PreviewResult result = run_preview(scene, options);
         if (!result.renderer.empty()) std::cerr << "glpreview: renderer " << result.renderer << "\n";
         for (const auto& file : result.written) std::cout << file.string() << "\n";

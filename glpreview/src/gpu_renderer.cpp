@@ -45,19 +45,7 @@ GpuRenderer::GpuRenderer(const Scene& scene, const Features& features, std::vect
                             equirect_->rgb.data());
         check_gl("uploading the equirect image");
     }
-    for (const SphereFresnel* f : fresnel_) {
-        if (f->model || luts_.count(f)) continue;
-        GLuint lut = 0;
-        glCreateTextures(GL_TEXTURE_1D, 1, &lut);
-        std::vector<float> texels;
-        for (const RGB& v : f->lut) texels.insert(texels.end(), {float(v.r), float(v.g), float(v.b)});
-        glTextureStorage1D(lut, 1, GL_RGB32F, static_cast<GLsizei>(f->lut.size()));
-        glTextureSubImage1D(lut, 0, 0, static_cast<GLsizei>(f->lut.size()), GL_RGB, GL_FLOAT, texels.data());
-        glTextureParameteri(lut, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(lut, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(lut, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        luts_[f] = lut;
-    }
+    for (const SphereFresnel* f : fresnel_) upload_lut(f);
     glCreateFramebuffers(1, &framebuffer_);
     glCreateTextures(GL_TEXTURE_2D, 1, &color_);
     glTextureStorage2D(color_, 1, GL_RGBA32F, scene.width, scene.height);
@@ -68,6 +56,25 @@ GpuRenderer::GpuRenderer(const Scene& scene, const Features& features, std::vect
     if (glCheckNamedFramebufferStatus(framebuffer_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw GlError("the beauty framebuffer (RGBA32F + depth) is incomplete");
     check_gl("creating the renderer's textures");
+}
+
+void GpuRenderer::upload_lut(const SphereFresnel* f) {
+    if (f->model || luts_.count(f)) return;
+    GLuint lut = 0;
+    glCreateTextures(GL_TEXTURE_1D, 1, &lut);
+    std::vector<float> texels;
+    for (const RGB& v : f->lut) texels.insert(texels.end(), {float(v.r), float(v.g), float(v.b)});
+    glTextureStorage1D(lut, 1, GL_RGB32F, static_cast<GLsizei>(f->lut.size()));
+    glTextureSubImage1D(lut, 0, 0, static_cast<GLsizei>(f->lut.size()), GL_RGB, GL_FLOAT, texels.data());
+    glTextureParameteri(lut, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(lut, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(lut, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    luts_[f] = lut;
+}
+
+void GpuRenderer::set_fresnel(std::size_t sphere, const SphereFresnel* fresnel) {
+    fresnel_.at(sphere) = fresnel;
+    upload_lut(fresnel);
 }
 
 GpuRenderer::~GpuRenderer() {

@@ -32,6 +32,9 @@ public:
     GpuRenderer(const GpuRenderer&) = delete;
     GpuRenderer& operator=(const GpuRenderer&) = delete;
 
+    // Replaces sphere i's Fresnel (the scene's sphere must name the same fresnel kind: "reference" or the model).
+    void set_fresnel(std::size_t sphere, const SphereFresnel* fresnel);
+
     // Ray-casts the environment into the cube map (once; spheres may move afterwards).
     void capture_environment();
     Image render();  // one beauty frame, read back
@@ -53,6 +56,7 @@ private:
     void set_environment_uniforms(GLuint program) const;
     void set_camera_uniforms(GLuint program) const;
     void draw_frame();
+    void upload_lut(const SphereFresnel* fresnel);
 
     const Scene& scene_;
     Features features_;
