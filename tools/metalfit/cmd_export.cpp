@@ -54,11 +54,10 @@ std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& glo
     app.add_flag("--all", o->all, "Every material of the built-in catalog, in parallel");
     app.add_option("--source", o->source, "Alternate source of a catalog material (default: its primary)");
     app.add_option("--model", o->models, "Models, comma-separated, or all")->required();
-    app.add_option("--params", o->params, "Parameters written: fit (Ceres) or closed (best closed form)")
-        ->check(CLI::IsMember({"fit", "closed"}));
+    // --params and --gamut are checked by libfit's parsers: one line naming the value, like every other error.
+    app.add_option("--params", o->params, "Parameters written: fit (Ceres) or closed (best closed form)");
     app.add_option("--format", o->formats, "Formats, comma-separated, or all: json, glsl, hlsl, mtlx, openpbr, cpp")->required();
-    app.add_option("--gamut", o->gamut, "Colour parameters outside [0, 1]: keep (flagged), clip, or scale by 1/max")
-        ->check(CLI::IsMember({"keep", "clip", "scale"}));
+    app.add_option("--gamut", o->gamut, "Colour parameters outside [0, 1]: keep (flagged), clip, or scale by 1/max");
     add_colour_options(app, o->colour);
     app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
     app.add_option("-o,--output", o->output, "Output directory (created if missing)")->required();

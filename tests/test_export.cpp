@@ -1,0 +1,416 @@
+// metalfit export, checked by its consumers' rules: every MaterialX document against the MaterialX definitions, the
+// error figures written in the shader headers re-evaluated independently from the written constants, the gamut
+// policies, the HLSL token mapping, and failures that leave nothing behind.
+#include <gtest/gtest.h>
+#include <pugixml.hpp>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "libfit/catalog.hpp"
+#include "libfit/color_space.hpp"
+#include "libfit/colorimetry.hpp"
+#include "libfit/export.hpp"
+#include "libfit/model.hpp"
+#include "libfit/quadrature.hpp"
+#include "libfit/reference_curve.hpp"
+#include "test_support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using metalfit::test::read_file;
+using metalfit::test::TempDir;
+
+struct Result {
+    int exit_code;
+    std::string out, err;
+};
+
+// Runs the real metalfit with `args` (shell-quoted), OCIO unset.
+Result run(const std::string& args, const fs::path& scratch) {
+    const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
+    const std::string command = "env OCIO= '" + std::string(METALFIT_EXE) + "' " + args + " >'" + out.string() + "' 2>'" +
+                                err.string() + "' </dev/null";
+    const int status = std::system(command.c_str());
+    Result r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
+    fs::remove(out);
+    fs::remove(err);
+    return r;
+}
+
+std::vector<fs::path> files_with_extension(const fs::path& dir, const std::string& ext) {
+    std::vector<fs::path> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file() && e.path().extension() == ext) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// One export of the whole catalog, every model, every format, made once for the suite.
+class CatalogExport : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        dir_ = new fs::path(fs::temp_directory_path() / ("metalfit-export-catalog-" + std::to_string(::getpid())));
+        fs::remove_all(*dir_);
+        fs::create_directories(*dir_);
+        const Result r = run("export --all --model all --format all -o '" + (*dir_ / "out").string() + "'", *dir_);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+    }
+    static void TearDownTestSuite() {
+        fs::remove_all(*dir_);
+        delete dir_;
+    }
+    static fs::path out() { return *dir_ / "out"; }
+    static fs::path* dir_;
+};
+fs::path* CatalogExport::dir_ = nullptr;
+
+// ---- MaterialX: node categories, input names and types, outputs, connections --------------------------------------
+
+struct NodeDef {
+    std::map<std::string, std::string> inputs;   // name → type
+    std::map<std::string, std::string> outputs;  // name → type
+};
+
+// Every <nodedef> of the MaterialX definition files copied into tests/fixtures/materialx (see its SOURCES.md).
+std::multimap<std::string, NodeDef> materialx_nodedefs() {
+    std::multimap<std::string, NodeDef> defs;
+    for (const char* file : {"stdlib_defs.mtlx", "pbrlib_defs.mtlx", "open_pbr_surface.mtlx", "standard_surface.mtlx"}) {
+        pugi::xml_document doc;
+        const fs::path path = metalfit::test::kFixtures / "materialx" / file;
+        const pugi::xml_parse_result parsed = doc.load_file(path.c_str());
+        EXPECT_TRUE(parsed) << path << ": " << parsed.description();
+        for (pugi::xml_node nd : doc.child("materialx").children("nodedef")) {
+            NodeDef d;
+            for (pugi::xml_node in : nd.children("input")) d.inputs[in.attribute("name").value()] = in.attribute("type").value();
+            for (pugi::xml_node o : nd.children("output")) d.outputs[o.attribute("name").value()] = o.attribute("type").value();
+            defs.emplace(nd.attribute("node").value(), std::move(d));
+        }
+    }
+    return defs;
+}
+
+// The node's type as its nodedef gives it: the single output's type, or "multioutput".
+std::string node_type(const NodeDef& d) { return d.outputs.size() == 1 ? d.outputs.begin()->second : "multioutput"; }
+
+// Errors of one document: empty when every node is a known category whose nodedef (one with the node's type) has
+// each input by name and type, and every connection names an existing node and output of the right type.
+std::vector<std::string> materialx_errors(const pugi::xml_document& doc, const std::multimap<std::string, NodeDef>& defs) {
+    std::vector<std::string> errors;
+    const pugi::xml_node root = doc.child("materialx");
+    if (!root) return {"no <materialx> root"};
+    if (std::string(root.attribute("version").value()) != "1.39") errors.push_back("version is not 1.39");
+    std::map<std::string, const NodeDef*> nodes;
+    for (pugi::xml_node node : root.children()) {
+        if (node.type() != pugi::node_element) continue;
+        const std::string category = node.name(), name = node.attribute("name").value(), type = node.attribute("type").value();
+        const auto [first, last] = defs.equal_range(category);
+        if (first == last) {
+            errors.push_back("unknown node category <" + category + ">");
+            continue;
+        }
+        const NodeDef* match = nullptr;
+        for (auto it = first; it != last && !match; ++it) {
+            if (node_type(it->second) != type) continue;
+            bool all = true;
+            for (pugi::xml_node in : node.children("input")) {
+                const auto found = it->second.inputs.find(in.attribute("name").value());
+                all = all && found != it->second.inputs.end() && found->second == in.attribute("type").value();
+            }
+            if (all) match = &it->second;
+        }
+        if (!match) errors.push_back("<" + category + " name=\"" + name + "\" type=\"" + type + "\">: no nodedef has these inputs and types");
+        nodes[name] = match;
+    }
+    for (pugi::xml_node node : root.children())
+        for (pugi::xml_node in : node.children("input")) {
+            if (in.attribute("nodename").empty()) {
+                if (in.attribute("value").empty()) errors.push_back(std::string(in.attribute("name").value()) + ": neither value nor nodename");
+                continue;
+            }
+            const auto source = nodes.find(in.attribute("nodename").value());
+            if (source == nodes.end() || !source->second) {
+                errors.push_back(std::string("connection to unknown node ") + in.attribute("nodename").value());
+                continue;
+            }
+            const auto& outputs = source->second->outputs;
+            const std::string output = in.attribute("output").empty() ? outputs.begin()->first : in.attribute("output").value();
+            const auto o = outputs.find(output);
+            if (o == outputs.end() || o->second != in.attribute("type").value())
+                errors.push_back(std::string("connection ") + in.attribute("nodename").value() + "." + output + " has no output of type " +
+                                 in.attribute("type").value());
+        }
+    if (!root.child("surfacematerial")) errors.push_back("no surfacematerial");
+    return errors;
+}
+
+TEST(MaterialxDefinitions, TheCheckerRejectsWhatMaterialxLacks) {
+    const auto defs = materialx_nodedefs();
+    ASSERT_GT(defs.size(), 100u);
+    const auto errors_of = [&](const char* text) {
+        pugi::xml_document doc;
+        EXPECT_TRUE(doc.load_string(text));
+        return materialx_errors(doc, defs);
+    };
+    EXPECT_TRUE(errors_of(R"(<materialx version="1.39"><conductor_bsdf name="b" type="BSDF"><input name="ior" type="color3" value="1, 1, 1"/></conductor_bsdf>
+        <surface name="s" type="surfaceshader"><input name="bsdf" type="BSDF" nodename="b"/></surface>
+        <surfacematerial name="m" type="material"><input name="surfaceshader" type="surfaceshader" nodename="s"/></surfacematerial></materialx>)")
+                    .empty());
+    EXPECT_FALSE(errors_of(R"(<materialx version="1.39"><conductor_bsdf name="b" type="BSDF"><input name="eta" type="color3" value="1, 1, 1"/></conductor_bsdf>
+        <surfacematerial name="m" type="material"/></materialx>)").empty());  // no input "eta"
+    EXPECT_FALSE(errors_of(R"(<materialx version="1.39"><conductor_bsdf name="b" type="BSDF"><input name="ior" type="float" value="1"/></conductor_bsdf>
+        <surfacematerial name="m" type="material"/></materialx>)").empty());  // ior is a color3
+    EXPECT_FALSE(errors_of(R"(<materialx version="1.39"><lazanyi_bsdf name="b" type="BSDF"/><surfacematerial name="m" type="material"/></materialx>)").empty());
+    EXPECT_FALSE(errors_of(R"(<materialx version="1.39"><artistic_ior name="a" type="multioutput"/>
+        <conductor_bsdf name="b" type="BSDF"><input name="ior" type="color3" nodename="a" output="eta"/></conductor_bsdf>
+        <surfacematerial name="m" type="material"/></materialx>)").empty());  // artistic_ior has no output "eta"
+}
+
+TEST_F(CatalogExport, EveryMaterialxDocumentUsesOnlyDefinedNodesInputsAndTypes) {
+    const auto defs = materialx_nodedefs();
+    const auto files = files_with_extension(out(), ".mtlx");
+    // 29 materials × 6 models, in mtlx/ and in openpbr/.
+    EXPECT_EQ(files.size(), 2u * 29u * metalfit::all_models().size());
+    std::set<std::string> categories;
+    for (const fs::path& f : files) {
+        pugi::xml_document doc;
+        const pugi::xml_parse_result parsed = doc.load_file(f.c_str());
+        ASSERT_TRUE(parsed) << f << ": " << parsed.description();
+        for (const std::string& e : materialx_errors(doc, defs)) ADD_FAILURE() << f << ": " << e;
+        for (pugi::xml_node n : doc.child("materialx").children()) categories.insert(n.name());
+    }
+    EXPECT_EQ(categories, (std::set<std::string>{"generalized_schlick_bsdf", "conductor_bsdf", "artistic_ior", "surface",
+                                                 "surfacematerial", "open_pbr_surface"}));
+}
+
+TEST_F(CatalogExport, MaterialxMappingFollowsTheModels) {
+    const auto category = [&](const std::string& stem) {
+        pugi::xml_document doc;
+        EXPECT_TRUE(doc.load_file((out() / "mtlx" / (stem + ".mtlx")).c_str()));
+        return std::string(doc.child("materialx").first_child().name());
+    };
+    EXPECT_EQ(category("metalfit_cu_f82_tint"), "generalized_schlick_bsdf");
+    EXPECT_EQ(category("metalfit_cu_schlick"), "generalized_schlick_bsdf");
+    EXPECT_EQ(category("metalfit_cu_lazanyi_comp"), "generalized_schlick_bsdf");
+    EXPECT_EQ(category("metalfit_cu_conductor_rgb"), "conductor_bsdf");
+    EXPECT_EQ(category("metalfit_cu_gulbrandsen"), "artistic_ior");
+    // schlick: color82 = 1 in every channel.
+    pugi::xml_document doc;
+    ASSERT_TRUE(doc.load_file((out() / "mtlx" / "metalfit_cu_schlick.mtlx").c_str()));
+    EXPECT_STREQ(doc.select_node("//input[@name='color82']").node().attribute("value").value(), "1.0, 1.0, 1.0");
+}
+
+// ---- Error figures in the headers, re-evaluated from the written constants ---------------------------------------
+
+struct ShaderExport {
+    std::string material, model;
+    std::map<std::string, std::array<double, 3>> figures;  // rel_rms, abs_rms, max_rel, max_abs, albedo_err
+    std::vector<std::array<double, 3>> params;             // in the order of the model's parameters
+};
+
+std::array<double, 3> three(const std::string& text) {
+    std::array<double, 3> v{};
+    std::istringstream s(text);
+    char comma;
+    s >> v[0] >> comma >> v[1] >> comma >> v[2];
+    return v;
+}
+
+ShaderExport parse_glsl_export(const fs::path& file) {
+    const std::string text = read_file(file);
+    ShaderExport e;
+    std::smatch m;
+    if (std::regex_search(text, m, std::regex(R"(export: .* \(([^)]+)\)\n)"))) e.material = m[1];
+    if (std::regex_search(text, m, std::regex(R"(// model: (\S+) )"))) e.model = m[1];
+    for (const char* key : {"rel_rms", "abs_rms", "max_rel", "max_abs", "albedo_err"})
+        if (std::regex_search(text, m, std::regex(std::string("//   ") + key + R"( += ([^\n]+))"))) e.figures[key] = three(m[1]);
+    const std::regex constant(R"(const vec3 METALFIT_\w+ = vec3\(([^)]+)\);)");
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), constant); it != std::sregex_iterator(); ++it)
+        e.params.push_back(three((*it)[1]));
+    return e;
+}
+
+TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
+    using namespace metalfit;
+    const fs::path data = test::kData;
+    const Catalog catalog = Catalog::load(data);
+    const Colorimetry colorimetry = Colorimetry::load(data, Observer::cie1931_2deg, Illuminant::D65);
+    const ColorSpaceConverter converter = ColorSpaceConverter::create(choose_ocio_config(std::nullopt, data));
+    // Own quadrature and grid, not libfit's metrics: the definitions of DESIGN.md, written out here.
+    const auto nodes = gauss_legendre_unit(128);
+    std::vector<double> grid_mu;
+    for (int i = 0; i <= 1024; ++i) grid_mu.push_back(i / 1024.0);
+    for (const auto& n : nodes) grid_mu.push_back(n.mu);
+
+    std::map<std::string, std::vector<ShaderExport>> by_material;
+    for (const fs::path& f : files_with_extension(out() / "glsl", ".glsl"))
+        if (f.filename() != "metalfit_models.glsl") by_material[parse_glsl_export(f).material].push_back(parse_glsl_export(f));
+    ASSERT_EQ(by_material.size(), 29u);
+    int checked = 0;
+    for (const auto& [id, exports] : by_material) {
+        const ReferenceCurve curve(load_material(catalog, id, ""), colorimetry, converter);
+        std::vector<RGB> at_nodes, at_grid;
+        for (const auto& n : nodes) at_nodes.push_back(curve(n.mu));
+        for (double mu : grid_mu) at_grid.push_back(curve(mu));
+        for (const ShaderExport& e : exports) {
+            SCOPED_TRACE(id + " " + e.model);
+            const Model& model = find_model(e.model);
+            ASSERT_EQ(e.params.size(), model.parameters().size());
+            RgbParameters p;
+            for (int c = 0; c < 3; ++c)
+                for (const auto& v : e.params) p[c].push_back(v[c]);
+            for (int c = 0; c < 3; ++c) {
+                double rel = 0, abs = 0, albedo = 0, max_rel = 0, max_abs = 0;
+                for (std::size_t i = 0; i < nodes.size(); ++i) {
+                    const double d = model.evaluate(std::span<const double>(p[c]), nodes[i].mu) - at_nodes[i][c];
+                    rel += nodes[i].weight * std::pow(d / at_nodes[i][c], 2);
+                    abs += nodes[i].weight * d * d;
+                    albedo += nodes[i].weight * 2 * nodes[i].mu * d;
+                }
+                for (std::size_t i = 0; i < grid_mu.size(); ++i) {
+                    const double d = model.evaluate(std::span<const double>(p[c]), grid_mu[i]) - at_grid[i][c];
+                    max_abs = std::max(max_abs, std::abs(d));
+                    max_rel = std::max(max_rel, std::abs(d / at_grid[i][c]));
+                }
+                const std::map<std::string, double> mine{{"rel_rms", std::sqrt(rel)}, {"abs_rms", std::sqrt(abs)},
+                                                         {"max_rel", max_rel}, {"max_abs", max_abs}, {"albedo_err", albedo}};
+                for (const auto& [key, value] : mine) {
+                    ASSERT_TRUE(e.figures.count(key)) << key;
+                    const double written = e.figures.at(key)[c];
+                    // Six significant digits are written; the constants are exact (shortest round trip).
+                    EXPECT_NEAR(value, written, 1e-5 * std::abs(written) + 1e-12) << key << " channel " << c;
+                }
+            }
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 29 * static_cast<int>(all_models().size()));
+}
+
+// ---- JSON: the fit record's schema, the written parameters in "export" ---------------------------------------------
+
+TEST_F(CatalogExport, JsonIsTheFitRecordWithTheWrittenParameters) {
+    const auto j = nlohmann::json::parse(read_file(out() / "metalfit_export.json"));
+    EXPECT_EQ(j["schema"], "metalfit.fit/1");
+    ASSERT_EQ(j["materials"].size(), 29u);
+    const auto& au = j["materials"]["Au"]["models"]["f82-tint"];
+    EXPECT_EQ(au["export"]["from"], "fit");
+    EXPECT_EQ(au["export"]["params"], au["fit"]["params"]);  // keep: the fit as it is
+    EXPECT_EQ(au["export"]["metrics"], au["fit"]["metrics"]);
+    // The GLSL constants are the same numbers.
+    const ShaderExport g = parse_glsl_export(out() / "glsl" / "metalfit_au_f82_tint.glsl");
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(g.params[0][c], au["export"]["params"]["F0"][c].get<double>());
+}
+
+// ---- Gamut policies ------------------------------------------------------------------------------------------------
+
+TEST(ExportGamut, ClipAndScaleWriteInGamutColoursAndTheirOwnErrors) {
+    TempDir tmp;
+    std::map<std::string, nlohmann::json> records;
+    for (const char* policy : {"keep", "clip", "scale"}) {
+        const fs::path dir = tmp.path() / policy;
+        const Result r = run(std::string("export gold --model f82-tint,schlick --format json --gamut ") + policy + " -o '" + dir.string() + "'", tmp.path());
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        records[policy] = nlohmann::json::parse(read_file(dir / "metalfit_export.json"))["materials"]["Au"]["models"];
+    }
+    for (const char* model : {"f82-tint", "schlick"}) {
+        SCOPED_TRACE(model);
+        const auto& keep = records["keep"][model]["export"];
+        const auto& clip = records["clip"][model]["export"];
+        const auto& scale = records["scale"][model]["export"];
+        const auto F0 = [](const nlohmann::json& e, int c) { return e["params"]["F0"][c].get<double>(); };
+        ASSERT_GT(F0(keep, 0), 1.0);  // gold's red F0 is out of gamut in Linear Rec.709
+        EXPECT_FALSE(keep["out_of_gamut"].empty());
+        EXPECT_EQ(F0(clip, 0), 1.0);
+        EXPECT_EQ(F0(clip, 1), F0(keep, 1));
+        EXPECT_DOUBLE_EQ(F0(scale, 0), 1.0);
+        EXPECT_DOUBLE_EQ(F0(scale, 1), F0(keep, 1) / F0(keep, 0));
+        // The figures are those of the written values.
+        EXPECT_NE(clip["metrics"]["rel_rms"][0], keep["metrics"]["rel_rms"][0]);
+        // Schlick's green is in gamut: clipping leaves it alone (f82-tint's green tint, 1.003, is clipped too).
+        if (std::string(model) == "schlick") EXPECT_EQ(clip["metrics"]["rel_rms"][1], keep["metrics"]["rel_rms"][1]);
+        else EXPECT_NE(clip["metrics"]["rel_rms"][1], keep["metrics"]["rel_rms"][1]);
+        EXPECT_NE(scale["metrics"]["rel_rms"][1], keep["metrics"]["rel_rms"][1]);
+        EXPECT_EQ(keep["metrics"], records["keep"][model]["fit"]["metrics"]);
+    }
+}
+
+// ---- HLSL: a token mapping of the GLSL, comments untouched ---------------------------------------------------------
+
+TEST(ExportHlsl, TranslationIsATokenMapping) {
+    const std::string hlsl = metalfit::hlsl_from_glsl(
+        "// vec3 mix equal stay in comments\nvec3 f(vec3 a, bvec3 b, float mu) { vec3 c = vec3(1e-30) + vec3 (mu); "
+        "return mix(a, c, greaterThanEqual(a, c)) + vec3(equal(a, c).x ? 1.0 : 0.0); }\n");
+    const std::string body = hlsl.substr(hlsl.find("// vec3 mix"));
+    EXPECT_EQ(body,
+              "// vec3 mix equal stay in comments\nfloat3 f(float3 a, bool3 b, float mu) { float3 c = metalfit_vec3(1e-30) + "
+              "metalfit_vec3 (mu); return metalfit_mix(a, c, metalfit_greaterThanEqual(a, c)) + "
+              "metalfit_vec3(metalfit_equal(a, c).x ? 1.0 : 0.0); }\n");
+}
+
+// ---- Failures: one line, non-zero exit, nothing left behind --------------------------------------------------------
+
+TEST(ExportErrors, BadRequestsFailWithOneLineAndWriteNothing) {
+    TempDir tmp;
+    const fs::path dir = tmp.path() / "out";
+    struct Case {
+        std::string args;
+        int exit_code;
+        std::string message;
+    };
+    const std::vector<Case> cases{
+        {"export unobtainium --model f82-tint --format glsl", 2, "unobtainium"},
+        {"export Au --model f83-tint --format glsl", 2, "f83-tint"},
+        {"export Au --model f82-tint --format vulkan", 2, "vulkan"},
+        {"export Au --model f82-tint --format glsl --gamut squash", 2, "squash"},
+        {"export --all Au --model f82-tint --format glsl", 2, "not both"},
+    };
+    for (const Case& c : cases) {
+        const Result r = run(c.args + " -o '" + dir.string() + "'", tmp.path());
+        EXPECT_EQ(r.exit_code, c.exit_code) << c.args << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(dir)) << c.args;
+    }
+}
+
+TEST(ExportErrors, AnUnwritableDestinationLeavesNoPartialFiles) {
+    TempDir tmp;
+    // Below a regular file: no folder can be made there (whoever runs the test, root included).
+    const fs::path blocker = tmp.write("file", "x");
+    Result r = run("export Au --model f82-tint --format glsl -o '" + (blocker / "out").string() + "'", tmp.path());
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("file"), std::string::npos) << r.err;
+
+    // glsl/ can be written but hlsl/ cannot (a file is in the way): the GLSL files must not stay behind either.
+    const fs::path dir = tmp.path() / "out";
+    fs::create_directories(dir);
+    tmp.write("out/hlsl", "in the way");
+    r = run("export Au --model f82-tint --format glsl,hlsl,json -o '" + dir.string() + "'", tmp.path());
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    std::vector<std::string> left;
+    for (const auto& e : fs::recursive_directory_iterator(dir)) left.push_back(e.path().lexically_relative(dir).string());
+    EXPECT_EQ(left, std::vector<std::string>{"hlsl"});
+}
+
+TEST(ExportErrors, ClosedParametersThatDoNotExistAreAnErrorNamingTheReason) {
+    TempDir tmp;
+    const Result r = run("export Au --model lazanyi-comp --params closed --format glsl -o '" + (tmp.path() / "out").string() + "'",
+                         tmp.path());
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("no closed form is defined"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(tmp.path() / "out"));
+}
+
+}  // namespace
