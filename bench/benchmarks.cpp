@@ -38,8 +38,14 @@ void eval(benchmark::State& state, const EvalKernel* kernel, bool array) {
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kernel->batch));
 }
 
-// The per-material inputs of a fit, made once per material (not timed).
+// The per-material inputs of a fit, made once per material (not timed). The closed-form input refers to the curve,
+// so both live at a fixed address.
 struct FitInput {
+    FitInput(const Environment& env, const std::string& id)
+        : material(load_material(env.catalog, id)),
+          curve(material, env.colorimetry, env.converter, env.spectral),
+          reference(curve, env.error),
+          input(closed_form_input(curve, material, env.spectral)) {}
     Material material;
     ReferenceCurve curve;
     SampledReference reference;
@@ -47,15 +53,9 @@ struct FitInput {
 };
 
 const FitInput& fit_input(const Environment& env, const std::string& id) {
-    static std::map<std::string, std::unique_ptr<FitInput>> cache;
+    static std::map<std::string, std::unique_ptr<const FitInput>> cache;
     auto& slot = cache[id];
-    if (!slot) {
-        Material material = load_material(env.catalog, id);
-        ReferenceCurve curve(material, env.colorimetry, env.converter, env.spectral);
-        SampledReference reference(curve, env.error);
-        ClosedFormInput input = closed_form_input(curve, material, env.spectral);
-        slot = std::make_unique<FitInput>(FitInput{std::move(material), std::move(curve), std::move(reference), std::move(input)});
-    }
+    if (!slot) slot = std::make_unique<const FitInput>(env, id);
     return *slot;
 }
 
@@ -79,34 +79,6 @@ void integration(benchmark::State& state, const PreparedMaterial* material, std:
     }
     state.SetItemsProcessed(state.iterations() * state.range(0));
     for (const auto& [model, value] : change) state.counters["d_" + model] = value;
-}
-
-// Relative change of each model's worst-channel rel_rms at each N against 2048 nodes.
-std::map<int, std::map<std::string, double>> convergence(const PreparedMaterial& material) {
-    std::map<int, std::map<std::string, double>> out;
-    const std::vector<int> counts = convergence_node_counts();
-    std::map<double, RGB> cache;
-    for (const Model* model : all_models()) {
-        const RgbParameters& p = material.params(model->id());
-        std::array<Convergence, 3> channel;
-        for (int c = 0; c < 3; ++c)
-            channel[c] = gauss_legendre_convergence(
-                [&](double mu) {
-                    auto it = cache.find(mu);
-                    if (it == cache.end()) it = cache.emplace(mu, material.curve(mu)).first;
-                    const double e = (model->evaluate(std::span<const double>(p[c]), mu) - it->second[c]) / it->second[c];
-                    return e * e;
-                },
-                counts, 2048);
-        double at_reference = 0;
-        for (int c = 0; c < 3; ++c) at_reference = std::max(at_reference, std::sqrt(channel[c].reference_estimate));
-        for (std::size_t i = 0; i < counts.size(); ++i) {
-            double at_n = 0;
-            for (int c = 0; c < 3; ++c) at_n = std::max(at_n, std::sqrt(channel[c].points[i].estimate));
-            out[counts[i]][std::string(model->id())] = std::abs(at_n - at_reference) / at_reference;
-        }
-    }
-    return out;
 }
 
 }  // namespace
@@ -133,10 +105,14 @@ int main(int argc, char** argv) {
             for (const Model* m : all_models())
                 benchmark::RegisterBenchmark(("BM_Fit/" + e.id + "/" + std::string(m->id())).c_str(), fit, &env, e.id, m)
                     ->Unit(benchmark::kMillisecond);
-        for (const auto& [nodes, change] : convergence(material))
+        const FittedConvergence convergence = fitted_rel_rms_convergence(material);
+        for (std::size_t i = 0; i < convergence.nodes.size(); ++i) {
+            std::map<std::string, double> change;
+            for (std::size_t m = 0; m < convergence.models.size(); ++m) change[convergence.models[m]] = convergence.rel_rms_change[i][m];
             benchmark::RegisterBenchmark("BM_Integration", integration, &material, change)
-                ->Arg(nodes)
+                ->Arg(convergence.nodes[i])
                 ->Unit(benchmark::kMicrosecond);
+        }
         benchmark::RunSpecifiedBenchmarks();
         benchmark::Shutdown();
     } catch (const std::exception& e) {

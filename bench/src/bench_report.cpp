@@ -4,7 +4,6 @@
 #include <cmath>
 #include <map>
 
-#include "libfit/quadrature.hpp"
 #include "metalfit_bench/convergence.hpp"
 #include "metalfit_bench/environment.hpp"
 #include "metalfit_bench/eval_kernels.hpp"
@@ -15,53 +14,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-constexpr int kConvergenceReferenceNodes = 2048;
-
-// rel_rms convergence of every model's fit on the material: for each channel ∫ ((M − R) / R)² dμ at each N, the
-// reference R computed once per distinct node.
-void measure_convergence(const PreparedMaterial& material, BenchReport& report) {
-    std::map<double, RGB> cache;
-    const auto reference = [&](double mu) -> const RGB& {
-        auto it = cache.find(mu);
-        if (it == cache.end()) it = cache.emplace(mu, material.curve(mu)).first;
-        return it->second;
-    };
-    const std::vector<int> counts = convergence_node_counts();
-    report.convergence_reference_nodes = kConvergenceReferenceNodes;
-    for (int n : counts) {
-        const auto start = Clock::now();
-        for (const QuadratureNode& q : gauss_legendre_unit(n)) reference(q.mu);  // timed: the first use of these nodes
-        report.convergence.push_back({n, 1e3 * since(start), {}});
-    }
-    for (const Model* model : all_models()) {
-        report.convergence_models.emplace_back(model->id());
-        const RgbParameters& p = material.params(model->id());
-        std::array<Convergence, 3> channel;
-        for (int c = 0; c < 3; ++c) {
-            const auto integrand = [&](double mu) {
-                const double r = reference(mu)[c];
-                const double e = (model->evaluate(std::span<const double>(p[c]), mu) - r) / r;
-                return e * e;
-            };
-            channel[c] = gauss_legendre_convergence(integrand, counts, kConvergenceReferenceNodes);
-        }
-        const auto worst_rms = [&](auto estimate) {
-            double w = 0;
-            for (int c = 0; c < 3; ++c) w = std::max(w, std::sqrt(estimate(channel[c])));
-            return w;
-        };
-        const double at_reference = worst_rms([](const Convergence& c) { return c.reference_estimate; });
-        for (std::size_t i = 0; i < counts.size(); ++i) {
-            const double at_n = worst_rms([i](const Convergence& c) { return c.points[i].estimate; });
-            report.convergence[i].rel_rms_change.push_back(std::abs(at_n - at_reference) / at_reference);
-        }
-    }
-}
-
-}  // namespace
-
-namespace {
 
 // The front among the rows `member` selects, on the scalar CPU ratio and on the shader ratio.
 void mark_front(std::vector<CostRow>& rows, const ParetoTolerance& tolerance, bool (*member)(const CostRow&),
@@ -171,7 +123,11 @@ BenchReport run_bench(const BenchOptions& o) {
     }
 
     say("integrating the reference with 8 … 512 Gauss–Legendre nodes");
-    measure_convergence(material, report);
+    const FittedConvergence convergence = fitted_rel_rms_convergence(material);
+    report.convergence_reference_nodes = convergence.reference_nodes;
+    report.convergence_models = convergence.models;
+    for (std::size_t i = 0; i < convergence.nodes.size(); ++i)
+        report.convergence.push_back({convergence.nodes[i], convergence.integration_ms[i], convergence.rel_rms_change[i]});
 
     say("GPU: " + (o.glpreview.empty() ? std::string("no glpreview") : o.glpreview.string()));
     report.shaders = run_shader_bench(o.glpreview, o.quick);

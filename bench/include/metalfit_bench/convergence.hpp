@@ -4,7 +4,10 @@
 
 #include <functional>
 #include <span>
+#include <string>
 #include <vector>
+
+#include "metalfit_bench/environment.hpp"
 
 namespace metalfit::bench {
 
@@ -28,5 +31,17 @@ Convergence gauss_legendre_convergence(const std::function<double(double)>& f, s
 
 // The node counts of the issue: 8, 16, …, 512.
 std::vector<int> convergence_node_counts();
+
+// On one material: the cost of the spectral integration at each N (the exact reference at the N nodes, computed
+// once), and how much each model's fitted worst-channel rel_rms changes with N, relative to reference_nodes:
+// |rms(N) − rms(ref)| / rms(ref), each channel's ∫ ((M − R) / R)² dμ integrated by gauss_legendre_convergence.
+struct FittedConvergence {
+    int reference_nodes = 0;
+    std::vector<int> nodes;
+    std::vector<double> integration_ms;              // per N
+    std::vector<std::string> models;                 // all_models() order
+    std::vector<std::vector<double>> rel_rms_change;  // [N][model]
+};
+FittedConvergence fitted_rel_rms_convergence(const PreparedMaterial& material, int reference_nodes = 2048);
 
 }  // namespace metalfit::bench
