@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <set>
 #include <nlohmann/json.hpp>
 
 #include "test_support.hpp"
@@ -93,6 +94,36 @@ TEST(PreviewCli, AnOutputThatCannotBeWrittenIsAnErrorAndLeavesNoPartialFile) {
     std::vector<std::string> left;
     for (const auto& entry : fs::directory_iterator(dir.path() / "out")) left.push_back(entry.path().filename().string());
     EXPECT_EQ(left, (std::vector<std::string>{"beauty.exr"}));
+}
+
+// The benchmark modes `metalfit bench` reads: every libfit model and the LUT timed in one run; every reflection
+// mode and iteration count with its error against the CPU reference.
+TEST(PreviewCli, BenchmarkModesPrintTheirJson) {
+    TempDir dir;
+    CommandRun run = glpreview("--bench-shaders --quick --json", dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    auto shaders = nlohmann::json::parse(run.out);
+    std::set<std::string> models;
+    for (const auto& m : shaders["models"]) {
+        models.insert(m["model"].get<std::string>());
+        EXPECT_GT(m["ms_per_frame"].get<double>(), 0.0);
+    }
+    EXPECT_EQ(models, (std::set<std::string>{"schlick", "lazanyi", "lazanyi-comp", "f82-tint", "conductor-rgb", "gulbrandsen",
+                                             "reference-lut"}));
+    run = glpreview("--bench-localization --quick --json", dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    auto localization = nlohmann::json::parse(run.out);
+    ASSERT_EQ(localization["rooms"].size(), 2u);
+    for (const auto& room : localization["rooms"]) {
+        const auto& rows = room["rows"];
+        ASSERT_EQ(rows.size(), 20u);  // classic, box-parallax, 3 strategies × {0, 1, 2, 4, 8, 16}
+        EXPECT_EQ(rows[0]["mode"], "classic");
+        EXPECT_DOUBLE_EQ(rows[0]["ratio_to_classic"].get<double>(), 1.0);
+        for (const auto& r : rows)
+            if (r["mode"] == "distance-impostor" && r["iterations"] == 4) {
+                EXPECT_LT(r["rmse"].get<double>(), rows[0]["rmse"].get<double>()) << room["room"] << " " << r["strategy"];
+            }
+    }
 }
 
 }  // namespace

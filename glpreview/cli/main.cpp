@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "glpreview/gl_context.hpp"
+#include "glpreview/gpu_bench.hpp"
 #include "glpreview/image_io.hpp"
 #include "glpreview/sphere_sheet.hpp"
 #include "libfit/atomic_file.hpp"
@@ -35,7 +36,14 @@ int main(int argc, char** argv) {
     bool explain_only = false;
     std::filesystem::path data_dir = default_data_dir();
     std::optional<std::filesystem::path> ocio_config;
-    app.add_option("scene", scene_file, "Scene JSON (docs/scene.md)")->required();
+    app.add_option("scene", scene_file, "Scene JSON (docs/scene.md)");
+    bool bench_shader_cost = false, bench_localization_cost = false, quick = false, json = false;
+    app.add_flag("--bench-shaders", bench_shader_cost,
+                 "Benchmark: full-screen 1024² pass per libfit model, ratio to the exact conductor-rgb pass (JSON with --json)");
+    app.add_flag("--bench-localization", bench_localization_cost,
+                 "Benchmark: ms per frame and error vs the CPU reference for every reflection mode and iteration count");
+    app.add_flag("--quick", quick, "Benchmarks: fewer frames, smaller images");
+    app.add_flag("--json", json, "Benchmarks: print JSON");
     app.add_option("-o,--output", output_dir, "Output folder (default: preview/)");
     app.add_option("--size", size, "Image size WxH (overrides the scene's image)");
     std::string sheet;
@@ -53,6 +61,30 @@ int main(int argc, char** argv) {
         return code == 0 ? ok : usage;
     }
     try {
+        if (bench_shader_cost || bench_localization_cost) {
+            GlContext context = GlContext::create();
+            const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir), {}, 0};
+            const auto result = bench_shader_cost ? bench_shaders(context, quick) : bench_localization(context, options, quick);
+            if (json) {
+                std::cout << result.dump(2) << "\n";
+                return ok;
+            }
+            std::cout << "renderer " << result["renderer"].get<std::string>() << "\n";
+            if (bench_shader_cost)
+                for (const auto& m : result["models"])
+                    std::printf("%-14s %8.2f ms  x%.2f of conductor-rgb\n", m["model"].get<std::string>().c_str(),
+                                m["ms_per_frame"].get<double>(), m["ratio_to_conductor_rgb"].get<double>());
+            else
+                for (const auto& room : result["rooms"])
+                    for (const auto& r : room["rows"])
+                        std::printf("%-10s %-18s %-15s %2d  %7.2f ms  x%.2f  rmse %.5f\n", room["room"].get<std::string>().c_str(),
+                                    r["mode"].get<std::string>().c_str(),
+                                    r["strategy"].is_null() ? "-" : r["strategy"].get<std::string>().c_str(),
+                                    r["iterations"].get<int>(), r["ms_per_frame"].get<double>(),
+                                    r["ratio_to_classic"].get<double>(), r["rmse"].get<double>());
+            return ok;
+        }
+        if (scene_file.empty()) throw UsageError("a scene file is required (or --bench-shaders / --bench-localization)");
         Scene scene = load_scene(scene_file);
         if (!size.empty()) {
             std::smatch m;

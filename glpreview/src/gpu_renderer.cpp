@@ -6,16 +6,10 @@
 
 #include "glpreview/camera.hpp"
 #include "libfit/model.hpp"
-#include "shader_sources.hpp"
+#include "embedded_shaders.hpp"
 
 namespace metalfit::glpreview {
 namespace {
-
-std::string_view shader_text(std::string_view name) {
-    for (const auto& [file, text] : detail::kPreviewShaders)
-        if (file == name) return text;
-    throw std::out_of_range("no embedded preview shader '" + std::string(name) + "'");
-}
 
 void set(GLuint program, const char* name, Vec3 v) {
     glProgramUniform3f(program, glGetUniformLocation(program, name), static_cast<float>(v.x), static_cast<float>(v.y),

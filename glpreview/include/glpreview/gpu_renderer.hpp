@@ -38,6 +38,8 @@ public:
     // Ray-casts the environment into the cube map (once; spheres may move afterwards).
     void capture_environment();
     Image render();  // one beauty frame, read back
+    // One beauty frame without read-back or glFinish (the caller brackets it; benchmarks).
+    void draw_frame_for_timing() { draw_frame(); }
     // Milliseconds of `frames` beauty frames, each between glFinish calls (no read-back).
     std::vector<double> time_frames(int frames);
 

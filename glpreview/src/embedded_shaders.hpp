@@ -1,0 +1,18 @@
+// The embedded text of glpreview/shaders/<name> (generated at build time; see CMakeLists.txt).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "shader_sources.hpp"
+
+namespace metalfit::glpreview {
+
+inline std::string_view shader_text(std::string_view name) {
+    for (const auto& [file, text] : detail::kPreviewShaders)
+        if (file == name) return text;
+    throw std::out_of_range("no embedded preview shader '" + std::string(name) + "'");
+}
+
+}  // namespace metalfit::glpreview
