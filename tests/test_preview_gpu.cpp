@@ -24,6 +24,7 @@ namespace metalfit::glpreview {
 namespace {
 
 using test::kData;
+namespace fs = std::filesystem;
 
 GlContext& gl() {
     static GlContext context = GlContext::create();
@@ -290,6 +291,29 @@ TEST(PreviewGpu, ErrorFallsFromClassicToOneToFourIterationsInTheDifficultRoom) {
     }
     EXPECT_GT(rmse[0], rmse[1]);
     EXPECT_GT(rmse[1], rmse[2]);
+}
+
+// One small picture as a regression guard over the whole path (room, Fresnel, lookups, OCIO display transform):
+// at most 0.1 % of the pixels may differ by more than 5/255 in some channel (tests/fixtures/golden/README.md).
+TEST(PreviewGpu, GoldenImage) {
+    gl();
+    test::TempDir dir;
+    const fs::path golden = test::kFixtures / "golden";
+    const Scene scene = load_scene(golden / "preview-small.json");
+    PreviewOptions o = options();
+    o.output_dir = dir.path();
+    run_preview(scene, o, &gl());
+    const Png8 expected = read_png8(golden / "preview-small.png");
+    const Png8 actual = read_png8(dir.path() / "beauty.png");
+    ASSERT_EQ(actual.width, expected.width);
+    ASSERT_EQ(actual.height, expected.height);
+    std::size_t failing = 0;
+    for (std::size_t p = 0; p < expected.rgb.size() / 3; ++p) {
+        int worst = 0;
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(actual.rgb[3 * p + c]) - int(expected.rgb[3 * p + c])));
+        if (worst > 5) ++failing;
+    }
+    EXPECT_LE(failing, expected.rgb.size() / 3 / 1000) << failing << " pixels differ by more than 5/255";
 }
 
 }  // namespace
