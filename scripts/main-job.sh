@@ -6,7 +6,10 @@
 #   fit.txt / fit.json              closed forms and Ceres fits of every model for every catalog material
 #                                   (docs/fitting.md, docs/fit-record.md); fit-timings.txt: where the time went;
 #                                   fit-summary.md: worst-channel rel_rms of every model, fit / closed form
-# Later stages (export, report, preview) are added here as they land.
+#   export/                         `metalfit export --all --model all --format all`: JSON, GLSL, HLSL, MaterialX,
+#                                   OpenPBR and C++ constants of every catalog material and model (docs/export.md);
+#                                   export-summary.md: what the MaterialX documents cost where they differ from the fit
+# Later stages (report, preview) are added here as they land.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-out}"
@@ -23,4 +26,6 @@ done
   || { cat "$out/fit-timings.txt" >&2; exit 1; }
 "$metalfit" fit --all --model all -o "$out/fit.txt"
 python3 scripts/fit-summary.py "$out/fit.json" > "$out/fit-summary.md"
+"$metalfit" export --all --model all --format all -o "$out/export"
+python3 scripts/export-summary.py "$out/export" > "$out/export-summary.md"
 echo "main job: wrote $(ls "$out" | wc -l) files into $out/"
