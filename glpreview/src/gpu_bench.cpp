@@ -122,6 +122,11 @@ nlohmann::ordered_json bench_localization(GlContext& context, const PreviewOptio
     Scene difficult = load_scene(options.data_dir / "scenes" / "sheet.json");
     difficult.width = quick ? 256 : 512;
     difficult.height = quick ? 256 : 512;
+    // The camera close to the sphere, so that the reflection (not the background) fills most of the frame.
+    const Sphere& subject = difficult.spheres.at(0);
+    difficult.camera.look_at = subject.center;
+    difficult.camera.position = subject.center + Vec3{0, 0.15, 0.95};
+    difficult.camera.fov_y_deg = 70;
     Scene empty = difficult;
     empty.environment.room.boxes.clear();
     const int rounds = quick ? 3 : 7;

@@ -24,7 +24,8 @@ inline constexpr int kShaderBenchEvaluationsPerPixel = 16;
 nlohmann::ordered_json bench_shaders(GlContext& context, bool quick);
 
 // {"renderer", "size", "frames", "rooms": [{"room", "rows": [{"mode", "strategy", "iterations", "ms_per_frame",
-//  "ratio_to_classic", "rmse", "mean_abs"}]}]}; the rooms are data/scenes/sheet.json and the same room emptied.
+//  "ratio_to_classic", "rmse", "mean_abs"}]}]}; the rooms are data/scenes/sheet.json and the same room emptied,
+// seen from close by so that the sphere fills most of the frame.
 nlohmann::ordered_json bench_localization(GlContext& context, const PreviewOptions& options, bool quick);
 
 }  // namespace metalfit::glpreview
