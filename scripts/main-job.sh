@@ -9,11 +9,14 @@
 #   export/                         `metalfit export --all --model all --format all`: JSON, GLSL, HLSL, MaterialX,
 #                                   OpenPBR and C++ constants of every catalog material and model (docs/export.md);
 #                                   export-summary.md: what the MaterialX documents cost where they differ from the fit
-# Later stages (report, preview) are added here as they land.
+#   preview/                        glpreview (docs/preview.md): the difficult room (beauty | CPU reference | difference,
+#                                   EXR + PNG, metrics.json) and the sphere sheet sheet.png: per metal, reference |
+#                                   best fitted model | |difference| x 10, distance impostor in the difficult room
+# Later stages (report) are added here as they land.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-out}"
-bash scripts/build.sh release --target metalfit
+bash scripts/build.sh release --target metalfit glpreview
 metalfit=build/bin/metalfit
 mkdir -p "$out"
 "$metalfit" list -o "$out/list.txt"
@@ -28,4 +31,6 @@ done
 python3 scripts/fit-summary.py "$out/fit.json" > "$out/fit-summary.md"
 "$metalfit" export --all --model all --format all -o "$out/export"
 python3 scripts/export-summary.py "$out/export" > "$out/export-summary.md"
+build/bin/glpreview data/scenes/difficult-room.json -o "$out/preview" > "$out/preview-metrics.txt"
+build/bin/glpreview data/scenes/sheet.json --sheet Au,Cu,Al,Ag,TiN,Cu-Zn -o "$out/preview" > "$out/preview-sheet.txt"
 echo "main job: wrote $(ls "$out" | wc -l) files into $out/"
