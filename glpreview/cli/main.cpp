@@ -21,7 +21,8 @@
 
 namespace {
 
-enum ExitCode { ok = 0, internal = 1, usage = 2, bad_input = 3, colour_config = 4, gl_failure = 5 };
+// libfit's exit codes (metalfit::ExitCode), and one more of the renderer's own.
+constexpr int ok = metalfit::exit_ok, usage = metalfit::exit_usage, gl_failure = 5;
 
 }  // namespace
 
@@ -129,20 +130,10 @@ int main(int argc, char** argv) {
                             s["mode"].get<std::string>().c_str(), s["rmse"].get<double>(), s["mean_abs"].get<double>());
         }
         return ok;
-    } catch (const UsageError& e) {
-        std::cerr << "glpreview: " << e.what() << "\n";
-        return usage;
-    } catch (const InputError& e) {
-        std::cerr << "glpreview: " << e.what() << "\n";
-        return bad_input;
-    } catch (const ColorConfigError& e) {
-        std::cerr << "glpreview: " << e.what() << "\n";
-        return colour_config;
     } catch (const GlError& e) {
         std::cerr << "glpreview: " << e.what() << "\n";
         return gl_failure;
-    } catch (const std::exception& e) {
-        std::cerr << "glpreview: internal error: " << e.what() << "\n";
-        return internal;
+    } catch (...) {
+        return report_current_exception("glpreview");
     }
 }

@@ -28,6 +28,16 @@ std::string first_line(const std::string& log) {
     return line.empty() ? "(no info log)" : line;
 }
 
+// The first line of a shader's or a program's info log (glGetShaderiv/glGetShaderInfoLog or the program pair).
+template <typename GetIv, typename GetLog>
+std::string info_log(GLuint id, GetIv get_iv, GetLog get_log) {
+    GLint length = 0;
+    get_iv(id, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
+    get_log(id, length, nullptr, log.data());
+    return first_line(log.c_str());
+}
+
 const char* stage_name(GLenum type) {
     switch (type) {
         case GL_VERTEX_SHADER: return "vertex";
@@ -158,14 +168,10 @@ GLuint link_program(const std::vector<ShaderStage>& stages, std::string_view nam
         GLint ok = 0;
         glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
         if (!ok) {
-            GLint length = 0;
-            glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-            std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
-            glGetShaderInfoLog(shader, length, nullptr, log.data());
+            const std::string log = info_log(shader, glGetShaderiv, glGetShaderInfoLog);
             cleanup();
             glDeleteProgram(program);
-            throw GlError("shader '" + std::string(name) + "' (" + stage_name(stage.type) +
-                          ") does not compile: " + first_line(log.c_str()));
+            throw GlError("shader '" + std::string(name) + "' (" + stage_name(stage.type) + ") does not compile: " + log);
         }
         glAttachShader(program, shader);
     }
@@ -174,12 +180,9 @@ GLuint link_program(const std::vector<ShaderStage>& stages, std::string_view nam
     GLint ok = 0;
     glGetProgramiv(program, GL_LINK_STATUS, &ok);
     if (!ok) {
-        GLint length = 0;
-        glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-        std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
-        glGetProgramInfoLog(program, length, nullptr, log.data());
+        const std::string log = info_log(program, glGetProgramiv, glGetProgramInfoLog);
         glDeleteProgram(program);
-        throw GlError("shader '" + std::string(name) + "' does not link: " + first_line(log.c_str()));
+        throw GlError("shader '" + std::string(name) + "' does not link: " + log);
     }
     return program;
 }

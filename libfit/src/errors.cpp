@@ -1,5 +1,7 @@
 #include "libfit/errors.hpp"
 
+#include <iostream>
+
 namespace metalfit {
 namespace {
 
@@ -19,5 +21,23 @@ std::string format_location(const InputLocation& where, const std::string& messa
 
 InputError::InputError(const InputLocation& where, const std::string& message)
     : std::runtime_error(format_location(where, message)), where_(where) {}
+
+int report_current_exception(const char* program) {
+    try {
+        throw;
+    } catch (const UsageError& e) {
+        std::cerr << program << ": " << e.what() << "\n";
+        return exit_usage;
+    } catch (const InputError& e) {
+        std::cerr << program << ": " << e.what() << "\n";
+        return exit_bad_input;
+    } catch (const ColorConfigError& e) {
+        std::cerr << program << ": " << e.what() << "\n";
+        return exit_colour_config;
+    } catch (const std::exception& e) {
+        std::cerr << program << ": internal error: " << e.what() << "\n";
+        return exit_internal;
+    }
+}
 
 }  // namespace metalfit

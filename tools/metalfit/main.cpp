@@ -29,7 +29,7 @@ std::string fixed(double v, int digits) {
 
 int main(int argc, char** argv) {
     using namespace metalfit;
-    enum ExitCode { ok = 0, internal = 1, usage = 2, bad_input = 3, colour_config = 4 };
+    constexpr int ok = exit_ok, usage = exit_usage;
 
     CLI::App app{"metalfit: fit shader Fresnel models to measured spectral n,k of metals"};
     app.set_version_flag("--version", std::string("metalfit ") + METALFIT_VERSION);
@@ -68,17 +68,7 @@ int main(int argc, char** argv) {
         if (bench.parsed()) run_bench();
         if (export_.parsed()) run_export();
         return ok;
-    } catch (const UsageError& e) {
-        std::cerr << "metalfit: " << e.what() << "\n";
-        return usage;
-    } catch (const InputError& e) {
-        std::cerr << "metalfit: " << e.what() << "\n";
-        return bad_input;
-    } catch (const ColorConfigError& e) {
-        std::cerr << "metalfit: " << e.what() << "\n";
-        return colour_config;
-    } catch (const std::exception& e) {
-        std::cerr << "metalfit: internal error: " << e.what() << "\n";
-        return internal;
+    } catch (...) {
+        return report_current_exception("metalfit");
     }
 }

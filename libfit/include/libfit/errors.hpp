@@ -41,4 +41,11 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// The documented exit codes of metalfit's command-line tools (docs/cli.md); glpreview adds 5 for OpenGL/EGL.
+enum ExitCode : int { exit_ok = 0, exit_internal = 1, exit_usage = 2, exit_bad_input = 3, exit_colour_config = 4 };
+
+// Inside a catch block: prints "<program>: <message>" (with "internal error: " for unexpected exceptions) on stderr
+// and returns the exit code of the exception being handled.
+int report_current_exception(const char* program);
+
 }  // namespace metalfit
