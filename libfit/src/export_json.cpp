@@ -8,28 +8,10 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json per_channel(const PerChannel& v) { return Json::array({v[0], v[1], v[2]}); }
-
 Json written_json(const WrittenParameters& w, GamutPolicy gamut) {
-    Json params = Json::object();
-    const auto parameters = w.model->parameters();
-    for (std::size_t i = 0; i < parameters.size(); ++i)
-        params[std::string(parameters[i].name)] = Json::array({w.params[0][i], w.params[1][i], w.params[2][i]});
-    const Metrics& m = w.metrics;
-    return {{"from", w.origin},
-            {"gamut", to_string(gamut)},
-            {"out_of_gamut", w.gamut},
-            {"params", params},
-            {"metrics",
-             {{"rel_rms", per_channel(m.rel_rms)},
-              {"abs_rms", per_channel(m.abs_rms)},
-              {"max_rel", per_channel(m.max_rel)},
-              {"max_abs", per_channel(m.max_abs)},
-              {"de2000_mean", m.de2000_mean},
-              {"de2000_max", m.de2000_max},
-              {"albedo_err", per_channel(m.albedo_err)}}},
-            {"metrics_at_mu",
-             {{"max_rel", per_channel(m.max_rel_mu)}, {"max_abs", per_channel(m.max_abs_mu)}, {"de2000_max", m.de2000_max_mu}}}};
+    Json j = {{"from", w.origin}, {"gamut", to_string(gamut)}, {"out_of_gamut", w.gamut}};
+    j.update(evaluated_record(*w.model, {w.params, w.metrics}));
+    return j;
 }
 
 }  // namespace

@@ -19,24 +19,6 @@ Json params_json(const Model& model, const RgbParameters& params) {
     return j;
 }
 
-// params, metrics (exactly the seven keys of DESIGN.md) and where the maxima are.
-Json evaluated_json(const Model& model, const EvaluatedParameters& value) {
-    const Metrics& m = value.metrics;
-    return {{"params", params_json(model, value.params)},
-            {"metrics",
-             {{"rel_rms", per_channel(m.rel_rms)},
-              {"abs_rms", per_channel(m.abs_rms)},
-              {"max_rel", per_channel(m.max_rel)},
-              {"max_abs", per_channel(m.max_abs)},
-              {"de2000_mean", m.de2000_mean},
-              {"de2000_max", m.de2000_max},
-              {"albedo_err", per_channel(m.albedo_err)}}},
-            {"metrics_at_mu",
-             {{"max_rel", per_channel(m.max_rel_mu)},
-              {"max_abs", per_channel(m.max_abs_mu)},
-              {"de2000_max", m.de2000_max_mu}}}};
-}
-
 Json solver_json(const FitResult& fit) {
     Json start = Json::array(), iterations = Json::array(), termination = Json::array(), initial = Json::array(),
          final_cost = Json::array(), starts = Json::array(), fallback = Json::array();
@@ -68,6 +50,24 @@ Json data_provenance(const Material& material) {
 
 }  // namespace
 
+// params, metrics (exactly the seven keys of DESIGN.md) and where the maxima are.
+Json evaluated_record(const Model& model, const EvaluatedParameters& value) {
+    const Metrics& m = value.metrics;
+    return {{"params", params_json(model, value.params)},
+            {"metrics",
+             {{"rel_rms", per_channel(m.rel_rms)},
+              {"abs_rms", per_channel(m.abs_rms)},
+              {"max_rel", per_channel(m.max_rel)},
+              {"max_abs", per_channel(m.max_abs)},
+              {"de2000_mean", m.de2000_mean},
+              {"de2000_max", m.de2000_max},
+              {"albedo_err", per_channel(m.albedo_err)}}},
+            {"metrics_at_mu",
+             {{"max_rel", per_channel(m.max_rel_mu)},
+              {"max_abs", per_channel(m.max_abs_mu)},
+              {"de2000_max", m.de2000_max_mu}}}};
+}
+
 Json model_record(const ModelResult& result) {
     const Model& model = *result.model;
     Json names = Json::array();
@@ -77,7 +77,7 @@ Json model_record(const ModelResult& result) {
     std::string all_undefined;
     for (const ClosedFormResult& form : result.closed_forms) {
         Json j = {{"description", form.description}};
-        if (form.value) j.update(evaluated_json(model, *form.value));
+        if (form.value) j.update(evaluated_record(model, *form.value));
         else {
             j["undefined"] = form.undefined;
             all_undefined += (all_undefined.empty() ? "" : "; ") + form.id + ": " + form.undefined;
@@ -88,11 +88,11 @@ Json model_record(const ModelResult& result) {
     if (result.best_closed) {
         const ClosedFormResult& best = result.closed_forms[*result.best_closed];
         closed = {{"form", best.id}};
-        closed.update(evaluated_json(model, *best.value));
+        closed.update(evaluated_record(model, *best.value));
     } else {
         closed = {{"undefined", all_undefined}};
     }
-    Json fit = evaluated_json(model, result.fit.value);
+    Json fit = evaluated_record(model, result.fit.value);
     fit["solver"] = solver_json(result.fit);
     return {{"title", model.title()}, {"parameters", names}, {"closed", closed}, {"closed_forms", forms}, {"fit", fit}};
 }

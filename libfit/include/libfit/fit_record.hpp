@@ -27,6 +27,10 @@ struct FitRecordContext {
 
 nlohmann::ordered_json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContext& context);
 
+// {"params": {name: [r, g, b]}, "metrics": the seven keys of DESIGN.md, "metrics_at_mu": where the maxima are}:
+// how every set of evaluated parameters (fit, closed form, exported values) appears in records.
+nlohmann::ordered_json evaluated_record(const Model& model, const EvaluatedParameters& value);
+
 // The JSON of one model's results (the value under materials.<id>.models.<model id>).
 nlohmann::ordered_json model_record(const ModelResult& result);
 
