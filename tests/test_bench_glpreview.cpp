@@ -14,7 +14,7 @@ using namespace metalfit::bench;
 using metalfit::test::TempDir;
 using nlohmann::json;
 
-const char* kShaders = R"({"renderer": "fake GL", "size": [1024, 1024], "frames": 60, "models": [
+const char* kShaders = R"({"renderer": "fake GL", "size": [1024, 1024], "frames": 60, "evaluations_per_pixel": 16, "models": [
   {"model": "schlick", "ms_per_frame": 0.25, "ratio_to_conductor_rgb": 0.5},
   {"model": "conductor-rgb", "ms_per_frame": 0.5, "ratio_to_conductor_rgb": 1.0},
   {"model": "reference-lut", "ms_per_frame": 0.3, "ratio_to_conductor_rgb": 0.6}]})";
@@ -28,6 +28,7 @@ TEST(GlpreviewResults, ParsesTheShaderContract) {
     EXPECT_EQ(b.renderer, "fake GL");
     EXPECT_EQ(b.width, 1024);
     EXPECT_EQ(b.frames, 60);
+    EXPECT_EQ(b.evaluations_per_pixel, 16);
     ASSERT_EQ(b.models.size(), 3u);
     ASSERT_NE(b.find("schlick"), nullptr);
     EXPECT_DOUBLE_EQ(b.find("schlick")->ratio_to_conductor_rgb, 0.5);

@@ -90,6 +90,7 @@ ShaderBench parse_shader_bench(const json& j) {
     b.renderer = string_field(j, "", "renderer");
     size_field(j, b.width, b.height);
     b.frames = int_field(j, "", "frames");
+    if (j.contains("evaluations_per_pixel")) b.evaluations_per_pixel = int_field(j, "", "evaluations_per_pixel");
     const json& models = array_field(j, "", "models");
     for (std::size_t i = 0; i < models.size(); ++i) {
         const std::string path = "models[" + std::to_string(i) + "]";
@@ -131,7 +132,8 @@ json to_json(const ShaderBench& b) {
     json models = json::array();
     for (const ShaderTiming& t : b.models)
         models.push_back({{"model", t.model}, {"ms_per_frame", t.ms_per_frame}, {"ratio_to_conductor_rgb", t.ratio_to_conductor_rgb}});
-    return {{"renderer", b.renderer}, {"size", {b.width, b.height}}, {"frames", b.frames}, {"models", models}};
+    return {{"renderer", b.renderer}, {"size", {b.width, b.height}}, {"frames", b.frames},
+            {"evaluations_per_pixel", b.evaluations_per_pixel}, {"models", models}};
 }
 
 json to_json(const LocalizationBench& b) {

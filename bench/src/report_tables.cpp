@@ -135,6 +135,10 @@ std::vector<Table> report_tables(const BenchReport& r) {
                 {"shader", "ms/frame", "ratio to conductor-rgb"}, {}, {}};
         for (const ShaderTiming& s : b.models)
             t.rows.push_back({s.model, format("%.3f", s.ms_per_frame), format("%.2f", s.ratio_to_conductor_rgb)});
+        t.notes = {"each pixel evaluates the model " + std::to_string(b.evaluations_per_pixel) +
+                   " time(s) at different μ, so that the pass measures the model rather than the framebuffer write; "
+                   "frames of all shaders interleaved round-robin, median per shader; reference-lut: a 256-texel "
+                   "1D texture lookup."};
         tables.push_back(std::move(t));
     }
     if (r.localization.value) {

@@ -23,6 +23,7 @@ struct ShaderBench {
     std::string renderer;
     int width = 0, height = 0;
     int frames = 0;
+    int evaluations_per_pixel = 1;  // model evaluations per pixel of the pass (optional in the JSON)
     std::vector<ShaderTiming> models;
     const ShaderTiming* find(std::string_view model) const;
 };
