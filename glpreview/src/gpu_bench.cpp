@@ -1,10 +1,9 @@
 #include "glpreview/gpu_bench.hpp"
 
-#include <algorithm>
-#include <chrono>
 #include <functional>
 
 #include "embedded_shaders.hpp"
+#include "frame_timing.hpp"
 #include "glpreview/environment.hpp"
 #include "glpreview/gpu_renderer.hpp"
 #include "glpreview/sphere_fresnel.hpp"
@@ -14,12 +13,6 @@
 namespace metalfit::glpreview {
 namespace {
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 // Runs `rounds` rounds; each round times one call of every variant in turn (between glFinish calls).
 template <typename Variant>
 std::vector<double> interleaved_medians(const std::vector<Variant>& variants, int rounds) {
@@ -27,12 +20,7 @@ std::vector<double> interleaved_medians(const std::vector<Variant>& variants, in
     for (const auto& v : variants) v();  // warm-up: compile, first-use costs
     glFinish();
     for (int round = 0; round < rounds; ++round)
-        for (std::size_t i = 0; i < variants.size(); ++i) {
-            const auto start = std::chrono::steady_clock::now();
-            variants[i]();
-            glFinish();
-            ms[i].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-        }
+        for (std::size_t i = 0; i < variants.size(); ++i) ms[i].push_back(finished_ms(variants[i]));
     std::vector<double> medians;
     for (const auto& m : ms) medians.push_back(median(m));
     return medians;
@@ -67,24 +55,16 @@ nlohmann::ordered_json bench_shaders(GlContext& context, bool quick) {
     auto add = [&](const std::string& name, const std::string& library, const std::string& call, const Model* model) {
         const std::string fragment = "#version 450 core\n#define EVALUATIONS " + std::to_string(kShaderBenchEvaluationsPerPixel) +
                                      "\n#define FRESNEL_CALL " + call + "\n" + library + std::string(shader_text("model_cost.frag"));
-        GlProgram program(link_program({{GL_VERTEX_SHADER, "#version 450 core\n" + std::string(shader_text("fullscreen.vert"))},
-                                        {GL_FRAGMENT_SHADER, fragment}},
-                                       "model-cost " + name));
-        if (model) {  // neutral parameter values: the cost does not depend on them
+        GlProgram program(link_program({fullscreen_vertex_stage(), {GL_FRAGMENT_SHADER, fragment}}, "model-cost " + name));
+        if (model) {  // neutral parameter values, the same in R, G and B: the cost does not depend on them
             const ChannelParameters p = model->neutral_starts().front();
-            for (std::size_t k = 0; k < p.size(); ++k)
-                glProgramUniform3f(program.id(), program.uniform(("u_param[" + std::to_string(k) + "]").c_str()), float(p[k]),
-                                   float(p[k]), float(p[k]));
+            set_model_parameters(program.id(), *model, {p, p, p});
         }
         glProgramUniform2f(program.id(), program.uniform("u_viewport"), float(size), float(size));
         glProgramUniform1i(program.id(), program.uniform("u_fresnel_lut"), 0);
         entries.push_back({name, std::move(program)});
     };
-    for (const Model* model : all_models()) {
-        std::string call = std::string(model->glsl_function()) + "(";
-        for (std::size_t k = 0; k < model->parameters().size(); ++k) call += "u_param[" + std::to_string(k) + "], ";
-        add(std::string(model->id()), model->glsl_source(), call + "mu)", model);
-    }
+    for (const Model* model : all_models()) add(std::string(model->id()), model->glsl_source(), model_call(*model), model);
     add("reference-lut", "", "reference_lut(mu)", nullptr);
 
     std::vector<std::function<void()>> variants;

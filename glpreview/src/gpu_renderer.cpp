@@ -1,12 +1,12 @@
 #include "glpreview/gpu_renderer.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <stdexcept>
 
+#include "embedded_shaders.hpp"
+#include "frame_timing.hpp"
 #include "glpreview/camera.hpp"
 #include "libfit/model.hpp"
-#include "embedded_shaders.hpp"
 
 namespace metalfit::glpreview {
 namespace {
@@ -25,6 +25,17 @@ std::string define_line(const std::string& define) {
 }
 
 }  // namespace
+
+std::string model_call(const Model& model) {
+    std::string call = std::string(model.glsl_function()) + "(";
+    for (std::size_t k = 0; k < model.parameters().size(); ++k) call += "u_param[" + std::to_string(k) + "], ";
+    return call + "mu)";
+}
+
+void set_model_parameters(GLuint program, const Model& model, const RgbParameters& params) {
+    for (std::size_t k = 0; k < model.parameters().size(); ++k)
+        set(program, ("u_param[" + std::to_string(k) + "]").c_str(), Vec3{params[0][k], params[1][k], params[2][k]});
+}
 
 GpuRenderer::GpuRenderer(const Scene& scene, const Features& features, std::vector<const SphereFresnel*> fresnel,
                          const Image* equirect)
@@ -103,10 +114,14 @@ GLuint GpuRenderer::program(const std::string& kind, const std::vector<std::stri
     }
     GLuint id = 0;
     if (kind == "probe") id = compile_compute_program(header + body, key);
-    else id = link_program({{GL_VERTEX_SHADER, "#version 450 core\n" + std::string(shader_text("fullscreen.vert"))},
-                            {GL_FRAGMENT_SHADER, header + body}},
-                           key);
+    else id = link_program({fullscreen_vertex_stage(), {GL_FRAGMENT_SHADER, header + body}}, key);
     programs_.emplace(key, GlProgram(id));
+    // What does not change while the renderer lives is set once here (uniforms a shader lacks are ignored).
+    set_environment_uniforms(id);
+    set_camera_uniforms(id);
+    set(id, "u_env", 0);
+    set(id, "u_equirect", 1);
+    set(id, "u_fresnel_lut", 2);
     return id;
 }
 
@@ -180,9 +195,7 @@ void GpuRenderer::capture_environment() {
         glTextureParameteri(cube_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTextureParameteri(cube_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     }
-    const std::vector<std::string> defines{scene_.environment.type == EnvironmentType::room ? "ENV_ROOM" : "ENV_SPHERE_ROOM"};
-    const GLuint p = program("capture", defines);
-    set_environment_uniforms(p);
+    const GLuint p = program("capture", {environment_define(scene_.environment.type)});
     set(p, "u_size", n);
     GLuint fbo = 0;
     glCreateFramebuffers(1, &fbo);
@@ -204,9 +217,6 @@ void GpuRenderer::capture_environment() {
 }
 
 void GpuRenderer::draw_frame() {
-    const std::string env_define = scene_.environment.type == EnvironmentType::room        ? "ENV_ROOM"
-                                   : scene_.environment.type == EnvironmentType::sphere_room ? "ENV_SPHERE_ROOM"
-                                                                                             : "ENV_EQUIRECT";
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glViewport(0, 0, scene_.width, scene_.height);
     glBindVertexArray(vao_);
@@ -217,11 +227,7 @@ void GpuRenderer::draw_frame() {
 
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
-    const GLuint background = program("background", {env_define});
-    set_environment_uniforms(background);
-    set_camera_uniforms(background);
-    set(background, "u_equirect", 1);
-    glUseProgram(background);
+    glUseProgram(program("background", {environment_define(scene_.environment.type)}));
     glDrawArrays(GL_TRIANGLES, 0, 3);
 
     glEnable(GL_DEPTH_TEST);
@@ -230,24 +236,11 @@ void GpuRenderer::draw_frame() {
     for (std::size_t i = 0; i < scene_.spheres.size(); ++i) {
         const Sphere& sphere = scene_.spheres[i];
         const SphereFresnel& fresnel = *fresnel_[i];
-        std::string call;
-        if (fresnel.model) {
-            call = std::string(fresnel.model->glsl_function()) + "(";
-            for (std::size_t k = 0; k < fresnel.model->parameters().size(); ++k) call += "u_param[" + std::to_string(k) + "], ";
-            call += "mu)";
-        }
-        const GLuint p = program("sphere", sphere_defines(scene_, sphere), call);
-        set_environment_uniforms(p);
-        set_camera_uniforms(p);
-        set(p, "u_env", 0);
-        set(p, "u_equirect", 1);
-        set(p, "u_fresnel_lut", 2);
+        const GLuint p = program("sphere", sphere_defines(scene_, sphere), fresnel.model ? model_call(*fresnel.model) : "");
         set(p, "u_sphere_center", sphere.center);
         set(p, "u_sphere_radius", static_cast<float>(sphere.radius));
         if (fresnel.model) {
-            for (std::size_t k = 0; k < fresnel.model->parameters().size(); ++k)
-                set(p, ("u_param[" + std::to_string(k) + "]").c_str(),
-                    Vec3{fresnel.parameters[0][k], fresnel.parameters[1][k], fresnel.parameters[2][k]});
+            set_model_parameters(p, *fresnel.model, fresnel.parameters);
         } else {
             glBindTextureUnit(2, luts_.at(&fresnel));
         }
@@ -275,12 +268,7 @@ std::vector<double> GpuRenderer::time_frames(int frames) {
     std::vector<double> ms;
     draw_frame();  // compiles every variant before timing
     glFinish();
-    for (int i = 0; i < frames; ++i) {
-        const auto start = std::chrono::steady_clock::now();
-        draw_frame();
-        glFinish();
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    }
+    for (int i = 0; i < frames; ++i) ms.push_back(finished_ms([&] { draw_frame(); }));
     check_gl("timing frames");
     return ms;
 }
@@ -291,8 +279,6 @@ std::vector<ProbeResult> GpuRenderer::probe(const Sphere& settings, std::span<co
     for (const auto& d : sphere_defines(scene_, settings))
         if (d.rfind("FRESNEL", 0) != 0) defines.push_back(d);
     const GLuint p = program("probe", defines);
-    set_environment_uniforms(p);
-    set(p, "u_env", 0);
     const int count = static_cast<int>(rays.size());
     set(p, "u_count", count);
     std::vector<float> input;

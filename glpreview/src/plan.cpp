@@ -7,6 +7,14 @@
 namespace metalfit::glpreview {
 namespace {
 
+std::string join(const std::vector<std::string>& items, const char* separator = ", ") {
+    std::string text;
+    for (const auto& item : items) text += (text.empty() ? "" : separator) + item;
+    return text;
+}
+
+}  // namespace
+
 const char* environment_define(EnvironmentType type) {
     switch (type) {
         case EnvironmentType::room: return "ENV_ROOM";
@@ -15,14 +23,6 @@ const char* environment_define(EnvironmentType type) {
     }
     return "";
 }
-
-std::string join(const std::vector<std::string>& items, const char* separator = ", ") {
-    std::string text;
-    for (const auto& item : items) text += (text.empty() ? "" : separator) + item;
-    return text;
-}
-
-}  // namespace
 
 std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere) {
     std::vector<std::string> defines{environment_define(scene.environment.type)};

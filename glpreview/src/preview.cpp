@@ -1,7 +1,6 @@
 #include "glpreview/preview.hpp"
 
-#include <algorithm>
-
+#include "frame_timing.hpp"
 #include "glpreview/environment.hpp"
 #include "glpreview/gpu_renderer.hpp"
 #include "glpreview/image_io.hpp"
@@ -12,13 +11,6 @@
 
 namespace metalfit::glpreview {
 namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 nlohmann::ordered_json metrics_json(const Scene& scene, const PreviewResult& r, const std::vector<const SphereFresnel*>& fresnel) {
     nlohmann::ordered_json j;

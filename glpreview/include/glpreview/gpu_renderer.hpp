@@ -23,9 +23,18 @@ struct ProbeResult {
     std::array<float, 4> texel;  // rgb radiance, a distance (when the cube stores distance)
 };
 
+// The GLSL call of a libfit model on the uniforms u_param[k] (one vec3 per parameter, R, G, B), e.g.
+// "metalfit_f82_tint(u_param[0], u_param[1], mu)".
+std::string model_call(const Model& model);
+// Sets u_param[k] of `program` to parameter k's values for R, G and B.
+void set_model_parameters(GLuint program, const Model& model, const RgbParameters& params);
+
 class GpuRenderer {
 public:
     // fresnel[i] belongs to scene.spheres[i]; `equirect` is the loaded image for an equirect environment.
+    // The scene's environment, camera and image size are read when the renderer is made and when a shader variant
+    // is first compiled (their uniforms are set once then); the spheres are read at every frame, so they may move
+    // or change their reflection settings and Fresnel kind between frames.
     GpuRenderer(const Scene& scene, const Features& features, std::vector<const SphereFresnel*> fresnel,
                 const Image* equirect);
     ~GpuRenderer();

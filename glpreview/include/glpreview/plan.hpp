@@ -56,6 +56,9 @@ Plan build_plan(const Scene& scene);
 // The plan as text: each pass, why it runs, what it reads and writes; then what was skipped and why.
 std::string explain(const Plan& plan, const Scene& scene);
 
+// The shader #define of an environment type: "ENV_ROOM", "ENV_SPHERE_ROOM" or "ENV_EQUIRECT".
+const char* environment_define(EnvironmentType type);
+
 // The sphere shader's #defines for one sphere (sorted, one per line), e.g. "REFLECTION_DISTANCE_IMPOSTOR",
 // "STRATEGY_FALSE_POSITION", "NITER 4", "FRESNEL_MODEL f82-tint", "ENV_ROOM".
 std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere);
