@@ -3,9 +3,7 @@
 
 #include "test_support.hpp"
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <algorithm>
@@ -17,10 +15,7 @@ using metalfit::test::read_file;
 
 namespace fs = std::filesystem;
 
-struct Result {
-    int exit_code;
-    std::string out, err;
-};
+using Result = metalfit::test::CommandResult;
 
 
 class Cli : public ::testing::Test {
@@ -35,11 +30,7 @@ protected:
 
     // Runs metalfit with `args` (already shell-quoted) and an optional environment prefix.
     Result run(const std::string& args, const std::string& env = "OCIO=") const {
-        const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-        const std::string command = "env " + env + " '" + std::string(METALFIT_EXE) + "' " + args + " >'" +
-                                    out.string() + "' 2>'" + err.string() + "' </dev/null";
-        const int status = std::system(command.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
+        return metalfit::test::run_command(METALFIT_EXE, args, dir_, env);
     }
 
     static void expect_one_line_error(const Result& r, const std::string& must_contain) {
@@ -162,8 +153,8 @@ TEST_F(Cli, OutputFilesAreWrittenWholeOrNotAtAll) {
     const Result failing = run("show '" + kFixtures + "/bad-row.csv' --json -o '" + target.string() + "'");
     EXPECT_EQ(failing.exit_code, 3);
     EXPECT_EQ(read_file(target), before);
-    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 3)  // gold.json, stdout, stderr
-        << "a temporary file was left behind";
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1)  // gold.json (run_command
+        << "a temporary file was left behind";                                          // removes its stdout/stderr)
 }
 
 // --- metalfit fit ---------------------------------------------------------------------------------------------

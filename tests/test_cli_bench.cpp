@@ -3,9 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
-#include <sys/wait.h>
 
-#include <cstdlib>
 
 #include <nlohmann/json.hpp>
 
@@ -18,18 +16,9 @@ using metalfit::test::read_file;
 using metalfit::test::TempDir;
 using nlohmann::json;
 
-struct Result {
-    int exit_code;
-    std::string out, err;
-};
+using Result = metalfit::test::CommandResult;
 
-Result run(const TempDir& dir, const std::string& args) {
-    const auto out = dir.path() / "stdout.txt", err = dir.path() / "stderr.txt";
-    const std::string command = "env OCIO= '" + std::string(METALFIT_EXE) + "' " + args + " >'" + out.string() +
-                                "' 2>'" + err.string() + "' </dev/null";
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
-}
+Result run(const TempDir& dir, const std::string& args) { return metalfit::test::run_command(METALFIT_EXE, args, dir.path()); }
 
 void expect_number(const json& j, const char* key) { EXPECT_TRUE(j.at(key).is_number()) << key << " in " << j.dump(); }
 void expect_number_or_null(const json& j, const char* key) {

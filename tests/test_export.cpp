@@ -3,10 +3,8 @@
 // policies, the HLSL token mapping, and failures that leave nothing behind.
 #include <gtest/gtest.h>
 #include <pugixml.hpp>
-#include <sys/wait.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -29,22 +27,10 @@ namespace fs = std::filesystem;
 using metalfit::test::read_file;
 using metalfit::test::TempDir;
 
-struct Result {
-    int exit_code;
-    std::string out, err;
-};
+using Result = metalfit::test::CommandResult;
 
 // Runs the real metalfit with `args` (shell-quoted), OCIO unset.
-Result run(const std::string& args, const fs::path& scratch) {
-    const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-    const std::string command = "env OCIO= '" + std::string(METALFIT_EXE) + "' " + args + " >'" + out.string() + "' 2>'" +
-                                err.string() + "' </dev/null";
-    const int status = std::system(command.c_str());
-    Result r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
-    fs::remove(out);
-    fs::remove(err);
-    return r;
-}
+Result run(const std::string& args, const fs::path& scratch) { return metalfit::test::run_command(METALFIT_EXE, args, scratch); }
 
 std::vector<fs::path> files_with_extension(const fs::path& dir, const std::string& ext) {
     std::vector<fs::path> files;

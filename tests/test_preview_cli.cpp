@@ -10,17 +10,9 @@
 namespace metalfit::test {
 namespace {
 
-struct CommandRun {
-    int exit_code;
-    std::string out, err;
-};
+using CommandRun = CommandResult;
 
-CommandRun glpreview(const std::string& arguments, const TempDir& dir) {
-    const fs::path out = dir.path() / "stdout.txt", err = dir.path() / "stderr.txt";
-    const std::string command = std::string("OCIO= ") + GLPREVIEW_EXE + " " + arguments + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), read_file(out), read_file(err)};
-}
+CommandRun glpreview(const std::string& arguments, const TempDir& dir) { return run_command(GLPREVIEW_EXE, arguments, dir.path()); }
 
 TEST(PreviewCli, MalformedSceneIsOneLineErrorExit3AndWritesNothing) {
     TempDir dir;

@@ -2,9 +2,11 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -32,6 +34,26 @@ inline ::testing::AssertionResult StartsWith(const std::string& s, const std::st
 inline std::string read_file(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// What a command printed and how it ended (exit code −1 when it did not exit normally).
+struct CommandResult {
+    int exit_code;
+    std::string out, err;
+};
+
+// Runs `executable` with `args` (already shell-quoted) under the environment prefix `env` ("OCIO=": metalfit's own
+// colour config) with no standard input; stdout and stderr pass through files in `scratch`, removed afterwards.
+inline CommandResult run_command(const fs::path& executable, const std::string& args, const fs::path& scratch,
+                                 const std::string& env = "OCIO=") {
+    const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
+    const std::string command = "env " + env + " '" + executable.string() + "' " + args + " >'" + out.string() + "' 2>'" +
+                                err.string() + "' </dev/null";
+    const int status = std::system(command.c_str());
+    CommandResult result{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
+    fs::remove(out);
+    fs::remove(err);
+    return result;
 }
 
 // A fresh folder per test (named after it and the process), removed with everything in it.
