@@ -36,9 +36,38 @@ FresnelLibrary::FresnelLibrary(const std::filesystem::path& data_dir, const Ocio
       converter_(ColorSpaceConverter::create(config)),
       scene_file_(scene_file) {}
 
+namespace {
+
+std::string cache_key(const std::string& material, const std::string& source, const std::string& fresnel,
+                      const std::string& params) {
+    return material + "|" + source + "|" + fresnel + "|" + (fresnel == "reference" ? "" : params);
+}
+
+}  // namespace
+
+std::unique_ptr<SphereFresnel> FresnelLibrary::model_fresnel(const Material& material, const ModelResult& r,
+                                                             const std::string& params, const std::string& field) const {
+    auto result = std::make_unique<SphereFresnel>();
+    result->material = material.name;
+    result->source = material.source;
+    result->fresnel = std::string(r.model->id());
+    result->model = r.model;
+    result->params = params;
+    const EvaluatedParameters* chosen = &r.fit.value;
+    if (params == "closed") {
+        if (!r.best_closed)
+            throw InputError(InputLocation(scene_file_, 0, field + ".params"),
+                             "no closed form of " + result->fresnel + " is defined for " + material.name + ": " +
+                                 (r.closed_forms.empty() ? std::string("none") : r.closed_forms.front().undefined));
+        chosen = &*r.closed_forms[*r.best_closed].value;
+    }
+    result->parameters = chosen->params;
+    result->worst_rel_rms = worst_channel(chosen->metrics.rel_rms);
+    return result;
+}
+
 const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string& field) {
-    const std::string key = sphere.material + "|" + sphere.source + "|" + sphere.fresnel + "|" +
-                            (sphere.fresnel == "reference" ? "" : sphere.params);
+    const std::string key = cache_key(sphere.material, sphere.source, sphere.fresnel, sphere.params);
     if (auto it = cache_.find(key); it != cache_.end()) return *it->second;
 
     std::string material_argument = sphere.material;
@@ -50,12 +79,13 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
     } catch (const UsageError& e) {
         throw InputError(InputLocation(scene_file_, 0, field + ".material"), e.what());
     }
-    auto result = std::make_unique<SphereFresnel>();
-    result->material = material.name;
-    result->source = material.source;
-    result->fresnel = sphere.fresnel;
     const SpectralOptions spectral{};
+    std::unique_ptr<SphereFresnel> result;
     if (sphere.fresnel == "reference") {
+        result = std::make_unique<SphereFresnel>();
+        result->material = material.name;
+        result->source = material.source;
+        result->fresnel = sphere.fresnel;
         const ReferenceCurve curve(material, colorimetry_, converter_, spectral);
         for (int i = 0; i < kReferenceLutSize; ++i) result->lut.push_back(curve(i / double(kReferenceLutSize - 1)));
     } else {
@@ -66,20 +96,8 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
             throw InputError(InputLocation(scene_file_, 0, field + ".fresnel"), std::string(e.what()) + " (or 'reference')");
         }
         MaterialFitRequest request{spectral, ErrorSettings{}, {model}};
-        const MaterialFit fit = fit_material(material, colorimetry_, converter_, request);
-        const ModelResult& r = fit.models.front();
-        result->model = model;
-        result->params = sphere.params;
-        const EvaluatedParameters* chosen = &r.fit.value;
-        if (sphere.params == "closed") {
-            if (!r.best_closed)
-                throw InputError(InputLocation(scene_file_, 0, field + ".params"),
-                                 "no closed form of " + sphere.fresnel + " is defined for " + material.name + ": " +
-                                     (r.closed_forms.empty() ? std::string("none") : r.closed_forms.front().undefined));
-            chosen = &*r.closed_forms[*r.best_closed].value;
-        }
-        result->parameters = chosen->params;
-        result->worst_rel_rms = worst_channel(chosen->metrics.rel_rms);
+        result = model_fresnel(material, fit_material(material, colorimetry_, converter_, request).models.front(),
+                               sphere.params, field);
     }
     return *cache_.emplace(key, std::move(result)).first->second;
 }
@@ -91,6 +109,9 @@ std::string FresnelLibrary::best_model(const std::string& material_name) {
     std::string best;
     double best_error = std::numeric_limits<double>::infinity();
     for (const ModelResult& r : fit.models) {
+        // Every model's fit is kept, so that get() of the winner does not fit it again.
+        cache_.try_emplace(cache_key(material_name, "", std::string(r.model->id()), "fit"),
+                           model_fresnel(material, r, "fit", "sheet material " + material_name));
         const double e = worst_channel(r.fit.value.metrics.rel_rms);
         if (e < best_error) {
             best_error = e;

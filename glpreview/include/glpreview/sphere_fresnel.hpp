@@ -13,6 +13,7 @@
 #include "libfit/catalog.hpp"
 #include "libfit/color_space.hpp"
 #include "libfit/colorimetry.hpp"
+#include "libfit/fit.hpp"
 #include "libfit/model.hpp"
 
 namespace metalfit::glpreview {
@@ -45,12 +46,16 @@ public:
     // Throws InputError naming the field (`field`, e.g. "spheres[2].material") for unknown materials/models.
     const SphereFresnel& get(const Sphere& sphere, const std::string& field);
 
-    // The lowest worst-channel fitted rel_rms among every model, for the sphere sheet.
+    // The model with the lowest worst-channel fitted rel_rms, for the sphere sheet (its fit is cached for get()).
     std::string best_model(const std::string& material);
 
     const ColorSpaceConverter& converter() const { return converter_; }
 
 private:
+    // The model's fitted or best closed-form parameters; InputError naming `field`.params when none is defined.
+    std::unique_ptr<SphereFresnel> model_fresnel(const Material& material, const ModelResult& result,
+                                                 const std::string& params, const std::string& field) const;
+
     Catalog catalog_;
     Colorimetry colorimetry_;
     ColorSpaceConverter converter_;
