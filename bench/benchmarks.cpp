@@ -14,9 +14,9 @@
 #include <map>
 #include <memory>
 
-#include "libfit/data_dir.hpp"
-#include "libfit/fit.hpp"
-#include "libfit/quadrature.hpp"
+#include "libfit/base/data_dir.hpp"
+#include "libfit/fit/fit.hpp"
+#include "libfit/base/quadrature.hpp"
 #include "metalfit_bench/convergence.hpp"
 #include "metalfit_bench/environment.hpp"
 #include "metalfit_bench/eval_kernels.hpp"

@@ -13,9 +13,9 @@
 #include <thread>
 #include <vector>
 
-#include "libfit/atomic_file.hpp"
-#include "libfit/errors.hpp"
-#include "libfit/file_digest.hpp"
+#include "libfit/base/atomic_file.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/base/file_digest.hpp"
 
 namespace metalfit {
 namespace {

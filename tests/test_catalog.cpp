@@ -9,8 +9,8 @@
 #include <fstream>
 #include <string>
 
-#include "libfit/catalog.hpp"
-#include "libfit/errors.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/base/errors.hpp"
 
 namespace metalfit {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "libfit/color_difference.hpp"
+#include "libfit/color/color_difference.hpp"
 
 namespace metalfit {
 namespace {

@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "libfit/color_space.hpp"
-#include "libfit/colorimetry.hpp"
-#include "libfit/errors.hpp"
+#include "libfit/color/color_space.hpp"
+#include "libfit/color/colorimetry.hpp"
+#include "libfit/base/errors.hpp"
 
 namespace metalfit {
 namespace {

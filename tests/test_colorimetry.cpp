@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "libfit/colorimetry.hpp"
-#include "libfit/errors.hpp"
+#include "libfit/color/colorimetry.hpp"
+#include "libfit/base/errors.hpp"
 
 namespace metalfit {
 namespace {

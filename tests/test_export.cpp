@@ -12,13 +12,13 @@
 #include <set>
 #include <sstream>
 
-#include "libfit/catalog.hpp"
-#include "libfit/color_space.hpp"
-#include "libfit/colorimetry.hpp"
-#include "libfit/export.hpp"
-#include "libfit/model.hpp"
-#include "libfit/quadrature.hpp"
-#include "libfit/reference_curve.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/color/color_space.hpp"
+#include "libfit/color/colorimetry.hpp"
+#include "libfit/export/export.hpp"
+#include "libfit/models/model.hpp"
+#include "libfit/base/quadrature.hpp"
+#include "libfit/reference/reference_curve.hpp"
 #include "test_support.hpp"
 
 namespace {

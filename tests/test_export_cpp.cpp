@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "libfit/model.hpp"
+#include "libfit/models/model.hpp"
 #include "metalfit_materials.hpp"
 
 namespace {

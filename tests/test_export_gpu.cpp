@@ -11,7 +11,7 @@
 
 #include "glpreview/gl.hpp"
 #include "glpreview/gl_context.hpp"
-#include "libfit/model.hpp"
+#include "libfit/models/model.hpp"
 
 namespace {
 

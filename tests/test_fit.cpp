@@ -23,19 +23,19 @@
 #include <string>
 #include <vector>
 
-#include "libfit/catalog.hpp"
-#include "libfit/color_space.hpp"
-#include "libfit/colorimetry.hpp"
-#include "libfit/errors.hpp"
-#include "libfit/fit.hpp"
-#include "libfit/fit_record.hpp"
-#include "libfit/fresnel.hpp"
-#include "libfit/io_csv.hpp"
-#include "libfit/metrics.hpp"
-#include "libfit/model.hpp"
-#include "libfit/quadrature.hpp"
-#include "libfit/reference_curve.hpp"
-#include "libfit/sampled_reference.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/color/color_space.hpp"
+#include "libfit/color/colorimetry.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/fit/fit.hpp"
+#include "libfit/fit/fit_record.hpp"
+#include "libfit/optics/fresnel.hpp"
+#include "libfit/io/csv.hpp"
+#include "libfit/fit/metrics.hpp"
+#include "libfit/models/model.hpp"
+#include "libfit/base/quadrature.hpp"
+#include "libfit/reference/reference_curve.hpp"
+#include "libfit/reference/sampled_reference.hpp"
 
 namespace metalfit {
 namespace {

@@ -5,7 +5,7 @@
 #include <complex>
 #include <numbers>
 
-#include "libfit/fresnel.hpp"
+#include "libfit/optics/fresnel.hpp"
 
 namespace metalfit {
 namespace {

@@ -10,9 +10,9 @@
 #include <fstream>
 #include <string>
 
-#include "libfit/errors.hpp"
-#include "libfit/io_csv.hpp"
-#include "libfit/io_refractiveindex.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/io/csv.hpp"
+#include "libfit/io/refractiveindex.hpp"
 
 namespace metalfit {
 namespace {

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "libfit/catalog.hpp"
-#include "libfit/errors.hpp"
-#include "libfit/file_digest.hpp"
-#include "libfit/io_csv.hpp"
-#include "libfit/io_refractiveindex.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/base/file_digest.hpp"
+#include "libfit/io/csv.hpp"
+#include "libfit/io/refractiveindex.hpp"
 
 namespace metalfit {
 namespace {

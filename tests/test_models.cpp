@@ -14,15 +14,15 @@
 #include <string>
 #include <vector>
 
-#include "libfit/errors.hpp"
-#include "libfit/fresnel.hpp"
-#include "libfit/model.hpp"
-#include "libfit/models/conductor_rgb.hpp"
-#include "libfit/models/f82_tint.hpp"
-#include "libfit/models/gulbrandsen.hpp"
-#include "libfit/models/lazanyi.hpp"
-#include "libfit/models/lazanyi_comp.hpp"
-#include "libfit/models/schlick.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/optics/fresnel.hpp"
+#include "libfit/models/model.hpp"
+#include "libfit/models/conductor_rgb/conductor_rgb.hpp"
+#include "libfit/models/f82_tint/f82_tint.hpp"
+#include "libfit/models/gulbrandsen/gulbrandsen.hpp"
+#include "libfit/models/lazanyi/lazanyi.hpp"
+#include "libfit/models/lazanyi_comp/lazanyi_comp.hpp"
+#include "libfit/models/schlick/schlick.hpp"
 #include "test_support.hpp"
 
 namespace metalfit {

@@ -17,7 +17,7 @@
 #include "glpreview/image_io.hpp"
 #include "glpreview/preview.hpp"
 #include "glpreview/sphere_metrics.hpp"
-#include "libfit/color_space.hpp"
+#include "libfit/color/color_space.hpp"
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {

@@ -7,7 +7,7 @@
 #include "glpreview/environment.hpp"
 #include "glpreview/plan.hpp"
 #include "glpreview/scene.hpp"
-#include "libfit/errors.hpp"
+#include "libfit/base/errors.hpp"
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {

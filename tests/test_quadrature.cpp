@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "libfit/quadrature.hpp"
+#include "libfit/base/quadrature.hpp"
 
 namespace metalfit {
 namespace {

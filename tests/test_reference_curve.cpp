@@ -8,11 +8,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "libfit/catalog.hpp"
-#include "libfit/errors.hpp"
-#include "libfit/fresnel.hpp"
-#include "libfit/io_csv.hpp"
-#include "libfit/reference_curve.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/optics/fresnel.hpp"
+#include "libfit/io/csv.hpp"
+#include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit {
 namespace {

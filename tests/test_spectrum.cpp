@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "libfit/spectrum.hpp"
+#include "libfit/spectral/spectrum.hpp"
 
 namespace metalfit {
 namespace {

@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "libfit/complex_index.hpp"
+#include "libfit/spectral/complex_index.hpp"
 
 namespace metalfit::test {
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <limits>
 
-#include "libfit/errors.hpp"
-#include "libfit/fit.hpp"
-#include "metalfit_bench/interleaved_timer.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/fit/fit.hpp"
+#include "libfit/base/interleaved_timer.hpp"
 #include "metalfit_bench/reference_lut.hpp"
 
 namespace metalfit::bench {

@@ -7,7 +7,7 @@
 #include <limits>
 #include <map>
 
-#include "libfit/quadrature.hpp"
+#include "libfit/base/quadrature.hpp"
 
 namespace metalfit::bench {
 namespace {

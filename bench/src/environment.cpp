@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "libfit/fit.hpp"
+#include "libfit/fit/fit.hpp"
 
 namespace metalfit::bench {
 

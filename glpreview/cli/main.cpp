@@ -12,12 +12,12 @@
 #include "glpreview/gpu_bench.hpp"
 #include "glpreview/image_io.hpp"
 #include "glpreview/sphere_sheet.hpp"
-#include "libfit/atomic_file.hpp"
+#include "libfit/base/atomic_file.hpp"
 #include "glpreview/plan.hpp"
 #include "glpreview/preview.hpp"
 #include "glpreview/scene.hpp"
-#include "libfit/data_dir.hpp"
-#include "libfit/errors.hpp"
+#include "libfit/base/data_dir.hpp"
+#include "libfit/base/errors.hpp"
 
 namespace {
 

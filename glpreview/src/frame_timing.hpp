@@ -1,11 +1,11 @@
-// Timing GL work: wall-clock milliseconds of a call followed by glFinish, and the median of such times.
+// Timing GL work: wall-clock milliseconds of a call followed by glFinish (statistics: libfit/base/sample_statistics.hpp).
 #pragma once
 
-#include <algorithm>
 #include <chrono>
 #include <vector>
 
 #include "glpreview/gl.hpp"
+#include "libfit/base/sample_statistics.hpp"
 
 namespace metalfit::glpreview {
 
@@ -16,14 +16,6 @@ double finished_ms(Work&& work) {
     work();
     glFinish();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-// 0 for no samples.
-inline double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 }  // namespace metalfit::glpreview

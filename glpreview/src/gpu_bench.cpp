@@ -8,7 +8,7 @@
 #include "glpreview/gpu_renderer.hpp"
 #include "glpreview/sphere_fresnel.hpp"
 #include "glpreview/sphere_metrics.hpp"
-#include "libfit/model.hpp"
+#include "libfit/models/model.hpp"
 
 namespace metalfit::glpreview {
 namespace {

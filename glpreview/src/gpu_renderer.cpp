@@ -6,7 +6,7 @@
 #include "embedded_shaders.hpp"
 #include "frame_timing.hpp"
 #include "glpreview/camera.hpp"
-#include "libfit/model.hpp"
+#include "libfit/models/model.hpp"
 
 namespace metalfit::glpreview {
 namespace {

@@ -8,7 +8,7 @@
 #include <random>
 #include <system_error>
 
-#include "libfit/errors.hpp"
+#include "libfit/base/errors.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 

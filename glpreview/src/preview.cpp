@@ -6,8 +6,8 @@
 #include "glpreview/image_io.hpp"
 #include "glpreview/sphere_fresnel.hpp"
 #include "glpreview/sphere_metrics.hpp"
-#include "libfit/atomic_file.hpp"
-#include "libfit/errors.hpp"
+#include "libfit/base/atomic_file.hpp"
+#include "libfit/base/errors.hpp"
 
 namespace metalfit::glpreview {
 namespace {
@@ -18,7 +18,7 @@ nlohmann::ordered_json metrics_json(const Scene& scene, const PreviewResult& r, 
     j["scene"] = scene.file.filename().string();
     j["renderer"] = r.renderer;
     j["size"] = {scene.width, scene.height};
-    j["ms_per_frame"] = median(r.frame_ms);
+    j["ms_per_frame"] = r.frame_ms.empty() ? 0.0 : median(r.frame_ms);
     j["frame_ms"] = r.frame_ms;
     const auto errors = sphere_errors(*r.beauty, *r.reference, scene.spheres.size());
     j["spheres"] = nlohmann::ordered_json::array();

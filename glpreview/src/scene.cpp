@@ -7,7 +7,7 @@
 #include <initializer_list>
 #include <sstream>
 
-#include "libfit/errors.hpp"
+#include "libfit/base/errors.hpp"
 
 namespace metalfit::glpreview {
 namespace {

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "libfit/errors.hpp"
-#include "libfit/fit.hpp"
-#include "libfit/reference_curve.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/fit/fit.hpp"
+#include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit::glpreview {
 

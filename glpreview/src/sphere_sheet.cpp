@@ -7,7 +7,7 @@
 #include "glpreview/gpu_renderer.hpp"
 #include "glpreview/sphere_fresnel.hpp"
 #include "glpreview/sphere_metrics.hpp"
-#include "libfit/errors.hpp"
+#include "libfit/base/errors.hpp"
 
 namespace metalfit::glpreview {
 namespace {

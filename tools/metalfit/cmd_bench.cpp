@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "commands.hpp"
-#include "libfit/atomic_file.hpp"
+#include "libfit/base/atomic_file.hpp"
 #include "metalfit_bench/bench_report.hpp"
 #include "metalfit_bench/subprocess.hpp"
 

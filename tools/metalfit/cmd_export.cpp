@@ -6,9 +6,9 @@
 #include "colour_options.hpp"
 #include "commands.hpp"
 #include "fit_parallel.hpp"
-#include "libfit/catalog.hpp"
-#include "libfit/errors.hpp"
-#include "libfit/export.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/export/export.hpp"
 
 namespace metalfit::cli {
 namespace {

@@ -15,10 +15,10 @@
 #include "colour_options.hpp"
 #include "commands.hpp"
 #include "fit_parallel.hpp"
-#include "libfit/catalog.hpp"
-#include "libfit/errors.hpp"
-#include "libfit/fit.hpp"
-#include "libfit/fit_record.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/fit/fit.hpp"
+#include "libfit/fit/fit_record.hpp"
 
 namespace metalfit::cli {
 namespace {

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "commands.hpp"
-#include "libfit/catalog.hpp"
+#include "libfit/io/catalog.hpp"
 
 namespace metalfit::cli {
 namespace {

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "commands.hpp"
-#include "libfit/model.hpp"
+#include "libfit/models/model.hpp"
 
 namespace metalfit::cli {
 namespace {

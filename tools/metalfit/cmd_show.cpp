@@ -6,8 +6,8 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
-#include "libfit/catalog.hpp"
-#include "libfit/reference_curve.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit::cli {
 namespace {

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "commands.hpp"
-#include "libfit/color_space.hpp"
-#include "libfit/colorimetry.hpp"
-#include "libfit/reference_curve.hpp"
+#include "libfit/color/color_space.hpp"
+#include "libfit/color/colorimetry.hpp"
+#include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit::cli {
 

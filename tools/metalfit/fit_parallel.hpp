@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "colour_options.hpp"
-#include "libfit/catalog.hpp"
-#include "libfit/fit.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/fit/fit.hpp"
 
 namespace metalfit::cli {
 

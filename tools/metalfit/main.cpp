@@ -5,9 +5,9 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "libfit/atomic_file.hpp"
-#include "libfit/data_dir.hpp"
-#include "libfit/errors.hpp"
+#include "libfit/base/atomic_file.hpp"
+#include "libfit/base/data_dir.hpp"
+#include "libfit/base/errors.hpp"
 
 namespace metalfit::cli {
 

@@ -11,7 +11,7 @@
 
 #include "metalfit_bench/catalog_accuracy.hpp"
 #include "metalfit_bench/glpreview_results.hpp"
-#include "metalfit_bench/interleaved_timer.hpp"
+#include "libfit/base/interleaved_timer.hpp"
 #include "metalfit_bench/machine.hpp"
 #include "metalfit_bench/pareto.hpp"
 #include "metalfit_bench/spirv_cost.hpp"

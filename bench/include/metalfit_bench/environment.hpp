@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "libfit/catalog.hpp"
-#include "libfit/color_space.hpp"
-#include "libfit/colorimetry.hpp"
-#include "libfit/model.hpp"
-#include "libfit/reference_curve.hpp"
-#include "libfit/sampled_reference.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/color/color_space.hpp"
+#include "libfit/color/colorimetry.hpp"
+#include "libfit/models/model.hpp"
+#include "libfit/reference/reference_curve.hpp"
+#include "libfit/reference/sampled_reference.hpp"
 
 namespace metalfit::bench {
 

@@ -6,9 +6,9 @@
 #include <array>
 #include <vector>
 
-#include "libfit/metrics.hpp"
-#include "libfit/reference_curve.hpp"
-#include "libfit/sampled_reference.hpp"
+#include "libfit/fit/metrics.hpp"
+#include "libfit/reference/reference_curve.hpp"
+#include "libfit/reference/sampled_reference.hpp"
 
 namespace metalfit::bench {
 

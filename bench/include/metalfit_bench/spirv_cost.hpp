@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "libfit/model.hpp"
+#include "libfit/models/model.hpp"
 
 namespace metalfit::bench {
 

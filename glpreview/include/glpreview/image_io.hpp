@@ -7,7 +7,7 @@
 #include <string>
 
 #include "glpreview/image.hpp"
-#include "libfit/color_space.hpp"
+#include "libfit/color/color_space.hpp"
 
 namespace metalfit::glpreview {
 

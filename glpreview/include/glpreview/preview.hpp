@@ -14,7 +14,7 @@
 #include "glpreview/image.hpp"
 #include "glpreview/plan.hpp"
 #include "glpreview/scene.hpp"
-#include "libfit/color_space.hpp"
+#include "libfit/color/color_space.hpp"
 
 namespace metalfit::glpreview {
 

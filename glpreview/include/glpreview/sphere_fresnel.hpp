@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "glpreview/scene.hpp"
-#include "libfit/catalog.hpp"
-#include "libfit/color_space.hpp"
-#include "libfit/colorimetry.hpp"
-#include "libfit/fit.hpp"
-#include "libfit/model.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/color/color_space.hpp"
+#include "libfit/color/colorimetry.hpp"
+#include "libfit/fit/fit.hpp"
+#include "libfit/models/model.hpp"
 
 namespace metalfit::glpreview {
 

@@ -7,7 +7,7 @@
 #include <exception>
 #include <string>
 
-#include "libfit/model.hpp"
+#include "libfit/models/model.hpp"
 
 namespace metalfit::detail {
 

@@ -1,0 +1,59 @@
+// XYZ → RGB working spaces through OpenColorIO.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "libfit/color/color.hpp"
+
+namespace metalfit {
+
+// Which OCIO config is in use and why: "$OCIO", "--ocio-config" or "metalfit default".
+struct OcioConfigChoice {
+    std::filesystem::path path;
+    std::string origin;
+};
+
+// $OCIO if set, else `command_line` if given, else <data_dir>/ocio/config.ocio.
+OcioConfigChoice choose_ocio_config(const std::optional<std::filesystem::path>& command_line,
+                                    const std::filesystem::path& data_dir);
+
+// The role through which XYZ is found, and the default target role.
+inline constexpr const char* kXyzRole = "cie_xyz_d65_interchange";
+inline constexpr const char* kSceneLinearRole = "scene_linear";
+
+// Converts CIE XYZ (D65) to one colour space of a config. The OCIO processor is built once.
+// OCIO evaluates in float32: expect about 1e-7 relative error.
+class ColorSpaceConverter {
+public:
+    // target: a colour space name, alias or role; empty means the role scene_linear.
+    // Throws ColorConfigError naming the config when it cannot be read, lacks the XYZ role or the
+    // target, or the target is not linear (reflectance curves need a linear space).
+    static ColorSpaceConverter create(const OcioConfigChoice& config, const std::string& target = {});
+
+    RGB operator()(const XYZ& xyz) const;
+    // The inverse, RGB of the target space → XYZ (for colour differences of model colours).
+    XYZ to_xyz(const RGB& rgb) const;
+
+    const std::string& space() const { return space_; }  // resolved colour space name
+    const OcioConfigChoice& config() const { return config_; }
+    std::vector<std::string> available_spaces() const;
+
+    ~ColorSpaceConverter();
+    ColorSpaceConverter(const ColorSpaceConverter&);
+    ColorSpaceConverter& operator=(const ColorSpaceConverter&);
+    ColorSpaceConverter(ColorSpaceConverter&&) noexcept;
+    ColorSpaceConverter& operator=(ColorSpaceConverter&&) noexcept;
+
+private:
+    struct Impl;
+    explicit ColorSpaceConverter(std::shared_ptr<const Impl> impl);
+    std::shared_ptr<const Impl> impl_;
+    OcioConfigChoice config_;
+    std::string space_;
+};
+
+}  // namespace metalfit

@@ -1,0 +1,46 @@
+// Colorimetry: spectral reflectance → XYZ under an illuminant and a standard observer.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "libfit/color/color.hpp"
+
+namespace metalfit {
+
+enum class Observer { cie1931_2deg, cie1964_10deg };
+enum class Illuminant { D65, A, E };
+
+Observer parse_observer(std::string_view s);      // "1931" | "1964"; UsageError otherwise
+Illuminant parse_illuminant(std::string_view s);  // "D65" | "A" | "E"; UsageError otherwise
+std::string to_string(Observer o);                // "CIE 1931 2°" / "CIE 1964 10°"
+std::string to_string(Illuminant i);              // "D65" / "A" / "E"
+
+// Weights S(λ)·x̄(λ), S(λ)·ȳ(λ), S(λ)·z̄(λ) at 1 nm over 360–830 nm, normalised so that a perfect
+// reflector (R ≡ 1) has Y = 1. XYZ = Σ_λ R(λ)·w(λ) (the CIE's 1 nm summation).
+class Colorimetry {
+public:
+    // Reads the CMF and illuminant tables from <data_dir>/cie. Throws InputError.
+    static Colorimetry load(const std::filesystem::path& data_dir, Observer observer,
+                            Illuminant illuminant);
+
+    std::span<const double> wavelengths_nm() const { return wavelengths_; }
+    // reflectance[i] is the reflectance at wavelengths_nm()[i].
+    XYZ integrate(std::span<const double> reflectance) const;
+    // XYZ of the perfect reflector under this illuminant (Y = 1).
+    XYZ white() const { return white_; }
+    Observer observer() const { return observer_; }
+    Illuminant illuminant() const { return illuminant_; }
+
+private:
+    Observer observer_{};
+    Illuminant illuminant_{};
+    std::vector<double> wavelengths_;
+    std::vector<double> wx_, wy_, wz_;
+    XYZ white_;
+};
+
+}  // namespace metalfit

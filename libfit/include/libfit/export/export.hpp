@@ -1,0 +1,82 @@
+// Exports: fitted (or closed-form) model parameters written as files that shaders and material systems consume
+// (docs/export.md). The library does all the work; `metalfit export` only parses arguments and calls it.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "libfit/fit/fit.hpp"
+#include "libfit/fit/fit_record.hpp"
+#include "libfit/fit/metrics.hpp"
+#include "libfit/models/model.hpp"
+
+namespace metalfit {
+
+enum class ExportFormat { json, glsl, hlsl, mtlx, openpbr, cpp };
+std::string to_string(ExportFormat format);
+// "glsl,mtlx" or "all", in the order given (duplicates removed); UsageError naming the unknown format.
+std::vector<ExportFormat> parse_export_formats(std::string_view list);
+
+// Which parameters are written: the Ceres fit, or the model's best defined closed form.
+enum class ParameterSource { fit, closed };
+ParameterSource parse_parameter_source(const std::string& text);  // "fit" | "closed", else UsageError
+
+// What happens to colour parameters (F0, tint, r, g) outside [0, 1]: written as they are and flagged, clipped to
+// [0, 1], or the whole colour scaled by 1 / max (Adobe's rule). n, k, a and α are not colours and are never changed.
+enum class GamutPolicy { keep, clip, scale };
+GamutPolicy parse_gamut_policy(const std::string& text);  // "keep" | "clip" | "scale", else UsageError
+std::string to_string(GamutPolicy policy);
+
+// The parameters of one model exactly as they are written, and the error figures of those values (recomputed with
+// compute_metrics on the material's sampled reference, so they describe what a consumer evaluates).
+struct WrittenParameters {
+    const Model* model = nullptr;
+    std::string origin;                   // "fit" or "closed r1-r82"
+    RgbParameters params;
+    Metrics metrics;
+    std::vector<std::string> gamut;       // one note per out-of-gamut colour parameter: what was done to it
+};
+
+// Chooses the fit or the best closed form of `result`, applies the gamut policy and recomputes the metrics.
+// Throws UsageError naming the material and the reasons when closed parameters are asked and none is defined.
+WrittenParameters written_parameters(const ModelResult& result, const SampledReference& reference,
+                                     ParameterSource source, GamutPolicy gamut, const std::string& material_id);
+
+struct ExportRequest {
+    std::vector<ExportFormat> formats;
+    std::vector<const Model*> models;  // the models exported, in order
+    ParameterSource source = ParameterSource::fit;
+    GamutPolicy gamut = GamutPolicy::keep;
+};
+
+// The model the MaterialX and OpenPBR exports use where a model has no native equivalent (lazanyi-comp in MaterialX;
+// every n, k model in OpenPBR): f82-tint, the closest model MaterialX's generalized_schlick_bsdf and OpenPBR evaluate.
+const Model& expressible_stand_in();
+
+// The models to fit for a request: the requested ones, plus the stand-in when a format needs it.
+std::vector<const Model*> models_to_fit(const ExportRequest& request);
+
+// One output file, its path relative to the output directory.
+struct ExportFile {
+    std::filesystem::path path;
+    std::string contents;
+};
+
+// Every file of an export (layout in docs/export.md). `fits` must hold the models of models_to_fit(request).
+std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
+                                     const ExportRequest& request);
+
+// Writes all files below `dir` (created if missing) as one unit: every file goes to a temporary name first and is
+// renamed into place only when all were written; on failure nothing new is left behind. Throws InputError.
+void write_export(const std::filesystem::path& dir, const std::vector<ExportFile>& files);
+
+// The mechanical GLSL → HLSL translation of libfit's model functions (docs/export.md): a prelude of helpers plus a
+// token mapping (vec3 → float3, bvec3 → bool3, vec3(…) → metalfit_vec3(…), mix/greaterThanEqual/equal → helpers).
+std::string hlsl_from_glsl(std::string_view glsl);
+// The prelude that makes the GLSL text of the model functions valid C++ (a float vec3 with GLSL's operators and the
+// built-ins the models use), in namespace metalfit_shader.
+std::string_view cpp_glsl_prelude();
+
+}  // namespace metalfit

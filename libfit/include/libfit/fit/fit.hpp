@@ -1,0 +1,85 @@
+// Fitting one material: every closed form of a model, evaluated, and a Ceres fit per channel that is never worse
+// than any of them on the chosen metric.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "libfit/color/colorimetry.hpp"
+#include "libfit/io/material.hpp"
+#include "libfit/fit/metrics.hpp"
+#include "libfit/models/model.hpp"
+#include "libfit/reference/reference_curve.hpp"
+#include "libfit/reference/sampled_reference.hpp"
+
+namespace metalfit {
+
+struct EvaluatedParameters {
+    RgbParameters params;
+    Metrics metrics;
+};
+
+struct ClosedFormResult {
+    std::string id;
+    std::string description;
+    std::optional<EvaluatedParameters> value;  // empty when undefined
+    std::string undefined;                     // why ("red: alpha undefined: ...")
+};
+
+struct FitResult {
+    EvaluatedParameters value;
+    std::array<SolverSummary, 3> solver;
+    // Per channel: the closed form kept because no start of the fit beat it ("" when the fit won).
+    std::array<std::string, 3> fallback;
+};
+
+struct ModelResult {
+    const Model* model = nullptr;
+    std::vector<ClosedFormResult> closed_forms;
+    // The defined closed form with the lowest worst-channel chosen metric, if any is defined.
+    std::optional<std::size_t> best_closed;
+    FitResult fit;
+};
+
+// Where the time of a fit goes (seconds of one thread), for `metalfit fit --timings`; never written to records.
+struct FitTimings {
+    double reference = 0;     // spectral integration + OCIO at the nodes and the dense grid
+    double closed_forms = 0;  // closed forms (their spectral samples included)
+    double ceres = 0;         // Ceres solves, all starts
+    double metrics = 0;       // metrics of closed forms and fits
+    FitTimings& operator+=(const FitTimings& o);
+    double total() const { return reference + closed_forms + ceres + metrics; }
+};
+
+// The closed-form input of a material: its reference curve and its measured η(λ).
+ClosedFormInput closed_form_input(const ReferenceCurve& curve, const Material& material, SpectralOptions options);
+
+// Requires the chosen metric to be defined on the reference (see SampledReference::rel_undefined).
+ModelResult fit_model(const Model& model, const SampledReference& reference, const ClosedFormInput& input,
+                      FitTimings* timings = nullptr);
+
+struct MaterialFitRequest {
+    SpectralOptions spectral;
+    ErrorSettings error;
+    std::vector<const Model*> models;
+};
+
+struct MaterialFit {
+    Material material;
+    RGB raw_white;
+    RGB F0;  // R(1), for the out-of-gamut flag
+    std::vector<ModelResult> models;
+    FitTimings timings;
+    // The sampled reference the metrics were computed on, so that exports can re-evaluate the parameters they write.
+    std::shared_ptr<const SampledReference> reference;
+};
+
+// Everything for one material. Throws InputError naming the material's file when the data do not cover the
+// visible range or the relative metric is undefined (R_c ≤ 0 somewhere: use the absolute metric).
+MaterialFit fit_material(const Material& material, const Colorimetry& colorimetry, const ColorSpaceConverter& converter,
+                         const MaterialFitRequest& request);
+
+}  // namespace metalfit

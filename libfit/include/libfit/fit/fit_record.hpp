@@ -1,0 +1,37 @@
+// The fit record: the versioned JSON of `metalfit fit --json` (docs/fit-record.md), which exports read.
+// Deterministic: the same inputs give byte-identical text (no times, no thread-dependent order).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+#include "libfit/color/color_space.hpp"
+#include "libfit/color/colorimetry.hpp"
+#include "libfit/fit/fit.hpp"
+
+namespace metalfit {
+
+inline constexpr const char* kFitRecordSchema = "metalfit.fit/1";
+
+// How the curves were made, for the record's provenance.
+struct FitRecordContext {
+    OcioConfigChoice config;
+    std::string space;  // resolved colour space name
+    Observer observer = Observer::cie1931_2deg;
+    Illuminant illuminant = Illuminant::D65;
+    SpectralOptions spectral;
+    ErrorSettings error;
+};
+
+nlohmann::ordered_json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContext& context);
+
+// {"params": {name: [r, g, b]}, "metrics": the seven keys of DESIGN.md, "metrics_at_mu": where the maxima are}:
+// how every set of evaluated parameters (fit, closed form, exported values) appears in records.
+nlohmann::ordered_json evaluated_record(const Model& model, const EvaluatedParameters& value);
+
+// The JSON of one model's results (the value under materials.<id>.models.<model id>).
+nlohmann::ordered_json model_record(const ModelResult& result);
+
+}  // namespace metalfit

@@ -1,0 +1,61 @@
+// The built-in spectral metal database: data/catalog.json and the files it names.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "libfit/io/material.hpp"
+
+namespace metalfit {
+
+struct CatalogSource {
+    std::string source;               // "Johnson"
+    std::filesystem::path file;       // absolute path of the nk file
+    std::string reference;
+    std::string doi;                  // empty when none
+    std::string licence;
+    std::string database_path;        // path in the refractiveindex.info repository
+    std::string note;
+};
+
+struct CatalogEntry {
+    std::string id;    // "Au"
+    std::string name;  // "gold"
+    std::string kind;  // "metal", "alloy", "intermetallic", "nitride"
+    std::vector<std::string> aliases;
+    CatalogSource primary;
+    std::vector<CatalogSource> alternates;
+
+    // The primary when `source` is empty, else the source of that name (case-insensitive).
+    // Throws UsageError listing the available sources.
+    const CatalogSource& find_source(std::string_view source) const;
+};
+
+class Catalog {
+public:
+    // Reads <data_dir>/catalog.json. Throws InputError naming the file and field.
+    static Catalog load(const std::filesystem::path& data_dir);
+
+    // Case-insensitive match on id, name or alias; nullptr when unknown.
+    const CatalogEntry* find(std::string_view name) const;
+    const std::vector<CatalogEntry>& entries() const { return entries_; }
+    const std::filesystem::path& data_dir() const { return data_dir_; }
+
+private:
+    std::filesystem::path data_dir_;
+    std::vector<CatalogEntry> entries_;
+};
+
+// True when `argument` names a file rather than a catalog material (it contains a path separator,
+// has a .yml/.yaml/.csv extension, or exists).
+bool looks_like_path(std::string_view argument);
+
+// Loads a catalog material (optionally a named alternate source) or a user file, with provenance.
+// Unknown material or source: UsageError; bad file: InputError.
+Material load_material(const Catalog& catalog, std::string_view material_or_path,
+                       std::string_view source = {});
+
+}  // namespace metalfit

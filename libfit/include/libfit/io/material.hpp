@@ -1,0 +1,32 @@
+// Material: measured optical constants plus where they came from.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "libfit/spectral/complex_index.hpp"
+
+namespace metalfit {
+
+struct Provenance {
+    std::filesystem::path file;
+    std::string sha256;                          // of the file's bytes
+    std::string format;                          // "refractiveindex.info YAML" or "CSV"
+    std::string references;                      // REFERENCES (or the catalog's reference)
+    std::string comments;                        // COMMENTS
+    std::map<std::string, std::string> conditions;  // CONDITIONS, values as written
+    std::string data_type;                       // e.g. "tabulated nk", "tabulated n + tabulated k"
+};
+
+struct Material {
+    std::string id;      // catalog id ("Au") or the file stem for user files
+    std::string name;    // catalog name ("gold") or the file stem
+    std::string source;  // catalog source name ("Johnson") or the file name
+    ComplexIndex index;
+    Provenance provenance;
+    std::vector<std::string> warnings;  // one line each, e.g. "no k data: k = 0 assumed"
+};
+
+}  // namespace metalfit

@@ -1,0 +1,34 @@
+// Exact conductor Fresnel with one n, k per channel (what most renderers do with measured data).
+// GLSL: conductor_rgb.glsl beside this header.
+#pragma once
+
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "libfit/models/model.hpp"
+#include "libfit/models/model_math.hpp"
+
+namespace metalfit::models {
+
+struct ConductorRgb {
+    static constexpr std::string_view kId = "conductor-rgb";
+    static constexpr std::string_view kTitle = "exact conductor Fresnel with RGB n, k";
+    static constexpr std::array<Parameter, 2> kParameters{{
+        {"n", 1e-3, 100.0, "refractive index"},
+        {"k", 0.0, 1e4, "extinction coefficient"},
+    }};
+    static constexpr std::string_view kGlslFunction = "metalfit_conductor_rgb";
+    static constexpr std::array<std::string_view, 1> kGlslFiles{"conductor_rgb"};
+
+    template <class T>
+    static T evaluate(const T* p, const T& mu) {
+        return model_math::conductor_fresnel(p[0], p[1] * p[1], p[0] * p[1], mu);
+    }
+
+    // "nk-650-550-450" and "nk-700-550-435": n, k of the data sampled at three wavelengths.
+    static std::vector<ClosedForm> closed_forms(const ClosedFormInput& input);
+    static std::vector<ChannelParameters> neutral_starts() { return {{1.0, 3.0}, {0.2, 3.0}}; }
+};
+
+}  // namespace metalfit::models

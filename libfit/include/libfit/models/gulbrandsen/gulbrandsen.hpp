@@ -1,0 +1,60 @@
+// Gulbrandsen (2014) artist-friendly metallic Fresnel (MaterialX artistic_ior): reflectivity r and edge tint g
+// per channel, mapped to n, k and the exact conductor Fresnel. GLSL: gulbrandsen.glsl beside this header.
+#pragma once
+
+#include <array>
+#include <complex>
+#include <string_view>
+#include <vector>
+
+#include "libfit/models/model.hpp"
+#include "libfit/models/model_math.hpp"
+
+namespace metalfit::models {
+
+struct Gulbrandsen {
+    static constexpr std::string_view kId = "gulbrandsen";
+    static constexpr std::string_view kTitle = "Gulbrandsen (2014) reflectivity + edge tint";
+    static constexpr std::array<Parameter, 2> kParameters{{
+        {"r", 0.0, 0.99999, "reflectivity (F0)"},
+        {"g", 0.0, 1.0, "edge tint"},
+    }};
+    static constexpr std::string_view kGlslFunction = "metalfit_gulbrandsen";
+    static constexpr std::array<std::string_view, 2> kGlslFiles{"conductor_rgb", "gulbrandsen"};
+
+    // n = g n_min + (1 − g) n_max with n_min = (1 − r)/(1 + r), n_max = (1 + √r)/(1 − √r).
+    template <class T>
+    static T n_of(const T& r, const T& g) {
+        const T sr = model_math::sqrt_or_zero(r);
+        return g * ((T(1) - r) / (T(1) + r)) + (T(1) - g) * ((T(1) + sr) / (T(1) - sr));
+    }
+    // Gulbrandsen's k² = (r (n + 1)² − (n − 1)²) / (1 − r), factored as (n_max − n)(n − n₋) with
+    // n₋ = (1 − √r)/(1 + √r) and n_max − n = g (n_max − n_min): exactly 0 at g = 0 with the right derivative (the
+    // unfactored form cancels to ±1e-16 there and a clamp would drop dk²/dg). Held at 0 below n₋ (g far above 1).
+    template <class T>
+    static T k2_of(const T& r, const T& g) {
+        const T sr = model_math::sqrt_or_zero(r);
+        const T n_max = (T(1) + sr) / (T(1) - sr);
+        const T n_min = (T(1) - r) / (T(1) + r);
+        const T n_minus = (T(1) - sr) / (T(1) + sr);
+        const T k2 = g * (n_max - n_min) * (n_of(r, g) - n_minus);
+        return k2 >= T(0) ? k2 : T(0);
+    }
+
+    template <class T>
+    static T evaluate(const T* p, const T& mu) {
+        const T n = n_of(p[0], p[1]);
+        const T k2 = k2_of(p[0], p[1]);
+        return model_math::conductor_fresnel(n, k2, n * model_math::sqrt_or_zero(k2), mu);
+    }
+
+    // The inverse: r = ((n − 1)² + k²)/((n + 1)² + k²), g = (n_max − n)/(n_max − n_min) (g = 0 when r = 0).
+    static std::array<double, 2> from_nk(std::complex<double> eta);
+    static std::complex<double> to_nk(double r, double g);
+
+    // "nk-650-550-450" and "nk-700-550-435": the data's n, k at three wavelengths mapped to r, g.
+    static std::vector<ClosedForm> closed_forms(const ClosedFormInput& input);
+    static std::vector<ChannelParameters> neutral_starts() { return {{0.5, 0.5}}; }
+};
+
+}  // namespace metalfit::models

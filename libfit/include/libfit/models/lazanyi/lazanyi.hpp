@@ -1,0 +1,45 @@
+// Lazányi's rescaled Schlick (thesis eq. 3.2): Schlick with the exact normal-incidence reflectance of η = n + i k,
+// F*(μ) = ((n − 1)² + k² + 4n(1 − μ)^5) / ((n + 1)² + k²). Only F0(n, k) shapes the curve, so F0 < 1 and the fitted
+// n, k are one point of a one-dimensional family (the one nearest the start). GLSL: lazanyi.glsl beside this header.
+#pragma once
+
+#include <array>
+#include <string_view>
+#include <vector>
+
+#include "libfit/models/model.hpp"
+#include "libfit/models/model_math.hpp"
+
+namespace metalfit::models {
+
+struct Lazanyi {
+    static constexpr std::string_view kId = "lazanyi";
+    static constexpr std::string_view kTitle = "Lazányi's rescaled Schlick (thesis eq. 3.2)";
+    static constexpr std::array<Parameter, 2> kParameters{{
+        {"n", 1e-3, 100.0, "refractive index"},
+        {"k", 0.0, 1e4, "extinction coefficient"},
+    }};
+    static constexpr std::string_view kGlslFunction = "metalfit_lazanyi";
+    static constexpr std::array<std::string_view, 1> kGlslFiles{"lazanyi"};
+
+    template <class T>
+    static T evaluate(const T* p, const T& mu) {
+        const T& n = p[0];
+        const T k2 = p[1] * p[1];
+        return ((n - T(1)) * (n - T(1)) + k2 + T(4) * n * model_math::schlick_weight(mu)) /
+               ((n + T(1)) * (n + T(1)) + k2);
+    }
+
+    // "nk-700-550-435": n, k of the data at the thesis's wavelengths; "r1": F0 = R(1) with n from those wavelengths
+    // and k solved (k = 0 and n solved where F0 is below the dielectric value; undefined where R(1) ≥ 1).
+    static std::vector<ClosedForm> closed_forms(const ClosedFormInput& input);
+    static std::vector<ChannelParameters> neutral_starts() { return {{1.0, 3.0}}; }
+    // The least-squares F0 of the target (F* is linear in F0), as n, k.
+    static std::vector<ChannelParameters> target_starts(const ChannelTarget& target);
+
+    // An n, k with the given F0: n = 1, k = 2 sqrt(F0 / (1 − F0)); F0 ≥ 1 (out of gamut) goes to the corner of the
+    // bounds nearest it (n lowest, k highest), where k no longer moves F0 and a solver started lower would stall.
+    static ChannelParameters nk_with_F0(double F0);
+};
+
+}  // namespace metalfit::models

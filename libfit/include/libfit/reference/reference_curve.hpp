@@ -1,0 +1,46 @@
+// The reference curve R_c(μ) of a material: exact spectral Fresnel → XYZ → RGB, white balanced.
+#pragma once
+
+#include <complex>
+#include <vector>
+
+#include "libfit/color/color.hpp"
+#include "libfit/color/color_space.hpp"
+#include "libfit/color/colorimetry.hpp"
+#include "libfit/io/material.hpp"
+
+namespace metalfit {
+
+// μ of the F82 angle (θ ≈ 81.8°), where F82-tint models take their tint: μ̄ = 1/7.
+inline constexpr double kMuF82 = 1.0 / 7.0;
+
+struct SpectralOptions {
+    Interpolation interpolation = Interpolation::linear;
+    OutOfRange out_of_range = OutOfRange::error;
+};
+
+// R_c(μ) = RGB_c(XYZ(F(·, μ))) / RGB_c(perfect reflector) (DESIGN.md), so R_c(0) = 1 in every
+// space. η(λ) is sampled once at the colorimetry's wavelengths; each μ costs one Fresnel
+// evaluation per wavelength and one OCIO conversion.
+class ReferenceCurve {
+public:
+    // Throws InputError naming the material's file when its data do not cover 360–830 nm (and
+    // options.out_of_range is error).
+    ReferenceCurve(const Material& material, const Colorimetry& colorimetry,
+                   ColorSpaceConverter converter, SpectralOptions options = {});
+
+    RGB operator()(double mu) const;  // white balanced
+    XYZ xyz(double mu) const;         // before the colour space
+    // RGB of the perfect reflector before white balance (provenance: about (1.00016, 0.99998,
+    // 0.99976) for D65 in Linear Rec.709).
+    RGB raw_white() const { return raw_white_; }
+    const ColorSpaceConverter& converter() const { return converter_; }
+
+private:
+    std::vector<std::complex<double>> eta_;  // at colorimetry wavelengths
+    Colorimetry colorimetry_;
+    ColorSpaceConverter converter_;
+    RGB raw_white_;
+};
+
+}  // namespace metalfit

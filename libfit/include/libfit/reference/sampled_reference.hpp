@@ -1,0 +1,72 @@
+// A reference curve sampled once where the error integrals need it: at Gauss–Legendre nodes on [0, 1] (integrals)
+// and on a dense uniform grid (maxima), with the colour of every sample for ΔE2000.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "libfit/color/color.hpp"
+#include "libfit/color/color_difference.hpp"
+#include "libfit/models/model.hpp"
+#include "libfit/reference/reference_curve.hpp"
+
+namespace metalfit {
+
+// Error metric minimised by the fit (DESIGN.md): relative or absolute difference to R_c.
+enum class ErrorMetric { rel, abs };
+// Angular weight w(μ) of the error integrals: 1 (uniform over the hemisphere) or 2μ (projected solid angle).
+enum class AngularWeight { uniform, cosine };
+
+std::string to_string(ErrorMetric m);
+std::string to_string(AngularWeight w);
+ErrorMetric parse_error_metric(const std::string& text);      // "rel" | "abs", else UsageError
+AngularWeight parse_angular_weight(const std::string& text);  // "uniform" | "cosine", else UsageError
+
+struct ErrorSettings {
+    int nodes = 128;
+    ErrorMetric metric = ErrorMetric::rel;
+    AngularWeight weight = AngularWeight::uniform;
+};
+
+// Uniform grid for maxima: μ = i / kDenseIntervals, i = 0 … kDenseIntervals (both ends included).
+inline constexpr int kDenseIntervals = 1024;
+
+class SampledReference {
+public:
+    struct Sample {
+        double mu = 0.0;
+        double weight = 0.0;         // W_i w(μ_i): ∫ w f dμ ≈ Σ weight f (0 on the dense grid)
+        double albedo_weight = 0.0;  // W_i 2μ_i: ∫ 2μ f dμ ≈ Σ albedo_weight f (0 on the dense grid)
+        RGB value;                   // R_c(μ)
+        Lab lab;                     // its colour, white = perfect reflector
+    };
+
+    SampledReference(const ReferenceCurve& curve, const ErrorSettings& settings);
+
+    std::span<const Sample> nodes() const { return nodes_; }
+    std::span<const Sample> dense() const { return dense_; }
+    const ErrorSettings& settings() const { return settings_; }
+
+    // L*a*b* of a white-balanced RGB of the curve's space (the perfect reflector (1, 1, 1) has L* = 100), through
+    // the OCIO inverse of the curve's transform.
+    Lab lab(const RGB& balanced) const;
+
+    // Why the relative metric is undefined (a channel of R_c is ≤ 0 somewhere on [0, 1]), if it is.
+    const std::optional<std::string>& rel_undefined() const { return rel_undefined_; }
+
+    // Channel c at the nodes as a least-squares target for settings().metric. Requires the metric to be defined.
+    ChannelTarget target(int channel) const;
+
+private:
+    ColorSpaceConverter converter_;
+    RGB raw_white_;
+    XYZ white_;
+    ErrorSettings settings_;
+    std::vector<Sample> nodes_;
+    std::vector<Sample> dense_;
+    std::optional<std::string> rel_undefined_;
+};
+
+}  // namespace metalfit

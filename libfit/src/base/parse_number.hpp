@@ -1,0 +1,81 @@
+// Internal: strict number parsing shared by the importers.
+#pragma once
+
+#include <charconv>
+#include <cmath>
+#include <optional>
+#include <string_view>
+#include <string>
+#include <vector>
+
+#include "libfit/base/errors.hpp"
+
+namespace metalfit::detail {
+
+// The whole token must be a finite decimal number ("2.4797e-01", "50e-9", "-3"); else nullopt.
+inline std::optional<double> parse_number(std::string_view token) {
+    if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+    double value = 0.0;
+    const char* end = token.data() + token.size();
+    auto [ptr, ec] = std::from_chars(token.data(), end, value);
+    if (ec != std::errc() || ptr != end || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+inline std::string_view trim(std::string_view s);
+
+// Fields separated by runs of spaces or tabs (refractiveindex.info data rows).
+inline std::vector<std::string_view> split_whitespace(std::string_view line) {
+    std::vector<std::string_view> out;
+    std::size_t i = 0;
+    auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    while (i < line.size()) {
+        while (i < line.size() && blank(line[i])) ++i;
+        std::size_t j = i;
+        while (j < line.size() && !blank(line[j])) ++j;
+        if (j > i) out.push_back(line.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
+// Comma-separated fields, each trimmed (CSV without quoting).
+inline std::vector<std::string_view> split_commas(std::string_view line) {
+    std::vector<std::string_view> out;
+    std::size_t start = 0;
+    for (std::size_t comma; (comma = line.find(',', start)) != std::string_view::npos; start = comma + 1)
+        out.push_back(trim(line.substr(start, comma - start)));
+    out.push_back(trim(line.substr(start)));
+    return out;
+}
+
+inline std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+    return s;
+}
+
+// Every field of a table row as a number; the first that is not one is an InputError at `where`.
+inline std::vector<double> parse_row(const std::vector<std::string_view>& fields, const InputLocation& where) {
+    std::vector<double> values;
+    for (auto field : fields) {
+        const auto x = parse_number(field);
+        if (!x) throw InputError(where, "non-numeric value '" + std::string(field) + "'");
+        values.push_back(*x);
+    }
+    return values;
+}
+
+// A row "wavelength value..." of an optical-constants table: the wavelength must be positive and
+// every value non-negative. `names` says what each value is ("nk", "n" or "k").
+inline void check_optical_row(const std::vector<double>& row, const std::vector<std::string_view>& fields,
+                              std::string_view names, const InputLocation& where) {
+    if (row[0] <= 0.0) throw InputError(where, "wavelength must be positive");
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (row[i + 1] < 0.0)
+            throw InputError(where, std::string(names[i] == 'k' ? "negative extinction coefficient k = "
+                                                                : "negative refractive index n = ") +
+                                        std::string(fields[i + 1]));
+}
+
+}  // namespace metalfit::detail

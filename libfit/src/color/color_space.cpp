@@ -1,0 +1,101 @@
+#include "libfit/color/color_space.hpp"
+
+#include <OpenColorIO/OpenColorIO.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "libfit/base/errors.hpp"
+
+namespace OCIO = OCIO_NAMESPACE;
+
+namespace metalfit {
+
+struct ColorSpaceConverter::Impl {
+    OCIO::ConstConfigRcPtr config;
+    OCIO::ConstCPUProcessorRcPtr cpu;
+    OCIO::ConstCPUProcessorRcPtr inverse;
+};
+
+namespace {
+
+std::string describe(const OcioConfigChoice& c) { return "OCIO config " + c.path.string() + " (" + c.origin + ")"; }
+
+}  // namespace
+
+OcioConfigChoice choose_ocio_config(const std::optional<std::filesystem::path>& command_line,
+                                    const std::filesystem::path& data_dir) {
+    if (const char* env = std::getenv("OCIO"); env != nullptr && *env != '\0') return {env, "$OCIO"};
+    if (command_line) return {*command_line, "--ocio-config"};
+    return {data_dir / "ocio" / "config.ocio", "metalfit default"};
+}
+
+ColorSpaceConverter::ColorSpaceConverter(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+ColorSpaceConverter::~ColorSpaceConverter() = default;
+ColorSpaceConverter::ColorSpaceConverter(const ColorSpaceConverter&) = default;
+ColorSpaceConverter& ColorSpaceConverter::operator=(const ColorSpaceConverter&) = default;
+ColorSpaceConverter::ColorSpaceConverter(ColorSpaceConverter&&) noexcept = default;
+ColorSpaceConverter& ColorSpaceConverter::operator=(ColorSpaceConverter&&) noexcept = default;
+
+ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, const std::string& target) {
+    auto impl = std::make_shared<Impl>();
+    try {
+        impl->config = OCIO::Config::CreateFromFile(choice.path.c_str());
+    } catch (const OCIO::Exception& e) {
+        throw ColorConfigError(describe(choice) + ": cannot be loaded: " + e.what());
+    }
+    const auto& config = impl->config;
+    const auto xyz = config->hasRole(kXyzRole) ? config->getColorSpace(kXyzRole) : nullptr;
+    if (!xyz) throw ColorConfigError(describe(choice) + " has no role '" + kXyzRole + "' (needed to find CIE XYZ D65)");
+    const std::string xyz_space = xyz->getName();
+    const std::string wanted = target.empty() ? kSceneLinearRole : target;
+    const auto target_space = target.empty() && !config->hasRole(kSceneLinearRole) ? nullptr : config->getColorSpace(wanted.c_str());
+    if (!target_space) {
+        if (target.empty())
+            throw ColorConfigError(describe(choice) + " has no role '" + kSceneLinearRole + "' (give --space)");
+        throw ColorConfigError(describe(choice) + " has no colour space or role '" + wanted + "'");
+    }
+    try {
+        impl->cpu = config->getProcessor(xyz_space.c_str(), target_space->getName())->getDefaultCPUProcessor();
+        impl->inverse = config->getProcessor(target_space->getName(), xyz_space.c_str())->getDefaultCPUProcessor();
+    } catch (const OCIO::Exception& e) {
+        throw ColorConfigError(describe(choice) + ": no transform from '" + xyz_space + "' to '" +
+                               target_space->getName() + "': " + e.what());
+    }
+    ColorSpaceConverter converter(impl);
+    converter.config_ = choice;
+    converter.space_ = target_space->getName();
+
+    // Reflectance ratios need a linear space: check additivity and scaling on a few XYZ values.
+    const XYZ probes[] = {{0.9, 1.0, 1.1}, {0.2, 0.1, 0.05}, {0.05, 0.1, 0.4}};
+    for (const XYZ& p : probes) {
+        const RGB full = converter(p);
+        const RGB half = converter({p.X * 0.5, p.Y * 0.5, p.Z * 0.5});
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(full[c] - 2.0 * half[c]) > 1e-4 * (1.0 + std::abs(full[c])))
+                throw ColorConfigError(describe(choice) + ": colour space '" + converter.space_ +
+                                       "' is not linear (reflectance curves need a scene-linear space)");
+    }
+    return converter;
+}
+
+RGB ColorSpaceConverter::operator()(const XYZ& xyz) const {
+    float pixel[3] = {static_cast<float>(xyz.X), static_cast<float>(xyz.Y), static_cast<float>(xyz.Z)};
+    impl_->cpu->applyRGB(pixel);
+    return {pixel[0], pixel[1], pixel[2]};
+}
+
+XYZ ColorSpaceConverter::to_xyz(const RGB& rgb) const {
+    float pixel[3] = {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b)};
+    impl_->inverse->applyRGB(pixel);
+    return {pixel[0], pixel[1], pixel[2]};
+}
+
+std::vector<std::string> ColorSpaceConverter::available_spaces() const {
+    std::vector<std::string> names;
+    const auto& config = impl_->config;
+    for (int i = 0; i < config->getNumColorSpaces(); ++i) names.emplace_back(config->getColorSpaceNameByIndex(i));
+    return names;
+}
+
+}  // namespace metalfit

@@ -1,0 +1,126 @@
+// C++ export: cpp/metalfit_models.hpp is the GLSL of the model folders made valid C++ by a prelude (a float vec3 with
+// GLSL's operators and the built-ins the models use) and `inline` before each top-level function; one header per
+// material and model holds constexpr parameter arrays in a namespace; cpp/metalfit_materials.hpp includes them all
+// and lists them in one table.
+#include <cctype>
+
+#include "export/export_formats.hpp"
+
+namespace metalfit {
+
+namespace {
+
+constexpr std::string_view kCppPrelude = R"cpp(// The GLSL subset the model functions use, in C++ (docs/export.md): float vec3 arithmetic and built-ins.
+#include <array>
+#include <cmath>
+
+namespace metalfit_shader {
+
+struct bvec3 {
+    bool x, y, z;
+};
+
+struct vec3 {
+    float x, y, z;
+    constexpr vec3() : x(0), y(0), z(0) {}
+    constexpr explicit vec3(float s) : x(s), y(s), z(s) {}
+    constexpr vec3(float x_, float y_, float z_) : x(x_), y(y_), z(z_) {}
+    constexpr explicit vec3(const std::array<double, 3>& v)
+        : x(static_cast<float>(v[0])), y(static_cast<float>(v[1])), z(static_cast<float>(v[2])) {}
+};
+
+inline vec3 operator+(vec3 a, vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline vec3 operator-(vec3 a, vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline vec3 operator*(vec3 a, vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+inline vec3 operator/(vec3 a, vec3 b) { return {a.x / b.x, a.y / b.y, a.z / b.z}; }
+inline vec3 operator+(vec3 a, float s) { return a + vec3(s); }
+inline vec3 operator-(vec3 a, float s) { return a - vec3(s); }
+inline vec3 operator*(vec3 a, float s) { return a * vec3(s); }
+inline vec3 operator/(vec3 a, float s) { return a / vec3(s); }
+inline vec3 operator+(float s, vec3 a) { return vec3(s) + a; }
+inline vec3 operator-(float s, vec3 a) { return vec3(s) - a; }
+inline vec3 operator*(float s, vec3 a) { return vec3(s) * a; }
+inline vec3 operator/(float s, vec3 a) { return vec3(s) / a; }
+inline vec3 operator-(vec3 a) { return {-a.x, -a.y, -a.z}; }
+
+inline vec3 sqrt(vec3 v) { return {std::sqrt(v.x), std::sqrt(v.y), std::sqrt(v.z)}; }
+inline vec3 pow(vec3 a, vec3 b) { return {std::pow(a.x, b.x), std::pow(a.y, b.y), std::pow(a.z, b.z)}; }
+inline float glsl_max(float a, float b) { return a < b ? b : a; }
+inline vec3 max(vec3 a, vec3 b) { return {glsl_max(a.x, b.x), glsl_max(a.y, b.y), glsl_max(a.z, b.z)}; }
+inline vec3 max(vec3 a, float b) { return max(a, vec3(b)); }
+inline vec3 mix(vec3 a, vec3 b, bvec3 t) { return {t.x ? b.x : a.x, t.y ? b.y : a.y, t.z ? b.z : a.z}; }
+inline vec3 mix(vec3 a, vec3 b, float t) { return a * (1.0f - t) + b * t; }
+inline bvec3 greaterThanEqual(vec3 a, vec3 b) { return {a.x >= b.x, a.y >= b.y, a.z >= b.z}; }
+inline bvec3 equal(vec3 a, vec3 b) { return {a.x == b.x, a.y == b.y, a.z == b.z}; }
+
+)cpp";
+
+// `inline ` before every line that starts a top-level function definition (a type at column 0).
+std::string inline_functions(std::string_view glsl) {
+    std::string out;
+    std::size_t i = 0;
+    while (i < glsl.size()) {
+        const std::size_t end = glsl.find('\n', i);
+        const std::string_view line = glsl.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i + 1);
+        for (std::string_view type : {"vec3 ", "bvec3 ", "float "})
+            if (line.starts_with(type) && line.find('(') != std::string_view::npos) out += "inline ";
+        out += line;
+        i += line.size();
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string_view cpp_glsl_prelude() { return kCppPrelude; }
+
+namespace detail {
+
+std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials, const ExportContext& context) {
+    std::vector<ExportFile> files;
+    files.push_back({"cpp/metalfit_models.hpp",
+                     "// metalfit " METALFIT_VERSION " Fresnel models for C++: the GLSL of libfit/shaders, unchanged but for "
+                     "`inline`, over a\n// small vec3 prelude (docs/export.md). F(mu), mu = cos(theta), per RGB channel.\n"
+                     "#pragma once\n\n" +
+                         std::string(kCppPrelude) + inline_functions(glsl_library(context.request.models)) +
+                         "\n}  // namespace metalfit_shader\n"});
+    std::string umbrella = "// metalfit " METALFIT_VERSION " exports: every material and model of this export, and one table of them.\n"
+                           "#pragma once\n\n#include <array>\n\n";
+    std::string table;
+    std::size_t count = 0;
+    for (const MaterialExport& m : materials)
+        for (const ModelExport& e : m.models) {
+            const WrittenParameters& w = e.written;
+            const std::string stem = file_stem(m.fit->material.id, w.model->id());
+            std::string text = comment_header(m, w, context, "// ");
+            text += "#pragma once\n\n#include <array>\n\n#include \"metalfit_models.hpp\"\n\nnamespace " + stem + " {\n\n";
+            text += "inline constexpr const char* material = \"" + m.fit->material.id + "\";\n";
+            text += "inline constexpr const char* model = \"" + std::string(w.model->id()) + "\";\n";
+            std::string args, pointers;
+            const auto parameters = w.model->parameters();
+            for (std::size_t i = 0; i < parameters.size(); ++i) {
+                const std::string name(parameters[i].name);
+                text += "inline constexpr std::array<double, 3> " + name + "{" + channel_list(w.params, i) + "};  // " +
+                        std::string(parameters[i].meaning) + "\n";
+                args += "metalfit_shader::vec3(" + name + "), ";
+                pointers += (i ? ", &" : "&") + stem + "::" + name;
+            }
+            text += "\n// F(mu) of this material and model, per RGB channel.\ninline metalfit_shader::vec3 evaluate(float mu) {\n"
+                    "    return metalfit_shader::" + std::string(w.model->glsl_function()) + "(" + args + "mu);\n}\n\n}  // namespace " +
+                    stem + "\n";
+            files.push_back({"cpp/" + stem + ".hpp", text});
+            umbrella += "#include \"" + stem + ".hpp\"\n";
+            table += "    {\"" + m.fit->material.id + "\", \"" + std::string(w.model->id()) + "\", &" + stem +
+                     "::evaluate, " + std::to_string(parameters.size()) + ", {" + pointers + "}},\n";
+            ++count;
+        }
+    umbrella += "\nnamespace metalfit_materials {\n\nstruct Entry {\n    const char* material;\n    const char* model;\n"
+                "    metalfit_shader::vec3 (*evaluate)(float mu);\n    int parameter_count;\n"
+                "    std::array<const std::array<double, 3>*, 4> parameters;  // in the order of `metalfit models`\n};\n\n"
+                "inline const std::array<Entry, " + std::to_string(count) + "> all{{\n" + table + "}};\n\n}  // namespace metalfit_materials\n";
+    files.push_back({"cpp/metalfit_materials.hpp", umbrella});
+    return files;
+}
+
+}  // namespace detail
+}  // namespace metalfit

@@ -1,0 +1,336 @@
+// The export core: parameter choice, gamut policy, re-evaluated metrics, the shared comment header, and writing a set
+// of files as one unit. The formats live in export_<format>.cpp.
+#include "libfit/export/export.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "export/export_formats.hpp"
+#include "libfit/base/atomic_file.hpp"
+#include "libfit/base/errors.hpp"
+
+namespace metalfit {
+
+namespace {
+
+constexpr std::array<ExportFormat, 6> kFormats{ExportFormat::json, ExportFormat::glsl, ExportFormat::hlsl,
+                                               ExportFormat::mtlx, ExportFormat::openpbr, ExportFormat::cpp};
+
+// Parameters that are colours (reflectances or their ratios), to which the gamut policy applies.
+bool is_colour_parameter(std::string_view name) { return name == "F0" || name == "tint" || name == "r" || name == "g"; }
+
+std::string figure(double v) {
+    if (std::isnan(v)) return "undefined";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", v);
+    return text;
+}
+
+std::string figures(const PerChannel& v) { return figure(v[0]) + ", " + figure(v[1]) + ", " + figure(v[2]); }
+
+// Applies the gamut policy to the colour parameters; returns one note per parameter that was outside [0, 1].
+std::vector<std::string> apply_gamut(const Model& model, RgbParameters& params, GamutPolicy policy) {
+    std::vector<std::string> notes;
+    const auto parameters = model.parameters();
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+        const std::string name(parameters[i].name);
+        if (!is_colour_parameter(name)) continue;
+        std::string outside;
+        double max = 0;
+        for (int c = 0; c < 3; ++c) {
+            const double v = params[c][i];
+            max = std::max(max, v);
+            if (v > 1.0 || v < 0.0) outside += (outside.empty() ? "" : ", ") + std::string(kChannelNames[c]) + " " + detail::number(v);
+        }
+        if (outside.empty()) continue;
+        switch (policy) {
+            case GamutPolicy::keep:
+                notes.push_back(name + " outside [0, 1] (" + outside + "): kept");
+                break;
+            case GamutPolicy::clip:
+                for (int c = 0; c < 3; ++c) params[c][i] = std::clamp(params[c][i], 0.0, 1.0);
+                notes.push_back(name + " outside [0, 1] (" + outside + "): clipped to [0, 1]");
+                break;
+            case GamutPolicy::scale:
+                for (int c = 0; c < 3; ++c) params[c][i] = std::max(0.0, max > 1.0 ? params[c][i] / max : params[c][i]);
+                notes.push_back(name + " outside [0, 1] (" + outside + "): " +
+                                (max > 1.0 ? "scaled by 1/" + detail::number(max) : std::string("negative values set to 0")));
+                break;
+        }
+    }
+    return notes;
+}
+
+}  // namespace
+
+std::string to_string(ExportFormat format) {
+    switch (format) {
+        case ExportFormat::json: return "json";
+        case ExportFormat::glsl: return "glsl";
+        case ExportFormat::hlsl: return "hlsl";
+        case ExportFormat::mtlx: return "mtlx";
+        case ExportFormat::openpbr: return "openpbr";
+        case ExportFormat::cpp: return "cpp";
+    }
+    return "?";
+}
+
+std::vector<ExportFormat> parse_export_formats(std::string_view list) {
+    if (list == "all") return {kFormats.begin(), kFormats.end()};
+    std::vector<ExportFormat> formats;
+    while (!list.empty()) {
+        const auto comma = list.find(',');
+        const std::string_view name = list.substr(0, comma);
+        const auto it = std::find_if(kFormats.begin(), kFormats.end(), [&](ExportFormat f) { return to_string(f) == name; });
+        if (it == kFormats.end())
+            throw UsageError("unknown export format '" + std::string(name) + "' (known: json, glsl, hlsl, mtlx, openpbr, cpp, or all)");
+        if (std::find(formats.begin(), formats.end(), *it) == formats.end()) formats.push_back(*it);
+        list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
+    }
+    if (formats.empty()) throw UsageError("empty export format list (known: json, glsl, hlsl, mtlx, openpbr, cpp, or all)");
+    return formats;
+}
+
+ParameterSource parse_parameter_source(const std::string& text) {
+    if (text == "fit") return ParameterSource::fit;
+    if (text == "closed") return ParameterSource::closed;
+    throw UsageError("unknown parameter source '" + text + "' (fit or closed)");
+}
+
+GamutPolicy parse_gamut_policy(const std::string& text) {
+    if (text == "keep") return GamutPolicy::keep;
+    if (text == "clip") return GamutPolicy::clip;
+    if (text == "scale") return GamutPolicy::scale;
+    throw UsageError("unknown gamut policy '" + text + "' (keep, clip or scale)");
+}
+
+std::string to_string(GamutPolicy policy) {
+    switch (policy) {
+        case GamutPolicy::keep: return "keep";
+        case GamutPolicy::clip: return "clip";
+        case GamutPolicy::scale: return "scale";
+    }
+    return "?";
+}
+
+WrittenParameters written_parameters(const ModelResult& result, const SampledReference& reference,
+                                     ParameterSource source, GamutPolicy gamut, const std::string& material_id) {
+    const Model& model = *result.model;
+    WrittenParameters w;
+    w.model = &model;
+    if (source == ParameterSource::fit) {
+        w.origin = "fit";
+        w.params = result.fit.value.params;
+    } else {
+        if (!result.best_closed) {
+            std::string reasons;
+            for (const ClosedFormResult& form : result.closed_forms)
+                reasons += (reasons.empty() ? "" : "; ") + form.id + ": " + form.undefined;
+            throw UsageError(material_id + ": " + std::string(model.id()) + ": no closed form is defined (" + reasons +
+                             "); use --params fit");
+        }
+        const ClosedFormResult& best = result.closed_forms[*result.best_closed];
+        w.origin = "closed " + best.id;
+        w.params = best.value->params;
+    }
+    w.gamut = apply_gamut(model, w.params, gamut);
+    w.metrics = compute_metrics(model, w.params, reference);
+    return w;
+}
+
+const Model& expressible_stand_in() { return find_model("f82-tint"); }
+
+std::vector<const Model*> models_to_fit(const ExportRequest& request) {
+    std::vector<const Model*> models = request.models;
+    const auto wants = [&](ExportFormat f) {
+        return std::find(request.formats.begin(), request.formats.end(), f) != request.formats.end();
+    };
+    bool needs_stand_in = false;
+    for (const Model* m : request.models) {
+        const std::string_view id = m->id();
+        const bool native_f82 = id == "schlick" || id == "lazanyi" || id == "f82-tint";
+        if (wants(ExportFormat::openpbr) && !native_f82) needs_stand_in = true;
+        if (wants(ExportFormat::mtlx) && id == "lazanyi-comp") needs_stand_in = true;
+    }
+    const Model* stand_in = &expressible_stand_in();
+    if (needs_stand_in && std::find(models.begin(), models.end(), stand_in) == models.end()) models.push_back(stand_in);
+    return models;
+}
+
+namespace detail {
+
+std::string identifier(const std::string& material_id, std::string_view model_id) {
+    std::string s = material_id + "_" + std::string(model_id);
+    for (char& ch : s) ch = std::isalnum(static_cast<unsigned char>(ch)) ? static_cast<char>(std::toupper(static_cast<unsigned char>(ch))) : '_';
+    return s;
+}
+
+std::string file_stem(const std::string& material_id, std::string_view model_id) {
+    std::string s = "metalfit_" + material_id + "_" + std::string(model_id);
+    for (char& ch : s) ch = std::isalnum(static_cast<unsigned char>(ch)) ? static_cast<char>(std::tolower(static_cast<unsigned char>(ch))) : '_';
+    return s;
+}
+
+std::string number(double v) {
+    char text[40];
+    const auto end = std::to_chars(text, text + sizeof text, v).ptr;  // shortest text that reads back as v
+    std::string s(text, end);
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+    return s;
+}
+
+std::string channel_list(const RgbParameters& params, std::size_t index) {
+    return number(params[0][index]) + ", " + number(params[1][index]) + ", " + number(params[2][index]);
+}
+
+std::string comment_header(const MaterialExport& material, const WrittenParameters& written,
+                           const ExportContext& context, std::string_view prefix, std::string_view extra) {
+    const Material& m = material.fit->material;
+    const FitRecordContext& r = context.record;
+    const Metrics& e = written.metrics;
+    std::ostringstream s;
+    const auto line = [&](const std::string& text) { s << prefix << text << "\n"; };
+    line("metalfit " METALFIT_VERSION " export: " + m.name + " (" + m.id + ")");
+    line("data source: " + m.source + " (" + m.provenance.format + ", " + m.provenance.file.filename().string() +
+         ", sha256 " + m.provenance.sha256 + ")");
+    line("colour space: " + r.space + " (OCIO " + r.config.origin + "); " + to_string(r.illuminant) + ", " +
+         to_string(r.observer) + ", R_c(mu) white balanced to the perfect reflector");
+    line("model: " + std::string(written.model->id()) + " - " + std::string(written.model->title()));
+    if (!extra.empty()) {
+        std::string_view rest = extra;
+        while (!rest.empty()) {
+            const auto nl = rest.find('\n');
+            line(std::string(rest.substr(0, nl)));
+            rest = nl == std::string_view::npos ? std::string_view{} : rest.substr(nl + 1);
+        }
+    }
+    line("parameters: " + written.origin + "; gamut policy: " + to_string(context.request.gamut));
+    for (const std::string& note : written.gamut) line("OUT OF GAMUT: " + note);
+    line("error of these parameters against R_c (R, G, B; " + std::to_string(r.error.nodes) +
+         " Gauss-Legendre nodes on [0, 1], " + to_string(r.error.weight) + " weight; maxima over mu = i/1024 and the nodes):");
+    line("  rel_rms     = " + figures(e.rel_rms));
+    line("  abs_rms     = " + figures(e.abs_rms));
+    line("  max_rel     = " + figures(e.max_rel));
+    line("  max_abs     = " + figures(e.max_abs));
+    line("  albedo_err  = " + figures(e.albedo_err));
+    line("  de2000_mean = " + figure(e.de2000_mean));
+    line("  de2000_max  = " + figure(e.de2000_max));
+    return s.str();
+}
+
+std::optional<WrittenParameters> as_f82_tint(const WrittenParameters& written, const SampledReference& reference) {
+    const std::string_view id = written.model->id();
+    if (id == "f82-tint") return written;
+    if (id != "schlick" && id != "lazanyi") return std::nullopt;
+    WrittenParameters w = written;
+    w.model = &expressible_stand_in();
+    for (int c = 0; c < 3; ++c) {
+        const ChannelParameters& p = written.params[c];
+        double F0 = p[0];
+        if (id == "lazanyi") {
+            const double n = p[0], k2 = p[1] * p[1];
+            F0 = ((n - 1) * (n - 1) + k2) / ((n + 1) * (n + 1) + k2);
+        }
+        w.params[c] = {F0, 1.0};
+    }
+    w.origin = written.origin + " of " + std::string(id) + ", written as f82-tint with tint 1 (the same curve)";
+    w.metrics = compute_metrics(*w.model, w.params, reference);
+    return w;
+}
+
+std::string materialx_colorspace(const std::string& ocio_space) {
+    static const std::map<std::string, std::string> names{
+        {"Linear Rec.709 (sRGB)", "lin_rec709"}, {"ACEScg", "acescg"}, {"Linear P3-D65", "lin_displayp3"}};
+    const auto it = names.find(ocio_space);
+    return it == names.end() ? std::string{} : it->second;
+}
+
+}  // namespace detail
+
+std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
+                                     const ExportRequest& request) {
+    using detail::ModelExport;
+    const Model& stand_in_model = expressible_stand_in();
+    std::vector<detail::MaterialExport> materials;
+    for (const MaterialFit& fit : fits) {
+        if (!fit.reference) throw std::logic_error("export: fit of " + fit.material.id + " has no sampled reference");
+        detail::MaterialExport m{&fit, {}};
+        const auto result_of = [&](const Model* model) -> const ModelResult& {
+            for (const ModelResult& r : fit.models)
+                if (r.model == model) return r;
+            throw std::logic_error("export: " + fit.material.id + " was not fitted with " + std::string(model->id()));
+        };
+        const auto needed = models_to_fit(request);
+        const bool has_stand_in = std::find(needed.begin(), needed.end(), &stand_in_model) != needed.end();
+        std::optional<WrittenParameters> stand_in;
+        if (has_stand_in)
+            stand_in = written_parameters(result_of(&stand_in_model), *fit.reference, request.source, request.gamut,
+                                          fit.material.id);
+        for (const Model* model : request.models) {
+            ModelExport e{written_parameters(result_of(model), *fit.reference, request.source, request.gamut, fit.material.id),
+                          std::nullopt};
+            if (!detail::as_f82_tint(e.written, *fit.reference)) e.stand_in = stand_in;
+            m.models.push_back(std::move(e));
+        }
+        materials.push_back(std::move(m));
+    }
+    const detail::ExportContext ctx{context, request};
+    std::vector<ExportFile> files;
+    for (ExportFormat format : request.formats) {
+        std::vector<ExportFile> more;
+        switch (format) {
+            case ExportFormat::json: more = detail::export_json(materials, ctx); break;
+            case ExportFormat::glsl: more = detail::export_glsl(materials, ctx); break;
+            case ExportFormat::hlsl: more = detail::export_hlsl(materials, ctx); break;
+            case ExportFormat::mtlx: more = detail::export_mtlx(materials, ctx); break;
+            case ExportFormat::openpbr: more = detail::export_openpbr(materials, ctx); break;
+            case ExportFormat::cpp: more = detail::export_cpp(materials, ctx); break;
+        }
+        for (ExportFile& f : more) files.push_back(std::move(f));
+    }
+    std::set<std::filesystem::path> seen;
+    for (const ExportFile& f : files)
+        if (!seen.insert(f.path).second)
+            throw UsageError("export: two materials would write the same file " + f.path.string() +
+                             " (their ids differ only in punctuation or case)");
+    return files;
+}
+
+void write_export(const std::filesystem::path& dir, const std::vector<ExportFile>& files) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    // Folders this call creates, outermost first, so that a failure can take them away again.
+    std::vector<fs::path> created;
+    const auto make_dir = [&](const fs::path& d) {
+        std::vector<fs::path> missing;
+        for (fs::path p = d; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+            missing.push_back(p);
+            if (p == p.parent_path()) break;
+        }
+        for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+            if (!fs::create_directory(*it, ec) || ec) throw InputError({*it}, "cannot create directory");
+            created.push_back(*it);
+        }
+        if (!fs::is_directory(d, ec)) throw InputError({d}, "cannot write: not a directory");
+    };
+    std::vector<OutputFile> outputs;
+    try {
+        make_dir(dir);
+        for (const ExportFile& f : files) {
+            make_dir((dir / f.path).parent_path());
+            outputs.push_back({dir / f.path, f.contents});
+        }
+        write_files_atomically(outputs);
+    } catch (...) {
+        for (auto it = created.rbegin(); it != created.rend(); ++it) fs::remove(*it, ec);  // only removes empty ones
+        throw;
+    }
+}
+
+}  // namespace metalfit

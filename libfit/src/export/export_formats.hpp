@@ -1,0 +1,79 @@
+// Shared by the exporters (export_*.cpp): what one material's export holds, names, number formatting and the
+// comment header every text export starts with.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <pugixml.hpp>
+
+#include "libfit/export/export.hpp"
+
+namespace metalfit::detail {
+
+// One exported model of one material.
+struct ModelExport {
+    WrittenParameters written;
+    // For MaterialX / OpenPBR where the model has no native form: the stand-in's written parameters.
+    std::optional<WrittenParameters> stand_in;
+};
+
+struct MaterialExport {
+    const MaterialFit* fit = nullptr;
+    std::vector<ModelExport> models;
+};
+
+struct ExportContext {
+    FitRecordContext record;
+    ExportRequest request;
+};
+
+// "Au", "f82-tint" → "AU_F82_TINT" (upper case, every other character '_'): constant names.
+std::string identifier(const std::string& material_id, std::string_view model_id);
+// "Au", "f82-tint" → "metalfit_au_f82_tint": file stems and function names.
+std::string file_stem(const std::string& material_id, std::string_view model_id);
+
+// Shortest text that reads back as the same double ("%.17g"), always with a '.' or an exponent.
+std::string number(double v);
+// "a, b, c" of channel values of parameter `index`.
+std::string channel_list(const RgbParameters& params, std::size_t index);
+
+// The comment header of a text export, one line per entry, each prefixed with `prefix` ("// "): material, data
+// source, colour space, model, where the parameters come from, gamut notes, error figures, metalfit version.
+std::string comment_header(const MaterialExport& material, const WrittenParameters& written,
+                           const ExportContext& context, std::string_view prefix, std::string_view extra = {});
+
+// How a shading language spells the constants of export_glsl / export_hlsl.
+struct ShaderSyntax {
+    std::string_view constant;     // "const vec3" | "static const float3"
+    std::string_view vector;       // "vec3" | "float3"
+    std::string_view models_file;  // the shared file of model functions
+};
+// The constants of one material and model, and `<vector> metalfit_<material>_<model>(float mu)` calling the model.
+std::string shader_constants(const MaterialExport& material, const ModelExport& model, const ExportContext& context,
+                             const ShaderSyntax& syntax);
+
+std::vector<ExportFile> export_json(const std::vector<MaterialExport>& materials, const ExportContext& context);
+std::vector<ExportFile> export_glsl(const std::vector<MaterialExport>& materials, const ExportContext& context);
+std::vector<ExportFile> export_hlsl(const std::vector<MaterialExport>& materials, const ExportContext& context);
+std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials, const ExportContext& context);
+std::vector<ExportFile> export_mtlx(const std::vector<MaterialExport>& materials, const ExportContext& context);
+std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materials, const ExportContext& context);
+
+// MaterialX documents (export_mtlx.cpp, used by export_openpbr.cpp too): <materialx version="1.39"> after a comment
+// (the header), with colorspace when MaterialX has a name for the curves' space.
+pugi::xml_node begin_materialx(pugi::xml_document& doc, const std::string& comment, const std::string& ocio_space);
+void add_input(pugi::xml_node node, const char* name, const char* type, const std::string& value);
+// <surface> around the BSDF node `bsdf` (unless it already is a surfaceshader) and <surfacematerial> around that.
+void add_surface_material(pugi::xml_node root, const std::string& stem, const std::string& shader, bool is_bsdf);
+std::string xml_text(const pugi::xml_document& doc);
+
+// MaterialX's name of an OCIO colour space ("lin_rec709"), or empty when MaterialX has none.
+std::string materialx_colorspace(const std::string& ocio_space);
+
+// F0 and tint of the F82-tint form that evaluates the same curve as `written` (schlick: tint 1; lazanyi: F0 of n, k,
+// tint 1; f82-tint: itself), or nothing when the model has no F82-tint form (then the stand-in is used).
+std::optional<WrittenParameters> as_f82_tint(const WrittenParameters& written, const SampledReference& reference);
+
+}  // namespace metalfit::detail

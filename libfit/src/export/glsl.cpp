@@ -1,0 +1,44 @@
+// GLSL export: glsl/metalfit_models.glsl holds the model functions, exactly the text of the model folders (glsl_library);
+// glsl/<material>_<model>.glsl the constants of one material and model and a function of μ alone.
+#include <cctype>
+
+#include "export/export_formats.hpp"
+
+namespace metalfit::detail {
+
+std::string shader_constants(const MaterialExport& material, const ModelExport& model, const ExportContext& context,
+                             const ShaderSyntax& syntax) {
+    const WrittenParameters& w = model.written;
+    const std::string id = identifier(material.fit->material.id, w.model->id());
+    std::string text = comment_header(material, w, context, "// ");
+    text += "// Needs " + std::string(syntax.models_file) + " before this file; F(mu), mu = cos(theta), per RGB channel.\n";
+    std::string args;
+    const auto parameters = w.model->parameters();
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+        std::string name(parameters[i].name);
+        for (char& ch : name) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+        const std::string constant = "METALFIT_" + id + "_" + name;
+        text += std::string(syntax.constant) + " " + constant + " = " + std::string(syntax.vector) + "(" +
+                channel_list(w.params, i) + ");\n";
+        args += constant + ", ";
+    }
+    text += std::string(syntax.vector) + " " + file_stem(material.fit->material.id, w.model->id()) + "(float mu) {\n    return " +
+            std::string(w.model->glsl_function()) + "(" + args + "mu);\n}\n";
+    return text;
+}
+
+std::vector<ExportFile> export_glsl(const std::vector<MaterialExport>& materials, const ExportContext& context) {
+    static constexpr ShaderSyntax kGlsl{"const vec3", "vec3", "metalfit_models.glsl"};
+    std::vector<ExportFile> files;
+    files.push_back({"glsl/metalfit_models.glsl",
+                     "// metalfit " METALFIT_VERSION " Fresnel models: the GLSL of libfit/shaders, unchanged (`metalfit models --glsl`).\n"
+                     "// F(mu), mu = cos(theta), per RGB channel. Paste after #version (GLSL >= 1.30 or ES 3.00).\n" +
+                         glsl_library(context.request.models)});
+    for (const MaterialExport& m : materials)
+        for (const ModelExport& e : m.models)
+            files.push_back({"glsl/" + file_stem(m.fit->material.id, e.written.model->id()) + ".glsl",
+                             shader_constants(m, e, context, kGlsl)});
+    return files;
+}
+
+}  // namespace metalfit::detail

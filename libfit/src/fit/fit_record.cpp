@@ -1,0 +1,138 @@
+#include "libfit/fit/fit_record.hpp"
+
+#include "libfit/base/file_digest.hpp"
+
+namespace metalfit {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json per_channel(const PerChannel& v) { return Json::array({v[0], v[1], v[2]}); }
+Json rgb_json(const RGB& v) { return Json::array({v.r, v.g, v.b}); }
+
+Json params_json(const Model& model, const RgbParameters& params) {
+    Json j = Json::object();
+    const auto parameters = model.parameters();
+    for (std::size_t i = 0; i < parameters.size(); ++i)
+        j[std::string(parameters[i].name)] = Json::array({params[0][i], params[1][i], params[2][i]});
+    return j;
+}
+
+Json solver_json(const FitResult& fit) {
+    Json start = Json::array(), iterations = Json::array(), termination = Json::array(), initial = Json::array(),
+         final_cost = Json::array(), starts = Json::array(), fallback = Json::array();
+    for (int c = 0; c < 3; ++c) {
+        const SolverSummary& s = fit.solver[c];
+        start.push_back(s.start);
+        iterations.push_back(s.iterations);
+        termination.push_back(s.termination);
+        initial.push_back(s.initial_cost);
+        final_cost.push_back(s.final_cost);
+        starts.push_back(s.starts);
+        fallback.push_back(fit.fallback[c].empty() ? Json(nullptr) : Json(fit.fallback[c]));
+    }
+    return {{"solver", "Ceres Levenberg-Marquardt, dense QR, bounds"},
+            {"start", start},
+            {"iterations", iterations},
+            {"termination", termination},
+            {"initial_cost", initial},
+            {"final_cost", final_cost},
+            {"starts", starts},
+            {"fallback_to_closed", fallback}};
+}
+
+Json data_provenance(const Material& material) {
+    const Provenance& p = material.provenance;
+    return {{"file", p.file.string()},  {"sha256", p.sha256},       {"format", p.format},
+            {"data_type", p.data_type}, {"reference", p.references}};
+}
+
+}  // namespace
+
+// params, metrics (exactly the seven keys of DESIGN.md) and where the maxima are.
+Json evaluated_record(const Model& model, const EvaluatedParameters& value) {
+    const Metrics& m = value.metrics;
+    return {{"params", params_json(model, value.params)},
+            {"metrics",
+             {{"rel_rms", per_channel(m.rel_rms)},
+              {"abs_rms", per_channel(m.abs_rms)},
+              {"max_rel", per_channel(m.max_rel)},
+              {"max_abs", per_channel(m.max_abs)},
+              {"de2000_mean", m.de2000_mean},
+              {"de2000_max", m.de2000_max},
+              {"albedo_err", per_channel(m.albedo_err)}}},
+            {"metrics_at_mu",
+             {{"max_rel", per_channel(m.max_rel_mu)},
+              {"max_abs", per_channel(m.max_abs_mu)},
+              {"de2000_max", m.de2000_max_mu}}}};
+}
+
+Json model_record(const ModelResult& result) {
+    const Model& model = *result.model;
+    Json names = Json::array();
+    for (const Parameter& p : model.parameters()) names.push_back(p.name);
+
+    Json forms = Json::object();
+    std::string all_undefined;
+    for (const ClosedFormResult& form : result.closed_forms) {
+        Json j = {{"description", form.description}};
+        if (form.value) j.update(evaluated_record(model, *form.value));
+        else {
+            j["undefined"] = form.undefined;
+            all_undefined += (all_undefined.empty() ? "" : "; ") + form.id + ": " + form.undefined;
+        }
+        forms[form.id] = std::move(j);
+    }
+    Json closed;
+    if (result.best_closed) {
+        const ClosedFormResult& best = result.closed_forms[*result.best_closed];
+        closed = {{"form", best.id}};
+        closed.update(evaluated_record(model, *best.value));
+    } else {
+        closed = {{"undefined", all_undefined}};
+    }
+    Json fit = evaluated_record(model, result.fit.value);
+    fit["solver"] = solver_json(result.fit);
+    return {{"title", model.title()}, {"parameters", names}, {"closed", closed}, {"closed_forms", forms}, {"fit", fit}};
+}
+
+Json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContext& context) {
+    Json materials_json = Json::object();
+    for (const MaterialFit& m : materials) {
+        Json out_of_gamut = Json::array();
+        for (int c = 0; c < 3; ++c)
+            if (m.F0[c] > 1.0 || m.F0[c] < 0.0) out_of_gamut.push_back(kChannelNames[c]);
+        Json models = Json::object();
+        for (const ModelResult& r : m.models) models[std::string(r.model->id())] = model_record(r);
+        materials_json[m.material.id] = {{"name", m.material.name},
+                                         {"source", m.material.source},
+                                         {"data", data_provenance(m.material)},
+                                         {"F0", rgb_json(m.F0)},
+                                         {"out_of_gamut_F0", out_of_gamut},
+                                         {"white_raw_rgb", rgb_json(m.raw_white)},
+                                         {"warnings", m.material.warnings},
+                                         {"models", models}};
+    }
+    const ErrorSettings& e = context.error;
+    return {{"schema", kFitRecordSchema},
+            {"provenance",
+             {{"metalfit_version", METALFIT_VERSION},
+              {"cmf", to_string(context.observer)},
+              {"illuminant", to_string(context.illuminant)},
+              {"ocio_config", {{"file", context.config.path.string()},
+                               {"origin", context.config.origin},
+                               {"sha256", sha256_file(context.config.path)}}},
+              {"color_space", context.space},
+              {"interpolation", context.spectral.interpolation == Interpolation::pchip ? "pchip" : "linear"},
+              {"out_of_range", context.spectral.out_of_range == OutOfRange::clamp ? "clamp" : "error"},
+              {"white_balance", "R_c = RGB_c(F) / RGB_c(perfect reflector)"},
+              {"nodes", e.nodes},
+              {"quadrature", "Gauss-Legendre on [0, 1]"},
+              {"max_grid", kDenseIntervals + 1},
+              {"metric", to_string(e.metric)},
+              {"weight", to_string(e.weight)}}},
+            {"materials", materials_json}};
+}
+
+}  // namespace metalfit

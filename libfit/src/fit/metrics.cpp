@@ -1,0 +1,51 @@
+#include "libfit/fit/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace metalfit {
+
+double worst_channel(const PerChannel& values) {
+    if (std::any_of(values.begin(), values.end(), [](double v) { return std::isnan(v); }))
+        return std::numeric_limits<double>::quiet_NaN();
+    return *std::max_element(values.begin(), values.end());
+}
+
+Metrics compute_metrics(const Model& model, const RgbParameters& params, const SampledReference& reference) {
+    const bool rel_defined = !reference.rel_undefined();
+    Metrics m;
+    PerChannel rel_sum{}, abs_sum{};
+    const auto keep_max = [](double value, double mu, double& max, double& max_mu) {
+        if (value > max) max = value, max_mu = mu;
+    };
+    const auto visit = [&](const SampledReference::Sample& s) {
+        const RGB M = model.evaluate(params, s.mu);
+        for (int c = 0; c < 3; ++c) {
+            const double d = M[c] - s.value[c];
+            abs_sum[c] += s.weight * d * d;
+            m.albedo_err[c] += s.albedo_weight * d;
+            keep_max(std::abs(d), s.mu, m.max_abs[c], m.max_abs_mu[c]);
+            if (rel_defined) {
+                const double r = d / s.value[c];
+                rel_sum[c] += s.weight * r * r;
+                keep_max(std::abs(r), s.mu, m.max_rel[c], m.max_rel_mu[c]);
+            }
+        }
+        const double de = ciede2000(s.lab, reference.lab(M));
+        m.de2000_mean += s.weight * de;
+        keep_max(de, s.mu, m.de2000_max, m.de2000_max_mu);
+    };
+    for (const auto& s : reference.nodes()) visit(s);
+    for (const auto& s : reference.dense()) visit(s);
+
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (int c = 0; c < 3; ++c) {
+        m.abs_rms[c] = std::sqrt(abs_sum[c]);
+        m.rel_rms[c] = rel_defined ? std::sqrt(rel_sum[c]) : nan;
+        if (!rel_defined) m.max_rel[c] = m.max_rel_mu[c] = nan;
+    }
+    return m;
+}
+
+}  // namespace metalfit

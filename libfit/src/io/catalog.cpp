@@ -1,0 +1,133 @@
+#include "libfit/io/catalog.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <fstream>
+
+#include "libfit/base/errors.hpp"
+#include "libfit/io/csv.hpp"
+
+namespace metalfit {
+namespace {
+
+bool iequals(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+std::string get_string(const nlohmann::json& j, const char* key, const std::filesystem::path& file,
+                       const std::string& where, bool required = true) {
+    const auto it = j.find(key);
+    if (it == j.end() || it->is_null()) {
+        if (required) throw InputError({file, 0, where + "." + key}, "missing");
+        return {};
+    }
+    if (!it->is_string()) throw InputError({file, 0, where + "." + key}, "expected a string");
+    return it->get<std::string>();
+}
+
+CatalogSource read_source(const nlohmann::json& j, const std::filesystem::path& file,
+                          const std::filesystem::path& data_dir, const std::string& where) {
+    if (!j.is_object()) throw InputError({file, 0, where}, "expected an object");
+    CatalogSource s;
+    s.source = get_string(j, "source", file, where);
+    s.file = data_dir / get_string(j, "file", file, where);
+    s.reference = get_string(j, "reference", file, where);
+    s.doi = get_string(j, "doi", file, where, false);
+    s.licence = get_string(j, "licence", file, where);
+    s.database_path = get_string(j, "database_path", file, where, false);
+    s.note = get_string(j, "note", file, where, false);
+    return s;
+}
+
+}  // namespace
+
+const CatalogSource& CatalogEntry::find_source(std::string_view source) const {
+    if (source.empty() || iequals(source, primary.source)) return primary;
+    for (const auto& a : alternates)
+        if (iequals(source, a.source)) return a;
+    std::string available = primary.source;
+    for (const auto& a : alternates) available += ", " + a.source;
+    throw UsageError("material " + id + " has no source '" + std::string(source) + "' (available: " + available + ")");
+}
+
+Catalog Catalog::load(const std::filesystem::path& data_dir) {
+    const auto file = data_dir / "catalog.json";
+    std::ifstream in(file);
+    if (!in) throw InputError({file}, "cannot open the catalog (set $METALFIT_DATA or --data-dir to the data folder)");
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(in);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw InputError({file}, std::string("invalid JSON: ") + e.what());
+    }
+    const auto materials = j.find("materials");
+    if (materials == j.end() || !materials->is_array()) throw InputError({file, 0, "materials"}, "expected a list");
+    Catalog catalog;
+    catalog.data_dir_ = data_dir;
+    for (std::size_t i = 0; i < materials->size(); ++i) {
+        const auto& m = (*materials)[i];
+        const std::string where = "materials[" + std::to_string(i) + "]";
+        if (!m.is_object()) throw InputError({file, 0, where}, "expected an object");
+        CatalogEntry e;
+        e.id = get_string(m, "id", file, where);
+        e.name = get_string(m, "name", file, where);
+        e.kind = get_string(m, "kind", file, where, false);
+        if (auto a = m.find("aliases"); a != m.end()) {
+            if (!a->is_array()) throw InputError({file, 0, where + ".aliases"}, "expected a list of strings");
+            for (const auto& alias : *a) {
+                if (!alias.is_string()) throw InputError({file, 0, where + ".aliases"}, "expected a list of strings");
+                e.aliases.push_back(alias.get<std::string>());
+            }
+        }
+        if (!m.contains("primary")) throw InputError({file, 0, where + ".primary"}, "missing");
+        e.primary = read_source(m["primary"], file, data_dir, where + ".primary");
+        if (auto a = m.find("alternates"); a != m.end()) {
+            if (!a->is_array()) throw InputError({file, 0, where + ".alternates"}, "expected a list");
+            for (std::size_t k = 0; k < a->size(); ++k)
+                e.alternates.push_back(read_source((*a)[k], file, data_dir, where + ".alternates[" + std::to_string(k) + "]"));
+        }
+        catalog.entries_.push_back(std::move(e));
+    }
+    return catalog;
+}
+
+const CatalogEntry* Catalog::find(std::string_view name) const {
+    for (const auto& e : entries_) {
+        if (iequals(name, e.id) || iequals(name, e.name)) return &e;
+        for (const auto& alias : e.aliases)
+            if (iequals(name, alias)) return &e;
+    }
+    return nullptr;
+}
+
+bool looks_like_path(std::string_view argument) {
+    if (argument.find('/') != std::string_view::npos) return true;
+    const std::filesystem::path p(argument);
+    std::string ext = p.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == ".yml" || ext == ".yaml" || ext == ".csv") return true;
+    std::error_code ec;
+    return std::filesystem::is_regular_file(p, ec);
+}
+
+Material load_material(const Catalog& catalog, std::string_view material_or_path, std::string_view source) {
+    if (const CatalogEntry* entry = catalog.find(material_or_path); entry != nullptr && !looks_like_path(material_or_path)) {
+        const CatalogSource& s = entry->find_source(source);
+        Material m = load_nk_file(s.file);
+        m.id = entry->id;
+        m.name = entry->name;
+        m.source = s.source;
+        m.provenance.references = s.reference + (s.doi.empty() ? "" : ", doi:" + s.doi);
+        return m;
+    }
+    if (looks_like_path(material_or_path)) {
+        if (!source.empty()) throw UsageError("--source applies to catalog materials, not to a file");
+        return load_nk_file(std::filesystem::path(material_or_path));
+    }
+    throw UsageError("unknown material '" + std::string(material_or_path) + "' (see `metalfit list`, or give a .yml/.csv path)");
+}
+
+}  // namespace metalfit

@@ -1,0 +1,219 @@
+#include "libfit/io/refractiveindex.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+#include "libfit/base/errors.hpp"
+#include "libfit/base/file_digest.hpp"
+#include "base/parse_number.hpp"
+
+namespace metalfit {
+namespace {
+
+
+constexpr const char* kSupportedTypes =
+    "tabulated nk, tabulated n, tabulated k, formula 1, formula 2";
+
+std::string read_text(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw InputError({file}, "cannot open file");
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<std::string> split_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+class Reader {
+public:
+    explicit Reader(std::filesystem::path file) : file_(std::move(file)), text_(read_text(file_)), lines_(split_lines(text_)) {}
+
+    Material read() {
+        YAML::Node root;
+        try {
+            root = YAML::Load(text_);
+        } catch (const YAML::ParserException& e) {
+            throw InputError({file_, e.mark.line + 1}, "invalid YAML: " + e.msg);
+        } catch (const YAML::Exception& e) {
+            throw InputError({file_}, std::string("cannot read YAML: ") + e.what());
+        }
+        if (!root.IsMap()) throw InputError({file_, 1}, "not a refractiveindex.info file (expected a mapping with DATA)");
+
+        Material m;
+        m.provenance.file = file_;
+        m.provenance.format = "refractiveindex.info YAML";
+        m.provenance.references = text(root, "REFERENCES");
+        m.provenance.comments = text(root, "COMMENTS");
+        read_conditions(root, m.provenance);
+
+        const YAML::Node data = root["DATA"];
+        if (!data) throw InputError({file_, 0, "DATA"}, "missing (a refractiveindex.info file needs a DATA list)");
+        if (!data.IsSequence() || data.size() == 0)
+            throw InputError({file_, line_of(data), "DATA"}, "expected a non-empty list of data blocks");
+
+        std::optional<SpectralCurve> n, k;
+        std::vector<std::string> types;
+        for (std::size_t i = 0; i < data.size(); ++i) {
+            const std::string where = "DATA[" + std::to_string(i) + "]";
+            const YAML::Node block = data[i];
+            if (!block.IsMap() || !block["type"])
+                throw InputError({file_, line_of(block), where + ".type"}, "missing data type");
+            const std::string type = scalar(block["type"], where + ".type");
+            types.push_back(type);
+            auto assign = [&](std::optional<SpectralCurve>& slot, SpectralCurve curve, const char* what) {
+                if (slot) throw InputError({file_, line_of(block), where}, std::string("second ") + what + " block");
+                slot.emplace(std::move(curve));
+            };
+            if (type == "tabulated nk") {
+                auto [nn, kk] = tabulated(block, where, 2);
+                assign(n, std::move(nn), "n");
+                assign(k, std::move(*kk), "k");
+            } else if (type == "tabulated n") {
+                assign(n, tabulated(block, where, 1).first, "n");
+            } else if (type == "tabulated k") {
+                assign(k, tabulated(block, where, 1, /*is_k=*/true).first, "k");
+            } else if (type == "formula 1" || type == "formula 2") {
+                assign(n, formula(block, where, type == "formula 1"), "n");
+            } else {
+                throw InputError({file_, line_of(block["type"]), where + ".type"},
+                                 "unsupported data type '" + type + "' (supported: " + kSupportedTypes + ")");
+            }
+        }
+        if (!n) throw InputError({file_, line_of(data), "DATA"}, "no n data (only k)");
+        if (!k) {
+            m.warnings.push_back(file_.string() + ": no k data (" + types.front() +
+                                 " only): k = 0 assumed");
+            k.emplace(ConstantSpectrum{0.0});
+        }
+        std::string joined;
+        for (const auto& t : types) joined += (joined.empty() ? "" : " + ") + t;
+        m.provenance.data_type = joined;
+        m.provenance.sha256 = sha256_file(file_);
+        m.index = ComplexIndex{std::move(*n), std::move(*k)};
+        m.id = m.name = file_.stem().string();
+        m.source = file_.filename().string();
+        m.warnings.insert(m.warnings.end(), warnings_.begin(), warnings_.end());
+        return m;
+    }
+
+private:
+    int line_of(const YAML::Node& node) const {
+        return node && node.Mark().line >= 0 ? node.Mark().line + 1 : 0;
+    }
+
+    std::string scalar(const YAML::Node& node, const std::string& field) const {
+        if (!node.IsScalar()) throw InputError({file_, line_of(node), field}, "expected a text value");
+        return node.Scalar();
+    }
+
+    std::string text(const YAML::Node& root, const char* key) const {
+        const YAML::Node node = root[key];
+        if (!node) return {};
+        std::string s = scalar(node, key);
+        while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+        return s;
+    }
+
+    void read_conditions(const YAML::Node& root, Provenance& p) const {
+        const YAML::Node c = root["CONDITIONS"];
+        if (!c) return;
+        if (!c.IsMap()) throw InputError({file_, line_of(c), "CONDITIONS"}, "expected a mapping");
+        for (const auto& kv : c) {
+            const std::string key = kv.first.Scalar();
+            // Kept as written: `50e-9` is a string to YAML core-schema readers, a number to others.
+            p.conditions[key] = kv.second.IsScalar() ? kv.second.Scalar() : YAML::Dump(kv.second);
+        }
+    }
+
+    // Numbers of a field that is a space-separated string ("0.21 6.7") or a YAML list.
+    std::vector<double> numbers(const YAML::Node& node, const std::string& field) const {
+        const InputLocation where{file_, line_of(node), field};
+        if (!node.IsSequence()) return detail::parse_row(detail::split_whitespace(scalar(node, field)), where);
+        std::vector<std::string> items;
+        for (const auto& item : node) items.push_back(scalar(item, field));
+        return detail::parse_row(std::vector<std::string_view>(items.begin(), items.end()), where);
+    }
+
+    // The first file line of a scalar's contents: block scalars (| or >) start below their key.
+    int first_content_line(const YAML::Node& node) const {
+        const YAML::Mark mark = node.Mark();
+        if (mark.line < 0 || static_cast<std::size_t>(mark.line) >= lines_.size()) return 0;
+        const std::string& line = lines_[static_cast<std::size_t>(mark.line)];
+        const std::size_t col = static_cast<std::size_t>(std::max(mark.column, 0));
+        const bool block = col < line.size() && (line[col] == '|' || line[col] == '>');
+        return mark.line + 1 + (block ? 1 : 0);
+    }
+
+    // Rows "λ v1 [v2]" of a tabulated block; columns = number of values after λ.
+    std::pair<SpectralCurve, std::optional<SpectralCurve>> tabulated(const YAML::Node& block,
+                                                                     const std::string& where,
+                                                                     int columns, bool is_k = false) {
+        const std::string field = where + ".data";
+        const YAML::Node data = block["data"];
+        if (!data) throw InputError({file_, line_of(block), field}, "missing");
+        const std::string text = scalar(data, field);
+        const int first_line = first_content_line(data);
+        std::vector<SpectrumSample> first, second;
+        std::istringstream in(text);
+        int row = 0;
+        for (std::string line; std::getline(in, line); ++row) {
+            const auto fields = detail::split_whitespace(line);
+            if (fields.empty()) continue;
+            const InputLocation here{file_, first_line > 0 ? first_line + row : 0, field};
+            if (static_cast<int>(fields.size()) != columns + 1)
+                throw InputError(here, "expected " + std::to_string(columns + 1) + " numbers per row, found " +
+                                           std::to_string(fields.size()));
+            const std::vector<double> v = detail::parse_row(fields, here);
+            detail::check_optical_row(v, fields, columns == 2 ? "nk" : is_k ? "k" : "n", here);
+            const double nm = v[0] * 1000.0;  // µm → nm
+            first.push_back({nm, v[1]});
+            if (columns == 2) second.push_back({nm, v[2]});
+        }
+        if (first.empty()) throw InputError({file_, line_of(data), field}, "no data rows");
+        Spectrum values(std::move(first));
+        std::optional<SpectralCurve> k;
+        std::size_t conflicts = values.conflicting_duplicates();
+        if (columns == 2) {
+            Spectrum k_values(std::move(second));
+            conflicts = std::max(conflicts, k_values.conflicting_duplicates());
+            k.emplace(std::move(k_values));
+        }
+        if (conflicts > 0)
+            warnings_.push_back(file_.string() + ": " + field + ": " + std::to_string(conflicts) +
+                                " repeated wavelength(s) with different values: their mean is used");
+        return {std::move(values), std::move(k)};
+    }
+
+    SellmeierFormula formula(const YAML::Node& block, const std::string& where, bool squared) const {
+        const YAML::Node range = block["wavelength_range"];
+        const YAML::Node coefficients = block["coefficients"];
+        if (!range) throw InputError({file_, line_of(block), where + ".wavelength_range"}, "missing");
+        if (!coefficients) throw InputError({file_, line_of(block), where + ".coefficients"}, "missing");
+        const auto r = numbers(range, where + ".wavelength_range");
+        if (r.size() != 2 || !(r[0] > 0.0 && r[1] > r[0]))
+            throw InputError({file_, line_of(range), where + ".wavelength_range"}, "expected two increasing positive wavelengths in µm");
+        auto c = numbers(coefficients, where + ".coefficients");
+        if (c.empty()) throw InputError({file_, line_of(coefficients), where + ".coefficients"}, "no coefficients");
+        return SellmeierFormula(squared ? SellmeierFormula::Form::squared_poles : SellmeierFormula::Form::linear_poles,
+                                std::move(c), {r[0] * 1000.0, r[1] * 1000.0});
+    }
+
+    std::filesystem::path file_;
+    std::string text_;
+    std::vector<std::string> lines_;  // to tell block scalars from plain ones
+    std::vector<std::string> warnings_;
+};
+
+}  // namespace
+
+Material load_refractiveindex_yaml(const std::filesystem::path& file) {
+    return Reader(file).read();
+}
+
+}  // namespace metalfit

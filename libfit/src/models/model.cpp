@@ -1,0 +1,127 @@
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "fit/fit_channel.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/models/model.hpp"
+#include "libfit/models/conductor_rgb/conductor_rgb.hpp"
+#include "libfit/models/f82_tint/f82_tint.hpp"
+#include "libfit/models/gulbrandsen/gulbrandsen.hpp"
+#include "libfit/models/lazanyi/lazanyi.hpp"
+#include "libfit/models/lazanyi_comp/lazanyi_comp.hpp"
+#include "libfit/models/schlick/schlick.hpp"
+#include "shader_files.hpp"
+
+namespace metalfit {
+
+namespace {
+
+// The runtime view of a model struct M (see libfit/models/).
+template <class M>
+class ModelAdapter final : public Model {
+public:
+    std::string_view id() const override { return M::kId; }
+    std::string_view title() const override { return M::kTitle; }
+    std::span<const Parameter> parameters() const override { return M::kParameters; }
+    double evaluate(std::span<const double> p, double mu) const override { return M::evaluate(p.data(), mu); }
+    float evaluate(std::span<const float> p, float mu) const override { return M::evaluate(p.data(), mu); }
+    std::vector<ClosedForm> closed_forms(const ClosedFormInput& input) const override {
+        return M::closed_forms(input);
+    }
+    std::vector<ChannelParameters> neutral_starts() const override { return M::neutral_starts(); }
+    std::vector<ChannelParameters> target_starts(const ChannelTarget& target) const override {
+        if constexpr (requires { M::target_starts(target); }) return M::target_starts(target);
+        else return {};
+    }
+    ChannelFit fit(const ChannelTarget& target, std::span<const NamedStart> starts) const override {
+        return detail::fit_channel<M>(target, starts);
+    }
+    std::string_view glsl_function() const override { return M::kGlslFunction; }
+    std::span<const std::string_view> glsl_files() const override { return M::kGlslFiles; }
+};
+
+const ModelAdapter<models::Schlick> kSchlick;
+const ModelAdapter<models::Lazanyi> kLazanyi;
+const ModelAdapter<models::LazanyiComp> kLazanyiComp;
+const ModelAdapter<models::F82Tint> kF82Tint;
+const ModelAdapter<models::ConductorRgb> kConductorRgb;
+const ModelAdapter<models::Gulbrandsen> kGulbrandsen;
+const std::array<const Model*, 6> kModels{&kSchlick, &kLazanyi, &kLazanyiComp, &kF82Tint, &kConductorRgb, &kGulbrandsen};
+
+std::string known_ids() {
+    std::string ids;
+    for (const Model* m : kModels) ids += (ids.empty() ? "" : ", ") + std::string(m->id());
+    return ids;
+}
+
+}  // namespace
+
+RGB Model::evaluate(const RgbParameters& params, double mu) const {
+    return {evaluate(std::span<const double>(params[0]), mu), evaluate(std::span<const double>(params[1]), mu),
+            evaluate(std::span<const double>(params[2]), mu)};
+}
+
+std::string Model::glsl_source() const {
+    const Model* self = this;
+    return glsl_library(std::span<const Model* const>(&self, 1));
+}
+
+std::span<const Model* const> all_models() { return kModels; }
+
+const Model& find_model(std::string_view id) {
+    for (const Model* m : kModels)
+        if (m->id() == id) return *m;
+    throw UsageError("unknown model '" + std::string(id) + "' (known: " + known_ids() + ", or all)");
+}
+
+std::vector<const Model*> parse_model_list(std::string_view list) {
+    if (list == "all") return {kModels.begin(), kModels.end()};
+    std::vector<const Model*> models;
+    while (!list.empty()) {
+        const auto comma = list.find(',');
+        const std::string_view id = list.substr(0, comma);
+        const Model* m = &find_model(id);
+        if (std::find(models.begin(), models.end(), m) == models.end()) models.push_back(m);
+        list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
+    }
+    if (models.empty()) throw UsageError("empty model list (known: " + known_ids() + ", or all)");
+    return models;
+}
+
+std::string_view shader_file(std::string_view file) {
+    for (const auto& [name, text] : detail::kShaderFiles)
+        if (name == file) return text;
+    throw std::out_of_range("no embedded shader file '" + std::string(file) + "'");
+}
+
+std::string glsl_library(std::span<const Model* const> models) {
+    std::vector<std::string_view> files;
+    for (const Model* m : models)
+        for (std::string_view f : m->glsl_files())
+            if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
+    std::string text;
+    for (std::string_view f : files) {
+        if (!text.empty()) text += '\n';
+        text += shader_file(f);
+    }
+    return text;
+}
+
+bool ClosedForm::defined() const {
+    return std::all_of(channel.begin(), channel.end(), [](const ClosedFormChannel& c) { return c.params.has_value(); });
+}
+
+RgbParameters ClosedForm::params() const {
+    if (!defined()) throw std::logic_error("closed form " + id + " is undefined: " + undefined_reason());
+    return {*channel[0].params, *channel[1].params, *channel[2].params};
+}
+
+std::string ClosedForm::undefined_reason() const {
+    std::string reason;
+    for (int c = 0; c < 3; ++c)
+        if (!channel[c].params) reason += (reason.empty() ? "" : "; ") + std::string(kChannelNames[c]) + ": " + channel[c].undefined;
+    return reason;
+}
+
+}  // namespace metalfit

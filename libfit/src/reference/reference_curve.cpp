@@ -1,0 +1,41 @@
+#include "libfit/reference/reference_curve.hpp"
+
+#include <sstream>
+
+#include "libfit/base/errors.hpp"
+#include "libfit/optics/fresnel.hpp"
+
+namespace metalfit {
+namespace {
+
+void require_visible_coverage(const Material& m, const SpectralOptions& options) {
+    if (options.out_of_range == OutOfRange::clamp) return;
+    for (const auto& [curve, what] : {std::pair{&m.index.n, "n"}, std::pair{&m.index.k, "k"}}) {
+        const WavelengthRange r = curve->range();
+        if (r.covers(kVisibleRange)) continue;
+        std::ostringstream s;
+        s << what << " covers " << r.min_nm << "–" << r.max_nm << " nm, but colour needs " << kVisibleRange.min_nm
+          << "–" << kVisibleRange.max_nm << " nm (data outside the measured range would be extrapolated)";
+        throw InputError({m.provenance.file, 0, "DATA"}, s.str());
+    }
+}
+
+}  // namespace
+
+ReferenceCurve::ReferenceCurve(const Material& material, const Colorimetry& colorimetry,
+                               ColorSpaceConverter converter, SpectralOptions options)
+    : colorimetry_(colorimetry), converter_(std::move(converter)) {
+    require_visible_coverage(material, options);
+    for (double nm : colorimetry_.wavelengths_nm()) eta_.push_back(material.index(nm, options.interpolation, options.out_of_range));
+    raw_white_ = converter_(colorimetry_.white());
+}
+
+XYZ ReferenceCurve::xyz(double mu) const {
+    std::vector<double> reflectance(eta_.size());
+    for (std::size_t i = 0; i < eta_.size(); ++i) reflectance[i] = fresnel(mu, eta_[i]);
+    return colorimetry_.integrate(reflectance);
+}
+
+RGB ReferenceCurve::operator()(double mu) const { return converter_(xyz(mu)) / raw_white_; }
+
+}  // namespace metalfit

@@ -1,0 +1,71 @@
+#include "libfit/reference/sampled_reference.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "libfit/base/errors.hpp"
+#include "libfit/base/quadrature.hpp"
+
+namespace metalfit {
+
+std::string to_string(ErrorMetric m) { return m == ErrorMetric::rel ? "rel" : "abs"; }
+std::string to_string(AngularWeight w) { return w == AngularWeight::uniform ? "uniform" : "cosine"; }
+
+ErrorMetric parse_error_metric(const std::string& text) {
+    if (text == "rel") return ErrorMetric::rel;
+    if (text == "abs") return ErrorMetric::abs;
+    throw UsageError("unknown error metric '" + text + "' (known: rel, abs)");
+}
+
+AngularWeight parse_angular_weight(const std::string& text) {
+    if (text == "uniform") return AngularWeight::uniform;
+    if (text == "cosine") return AngularWeight::cosine;
+    throw UsageError("unknown angular weight '" + text + "' (known: uniform, cosine)");
+}
+
+SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSettings& settings)
+    : converter_(curve.converter()), raw_white_(curve.raw_white()), settings_(settings) {
+    if (settings.nodes < 2 || settings.nodes > 4096)
+        throw UsageError("--nodes must be in [2, 4096], got " + std::to_string(settings.nodes));
+    white_ = converter_.to_xyz(raw_white_);
+    const auto sample = [&](double mu, double weight, double albedo_weight) {
+        const RGB value = curve(mu);
+        return Sample{mu, weight, albedo_weight, value, lab(value)};
+    };
+    for (const QuadratureNode& q : gauss_legendre_unit(settings.nodes)) {
+        const double w = settings.weight == AngularWeight::uniform ? 1.0 : 2.0 * q.mu;
+        nodes_.push_back(sample(q.mu, q.weight * w, q.weight * 2.0 * q.mu));
+    }
+    for (int i = 0; i <= kDenseIntervals; ++i) dense_.push_back(sample(double(i) / kDenseIntervals, 0.0, 0.0));
+
+    for (const auto* samples : {&nodes_, &dense_})
+        for (const Sample& s : *samples)
+            for (int c = 0; c < 3 && !rel_undefined_; ++c)
+                if (!(s.value[c] > 0.0)) {
+                    char text[160];
+                    std::snprintf(text, sizeof text, "the reference's %s channel is %.3g at mu = %.4g", kChannelNames[c],
+                                  s.value[c], s.mu);
+                    rel_undefined_ = text;
+                }
+}
+
+Lab SampledReference::lab(const RGB& balanced) const {
+    const RGB raw{balanced.r * raw_white_.r, balanced.g * raw_white_.g, balanced.b * raw_white_.b};
+    return xyz_to_lab(converter_.to_xyz(raw), white_);
+}
+
+ChannelTarget SampledReference::target(int channel) const {
+    const bool rel = settings_.metric == ErrorMetric::rel;
+    if (rel && rel_undefined_) throw std::logic_error("relative metric undefined: " + *rel_undefined_);
+    ChannelTarget t;
+    for (const Sample& s : nodes_) {
+        const double value = s.value[channel];
+        t.mu.push_back(s.mu);
+        t.value.push_back(value);
+        t.scale.push_back(std::sqrt(s.weight) / (rel ? value : 1.0));
+    }
+    return t;
+}
+
+}  // namespace metalfit
