@@ -45,7 +45,7 @@ esac
     EXPECT_EQ(j.at("schema"), "metalfit.bench/1");
     EXPECT_EQ(j.at("quick"), true);
     EXPECT_EQ(j.at("material"), "Au");
-    EXPECT_EQ(j.at("catalog_materials"), 29);
+    EXPECT_EQ(j.at("catalog_materials"), metalfit::test::catalog_material_count());
     for (const char* key : {"cpu", "os", "compiler", "build_type"}) EXPECT_TRUE(j.at("machine").at(key).is_string()) << key;
     EXPECT_TRUE(j.at("machine").at("cores").is_number_integer());
 

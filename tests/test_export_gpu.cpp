@@ -12,6 +12,7 @@
 #include "glpreview/gl.hpp"
 #include "glpreview/gl_context.hpp"
 #include "libfit/models/model.hpp"
+#include "test_support.hpp"
 
 namespace {
 
@@ -46,11 +47,11 @@ TEST(ExportGlsl, ModelFunctionsOnTheGpuEqualTheCppModels) {
     for (const metalfit::Model* model : metalfit::all_models()) {
         SCOPED_TRACE(std::string(model->id()) + " on " + context.renderer());
         // Every material's written parameters for this model.
-        std::vector<metalfit::RgbParameters> sets;
+        std::vector<metalfit::ModelParameters> sets;
         std::vector<float> params;
         for (const auto& [id, material] : record["materials"].items()) {
             const auto& written = material["models"][std::string(model->id())]["export"]["params"];
-            metalfit::RgbParameters p;
+            metalfit::ModelParameters p;
             for (int slot = 0; slot < 4; ++slot) {
                 const bool used = slot < static_cast<int>(model->parameters().size());
                 for (int c = 0; c < 3; ++c) {
@@ -62,7 +63,7 @@ TEST(ExportGlsl, ModelFunctionsOnTheGpuEqualTheCppModels) {
             }
             sets.push_back(p);
         }
-        ASSERT_EQ(sets.size(), 29u);
+        ASSERT_EQ(sets.size(), metalfit::test::catalog_material_count());
         const GLuint count = static_cast<GLuint>(sets.size() * kMu);
         const GLuint program = metalfit::glpreview::compile_compute_program(compute_source(*model), model->id());
         GLuint buffers[2];

@@ -17,12 +17,7 @@
 #include "libfit/base/errors.hpp"
 #include "libfit/optics/fresnel.hpp"
 #include "libfit/models/model.hpp"
-#include "libfit/models/conductor_rgb/conductor_rgb.hpp"
-#include "libfit/models/f82_tint/f82_tint.hpp"
-#include "libfit/models/gulbrandsen/gulbrandsen.hpp"
-#include "libfit/models/lazanyi/lazanyi.hpp"
-#include "libfit/models/lazanyi_comp/lazanyi_comp.hpp"
-#include "libfit/models/schlick/schlick.hpp"
+#include "libfit/models/registry.hpp"
 #include "test_support.hpp"
 
 namespace metalfit {
@@ -88,7 +83,7 @@ TEST(Models, GrazingIsOneAndNormalIncidenceIsTheModelsF0) {
             EXPECT_NEAR(eval(*m, p, 0.0), 1.0, 1e-14) << id << " p[0]=" << p[0];
             EXPECT_NEAR(eval(*m, p, 1.0), expected_at_normal_incidence(id, p), 1e-12) << id << " p[0]=" << p[0];
             // The RGB overload is the per-channel one.
-            const RgbParameters rgb{p, p, p};
+            const ModelParameters rgb{p, p, p};
             const RGB c = m->evaluate(rgb, 0.3);
             EXPECT_EQ(c.r, eval(*m, p, 0.3)) << id;
             EXPECT_EQ(c.b, eval(*m, p, 0.3)) << id;
@@ -445,7 +440,7 @@ TEST(ModelRegistry, UnknownIdThrowsUsageErrorListingKnownIds) {
 
 TEST(ModelRegistry, ParseModelList) {
     const auto all = parse_model_list("all");
-    ASSERT_EQ(all.size(), 6u);
+    ASSERT_EQ(all.size(), Registry::size);
     for (std::size_t i = 0; i < all.size(); ++i) EXPECT_EQ(all[i], all_models()[i]);
     const auto two = parse_model_list("schlick,f82-tint,schlick");
     ASSERT_EQ(two.size(), 2u);

@@ -12,6 +12,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "libfit/spectral/complex_index.hpp"
 
 namespace metalfit::test {
@@ -29,6 +31,13 @@ inline ::testing::AssertionResult Contains(const std::string& haystack, const st
 inline ::testing::AssertionResult StartsWith(const std::string& s, const std::string& prefix) {
     if (s.rfind(prefix, 0) == 0) return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << "'" << s << "' does not start with '" << prefix << "'";
+}
+
+// The number of materials of the built-in database, counted from data/catalog.json itself (not through Catalog),
+// so that a test says "every material" without a literal count.
+inline std::size_t catalog_material_count() {
+    std::ifstream in(kData / "catalog.json");
+    return nlohmann::json::parse(in).at("materials").size();
 }
 
 inline std::string read_file(const fs::path& p) {

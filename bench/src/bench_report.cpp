@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "libfit/models/registry.hpp"
 #include "metalfit_bench/convergence.hpp"
 #include "metalfit_bench/environment.hpp"
 #include "metalfit_bench/eval_kernels.hpp"
@@ -143,7 +144,7 @@ BenchReport run_bench(const BenchOptions& o) {
 }
 
 std::vector<ThesisComparison> thesis_comparison(const BenchReport& report) {
-    const std::array<std::pair<const char*, double>, 3> thesis{{{"schlick", 28}, {"lazanyi", 33}, {"lazanyi-comp", 54}}};
+    const std::array<std::pair<const char*, double>, 3> thesis{{{models::Schlick::kId.data(), 28}, {models::Lazanyi::kId.data(), 33}, {models::LazanyiComp::kId.data(), 54}}};
     const CostRow* base = nullptr;
     for (const CostRow& r : report.rows)
         if (r.id == kBaselineKernel) base = &r;

@@ -56,7 +56,7 @@ FittedConvergence fitted_rel_rms_convergence(const PreparedMaterial& material, i
     out.rel_rms_change.assign(out.nodes.size(), {});
     for (const Model* model : all_models()) {
         out.models.emplace_back(model->id());
-        const RgbParameters& p = material.params(model->id());
+        const ModelParameters& p = material.params(model->id());
         std::array<Convergence, 3> channel;
         for (int c = 0; c < 3; ++c) {
             const auto integrand = [&](double mu) {

@@ -26,7 +26,7 @@ PreparedMaterial PreparedMaterial::prepare(const Environment& env, const std::st
     return prepared;
 }
 
-const RgbParameters& PreparedMaterial::params(std::string_view model_id) const {
+const ModelParameters& PreparedMaterial::params(std::string_view model_id) const {
     const auto it = fitted.find(model_id);
     if (it == fitted.end()) throw std::out_of_range("no fitted parameters for model '" + std::string(model_id) + "'");
     return it->second;

@@ -6,12 +6,7 @@
 #include <random>
 
 #include "libfit/optics/fresnel.hpp"
-#include "libfit/models/conductor_rgb/conductor_rgb.hpp"
-#include "libfit/models/f82_tint/f82_tint.hpp"
-#include "libfit/models/gulbrandsen/gulbrandsen.hpp"
-#include "libfit/models/lazanyi/lazanyi.hpp"
-#include "libfit/models/lazanyi_comp/lazanyi_comp.hpp"
-#include "libfit/models/schlick/schlick.hpp"
+#include "libfit/models/registry.hpp"
 #include "metalfit_bench/reference_lut.hpp"
 
 namespace metalfit::bench {
@@ -28,13 +23,19 @@ inline void opaque(float& v) {
 #endif
 }
 
-constexpr std::size_t kMaxParameters = 4;
+// The most parameters any registered model has.
+constexpr std::size_t kMaxParameters = [] {
+    std::size_t most = 0;
+    for_each_model(Registry{}, [&]<class M>() { most = std::max(most, M::kParameters.size()); });
+    return most;
+}();
 using FloatParams = std::array<std::array<float, kMaxParameters>, 3>;
 
-FloatParams to_float(const RgbParameters& p) {
+FloatParams to_float(const ModelParameters& p) {
     FloatParams f{};
     for (int c = 0; c < 3; ++c)
-        for (std::size_t i = 0; i < p[c].size() && i < kMaxParameters; ++i) f[c][i] = static_cast<float>(p[c][i]);
+        std::transform(p[c].begin(), p[c].begin() + static_cast<std::ptrdiff_t>(std::min(p[c].size(), kMaxParameters)),
+                       f[c].begin(), [](double v) { return static_cast<float>(v); });
     return f;
 }
 
@@ -69,7 +70,7 @@ EvalKernel model_kernel(const PreparedMaterial& material) {
 }
 
 EvalKernel exact_complex_kernel(const PreparedMaterial& material) {
-    const RgbParameters& nk = material.params(models::ConductorRgb::kId);
+    const ModelParameters& nk = material.params(models::ConductorRgb::kId);
     const std::array<std::complex<double>, 3> eta{std::complex<double>(nk[0][0], nk[0][1]),
                                                   std::complex<double>(nk[1][0], nk[1][1]),
                                                   std::complex<double>(nk[2][0], nk[2][1])};
@@ -144,11 +145,13 @@ EvalKernel spectral_kernel(const PreparedMaterial& material) {
 }  // namespace
 
 std::vector<EvalKernel> eval_kernels(const PreparedMaterial& material) {
-    return {model_kernel<models::Schlick>(material),     model_kernel<models::Lazanyi>(material),
-            model_kernel<models::LazanyiComp>(material), model_kernel<models::F82Tint>(material),
-            model_kernel<models::ConductorRgb>(material), model_kernel<models::Gulbrandsen>(material),
-            exact_complex_kernel(material),              lut_kernel(material, 64),
-            lut_kernel(material, 256),                   spectral_kernel(material)};
+    std::vector<EvalKernel> kernels;
+    for_each_model(Registry{}, [&]<class M>() { kernels.push_back(model_kernel<M>(material)); });
+    kernels.push_back(exact_complex_kernel(material));
+    kernels.push_back(lut_kernel(material, 64));
+    kernels.push_back(lut_kernel(material, 256));
+    kernels.push_back(spectral_kernel(material));
+    return kernels;
 }
 
 std::vector<float> bench_mu(std::size_t count) {

@@ -38,13 +38,13 @@ struct FitOptions {
     std::filesystem::path output;
 };
 
-std::string params_text(const Model& model, const RgbParameters& p) {
+std::string params_text(const Model& model, const ModelParameters& p) {
     std::string text;
     const auto parameters = model.parameters();
     for (std::size_t i = 0; i < parameters.size(); ++i) {
-        text += (i ? "  " : "") + std::string(parameters[i].name) + "=(";
-        for (int c = 0; c < 3; ++c) text += (c ? ", " : "") + fixed(p[c][i], 4);
-        text += ")";
+        const RGB v = p.parameter(i);
+        text += (i ? "  " : "") + std::string(parameters[i].name) + "=(" + fixed(v.r, 4) + ", " + fixed(v.g, 4) + ", " +
+                fixed(v.b, 4) + ")";
     }
     return text;
 }

@@ -34,11 +34,11 @@ struct Environment {
 struct PreparedMaterial {
     Material material;
     ReferenceCurve curve;
-    std::map<std::string, RgbParameters, std::less<>> fitted;  // model id → fitted parameters
+    std::map<std::string, ModelParameters, std::less<>> fitted;  // model id → fitted parameters
 
     // Fits every model (as `metalfit fit` does). Throws UsageError for an unknown material.
     static PreparedMaterial prepare(const Environment& env, const std::string& material_id);
-    const RgbParameters& params(std::string_view model_id) const;
+    const ModelParameters& params(std::string_view model_id) const;
 };
 
 }  // namespace metalfit::bench

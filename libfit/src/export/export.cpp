@@ -14,6 +14,7 @@
 #include "export/export_formats.hpp"
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/models/registry.hpp"
 
 namespace metalfit {
 
@@ -21,9 +22,6 @@ namespace {
 
 constexpr std::array<ExportFormat, 6> kFormats{ExportFormat::json, ExportFormat::glsl, ExportFormat::hlsl,
                                                ExportFormat::mtlx, ExportFormat::openpbr, ExportFormat::cpp};
-
-// Parameters that are colours (reflectances or their ratios), to which the gamut policy applies.
-bool is_colour_parameter(std::string_view name) { return name == "F0" || name == "tint" || name == "r" || name == "g"; }
 
 std::string figure(double v) {
     if (std::isnan(v)) return "undefined";
@@ -35,16 +33,17 @@ std::string figure(double v) {
 std::string figures(const PerChannel& v) { return figure(v[0]) + ", " + figure(v[1]) + ", " + figure(v[2]); }
 
 // Applies the gamut policy to the colour parameters; returns one note per parameter that was outside [0, 1].
-std::vector<std::string> apply_gamut(const Model& model, RgbParameters& params, GamutPolicy policy) {
+std::vector<std::string> apply_gamut(const Model& model, ModelParameters& params, GamutPolicy policy) {
     std::vector<std::string> notes;
     const auto parameters = model.parameters();
     for (std::size_t i = 0; i < parameters.size(); ++i) {
+        if (parameters[i].kind != ParameterKind::colour) continue;  // the gamut policy applies to colours only
         const std::string name(parameters[i].name);
-        if (!is_colour_parameter(name)) continue;
+        const RGB colour = params.parameter(i);
         std::string outside;
         double max = 0;
         for (int c = 0; c < 3; ++c) {
-            const double v = params[c][i];
+            const double v = colour[c];
             max = std::max(max, v);
             if (v > 1.0 || v < 0.0) outside += (outside.empty() ? "" : ", ") + std::string(kChannelNames[c]) + " " + detail::number(v);
         }
@@ -54,11 +53,11 @@ std::vector<std::string> apply_gamut(const Model& model, RgbParameters& params, 
                 notes.push_back(name + " outside [0, 1] (" + outside + "): kept");
                 break;
             case GamutPolicy::clip:
-                for (int c = 0; c < 3; ++c) params[c][i] = std::clamp(params[c][i], 0.0, 1.0);
+                params.set_parameter(i, {std::clamp(colour.r, 0.0, 1.0), std::clamp(colour.g, 0.0, 1.0), std::clamp(colour.b, 0.0, 1.0)});
                 notes.push_back(name + " outside [0, 1] (" + outside + "): clipped to [0, 1]");
                 break;
             case GamutPolicy::scale:
-                for (int c = 0; c < 3; ++c) params[c][i] = std::max(0.0, max > 1.0 ? params[c][i] / max : params[c][i]);
+                for (int c = 0; c < 3; ++c) params[c][i] = std::max(0.0, max > 1.0 ? colour[c] / max : colour[c]);
                 notes.push_back(name + " outside [0, 1] (" + outside + "): " +
                                 (max > 1.0 ? "scaled by 1/" + detail::number(max) : std::string("negative values set to 0")));
                 break;
@@ -144,7 +143,7 @@ WrittenParameters written_parameters(const ModelResult& result, const SampledRef
     return w;
 }
 
-const Model& expressible_stand_in() { return find_model("f82-tint"); }
+const Model& expressible_stand_in() { return model_of<StandInModel>(); }
 
 std::vector<const Model*> models_to_fit(const ExportRequest& request) {
     std::vector<const Model*> models = request.models;
@@ -153,10 +152,8 @@ std::vector<const Model*> models_to_fit(const ExportRequest& request) {
     };
     bool needs_stand_in = false;
     for (const Model* m : request.models) {
-        const std::string_view id = m->id();
-        const bool native_f82 = id == "schlick" || id == "lazanyi" || id == "f82-tint";
-        if (wants(ExportFormat::openpbr) && !native_f82) needs_stand_in = true;
-        if (wants(ExportFormat::mtlx) && id == "lazanyi-comp") needs_stand_in = true;
+        if (wants(ExportFormat::openpbr) && !m->is_f82_tint_curve()) needs_stand_in = true;
+        if (wants(ExportFormat::mtlx) && m->materialx_form() == MaterialxForm::stand_in) needs_stand_in = true;
     }
     const Model* stand_in = &expressible_stand_in();
     if (needs_stand_in && std::find(models.begin(), models.end(), stand_in) == models.end()) models.push_back(stand_in);
@@ -185,8 +182,9 @@ std::string number(double v) {
     return s;
 }
 
-std::string channel_list(const RgbParameters& params, std::size_t index) {
-    return number(params[0][index]) + ", " + number(params[1][index]) + ", " + number(params[2][index]);
+std::string channel_list(const ModelParameters& params, std::size_t index) {
+    const RGB v = params.parameter(index);
+    return number(v.r) + ", " + number(v.g) + ", " + number(v.b);
 }
 
 std::string comment_header(const MaterialExport& material, const WrittenParameters& written,
@@ -225,21 +223,18 @@ std::string comment_header(const MaterialExport& material, const WrittenParamete
 }
 
 std::optional<WrittenParameters> as_f82_tint(const WrittenParameters& written, const SampledReference& reference) {
-    const std::string_view id = written.model->id();
-    if (id == "f82-tint") return written;
-    if (id != "schlick" && id != "lazanyi") return std::nullopt;
+    const Model& model = *written.model;
+    if (&model == &expressible_stand_in()) return written;
+    if (!model.is_f82_tint_curve()) return std::nullopt;
     WrittenParameters w = written;
     w.model = &expressible_stand_in();
+    bool tint_one = true;
     for (int c = 0; c < 3; ++c) {
-        const ChannelParameters& p = written.params[c];
-        double F0 = p[0];
-        if (id == "lazanyi") {
-            const double n = p[0], k2 = p[1] * p[1];
-            F0 = ((n - 1) * (n - 1) + k2) / ((n + 1) * (n + 1) + k2);
-        }
-        w.params[c] = {F0, 1.0};
+        w.params[c] = *model.f82_tint_of(written.params[c]);
+        tint_one = tint_one && w.params[c][1] == 1.0;
     }
-    w.origin = written.origin + " of " + std::string(id) + ", written as f82-tint with tint 1 (the same curve)";
+    w.origin = written.origin + " of " + std::string(model.id()) + ", written as " + std::string(w.model->id()) +
+               (tint_one ? " with tint 1" : "") + " (the same curve)";
     w.metrics = compute_metrics(*w.model, w.params, reference);
     return w;
 }

@@ -37,7 +37,7 @@ std::string file_stem(const std::string& material_id, std::string_view model_id)
 // Shortest text that reads back as the same double ("%.17g"), always with a '.' or an exponent.
 std::string number(double v);
 // "a, b, c" of channel values of parameter `index`.
-std::string channel_list(const RgbParameters& params, std::size_t index);
+std::string channel_list(const ModelParameters& params, std::size_t index);
 
 // The comment header of a text export, one line per entry, each prefixed with `prefix` ("// "): material, data
 // source, colour space, model, where the parameters come from, gamut notes, error figures, metalfit version.

@@ -1,9 +1,11 @@
-// MaterialX 1.39 export (pugixml): f82-tint, schlick and lazanyi as generalized_schlick_bsdf (color0 = F0,
-// color82 = tint, exponent 5: the same curve), conductor-rgb as conductor_bsdf (ior = n, extinction = k),
-// gulbrandsen as artistic_ior feeding conductor_bsdf, and lazanyi-comp, which MaterialX cannot express, as its
-// closest expressible stand-in (the f82-tint fit). Each BSDF is wrapped in surface + surfacematerial.
+// MaterialX 1.39 export (pugixml), by each model's MaterialX form (a trait, libfit/models/registry.hpp): F82-tint
+// curves (f82-tint, schlick, lazanyi) as generalized_schlick_bsdf (color0 = F0, color82 = tint, exponent 5: the same
+// curve), n, k models (conductor-rgb) as conductor_bsdf (ior = n, extinction = k), r, g models (gulbrandsen) as
+// artistic_ior feeding conductor_bsdf, and models MaterialX cannot express (lazanyi-comp) as their closest
+// expressible stand-in (the f82-tint fit). Each BSDF is wrapped in surface + surfacematerial.
 #include <algorithm>
 #include <sstream>
+#include <stdexcept>
 
 #include "export/export_formats.hpp"
 
@@ -19,67 +21,91 @@ std::string no_double_hyphen(std::string s) {  // "--" may not appear in an XML 
     return s;
 }
 
-std::string colour3(const RgbParameters& params, std::size_t index) { return channel_list(params, index); }
+std::string colour3(const ModelParameters& params, std::size_t index) { return channel_list(params, index); }
+
+// The parameters MaterialX receives for one model, by the model's MaterialX form, and the note saying what changed.
+WrittenParameters materialx_parameters(const MaterialExport& m, const ModelExport& e, std::string& extra) {
+    const Model& model = *e.written.model;
+    WrittenParameters w = e.written;
+    switch (model.materialx_form()) {
+        case MaterialxForm::generalized_schlick:
+            return *as_f82_tint(e.written, *m.fit->reference);
+        case MaterialxForm::stand_in:
+            w = *e.stand_in;
+            extra = std::string(model.id()) + " has no MaterialX form (" + std::string(model.materialx_stand_in_reason()) +
+                    "): written as its closest\nexpressible fit, " + std::string(w.model->id()) +
+                    " in generalized_schlick_bsdf (exponent 5); " + std::string(model.id()) +
+                    "'s own worst-channel rel_rms\nwould be " + number(worst_channel(e.written.metrics.rel_rms)) +
+                    ", this stand-in's is " + number(worst_channel(w.metrics.rel_rms)) + "; the figures below are the stand-in's.";
+            return w;
+        case MaterialxForm::artistic_ior: {
+            RGB reflectivity = w.params.parameter(0);
+            bool clamped = false;
+            for (int c = 0; c < 3; ++c)
+                if (reflectivity[c] > kArtisticIorMaxReflectivity) reflectivity[c] = kArtisticIorMaxReflectivity, clamped = true;
+            if (clamped) {
+                w.params.set_parameter(0, reflectivity);
+                w.metrics = compute_metrics(*w.model, w.params, *m.fit->reference);
+                w.gamut.push_back(std::string(model.parameters()[0].name) +
+                                  " above 0.99, which MaterialX's artistic_ior clamps to 0.99: written as 0.99");
+            }
+            return w;
+        }
+        case MaterialxForm::conductor_bsdf:
+            return w;
+    }
+    throw std::logic_error("materialx_parameters: unknown MaterialX form");
+}
+
+pugi::xml_node append_bsdf(pugi::xml_node root, const char* category, const std::string& name) {
+    pugi::xml_node n = root.append_child(category);
+    n.append_attribute("name") = name.c_str();
+    n.append_attribute("type") = "BSDF";
+    return n;
+}
 
 std::string document(const MaterialExport& m, const ModelExport& e, const ExportContext& context) {
     const std::string& ocio_space = context.record.space;
     const std::string stem = file_stem(m.fit->material.id, e.written.model->id());
-    const std::string_view id = e.written.model->id();
-    WrittenParameters w = e.written;
     std::string extra;
-    if (id == "lazanyi-comp") {
-        w = *e.stand_in;
-        extra = "lazanyi-comp has no MaterialX form (a BSDF's Fresnel cannot take mu (1 - mu)^alpha): written as its closest\n"
-                "expressible fit, f82-tint in generalized_schlick_bsdf (exponent 5); lazanyi-comp's own worst-channel rel_rms\n"
-                "would be " + number(worst_channel(e.written.metrics.rel_rms)) + ", this stand-in's is " +
-                number(worst_channel(w.metrics.rel_rms)) + "; the figures below are the stand-in's.";
-    } else if (id == "gulbrandsen") {
-        bool clamped = false;
-        for (int c = 0; c < 3; ++c)
-            if (w.params[c][0] > kArtisticIorMaxReflectivity) w.params[c][0] = kArtisticIorMaxReflectivity, clamped = true;
-        if (clamped) {
-            w.metrics = compute_metrics(*w.model, w.params, *m.fit->reference);
-            w.gamut.push_back("r above 0.99, which MaterialX's artistic_ior clamps to 0.99: written as 0.99");
-        }
-    } else if (id != "conductor-rgb") {
-        w = *as_f82_tint(e.written, *m.fit->reference);
-    }
+    const WrittenParameters w = materialx_parameters(m, e, extra);
     if (ocio_space.empty() || materialx_colorspace(ocio_space).empty())
         extra += std::string(extra.empty() ? "" : "\n") + "colours are in " + ocio_space + ", which has no MaterialX colorspace name: none is set";
     pugi::xml_document doc;
     pugi::xml_node root = begin_materialx(doc, comment_header(m, w, context, "  ", extra), ocio_space);
     const std::string bsdf = stem + "_bsdf";
-    const std::string_view written_id = w.model->id();
-    if (written_id == "f82-tint") {
-        pugi::xml_node n = root.append_child("generalized_schlick_bsdf");
-        n.append_attribute("name") = bsdf.c_str();
-        n.append_attribute("type") = "BSDF";
-        add_input(n, "color0", "color3", colour3(w.params, 0));
-        add_input(n, "color82", "color3", colour3(w.params, 1));
-        add_input(n, "color90", "color3", "1.0, 1.0, 1.0");
-        add_input(n, "exponent", "float", "5.0");
-    } else if (written_id == "conductor-rgb") {
-        pugi::xml_node n = root.append_child("conductor_bsdf");
-        n.append_attribute("name") = bsdf.c_str();
-        n.append_attribute("type") = "BSDF";
-        add_input(n, "ior", "color3", colour3(w.params, 0));
-        add_input(n, "extinction", "color3", colour3(w.params, 1));
-    } else {  // gulbrandsen
-        const std::string ior = stem + "_artistic_ior";
-        pugi::xml_node a = root.append_child("artistic_ior");
-        a.append_attribute("name") = ior.c_str();
-        a.append_attribute("type") = "multioutput";
-        add_input(a, "reflectivity", "color3", colour3(w.params, 0));
-        add_input(a, "edge_color", "color3", colour3(w.params, 1));
-        pugi::xml_node n = root.append_child("conductor_bsdf");
-        n.append_attribute("name") = bsdf.c_str();
-        n.append_attribute("type") = "BSDF";
-        for (const char* output : {"ior", "extinction"}) {
-            pugi::xml_node in = n.append_child("input");
-            in.append_attribute("name") = output;
-            in.append_attribute("type") = "color3";
-            in.append_attribute("nodename") = ior.c_str();
-            in.append_attribute("output") = output;
+    switch (w.model->materialx_form()) {
+        case MaterialxForm::generalized_schlick:
+        case MaterialxForm::stand_in: {  // a stand-in is written as the stand-in model (generalized_schlick)
+            pugi::xml_node n = append_bsdf(root, "generalized_schlick_bsdf", bsdf);
+            add_input(n, "color0", "color3", colour3(w.params, 0));
+            add_input(n, "color82", "color3", colour3(w.params, 1));
+            add_input(n, "color90", "color3", "1.0, 1.0, 1.0");
+            add_input(n, "exponent", "float", "5.0");
+            break;
+        }
+        case MaterialxForm::conductor_bsdf: {
+            pugi::xml_node n = append_bsdf(root, "conductor_bsdf", bsdf);
+            add_input(n, "ior", "color3", colour3(w.params, 0));
+            add_input(n, "extinction", "color3", colour3(w.params, 1));
+            break;
+        }
+        case MaterialxForm::artistic_ior: {
+            const std::string ior = stem + "_artistic_ior";
+            pugi::xml_node a = root.append_child("artistic_ior");
+            a.append_attribute("name") = ior.c_str();
+            a.append_attribute("type") = "multioutput";
+            add_input(a, "reflectivity", "color3", colour3(w.params, 0));
+            add_input(a, "edge_color", "color3", colour3(w.params, 1));
+            pugi::xml_node n = append_bsdf(root, "conductor_bsdf", bsdf);
+            for (const char* output : {"ior", "extinction"}) {
+                pugi::xml_node in = n.append_child("input");
+                in.append_attribute("name") = output;
+                in.append_attribute("type") = "color3";
+                in.append_attribute("nodename") = ior.c_str();
+                in.append_attribute("output") = output;
+            }
+            break;
         }
     }
     add_surface_material(root, stem, bsdf, true);

@@ -10,7 +10,10 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 Json per_channel(const PerChannel& v) { return Json::array({v[0], v[1], v[2]}); }
-Json colour(const RgbParameters& p, std::size_t i) { return Json::array({p[0][i], p[1][i], p[2][i]}); }
+Json colour(const ModelParameters& p, std::size_t i) {
+    const RGB v = p.parameter(i);
+    return Json::array({v.r, v.g, v.b});
+}
 
 }  // namespace
 

@@ -66,7 +66,7 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
     for (const ClosedForm& form : forms) {
         ClosedFormResult r{form.id, form.description, {}, {}};
         if (form.defined()) {
-            const RgbParameters params = form.params();
+            const ModelParameters params = form.params();
             r.value = EvaluatedParameters{params, compute_metrics(model, params, reference)};
             const double worst = worst_channel(r.value->metrics.rms(metric));
             if (worst < best_worst) best_worst = worst, result.best_closed = result.closed_forms.size();

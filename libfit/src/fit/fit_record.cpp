@@ -11,11 +11,10 @@ using Json = nlohmann::ordered_json;
 Json per_channel(const PerChannel& v) { return Json::array({v[0], v[1], v[2]}); }
 Json rgb_json(const RGB& v) { return Json::array({v.r, v.g, v.b}); }
 
-Json params_json(const Model& model, const RgbParameters& params) {
+Json params_json(const Model& model, const ModelParameters& params) {
     Json j = Json::object();
     const auto parameters = model.parameters();
-    for (std::size_t i = 0; i < parameters.size(); ++i)
-        j[std::string(parameters[i].name)] = Json::array({params[0][i], params[1][i], params[2][i]});
+    for (std::size_t i = 0; i < parameters.size(); ++i) j[std::string(parameters[i].name)] = rgb_json(params.parameter(i));
     return j;
 }
 

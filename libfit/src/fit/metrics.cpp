@@ -12,7 +12,7 @@ double worst_channel(const PerChannel& values) {
     return *std::max_element(values.begin(), values.end());
 }
 
-Metrics compute_metrics(const Model& model, const RgbParameters& params, const SampledReference& reference) {
+Metrics compute_metrics(const Model& model, const ModelParameters& params, const SampledReference& reference) {
     const bool rel_defined = !reference.rel_undefined();
     Metrics m;
     PerChannel rel_sum{}, abs_sum{};

@@ -1,16 +1,12 @@
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "fit/fit_channel.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/models/model.hpp"
-#include "libfit/models/conductor_rgb/conductor_rgb.hpp"
-#include "libfit/models/f82_tint/f82_tint.hpp"
-#include "libfit/models/gulbrandsen/gulbrandsen.hpp"
-#include "libfit/models/lazanyi/lazanyi.hpp"
-#include "libfit/models/lazanyi_comp/lazanyi_comp.hpp"
-#include "libfit/models/schlick/schlick.hpp"
+#include "libfit/models/registry.hpp"
 #include "shader_files.hpp"
 
 namespace metalfit {
@@ -39,15 +35,34 @@ public:
     }
     std::string_view glsl_function() const override { return M::kGlslFunction; }
     std::span<const std::string_view> glsl_files() const override { return M::kGlslFiles; }
+    std::optional<ChannelParameters> f82_tint_of(std::span<const double> p) const override {
+        if constexpr (F82TintCurve<M>) {
+            const std::array<double, 2> f82 = M::to_f82_tint(p.data());
+            return ChannelParameters(f82.begin(), f82.end());
+        } else {
+            return std::nullopt;
+        }
+    }
+    bool is_f82_tint_curve() const override { return F82TintCurve<M>; }
+    MaterialxForm materialx_form() const override { return M::kMaterialx; }
+    std::string_view materialx_stand_in_reason() const override {
+        if constexpr (M::kMaterialx == MaterialxForm::stand_in) return M::kMaterialxStandIn;
+        else return {};
+    }
 };
 
-const ModelAdapter<models::Schlick> kSchlick;
-const ModelAdapter<models::Lazanyi> kLazanyi;
-const ModelAdapter<models::LazanyiComp> kLazanyiComp;
-const ModelAdapter<models::F82Tint> kF82Tint;
-const ModelAdapter<models::ConductorRgb> kConductorRgb;
-const ModelAdapter<models::Gulbrandsen> kGulbrandsen;
-const std::array<const Model*, 6> kModels{&kSchlick, &kLazanyi, &kLazanyiComp, &kF82Tint, &kConductorRgb, &kGulbrandsen};
+// One adapter per registry entry, and the table of them in registry order.
+template <class List>
+struct ModelTable;
+template <class... M>
+struct ModelTable<ModelList<M...>> {
+    std::tuple<ModelAdapter<M>...> adapters;
+    std::array<const Model*, sizeof...(M)> models = std::apply([](const auto&... a) {
+        return std::array<const Model*, sizeof...(M)>{&a...};
+    }, adapters);
+};
+const ModelTable<Registry> kTable;
+const auto& kModels = kTable.models;
 
 std::string known_ids() {
     std::string ids;
@@ -57,7 +72,7 @@ std::string known_ids() {
 
 }  // namespace
 
-RGB Model::evaluate(const RgbParameters& params, double mu) const {
+RGB Model::evaluate(const ModelParameters& params, double mu) const {
     return {evaluate(std::span<const double>(params[0]), mu), evaluate(std::span<const double>(params[1]), mu),
             evaluate(std::span<const double>(params[2]), mu)};
 }
@@ -112,7 +127,7 @@ bool ClosedForm::defined() const {
     return std::all_of(channel.begin(), channel.end(), [](const ClosedFormChannel& c) { return c.params.has_value(); });
 }
 
-RgbParameters ClosedForm::params() const {
+ModelParameters ClosedForm::params() const {
     if (!defined()) throw std::logic_error("closed form " + id + " is undefined: " + undefined_reason());
     return {*channel[0].params, *channel[1].params, *channel[2].params};
 }

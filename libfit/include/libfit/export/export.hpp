@@ -34,7 +34,7 @@ std::string to_string(GamutPolicy policy);
 struct WrittenParameters {
     const Model* model = nullptr;
     std::string origin;                   // "fit" or "closed r1-r82"
-    RgbParameters params;
+    ModelParameters params;
     Metrics metrics;
     std::vector<std::string> gamut;       // one note per out-of-gamut colour parameter: what was done to it
 };

@@ -18,7 +18,7 @@
 namespace metalfit {
 
 struct EvaluatedParameters {
-    RgbParameters params;
+    ModelParameters params;
     Metrics metrics;
 };
 

@@ -29,6 +29,6 @@ struct Metrics {
 
 double worst_channel(const PerChannel& values);  // max over R, G, B (NaN if any is NaN)
 
-Metrics compute_metrics(const Model& model, const RgbParameters& params, const SampledReference& reference);
+Metrics compute_metrics(const Model& model, const ModelParameters& params, const SampledReference& reference);
 
 }  // namespace metalfit

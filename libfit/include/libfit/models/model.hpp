@@ -1,9 +1,12 @@
-// Model: the runtime view of one cheap Fresnel model (its parameters, evaluation, closed forms, fit and GLSL).
-// Each model is defined once, as one folder libfit/models/<model>/ (struct, closed forms, GLSL) and one line in libfit/models/registry.hpp; this interface is
-// what the fitter, the exporters and the renderer use.
+// Model: the runtime view of one cheap Fresnel model (its parameters, evaluation, closed forms, fit, GLSL and what
+// the exporters need to know of it). Each model is defined once, as one folder libfit/models/<model>/ (struct, closed
+// forms, GLSL) and one line in libfit/models/registry.hpp; this interface, derived from the struct, is what the
+// fitter, the exporters, the benchmarks and the renderer use.
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <utility>
 #include <complex>
 #include <functional>
 #include <optional>
@@ -16,17 +19,54 @@
 
 namespace metalfit {
 
+// What a parameter is, for the exporters: a colour (a reflectance or a ratio of reflectances, to which the gamut
+// policy applies and which colour-managed consumers tag), an optical index (n, k: never changed), or a shape
+// parameter of the curve (an amplitude or exponent: never changed). Every parameter must state one.
+enum class ParameterKind { unstated, colour, index, shape };
+
 struct Parameter {
     std::string_view name;     // as in exports and JSON ("F0", "tint", "n", "k", "a", "alpha", "r", "g")
     double lower = 0.0;        // fit bounds: wide enough to keep out-of-gamut values (F0 > 1)
     double upper = 0.0;
     std::string_view meaning;  // one line for docs and export headers
+    ParameterKind kind = ParameterKind::unstated;
 };
+
+// How a model is written as MaterialX 1.39 (a trait of the model, checked at compile time in registry.hpp):
+//   generalized_schlick: the model is an F82-tint curve (it has to_f82_tint), generalized_schlick_bsdf;
+//   conductor_bsdf:      parameters n, k → conductor_bsdf ior, extinction;
+//   artistic_ior:        parameters r, g → artistic_ior (reflectivity, edge_color) feeding conductor_bsdf;
+//   stand_in:            MaterialX cannot express the model: its closest expressible fit (f82-tint) is written,
+//                        with the reason the model states (kMaterialxStandIn) and both errors in the header.
+enum class MaterialxForm { generalized_schlick, conductor_bsdf, artistic_ior, stand_in };
 
 // One channel's parameter values, in the order of Model::parameters().
 using ChannelParameters = std::vector<double>;
-// Values for R, G, B.
-using RgbParameters = std::array<ChannelParameters, 3>;
+
+// The parameters of a model for R, G and B: by channel (what a model evaluates) or by parameter (an RGB colour per
+// parameter, what exports write), without transposing by hand.
+class ModelParameters {
+public:
+    ModelParameters() = default;
+    ModelParameters(ChannelParameters red, ChannelParameters green, ChannelParameters blue)
+        : channels_{std::move(red), std::move(green), std::move(blue)} {}
+
+    // Channel c (0 red, 1 green, 2 blue); throws std::out_of_range otherwise.
+    const ChannelParameters& operator[](int c) const { return channels_.at(static_cast<std::size_t>(c)); }
+    ChannelParameters& operator[](int c) { return channels_.at(static_cast<std::size_t>(c)); }
+    // Parameter i of every channel as a colour; throws std::out_of_range for an index a channel does not have.
+    RGB parameter(std::size_t i) const { return {channels_[0].at(i), channels_[1].at(i), channels_[2].at(i)}; }
+    void set_parameter(std::size_t i, const RGB& value) {
+        for (int c = 0; c < 3; ++c) (*this)[c].at(i) = value[c];
+    }
+    // Parameters per channel (that of red; all channels of a model have the same count).
+    std::size_t size() const { return channels_[0].size(); }
+    bool operator==(const ModelParameters&) const = default;
+
+private:
+    std::array<ChannelParameters, 3> channels_;
+};
+using RgbParameters = ModelParameters;  // the former name, kept for glpreview until it moves to ModelParameters
 
 // What closed forms are computed from.
 struct ClosedFormInput {
@@ -45,7 +85,7 @@ struct ClosedForm {
     std::array<ClosedFormChannel, 3> channel;
 
     bool defined() const;
-    RgbParameters params() const;        // requires defined()
+    ModelParameters params() const;      // requires defined()
     std::string undefined_reason() const;  // "red: ...; blue: ..." (empty when defined)
 };
 
@@ -88,7 +128,7 @@ public:
 
     virtual double evaluate(std::span<const double> params, double mu) const = 0;
     virtual float evaluate(std::span<const float> params, float mu) const = 0;
-    RGB evaluate(const RgbParameters& params, double mu) const;
+    RGB evaluate(const ModelParameters& params, double mu) const;
 
     // Every closed form of the model (defined or not), in a fixed order.
     virtual std::vector<ClosedForm> closed_forms(const ClosedFormInput& input) const = 0;
@@ -106,9 +146,17 @@ public:
     std::string glsl_source() const;
     // Shader source files of this model in dependency order ("schlick", "f82_tint").
     virtual std::span<const std::string_view> glsl_files() const = 0;
+
+    // Export traits. The same curve as F82-tint parameters (F0, tint) where the model is an F82-tint curve
+    // (Schlick is tint 1), else empty: what MaterialX's generalized_schlick_bsdf and OpenPBR's metal evaluate.
+    virtual std::optional<ChannelParameters> f82_tint_of(std::span<const double> params) const = 0;
+    virtual bool is_f82_tint_curve() const = 0;
+    virtual MaterialxForm materialx_form() const = 0;
+    // Why MaterialX cannot express the model (materialx_form() == stand_in), else empty.
+    virtual std::string_view materialx_stand_in_reason() const = 0;
 };
 
-// All models in a fixed order: schlick, lazanyi, lazanyi-comp, f82-tint, conductor-rgb, gulbrandsen.
+// All models, in the order of the registry (libfit/models/registry.hpp).
 std::span<const Model* const> all_models();
 // Throws UsageError listing the known ids.
 const Model& find_model(std::string_view id);

@@ -15,11 +15,12 @@ struct ConductorRgb {
     static constexpr std::string_view kId = "conductor-rgb";
     static constexpr std::string_view kTitle = "exact conductor Fresnel with RGB n, k";
     static constexpr std::array<Parameter, 2> kParameters{{
-        {"n", 1e-3, 100.0, "refractive index"},
-        {"k", 0.0, 1e4, "extinction coefficient"},
+        {"n", 1e-3, 100.0, "refractive index", ParameterKind::index},
+        {"k", 0.0, 1e4, "extinction coefficient", ParameterKind::index},
     }};
     static constexpr std::string_view kGlslFunction = "metalfit_conductor_rgb";
     static constexpr std::array<std::string_view, 1> kGlslFiles{"conductor_rgb"};
+    static constexpr MaterialxForm kMaterialx = MaterialxForm::conductor_bsdf;
 
     template <class T>
     static T evaluate(const T* p, const T& mu) {

@@ -15,11 +15,13 @@ struct F82Tint {
     static constexpr std::string_view kId = "f82-tint";
     static constexpr std::string_view kTitle = "F82-tint (Hoffman 2019; OpenPBR specular_color)";
     static constexpr std::array<Parameter, 2> kParameters{{
-        {"F0", -1.0, 2.0, "reflectance at normal incidence (OpenPBR base_color)"},
-        {"tint", -1.0, 4.0, "F(1/7) / Schlick(F0, 1/7) (OpenPBR specular_color, MaterialX color82)"},
+        {"F0", -1.0, 2.0, "reflectance at normal incidence (OpenPBR base_color)", ParameterKind::colour},
+        {"tint", -1.0, 4.0, "F(1/7) / Schlick(F0, 1/7) (OpenPBR specular_color, MaterialX color82)", ParameterKind::colour},
     }};
     static constexpr std::string_view kGlslFunction = "metalfit_f82_tint";
     static constexpr std::array<std::string_view, 2> kGlslFiles{"schlick", "f82_tint"};
+    static constexpr MaterialxForm kMaterialx = MaterialxForm::generalized_schlick;
+    static std::array<double, 2> to_f82_tint(const double* p) { return {p[0], p[1]}; }
 
     template <class T>
     static T evaluate(const T* p, const T& mu) {

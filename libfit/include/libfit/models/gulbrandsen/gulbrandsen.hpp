@@ -16,11 +16,12 @@ struct Gulbrandsen {
     static constexpr std::string_view kId = "gulbrandsen";
     static constexpr std::string_view kTitle = "Gulbrandsen (2014) reflectivity + edge tint";
     static constexpr std::array<Parameter, 2> kParameters{{
-        {"r", 0.0, 0.99999, "reflectivity (F0)"},
-        {"g", 0.0, 1.0, "edge tint"},
+        {"r", 0.0, 0.99999, "reflectivity (F0)", ParameterKind::colour},
+        {"g", 0.0, 1.0, "edge tint", ParameterKind::colour},
     }};
     static constexpr std::string_view kGlslFunction = "metalfit_gulbrandsen";
     static constexpr std::array<std::string_view, 2> kGlslFiles{"conductor_rgb", "gulbrandsen"};
+    static constexpr MaterialxForm kMaterialx = MaterialxForm::artistic_ior;
 
     // n = g n_min + (1 − g) n_max with n_min = (1 − r)/(1 + r), n_max = (1 + √r)/(1 − √r).
     template <class T>

@@ -16,11 +16,17 @@ struct Lazanyi {
     static constexpr std::string_view kId = "lazanyi";
     static constexpr std::string_view kTitle = "Lazányi's rescaled Schlick (thesis eq. 3.2)";
     static constexpr std::array<Parameter, 2> kParameters{{
-        {"n", 1e-3, 100.0, "refractive index"},
-        {"k", 0.0, 1e4, "extinction coefficient"},
+        {"n", 1e-3, 100.0, "refractive index", ParameterKind::index},
+        {"k", 0.0, 1e4, "extinction coefficient", ParameterKind::index},
     }};
     static constexpr std::string_view kGlslFunction = "metalfit_lazanyi";
     static constexpr std::array<std::string_view, 1> kGlslFiles{"lazanyi"};
+    static constexpr MaterialxForm kMaterialx = MaterialxForm::generalized_schlick;
+    // F* is Schlick with F0 = F0(n, k): F82-tint with that F0 and tint 1.
+    static std::array<double, 2> to_f82_tint(const double* p) {
+        const double n = p[0], k2 = p[1] * p[1];
+        return {((n - 1) * (n - 1) + k2) / ((n + 1) * (n + 1) + k2), 1.0};
+    }
 
     template <class T>
     static T evaluate(const T* p, const T& mu) {

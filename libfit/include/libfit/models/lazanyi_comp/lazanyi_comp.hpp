@@ -17,11 +17,13 @@ struct LazanyiComp {
     static constexpr std::array<Parameter, 4> kParameters{{
         Lazanyi::kParameters[0],
         Lazanyi::kParameters[1],
-        {"a", -20.0, 20.0, "compensation amplitude (minus the slope of the error at grazing)"},
-        {"alpha", 0.05, 64.0, "compensation exponent"},
+        {"a", -20.0, 20.0, "compensation amplitude (minus the slope of the error at grazing)", ParameterKind::shape},
+        {"alpha", 0.05, 64.0, "compensation exponent", ParameterKind::shape},
     }};
     static constexpr std::string_view kGlslFunction = "metalfit_lazanyi_comp";
     static constexpr std::array<std::string_view, 2> kGlslFiles{"lazanyi", "lazanyi_comp"};
+    static constexpr MaterialxForm kMaterialx = MaterialxForm::stand_in;
+    static constexpr std::string_view kMaterialxStandIn = "a BSDF's Fresnel cannot take mu (1 - mu)^alpha";
 
     template <class T>
     static T evaluate(const T* p, const T& mu) {

@@ -14,10 +14,13 @@ struct Schlick {
     static constexpr std::string_view kId = "schlick";
     static constexpr std::string_view kTitle = "Schlick (1994)";
     static constexpr std::array<Parameter, 1> kParameters{{
-        {"F0", -1.0, 2.0, "reflectance at normal incidence (may exceed 1 out of gamut)"},
+        {"F0", -1.0, 2.0, "reflectance at normal incidence (may exceed 1 out of gamut)", ParameterKind::colour},
     }};
     static constexpr std::string_view kGlslFunction = "metalfit_schlick";
     static constexpr std::array<std::string_view, 1> kGlslFiles{"schlick"};
+    static constexpr MaterialxForm kMaterialx = MaterialxForm::generalized_schlick;
+    // Schlick is F82-tint with tint 1.
+    static std::array<double, 2> to_f82_tint(const double* p) { return {p[0], 1.0}; }
 
     template <class T>
     static T evaluate(const T* p, const T& mu) {

@@ -1,0 +1,147 @@
+// The model registry (libfit/models/registry.hpp): typed tests over every registered model, derived from the one
+// list, and the compile-time trait checks that make a model without an exporter's trait fail to build.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "libfit/models/registry.hpp"
+
+namespace metalfit {
+namespace {
+
+template <class List>
+struct GtestTypes;
+template <class... M>
+struct GtestTypes<ModelList<M...>> {
+    using type = ::testing::Types<M...>;
+};
+
+template <class M>
+class EveryModel : public ::testing::Test {};
+TYPED_TEST_SUITE(EveryModel, GtestTypes<Registry>::type);
+
+// Parameter sets inside the bounds of M: its neutral starts and points at a quarter and three quarters of each
+// parameter's range (clamped to a finite, moderate span so that n, k up to 1e4 stay meaningful).
+template <class M>
+std::vector<ChannelParameters> sample_parameters() {
+    std::vector<ChannelParameters> sets = M::neutral_starts();
+    for (double t : {0.25, 0.75}) {
+        ChannelParameters p;
+        for (const Parameter& q : M::kParameters) {
+            const double upper = std::min(q.upper, q.lower + 10.0);
+            p.push_back(q.lower + t * (upper - q.lower));
+        }
+        sets.push_back(p);
+    }
+    return sets;
+}
+
+TYPED_TEST(EveryModel, TheRuntimeModelIsTheStruct) {
+    using M = TypeParam;
+    const Model& model = model_of<M>();
+    EXPECT_EQ(model.id(), M::kId);
+    EXPECT_EQ(model.title(), M::kTitle);
+    ASSERT_EQ(model.parameters().size(), M::kParameters.size());
+    EXPECT_EQ(model.materialx_form(), M::kMaterialx);
+    EXPECT_EQ(model.is_f82_tint_curve(), F82TintCurve<M>);
+    for (const ChannelParameters& p : sample_parameters<M>())
+        for (double mu : {0.0, 0.1, 0.5, 0.9, 1.0}) EXPECT_EQ(model.evaluate(std::span<const double>(p), mu), M::evaluate(p.data(), mu)) << mu;
+    // Its GLSL defines the function the model names.
+    EXPECT_NE(model.glsl_source().find("vec3 " + std::string(M::kGlslFunction) + "("), std::string::npos);
+}
+
+TYPED_TEST(EveryModel, AppearsOnceInTheRuntimeList) {
+    int found = 0;
+    for (const Model* m : all_models()) found += m->id() == TypeParam::kId;
+    EXPECT_EQ(found, 1);
+    EXPECT_EQ(all_models().size(), Registry::size);
+}
+
+TYPED_TEST(EveryModel, F82TintMappingIsTheSameCurve) {
+    using M = TypeParam;
+    const Model& model = model_of<M>();
+    for (const ChannelParameters& p : sample_parameters<M>()) {
+        const std::optional<ChannelParameters> f82 = model.f82_tint_of(p);
+        if constexpr (!F82TintCurve<M>) {
+            EXPECT_FALSE(f82.has_value());
+        } else {
+            ASSERT_TRUE(f82.has_value());
+            ASSERT_EQ(f82->size(), 2u);
+            // Evaluated by the F82-tint model, the mapped parameters give the model's own curve.
+            for (int i = 0; i <= 64; ++i) {
+                const double mu = i / 64.0;
+                EXPECT_NEAR(models::F82Tint::evaluate(f82->data(), mu), M::evaluate(p.data(), mu), 1e-12) << "mu=" << mu;
+            }
+        }
+    }
+}
+
+TYPED_TEST(EveryModel, StandInReasonIsGivenExactlyWhenMaterialxCannotExpressTheModel) {
+    const Model& model = model_of<TypeParam>();
+    EXPECT_EQ(model.materialx_form() == MaterialxForm::stand_in, !model.materialx_stand_in_reason().empty());
+}
+
+TEST(ModelRegistry, TheStandInModelCanBeWrittenNatively) {
+    // What the exporters write in place of a model MaterialX or OpenPBR cannot express must itself be expressible.
+    EXPECT_EQ(StandInModel::kMaterialx, MaterialxForm::generalized_schlick);
+    EXPECT_TRUE(F82TintCurve<StandInModel>);
+}
+
+// A model defined only here, as a new family would be: Schlick with a free exponent, F0 + (1 − F0)(1 − μ)^p. It
+// is complete (it passes every trait check) and would be registered with one line in Registry.
+struct FreeExponentSchlick {
+    static constexpr std::string_view kId = "schlick-p";
+    static constexpr std::string_view kTitle = "Schlick with a free exponent (test model)";
+    static constexpr std::array<Parameter, 2> kParameters{{
+        {"F0", -1.0, 2.0, "reflectance at normal incidence", ParameterKind::colour},
+        {"p", 1.0, 10.0, "exponent", ParameterKind::shape},
+    }};
+    static constexpr std::string_view kGlslFunction = "metalfit_schlick_p";
+    static constexpr std::array<std::string_view, 1> kGlslFiles{"schlick_p"};
+    static constexpr MaterialxForm kMaterialx = MaterialxForm::stand_in;
+    static constexpr std::string_view kMaterialxStandIn = "generalized_schlick_bsdf's exponent is a scalar, p is per channel";
+    template <class T>
+    static T evaluate(const T* p, const T& mu) {
+        using std::pow;
+        return p[0] + (T(1) - p[0]) * pow(T(1) - mu, p[1]);
+    }
+    static std::vector<ClosedForm> closed_forms(const ClosedFormInput&) { return {}; }
+    static std::vector<ChannelParameters> neutral_starts() { return {{0.5, 5.0}}; }
+};
+static_assert(ModelDefinition<FreeExponentSchlick>);
+static_assert(check_model_traits<FreeExponentSchlick>());
+static_assert(check_registry(ModelList<models::Schlick, FreeExponentSchlick>{}));
+
+// Without its MaterialX form a model is not a ModelDefinition: check_model_traits<> (and so the registry) rejects it
+// at compile time.
+struct WithoutMaterialxForm {
+    static constexpr std::string_view kId = "x";
+    static constexpr std::string_view kTitle = "x";
+    static constexpr std::array<Parameter, 1> kParameters{{{"F0", 0.0, 1.0, "F0", ParameterKind::colour}}};
+    static constexpr std::string_view kGlslFunction = "metalfit_x";
+    static constexpr std::array<std::string_view, 1> kGlslFiles{"x"};
+    template <class T>
+    static T evaluate(const T* p, const T&) { return p[0]; }
+    static std::vector<ClosedForm> closed_forms(const ClosedFormInput&) { return {}; }
+    static std::vector<ChannelParameters> neutral_starts() { return {{0.5}}; }
+};
+static_assert(!ModelDefinition<WithoutMaterialxForm>);
+// A model written as generalized_schlick_bsdf must map to F82-tint.
+struct ClaimsGeneralizedSchlick : WithoutMaterialxForm {
+    static constexpr MaterialxForm kMaterialx = MaterialxForm::generalized_schlick;
+};
+static_assert(ModelDefinition<ClaimsGeneralizedSchlick> && !F82TintCurve<ClaimsGeneralizedSchlick>);
+
+TEST(ModelRegistry, TheTestModelEvaluatesItsOwnCurve) {
+    // The test model above is a model, not only a type that compiles: F(0) = 1, F(1) = F0, p = 5 is Schlick.
+    const double p[2] = {0.3, 5.0};
+    EXPECT_DOUBLE_EQ(FreeExponentSchlick::evaluate(p, 0.0), 1.0);
+    EXPECT_DOUBLE_EQ(FreeExponentSchlick::evaluate(p, 1.0), 0.3);
+    for (double mu : {0.1, 0.4, 0.8}) EXPECT_NEAR(FreeExponentSchlick::evaluate(p, mu), models::Schlick::evaluate(p, mu), 1e-15);
+}
+
+}  // namespace
+}  // namespace metalfit
