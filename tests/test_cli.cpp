@@ -259,7 +259,7 @@ TEST_F(Cli, FitOfAMaterialThatReflectsNothingNeedsTheAbsoluteMetric) {
     const std::string vacuum = kFixtures + "/fit-vacuum.csv";
     const Result rel = run("fit '" + vacuum + "' --model schlick");
     EXPECT_EQ(rel.exit_code, 3);
-    expect_one_line_error(rel, "--metric abs");
+    expect_one_line_error(rel, "abs error metric");
     EXPECT_NE(rel.err.find("fit-vacuum.csv"), std::string::npos);
 
     const Result abs = run("fit '" + vacuum + "' --model schlick,conductor-rgb --metric abs --json");

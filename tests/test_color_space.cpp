@@ -130,6 +130,7 @@ TEST(ColorSpace, EnvironmentVariableWinsOverCommandLineOverDefault) {
     EXPECT_EQ(choose_ocio_config(std::nullopt, "/data").path, std::filesystem::path("/data/ocio/config.ocio"));
     EXPECT_EQ(choose_ocio_config(std::nullopt, "/data").origin, "metalfit default");
     EXPECT_EQ(choose_ocio_config(std::filesystem::path("/cli.ocio"), "/data").path, "/cli.ocio");
+    EXPECT_EQ(choose_ocio_config(std::filesystem::path("/cli.ocio"), "/data", "--ocio-config").origin, "--ocio-config");
     ::setenv("OCIO", "/env.ocio", 1);
     EXPECT_EQ(choose_ocio_config(std::filesystem::path("/cli.ocio"), "/data").path, "/env.ocio");
     EXPECT_EQ(choose_ocio_config(std::nullopt, "/data").origin, "$OCIO");

@@ -645,7 +645,7 @@ TEST(FitHardCases, NoInterfaceNeedsTheAbsoluteMetric) {
     } catch (const InputError& e) {
         const std::string what = e.what();
         EXPECT_TRUE(StartsWith(what, file.string()));
-        EXPECT_TRUE(Contains(what, "--metric abs"));
+        EXPECT_TRUE(Contains(what, "abs error metric"));
         EXPECT_EQ(what.find('\n'), std::string::npos) << "one line";
     }
     const MaterialFit abs = fit_material(vacuum, env().colorimetry, env().converter, request(ErrorMetric::abs));

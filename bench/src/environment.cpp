@@ -9,7 +9,7 @@ namespace metalfit::bench {
 Environment Environment::load(const std::filesystem::path& data_dir,
                               const std::optional<std::filesystem::path>& ocio_config) {
     Catalog catalog = Catalog::load(data_dir);
-    OcioConfigChoice config = choose_ocio_config(ocio_config, data_dir);
+    OcioConfigChoice config = choose_ocio_config(ocio_config, data_dir, "--ocio-config");
     Colorimetry colorimetry = Colorimetry::load(data_dir, Observer::cie1931_2deg, Illuminant::D65);
     ColorSpaceConverter converter = ColorSpaceConverter::create(config);
     return {std::move(catalog), std::move(config), std::move(colorimetry), std::move(converter), SpectralOptions{},

@@ -5,7 +5,7 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
-#include "fit_parallel.hpp"
+#include "progress.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/export/export.hpp"
@@ -38,7 +38,9 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     const ErrorSettings error{};  // the defaults of `metalfit fit`: rel metric, uniform weight, 128 nodes
     const MaterialFitRequest fit_request{setup.spectral, error, models_to_fit(request)};
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    const std::vector<MaterialFit> fits = fit_in_parallel(loaders, setup, fit_request, jobs);
+    TerminalProgress progress;
+    const std::vector<MaterialFit> fits =
+        fit_materials(loaders, {setup.config, setup.colorimetry, setup.converter}, fit_request, jobs, progress.callback());
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
     const FitRecordContext context{setup.config, setup.converter.space(), setup.colorimetry.observer(),

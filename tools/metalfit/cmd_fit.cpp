@@ -14,7 +14,7 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
-#include "fit_parallel.hpp"
+#include "progress.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/fit/fit.hpp"
@@ -126,7 +126,9 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
     const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models)};
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<MaterialFit> fits = fit_in_parallel(loaders, setup, request, jobs);
+    TerminalProgress progress;
+    const std::vector<MaterialFit> fits =
+        fit_materials(loaders, {setup.config, setup.colorimetry, setup.converter}, request, jobs, progress.callback());
     if (o.timings) print_timings(fits, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), jobs);
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);

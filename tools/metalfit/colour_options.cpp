@@ -11,7 +11,7 @@ void add_colour_options(CLI::App& app, ColourOptions& o) {
 }
 
 ColourSetup resolve_colour_options(const ColourOptions& o, const GlobalOptions& global) {
-    auto config = choose_ocio_config(global.ocio_config, global.data_dir);
+    auto config = choose_ocio_config(global.ocio_config, global.data_dir, "--ocio-config");
     if (global.ocio_config && config.origin == "$OCIO")
         warn("--ocio-config is ignored because $OCIO is set (" + config.path.string() + ")");
     const SpectralOptions spectral{o.interpolation == "pchip" ? Interpolation::pchip : Interpolation::linear,

@@ -23,10 +23,10 @@ std::string describe(const OcioConfigChoice& c) { return "OCIO config " + c.path
 
 }  // namespace
 
-OcioConfigChoice choose_ocio_config(const std::optional<std::filesystem::path>& command_line,
-                                    const std::filesystem::path& data_dir) {
+OcioConfigChoice choose_ocio_config(const std::optional<std::filesystem::path>& explicit_config,
+                                    const std::filesystem::path& data_dir, const std::string& explicit_origin) {
     if (const char* env = std::getenv("OCIO"); env != nullptr && *env != '\0') return {env, "$OCIO"};
-    if (command_line) return {*command_line, "--ocio-config"};
+    if (explicit_config) return {*explicit_config, explicit_origin};
     return {data_dir / "ocio" / "config.ocio", "metalfit default"};
 }
 
@@ -52,7 +52,7 @@ ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, 
     const auto target_space = target.empty() && !config->hasRole(kSceneLinearRole) ? nullptr : config->getColorSpace(wanted.c_str());
     if (!target_space) {
         if (target.empty())
-            throw ColorConfigError(describe(choice) + " has no role '" + kSceneLinearRole + "' (give --space)");
+            throw ColorConfigError(describe(choice) + " has no role '" + kSceneLinearRole + "' (name the target colour space)");
         throw ColorConfigError(describe(choice) + " has no colour space or role '" + wanted + "'");
     }
     try {

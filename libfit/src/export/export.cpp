@@ -132,7 +132,7 @@ WrittenParameters written_parameters(const ModelResult& result, const SampledRef
             for (const ClosedFormResult& form : result.closed_forms)
                 reasons += (reasons.empty() ? "" : "; ") + form.id + ": " + form.undefined;
             throw UsageError(material_id + ": " + std::string(model.id()) + ": no closed form is defined (" + reasons +
-                             "); use --params fit");
+                             "); export the fitted parameters instead");
         }
         const ClosedFormResult& best = result.closed_forms[*result.best_closed];
         w.origin = "closed " + best.id;

@@ -116,7 +116,7 @@ MaterialFit fit_material(const Material& material, const Colorimetry& colorimetr
     if (request.error.metric == ErrorMetric::rel && reference.rel_undefined())
         throw InputError(InputLocation(material.provenance.file),
                          "relative error undefined for " + material.id + ": " + *reference.rel_undefined() +
-                             " (use --metric abs)");
+                             " (use the abs error metric)");
     MaterialFit result{material, curve.raw_white(), curve(1.0), {}, {}, shared_reference};
     const ClosedFormInput input = closed_form_input(curve, material, request.spectral);
     for (const Model* model : request.models) result.models.push_back(fit_model(*model, reference, input, &timings));

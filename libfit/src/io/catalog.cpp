@@ -56,7 +56,7 @@ const CatalogSource& CatalogEntry::find_source(std::string_view source) const {
 Catalog Catalog::load(const std::filesystem::path& data_dir) {
     const auto file = data_dir / "catalog.json";
     std::ifstream in(file);
-    if (!in) throw InputError({file}, "cannot open the catalog (set $METALFIT_DATA or --data-dir to the data folder)");
+    if (!in) throw InputError({file}, "cannot open the catalog (set $METALFIT_DATA to the data folder)");
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(in);
@@ -124,7 +124,7 @@ Material load_material(const Catalog& catalog, std::string_view material_or_path
         return m;
     }
     if (looks_like_path(material_or_path)) {
-        if (!source.empty()) throw UsageError("--source applies to catalog materials, not to a file");
+        if (!source.empty()) throw UsageError("an alternate source applies to catalog materials, not to a file");
         return load_nk_file(std::filesystem::path(material_or_path));
     }
     throw UsageError("unknown material '" + std::string(material_or_path) + "' (see `metalfit list`, or give a .yml/.csv path)");

@@ -27,7 +27,7 @@ AngularWeight parse_angular_weight(const std::string& text) {
 SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSettings& settings)
     : converter_(curve.converter()), raw_white_(curve.raw_white()), settings_(settings) {
     if (settings.nodes < 2 || settings.nodes > 4096)
-        throw UsageError("--nodes must be in [2, 4096], got " + std::to_string(settings.nodes));
+        throw UsageError("the number of quadrature nodes must be in [2, 4096], got " + std::to_string(settings.nodes));
     white_ = converter_.to_xyz(raw_white_);
     const auto sample = [&](double mu, double weight, double albedo_weight) {
         const RGB value = curve(mu);

@@ -1,16 +1,13 @@
-#include "fit_parallel.hpp"
-
-#include <unistd.h>
+#include "libfit/fit/fit_batch.hpp"
 
 #include <algorithm>
 #include <atomic>
-#include <cstdio>
 #include <exception>
 #include <mutex>
 #include <optional>
 #include <thread>
 
-namespace metalfit::cli {
+namespace metalfit {
 
 std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, bool all, const std::string& material,
                                                         const std::string& source) {
@@ -25,41 +22,38 @@ std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, 
     return loaders;
 }
 
-std::vector<MaterialFit> fit_in_parallel(const std::vector<std::function<Material()>>& loaders, const ColourSetup& setup,
-                                         const MaterialFitRequest& request, int jobs) {
+std::vector<MaterialFit> fit_materials(const std::vector<std::function<Material()>>& loaders, const BatchColour& colour,
+                                       const MaterialFitRequest& request, int jobs, const BatchProgress& progress) {
     const std::size_t count = loaders.size();
     std::vector<std::optional<MaterialFit>> results(count);
     std::vector<std::exception_ptr> errors(count);
     std::atomic<std::size_t> next{0}, done{0};
     std::mutex progress_mutex;
-    const bool progress = count > 1 && isatty(STDERR_FILENO);
     const auto worker = [&](const ColorSpaceConverter& converter) {
         for (std::size_t i = next++; i < count; i = next++) {
             try {
                 const Material material = loaders[i]();
-                results[i] = fit_material(material, setup.colorimetry, converter, request);
+                results[i] = fit_material(material, colour.colorimetry, converter, request);
             } catch (...) {
                 errors[i] = std::current_exception();
             }
             const std::size_t finished = ++done;
             if (progress) {
                 std::lock_guard lock(progress_mutex);
-                std::fprintf(stderr, "\rmetalfit fit: %zu/%zu materials", finished, count);
-                std::fflush(stderr);
+                progress(finished, count);
             }
         }
     };
     const int threads = std::max(1, std::min<int>(jobs, static_cast<int>(count)));
-    // One OCIO processor per thread: the calling thread uses setup's; the others' are made here, before any thread
+    // One OCIO processor per thread: the calling thread uses the caller's; the others' are made here, before any thread
     // starts, so that a failure is an ordinary error and not an exception inside a thread.
     std::vector<ColorSpaceConverter> converters;
-    for (int t = 1; t < threads; ++t) converters.push_back(ColorSpaceConverter::create(setup.config, setup.converter.space()));
+    for (int t = 1; t < threads; ++t) converters.push_back(ColorSpaceConverter::create(colour.config, colour.converter.space()));
     {
         std::vector<std::jthread> pool;
         for (const ColorSpaceConverter& converter : converters) pool.emplace_back(worker, std::cref(converter));
-        worker(setup.converter);
+        worker(colour.converter);
     }
-    if (progress) std::fprintf(stderr, "\r%*s\r", 40, "");
     std::vector<MaterialFit> fits;
     for (std::size_t i = 0; i < count; ++i) {
         if (errors[i]) std::rethrow_exception(errors[i]);
@@ -68,4 +62,4 @@ std::vector<MaterialFit> fit_in_parallel(const std::vector<std::function<Materia
     return fits;
 }
 
-}  // namespace metalfit::cli
+}  // namespace metalfit

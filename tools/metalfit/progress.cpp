@@ -1,0 +1,25 @@
+#include "progress.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace metalfit::cli {
+
+TerminalProgress::TerminalProgress() : terminal_(isatty(STDERR_FILENO) != 0) {}
+
+TerminalProgress::~TerminalProgress() {
+    if (shown_) std::fprintf(stderr, "\r%*s\r", 40, "");
+}
+
+BatchProgress TerminalProgress::callback() {
+    if (!terminal_) return {};
+    return [this](std::size_t finished, std::size_t total) {
+        if (total < 2) return;
+        shown_ = true;
+        std::fprintf(stderr, "\rmetalfit fit: %zu/%zu materials", finished, total);
+        std::fflush(stderr);
+    };
+}
+
+}  // namespace metalfit::cli
