@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "glpreview/gl.hpp"
-#include "glpreview/gl_context.hpp"
+#include "glpreview/gl/gl.hpp"
+#include "glpreview/gl/gl_context.hpp"
 #include "libfit/models/model.hpp"
 
 namespace {

@@ -8,14 +8,14 @@
 #include <regex>
 #include <sstream>
 
-#include "glpreview/gl_context.hpp"
-#include "glpreview/gpu_bench.hpp"
-#include "glpreview/image_io.hpp"
-#include "glpreview/sphere_sheet.hpp"
+#include "glpreview/gl/gl_context.hpp"
+#include "glpreview/render/gpu_bench.hpp"
+#include "glpreview/io/image_io.hpp"
+#include "glpreview/render/sphere_sheet.hpp"
 #include "libfit/base/atomic_file.hpp"
-#include "glpreview/plan.hpp"
-#include "glpreview/preview.hpp"
-#include "glpreview/scene.hpp"
+#include "glpreview/render/plan.hpp"
+#include "glpreview/render/preview.hpp"
+#include "glpreview/scene/scene.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
 

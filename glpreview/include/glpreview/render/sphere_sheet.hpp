@@ -1,0 +1,28 @@
+// The sphere sheet of the main job: for each metal a row reference | best fitted model | |difference| × 10, each
+// cell the GPU render of one sphere in the same scene (a distance-impostor room by default).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "glpreview/gl/gl_context.hpp"
+#include "glpreview/render/image.hpp"
+#include "glpreview/render/preview.hpp"
+#include "glpreview/scene/scene.hpp"
+
+namespace metalfit::glpreview {
+
+inline constexpr double kSheetDifferenceScale = 10.0;
+
+struct SphereSheet {
+    Image image;                    // rows: metals; columns: reference, model, |difference| × 10
+    nlohmann::ordered_json record;  // per row: material, model, its worst-channel rel_rms, image RMSE
+};
+
+// `scene` must hold exactly one sphere (its position, reflection mode and iterations are used for every cell).
+SphereSheet render_sphere_sheet(const Scene& scene, const std::vector<std::string>& materials, const PreviewOptions& options,
+                                GlContext& context);
+
+}  // namespace metalfit::glpreview
