@@ -153,55 +153,31 @@ void check_gl(std::string_view what) {
     throw GlError(std::string(what) + ": GL error " + code);
 }
 
-GLuint link_program(const std::vector<ShaderStage>& stages, std::string_view name) {
-    const GLuint program = glCreateProgram();
-    std::vector<GLuint> shaders;
-    auto cleanup = [&] {
-        for (GLuint s : shaders) glDeleteShader(s);
-    };
+gl::Program link_program(const std::vector<ShaderStage>& stages, std::string_view name) {
+    gl::Program program = gl::create_program();
+    std::vector<gl::Shader> shaders;  // deleted (detached by the link) when they go out of scope
     for (const ShaderStage& stage : stages) {
-        const GLuint shader = glCreateShader(stage.type);
-        shaders.push_back(shader);
+        gl::Shader& shader = shaders.emplace_back(gl::create_shader(stage.type));
         const char* text = stage.source.c_str();
-        glShaderSource(shader, 1, &text, nullptr);
-        glCompileShader(shader);
+        glShaderSource(shader.id(), 1, &text, nullptr);
+        glCompileShader(shader.id());
         GLint ok = 0;
-        glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-        if (!ok) {
-            const std::string log = info_log(shader, glGetShaderiv, glGetShaderInfoLog);
-            cleanup();
-            glDeleteProgram(program);
-            throw GlError("shader '" + std::string(name) + "' (" + stage_name(stage.type) + ") does not compile: " + log);
-        }
-        glAttachShader(program, shader);
+        glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+        if (!ok)
+            throw GlError("shader '" + std::string(name) + "' (" + stage_name(stage.type) + ") does not compile: " +
+                          info_log(shader.id(), glGetShaderiv, glGetShaderInfoLog));
+        glAttachShader(program.id(), shader.id());
     }
-    glLinkProgram(program);
-    cleanup();
+    glLinkProgram(program.id());
     GLint ok = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        const std::string log = info_log(program, glGetProgramiv, glGetProgramInfoLog);
-        glDeleteProgram(program);
-        throw GlError("shader '" + std::string(name) + "' does not link: " + log);
-    }
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    if (!ok)
+        throw GlError("shader '" + std::string(name) + "' does not link: " + info_log(program.id(), glGetProgramiv, glGetProgramInfoLog));
     return program;
 }
 
-GLuint compile_compute_program(std::string_view source, std::string_view name) {
+gl::Program compile_compute_program(std::string_view source, std::string_view name) {
     return link_program({{GL_COMPUTE_SHADER, std::string(source)}}, name);
-}
-
-GlProgram& GlProgram::operator=(GlProgram&& o) noexcept {
-    if (this != &o) {
-        if (id_) glDeleteProgram(id_);
-        id_ = o.id_;
-        o.id_ = 0;
-    }
-    return *this;
-}
-
-GlProgram::~GlProgram() {
-    if (id_) glDeleteProgram(id_);
 }
 
 }  // namespace metalfit::glpreview

@@ -30,38 +30,37 @@ std::vector<double> interleaved_medians(const std::vector<Variant>& variants, in
 
 nlohmann::ordered_json bench_shaders(GlContext& context, bool quick) {
     const int size = 1024, rounds = quick ? 5 : 15;
-    GLuint framebuffer = 0, color = 0, vao = 0, lut = 0;
-    glCreateFramebuffers(1, &framebuffer);
-    glCreateTextures(GL_TEXTURE_2D, 1, &color);
-    glTextureStorage2D(color, 1, GL_RGBA16F, size, size);
-    glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, color, 0);
-    glCreateVertexArrays(1, &vao);
-    glCreateTextures(GL_TEXTURE_1D, 1, &lut);  // a 256-entry RGB curve, as the preview's reference spheres use
+    const gl::Framebuffer framebuffer = gl::create_framebuffer();
+    const gl::Texture color = gl::create_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(color.id(), 1, GL_RGBA16F, size, size);
+    glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
+    const gl::VertexArray vao = gl::create_vertex_array();
+    const gl::Texture lut = gl::create_texture(GL_TEXTURE_1D);  // a 256-entry RGB curve, as the preview's reference spheres use
     std::vector<float> texels;
     for (int i = 0; i < kReferenceLutSize; ++i) {
         const float mu = i / float(kReferenceLutSize - 1);
         texels.insert(texels.end(), {1 - 0.3f * mu, 1 - 0.5f * mu, 1 - 0.7f * mu});
     }
-    glTextureStorage1D(lut, 1, GL_RGB32F, kReferenceLutSize);
-    glTextureSubImage1D(lut, 0, 0, kReferenceLutSize, GL_RGB, GL_FLOAT, texels.data());
-    glTextureParameteri(lut, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(lut, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureStorage1D(lut.id(), 1, GL_RGB32F, kReferenceLutSize);
+    glTextureSubImage1D(lut.id(), 0, 0, kReferenceLutSize, GL_RGB, GL_FLOAT, texels.data());
+    glTextureParameteri(lut.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(lut.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
 
     struct Entry {
         std::string name;
-        GlProgram program;
+        gl::Program program;
     };
     std::vector<Entry> entries;
     auto add = [&](const std::string& name, const std::string& library, const std::string& call, const Model* model) {
         const std::string fragment = "#version 450 core\n#define EVALUATIONS " + std::to_string(kShaderBenchEvaluationsPerPixel) +
                                      "\n#define FRESNEL_CALL " + call + "\n" + library + std::string(shader_text("model_cost.frag"));
-        GlProgram program(link_program({fullscreen_vertex_stage(), {GL_FRAGMENT_SHADER, fragment}}, "model-cost " + name));
+        gl::Program program(link_program({fullscreen_vertex_stage(), {GL_FRAGMENT_SHADER, fragment}}, "model-cost " + name));
         if (model) {  // neutral parameter values, the same in R, G and B: the cost does not depend on them
             const ChannelParameters p = model->neutral_starts().front();
             set_model_parameters(program.id(), *model, {p, p, p});
         }
-        glProgramUniform2f(program.id(), program.uniform("u_viewport"), float(size), float(size));
-        glProgramUniform1i(program.id(), program.uniform("u_fresnel_lut"), 0);
+        glProgramUniform2f(program.id(), glGetUniformLocation(program.id(), "u_viewport"), float(size), float(size));
+        glProgramUniform1i(program.id(), glGetUniformLocation(program.id(), "u_fresnel_lut"), 0);
         entries.push_back({name, std::move(program)});
     };
     for (const Model* model : all_models()) add(std::string(model->id()), model->glsl_source(), model_call(*model), model);
@@ -70,10 +69,10 @@ nlohmann::ordered_json bench_shaders(GlContext& context, bool quick) {
     std::vector<std::function<void()>> variants;
     for (const Entry& e : entries)
         variants.push_back([&, id = e.program.id()] {
-            glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+            glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
             glViewport(0, 0, size, size);
-            glBindVertexArray(vao);
-            glBindTextureUnit(0, lut);
+            glBindVertexArray(vao.id());
+            glBindTextureUnit(0, lut.id());
             glUseProgram(id);
             glDrawArrays(GL_TRIANGLES, 0, 3);
         });
@@ -91,10 +90,6 @@ nlohmann::ordered_json bench_shaders(GlContext& context, bool quick) {
     for (std::size_t i = 0; i < entries.size(); ++i)
         j["models"].push_back({{"model", entries[i].name}, {"ms_per_frame", ms[i]}, {"ratio_to_conductor_rgb", ms[i] / exact}});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteTextures(1, &lut);
-    glDeleteTextures(1, &color);
-    glDeleteFramebuffers(1, &framebuffer);
-    glDeleteVertexArrays(1, &vao);
     return j;
 }
 

@@ -39,56 +39,42 @@ void set_model_parameters(GLuint program, const Model& model, const RgbParameter
 
 GpuRenderer::GpuRenderer(const Scene& scene, const Features& features, std::vector<const SphereFresnel*> fresnel,
                          const Image* equirect)
-    : scene_(scene), features_(features), fresnel_(std::move(fresnel)), equirect_(equirect) {
-    glCreateVertexArrays(1, &vao_);
+    : scene_(scene), features_(features), fresnel_(std::move(fresnel)), vao_(gl::create_vertex_array()) {
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    if (scene.environment.type == EnvironmentType::equirect) {
-        if (!equirect_) throw std::invalid_argument("GpuRenderer: the equirect image is missing");
-        glCreateTextures(GL_TEXTURE_2D, 1, &equirect_texture_);
-        glTextureStorage2D(equirect_texture_, 1, GL_RGB32F, equirect_->width, equirect_->height);
-        glTextureSubImage2D(equirect_texture_, 0, 0, 0, equirect_->width, equirect_->height, GL_RGB, GL_FLOAT,
-                            equirect_->rgb.data());
-        check_gl("uploading the equirect image");
+    if (equirect) {
+        own_equirect_.emplace(std::make_shared<const Image>(*equirect));
+        equirect_ = &*own_equirect_;
+        own_equirect_->id();
     }
     for (const SphereFresnel* f : fresnel_) upload_lut(f);
-    glCreateFramebuffers(1, &framebuffer_);
-    glCreateTextures(GL_TEXTURE_2D, 1, &color_);
-    glTextureStorage2D(color_, 1, GL_RGBA32F, scene.width, scene.height);
-    glCreateRenderbuffers(1, &depth_);
-    glNamedRenderbufferStorage(depth_, GL_DEPTH_COMPONENT32F, scene.width, scene.height);
-    glNamedFramebufferTexture(framebuffer_, GL_COLOR_ATTACHMENT0, color_, 0);
-    glNamedFramebufferRenderbuffer(framebuffer_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-    if (glCheckNamedFramebufferStatus(framebuffer_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    framebuffer_ = gl::create_framebuffer();
+    color_ = gl::create_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(color_.id(), 1, GL_RGBA32F, scene.width, scene.height);
+    depth_ = gl::create_renderbuffer();
+    glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT32F, scene.width, scene.height);
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
+    glNamedFramebufferRenderbuffer(framebuffer_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+    if (glCheckNamedFramebufferStatus(framebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw GlError("the beauty framebuffer (RGBA32F + depth) is incomplete");
     check_gl("creating the renderer's textures");
 }
 
 void GpuRenderer::upload_lut(const SphereFresnel* f) {
     if (f->model || luts_.count(f)) return;
-    GLuint lut = 0;
-    glCreateTextures(GL_TEXTURE_1D, 1, &lut);
+    gl::Texture lut = gl::create_texture(GL_TEXTURE_1D);
     std::vector<float> texels;
     for (const RGB& v : f->lut) texels.insert(texels.end(), {float(v.r), float(v.g), float(v.b)});
-    glTextureStorage1D(lut, 1, GL_RGB32F, static_cast<GLsizei>(f->lut.size()));
-    glTextureSubImage1D(lut, 0, 0, static_cast<GLsizei>(f->lut.size()), GL_RGB, GL_FLOAT, texels.data());
-    glTextureParameteri(lut, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(lut, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(lut, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    luts_[f] = lut;
+    glTextureStorage1D(lut.id(), 1, GL_RGB32F, static_cast<GLsizei>(f->lut.size()));
+    glTextureSubImage1D(lut.id(), 0, 0, static_cast<GLsizei>(f->lut.size()), GL_RGB, GL_FLOAT, texels.data());
+    glTextureParameteri(lut.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(lut.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(lut.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    luts_.emplace(f, std::move(lut));
 }
 
 void GpuRenderer::set_fresnel(std::size_t sphere, const SphereFresnel* fresnel) {
     fresnel_.at(sphere) = fresnel;
     upload_lut(fresnel);
-}
-
-GpuRenderer::~GpuRenderer() {
-    for (auto& [_, lut] : luts_) glDeleteTextures(1, &lut);
-    GLuint textures[] = {cube_, equirect_texture_, color_};
-    glDeleteTextures(3, textures);
-    glDeleteRenderbuffers(1, &depth_);
-    glDeleteFramebuffers(1, &framebuffer_);
-    glDeleteVertexArrays(1, &vao_);
 }
 
 GLuint GpuRenderer::program(const std::string& kind, const std::vector<std::string>& defines, const std::string& fresnel_call) {
@@ -112,10 +98,10 @@ GLuint GpuRenderer::program(const std::string& kind, const std::vector<std::stri
         if (kind == "sphere") body += std::string(shader_text("camera.glsl")) + std::string(shader_text("sphere.frag"));
         else body += shader_text("probe.comp");
     }
-    GLuint id = 0;
-    if (kind == "probe") id = compile_compute_program(header + body, key);
-    else id = link_program({fullscreen_vertex_stage(), {GL_FRAGMENT_SHADER, header + body}}, key);
-    programs_.emplace(key, GlProgram(id));
+    gl::Program linked = kind == "probe" ? compile_compute_program(header + body, key)
+                                         : link_program({fullscreen_vertex_stage(), {GL_FRAGMENT_SHADER, header + body}}, key);
+    const GLuint id = linked.id();
+    programs_.emplace(key, std::move(linked));
     // What does not change while the renderer lives is set once here (uniforms a shader lacks are ignored).
     set_environment_uniforms(id);
     set_camera_uniforms(id);
@@ -185,45 +171,49 @@ void GpuRenderer::set_camera_uniforms(GLuint p) const {
     glProgramUniform2f(p, glGetUniformLocation(p, "u_viewport"), float(scene_.width), float(scene_.height));
 }
 
+EnvironmentCube::Descriptor GpuRenderer::cube_descriptor() const {
+    return {scene_.environment.cube_size, features_.distance_channel};
+}
+
 void GpuRenderer::capture_environment() {
     if (!features_.environment_capture) return;
-    const int n = scene_.environment.cube_size;
-    if (!cube_) {
-        glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &cube_);
-        // Distances need float32 (half floats keep 11 bits); radiance alone is fine in half floats.
-        glTextureStorage2D(cube_, 1, features_.distance_channel ? GL_RGBA32F : GL_RGBA16F, n, n);
-        glTextureParameteri(cube_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTextureParameteri(cube_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    }
+    if (!own_cube_) own_cube_ = EnvironmentCube::create(cube_descriptor());
+    capture_environment(*own_cube_);
+}
+
+void GpuRenderer::capture_environment(const EnvironmentCube& cube) {
+    const int n = cube.size;
     const GLuint p = program("capture", {environment_define(scene_.environment.type)});
     set(p, "u_size", n);
-    GLuint fbo = 0;
-    glCreateFramebuffers(1, &fbo);
+    const gl::Framebuffer fbo = gl::create_framebuffer();
     glUseProgram(p);
-    glBindVertexArray(vao_);
+    glBindVertexArray(vao_.id());
     glDisable(GL_DEPTH_TEST);
     glViewport(0, 0, n, n);
     for (int face = 0; face < 6; ++face) {
-        glNamedFramebufferTextureLayer(fbo, GL_COLOR_ATTACHMENT0, cube_, 0, face);
-        if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, cube.texture.id(), 0, face);
+        if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             throw GlError("cube-map face " + std::to_string(face) + " cannot be rendered to");
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         set(p, "u_face", face);
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteFramebuffers(1, &fbo);
     check_gl("capturing the environment");
+    cube_ = &cube;
 }
 
 void GpuRenderer::draw_frame() {
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
     glViewport(0, 0, scene_.width, scene_.height);
-    glBindVertexArray(vao_);
+    glBindVertexArray(vao_.id());
     const float clear_depth = 1.0f;
-    glClearNamedFramebufferfv(framebuffer_, GL_DEPTH, 0, &clear_depth);
-    if (cube_) glBindTextureUnit(0, cube_);
-    if (equirect_texture_) glBindTextureUnit(1, equirect_texture_);
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &clear_depth);
+    if (cube_) glBindTextureUnit(0, cube_->texture.id());
+    if (scene_.environment.type == EnvironmentType::equirect) {
+        if (!equirect_) throw std::invalid_argument("GpuRenderer: the equirect image is missing");
+        glBindTextureUnit(1, equirect_->id());
+    }
 
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
@@ -242,7 +232,8 @@ void GpuRenderer::draw_frame() {
         if (fresnel.model) {
             set_model_parameters(p, *fresnel.model, fresnel.parameters);
         } else {
-            glBindTextureUnit(2, luts_.at(&fresnel));
+            upload_lut(&fresnel);
+            glBindTextureUnit(2, luts_.at(&fresnel).id());
         }
         glUseProgram(p);
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -253,7 +244,7 @@ void GpuRenderer::draw_frame() {
 Image GpuRenderer::render() {
     draw_frame();
     std::vector<float> rgba(static_cast<std::size_t>(scene_.width) * scene_.height * 4);
-    glGetTextureImage(color_, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
+    glGetTextureImage(color_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
     check_gl("rendering the beauty frame");
     Image image(scene_.width, scene_.height);
     for (int y = 0; y < scene_.height; ++y)
@@ -283,19 +274,18 @@ std::vector<ProbeResult> GpuRenderer::probe(const Sphere& settings, std::span<co
     set(p, "u_count", count);
     std::vector<float> input;
     for (const auto& [x, r] : rays) input.insert(input.end(), {float(x.x), float(x.y), float(x.z), 0.f, float(r.x), float(r.y), float(r.z), 0.f});
-    GLuint buffers[2];
-    glCreateBuffers(2, buffers);
+    const gl::Buffer input_buffer = gl::create_buffer(), output_buffer = gl::create_buffer();
+    const GLuint buffers[2] = {input_buffer.id(), output_buffer.id()};
     glNamedBufferStorage(buffers[0], static_cast<GLsizeiptr>(input.size() * sizeof(float)), input.data(), 0);
     glNamedBufferStorage(buffers[1], static_cast<GLsizeiptr>(input.size() * sizeof(float)), nullptr, GL_MAP_READ_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
-    glBindTextureUnit(0, cube_);
+    glBindTextureUnit(0, cube_->texture.id());
     glUseProgram(p);
     glDispatchCompute(static_cast<GLuint>((count + 63) / 64), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<float> output(input.size());
     glGetNamedBufferSubData(buffers[1], 0, static_cast<GLsizeiptr>(output.size() * sizeof(float)), output.data());
-    glDeleteBuffers(2, buffers);
     check_gl("probing reflection lookups");
     std::vector<ProbeResult> results;
     for (int i = 0; i < count; ++i) {
@@ -308,7 +298,7 @@ std::vector<ProbeResult> GpuRenderer::probe(const Sphere& settings, std::span<co
 std::vector<float> GpuRenderer::read_cube_face(int face) const {
     const int n = scene_.environment.cube_size;
     std::vector<float> texels(static_cast<std::size_t>(n) * n * 4);
-    glGetTextureSubImage(cube_, 0, 0, 0, face, n, n, 1, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)),
+    glGetTextureSubImage(cube_->texture.id(), 0, 0, 0, face, n, n, 1, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)),
                          texels.data());
     check_gl("reading a cube face");
     return texels;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "glpreview/gl/gl.hpp"
+#include "glpreview/gl/objects.hpp"
 
 namespace metalfit::glpreview {
 
@@ -47,22 +48,7 @@ struct ShaderStage {
     GLenum type;          // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER
     std::string source;   // complete source, #version line included
 };
-GLuint link_program(const std::vector<ShaderStage>& stages, std::string_view name);
-GLuint compile_compute_program(std::string_view source, std::string_view name);
-
-// Owning handles (delete on destruction) for the GL objects the renderer keeps.
-class GlProgram {
-public:
-    GlProgram() = default;
-    explicit GlProgram(GLuint id) : id_(id) {}
-    GlProgram(GlProgram&& o) noexcept : id_(o.id_) { o.id_ = 0; }
-    GlProgram& operator=(GlProgram&& o) noexcept;
-    ~GlProgram();
-    GLuint id() const { return id_; }
-    GLint uniform(const char* name) const { return glGetUniformLocation(id_, name); }
-
-private:
-    GLuint id_ = 0;
-};
+gl::Program link_program(const std::vector<ShaderStage>& stages, std::string_view name);
+gl::Program compile_compute_program(std::string_view source, std::string_view name);
 
 }  // namespace metalfit::glpreview

@@ -5,11 +5,14 @@
 
 #include <array>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "glpreview/gl/gl_context.hpp"
+#include "glpreview/gl/objects.hpp"
+#include "glpreview/render/gpu_resources.hpp"
 #include "glpreview/render/image.hpp"
 #include "glpreview/render/plan.hpp"
 #include "glpreview/scene/scene.hpp"
@@ -31,21 +34,26 @@ void set_model_parameters(GLuint program, const Model& model, const RgbParameter
 
 class GpuRenderer {
 public:
-    // fresnel[i] belongs to scene.spheres[i]; `equirect` is the loaded image for an equirect environment.
+    // fresnel[i] belongs to scene.spheres[i]; `equirect` is the loaded image for an equirect environment (or null,
+    // when the pass graph binds its texture with use_equirect()).
     // The scene's environment, camera and image size are read when the renderer is made and when a shader variant
     // is first compiled (their uniforms are set once then); the spheres are read at every frame, so they may move
     // or change their reflection settings and Fresnel kind between frames.
     GpuRenderer(const Scene& scene, const Features& features, std::vector<const SphereFresnel*> fresnel,
                 const Image* equirect);
-    ~GpuRenderer();
     GpuRenderer(const GpuRenderer&) = delete;
     GpuRenderer& operator=(const GpuRenderer&) = delete;
 
     // Replaces sphere i's Fresnel (the scene's sphere must name the same fresnel kind: "reference" or the model).
     void set_fresnel(std::size_t sphere, const SphereFresnel* fresnel);
 
-    // Ray-casts the environment into the cube map (once; spheres may move afterwards).
+    // Ray-casts the environment into `cube` (once; spheres may move afterwards) and reflects it from then on.
+    void capture_environment(const EnvironmentCube& cube);
+    // The same into a cube map of the renderer's own (tests, benchmarks without a graph).
     void capture_environment();
+    // Reflects an already captured cube / an equirect texture owned by the caller (the pass graph).
+    void use_environment(const EnvironmentCube& cube) { cube_ = &cube; }
+    void use_equirect(const EquirectTexture& texture) { equirect_ = &texture; }
     Image render();  // one beauty frame, read back
     // One beauty frame without read-back or glFinish (the caller brackets it; benchmarks).
     void draw_frame_for_timing() { draw_frame(); }
@@ -58,11 +66,13 @@ public:
     // A cube face as captured (rgba, rows as stored by GL: row 0 is t = −1).
     std::vector<float> read_cube_face(int face) const;
     int cube_size() const { return scene_.environment.cube_size; }
+    const EnvironmentCube* cube() const { return cube_; }
 
     // The shader variants compiled so far (a #define set each), for --explain and tests.
     std::vector<std::string> compiled_variants() const;
 
 private:
+    EnvironmentCube::Descriptor cube_descriptor() const;
     GLuint program(const std::string& kind, const std::vector<std::string>& defines, const std::string& fresnel_call = {});
     void set_environment_uniforms(GLuint program) const;
     void set_camera_uniforms(GLuint program) const;
@@ -72,12 +82,16 @@ private:
     const Scene& scene_;
     Features features_;
     std::vector<const SphereFresnel*> fresnel_;
-    const Image* equirect_;
-    std::map<std::string, GlProgram> programs_;
-    GLuint vao_ = 0;
-    GLuint cube_ = 0, equirect_texture_ = 0;
-    std::map<const SphereFresnel*, GLuint> luts_;
-    GLuint framebuffer_ = 0, color_ = 0, depth_ = 0;
+    std::map<std::string, gl::Program> programs_;  // shader variants, compiled on first use
+    gl::VertexArray vao_;
+    std::optional<EnvironmentCube> own_cube_;
+    std::optional<EquirectTexture> own_equirect_;
+    const EnvironmentCube* cube_ = nullptr;
+    const EquirectTexture* equirect_ = nullptr;
+    std::map<const SphereFresnel*, gl::Texture> luts_;  // reference LUTs, uploaded on first use
+    gl::Framebuffer framebuffer_;
+    gl::Texture color_;
+    gl::Renderbuffer depth_;
 };
 
 }  // namespace metalfit::glpreview
