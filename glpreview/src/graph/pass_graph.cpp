@@ -135,6 +135,7 @@ void PassGraph::execute() {
     std::vector<const Lifetime*> by_resource(resources_.size(), nullptr);
     for (std::size_t l = 0; l < lifetimes_.size(); ++l) by_resource[lifetime_of_[l]] = &lifetimes_[l];
     for (std::size_t i = 0; i < order_.size(); ++i) {
+        if (passes_[order_[i]].info.processor == Processor::gpu && open_gpu_) std::exchange(open_gpu_, nullptr)();
         for (std::size_t r = 0; r < resources_.size(); ++r)
             if (by_resource[r] && by_resource[r]->first == i && resources_[r].create) resources_[r].value = resources_[r].create();
         Resources resources(*this, order_[i]);

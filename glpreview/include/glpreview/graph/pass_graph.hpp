@@ -132,6 +132,9 @@ public:
     // A pass that is not even a candidate, and why (--explain).
     void skip(std::string name, std::string why) { skipped_.push_back({std::move(name), std::move(why)}); }
 
+    // Called once, before the first GPU pass runs and before its resources are created (opens the GL context).
+    void before_first_gpu_pass(std::function<void()> open) { open_gpu_ = std::move(open); }
+
     // Culls, orders, computes lifetimes. Throws GraphError. Call once, before execute().
     void compile();
     // Runs the kept passes in order.
@@ -179,6 +182,7 @@ private:
     std::vector<Lifetime> lifetimes_;
     std::vector<std::size_t> lifetime_of_;  // the resource of lifetimes_[i]
     bool compiled_flag_ = false;
+    std::function<void()> open_gpu_;
 };
 
 // ---- templates ----

@@ -1,4 +1,5 @@
-// Runs a scene's plan: only the passes build_plan kept, in order; writes the requested files into a folder.
+// Runs a scene's pass graph (render/preview_passes.hpp): only the passes the requested outputs need, in order; writes
+// the requested files into a folder.
 #pragma once
 
 #include <filesystem>
