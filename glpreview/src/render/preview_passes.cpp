@@ -122,6 +122,7 @@ std::filesystem::path PreviewRun::output_file(const std::string& name) {
         if (scene.outputs.png) display = DisplayTransform::create(ocio);
         output_dir_made = true;
     }
+    if (!display && std::filesystem::path(name).extension() == ".png") display = DisplayTransform::create(ocio);
     return output_dir / name;
 }
 
