@@ -13,17 +13,16 @@
 namespace metalfit::glpreview {
 namespace {
 
-// Runs `rounds` rounds; each round times one call of every variant in turn (between glFinish calls).
+// Runs `rounds` rounds; each round times one call of every variant in turn (between glFinish calls). Returns the
+// milliseconds of every round per variant: medians and ratios are libfit's (median, paired_ratio), as on the CPU.
 template <typename Variant>
-std::vector<double> interleaved_medians(const std::vector<Variant>& variants, int rounds) {
+std::vector<std::vector<double>> interleaved_rounds(const std::vector<Variant>& variants, int rounds) {
     std::vector<std::vector<double>> ms(variants.size());
     for (const auto& v : variants) v();  // warm-up: compile, first-use costs
     glFinish();
     for (int round = 0; round < rounds; ++round)
         for (std::size_t i = 0; i < variants.size(); ++i) ms[i].push_back(finished_ms(variants[i]));
-    std::vector<double> medians;
-    for (const auto& m : ms) medians.push_back(median(m));
-    return medians;
+    return ms;
 }
 
 }  // namespace
@@ -76,11 +75,11 @@ nlohmann::ordered_json bench_shaders(GlContext& context, bool quick) {
             glUseProgram(id);
             glDrawArrays(GL_TRIANGLES, 0, 3);
         });
-    const std::vector<double> ms = interleaved_medians(variants, rounds);
+    const std::vector<std::vector<double>> ms = interleaved_rounds(variants, rounds);
     check_gl("shader benchmark");
-    double exact = 0;
+    std::size_t exact = 0;
     for (std::size_t i = 0; i < entries.size(); ++i)
-        if (entries[i].name == "conductor-rgb") exact = ms[i];
+        if (entries[i].name == "conductor-rgb") exact = i;
     nlohmann::ordered_json j;
     j["renderer"] = context.renderer();
     j["size"] = {size, size};
@@ -88,7 +87,8 @@ nlohmann::ordered_json bench_shaders(GlContext& context, bool quick) {
     j["evaluations_per_pixel"] = kShaderBenchEvaluationsPerPixel;
     j["models"] = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < entries.size(); ++i)
-        j["models"].push_back({{"model", entries[i].name}, {"ms_per_frame", ms[i]}, {"ratio_to_conductor_rgb", ms[i] / exact}});
+        j["models"].push_back({{"model", entries[i].name}, {"ms_per_frame", median(ms[i])},
+                                {"ratio_to_conductor_rgb", paired_ratio(ms[i], ms[exact]).median}});
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return j;
 }
@@ -147,14 +147,14 @@ nlohmann::ordered_json bench_localization(GlContext& context, const PreviewOptio
                 gpu.draw_frame_for_timing();
             });
         }
-        const std::vector<double> ms = interleaved_medians(variants, rounds);
+        const std::vector<std::vector<double>> ms = interleaved_rounds(variants, rounds);
         for (std::size_t i = 0; i < rows.size(); ++i) {
             const bool impostor = rows[i].mode == ReflectionMode::distance_impostor;
             out_rows.push_back({{"mode", to_string(rows[i].mode)},
                                 {"strategy", impostor ? nlohmann::ordered_json(to_string(rows[i].strategy)) : nlohmann::ordered_json()},
                                 {"iterations", impostor ? rows[i].iterations : 0},
-                                {"ms_per_frame", ms[i]},
-                                {"ratio_to_classic", ms[i] / ms[0]},
+                                {"ms_per_frame", median(ms[i])},
+                                {"ratio_to_classic", paired_ratio(ms[i], ms[0]).median},
                                 {"rmse", errors[i].rmse},
                                 {"mean_abs", errors[i].mean_abs}});
         }
