@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "glpreview/gl.hpp"
-#include "glpreview/gl_context.hpp"
+#include "glpreview/gl/gl.hpp"
+#include "glpreview/gl/gl_context.hpp"
 #include "libfit/models/model.hpp"
 #include "test_support.hpp"
 
@@ -65,22 +65,21 @@ TEST(ExportGlsl, ModelFunctionsOnTheGpuEqualTheCppModels) {
         }
         ASSERT_EQ(sets.size(), metalfit::test::catalog_material_count());
         const GLuint count = static_cast<GLuint>(sets.size() * kMu);
-        const GLuint program = metalfit::glpreview::compile_compute_program(compute_source(*model), model->id());
-        GLuint buffers[2];
-        glCreateBuffers(2, buffers);
+        const auto program = metalfit::glpreview::compile_compute_program(compute_source(*model), model->id());
+        namespace gl = metalfit::glpreview::gl;
+        const gl::Buffer input = gl::create_buffer(), output = gl::create_buffer();
+        const GLuint buffers[2] = {input.id(), output.id()};
         glNamedBufferStorage(buffers[0], static_cast<GLsizeiptr>(params.size() * sizeof(float)), params.data(), 0);
         glNamedBufferStorage(buffers[1], static_cast<GLsizeiptr>(count * 4 * sizeof(float)), nullptr, GL_MAP_READ_BIT);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
-        glUseProgram(program);
+        glUseProgram(program.id());
         glUniform1ui(0, count);
         glDispatchCompute((count + 63) / 64, 1, 1);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
         std::vector<float> gpu(count * 4);
         glGetNamedBufferSubData(buffers[1], 0, static_cast<GLsizeiptr>(gpu.size() * sizeof(float)), gpu.data());
         metalfit::glpreview::check_gl("export GPU check");
-        glDeleteBuffers(2, buffers);
-        glDeleteProgram(program);
 
         double worst = 0;
         for (std::size_t s = 0; s < sets.size(); ++s)

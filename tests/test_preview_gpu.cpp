@@ -9,14 +9,14 @@
 #include <numbers>
 #include <random>
 
-#include "glpreview/camera.hpp"
-#include "glpreview/cpu_reference.hpp"
-#include "glpreview/environment.hpp"
-#include "glpreview/gl_context.hpp"
-#include "glpreview/gpu_renderer.hpp"
-#include "glpreview/image_io.hpp"
-#include "glpreview/preview.hpp"
-#include "glpreview/sphere_metrics.hpp"
+#include "glpreview/scene/camera.hpp"
+#include "glpreview/render/cpu_reference.hpp"
+#include "glpreview/render/environment.hpp"
+#include "glpreview/gl/gl_context.hpp"
+#include "glpreview/render/gpu_renderer.hpp"
+#include "glpreview/io/image_io.hpp"
+#include "glpreview/render/preview.hpp"
+#include "glpreview/render/sphere_metrics.hpp"
 #include "libfit/color/color_space.hpp"
 #include "test_support.hpp"
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "glpreview/environment.hpp"
-#include "glpreview/plan.hpp"
-#include "glpreview/scene.hpp"
+#include "glpreview/render/environment.hpp"
+#include "glpreview/render/plan.hpp"
+#include "glpreview/scene/scene.hpp"
 #include "libfit/base/errors.hpp"
 #include "test_support.hpp"
 

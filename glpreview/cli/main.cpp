@@ -8,14 +8,13 @@
 #include <regex>
 #include <sstream>
 
-#include "glpreview/gl_context.hpp"
-#include "glpreview/gpu_bench.hpp"
-#include "glpreview/image_io.hpp"
-#include "glpreview/sphere_sheet.hpp"
-#include "libfit/base/atomic_file.hpp"
-#include "glpreview/plan.hpp"
-#include "glpreview/preview.hpp"
-#include "glpreview/scene.hpp"
+#include "glpreview/gl/gl_context.hpp"
+#include "glpreview/render/gpu_bench.hpp"
+#include "glpreview/io/image_io.hpp"
+#include "glpreview/render/sphere_sheet.hpp"
+#include "glpreview/render/plan.hpp"
+#include "glpreview/render/preview.hpp"
+#include "glpreview/scene/scene.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
 
@@ -104,13 +103,7 @@ int main(int argc, char** argv) {
             std::stringstream list(sheet);
             for (std::string m; std::getline(list, m, ',');)
                 if (!m.empty()) materials.push_back(m);
-            GlContext context = GlContext::create();
-            const SphereSheet result = render_sphere_sheet(scene, materials, options, context);
-            std::filesystem::create_directories(output_dir);
-            const DisplayTransform display = DisplayTransform::create(options.ocio);
-            write_exr(output_dir / "sheet.exr", result.image);
-            write_png(output_dir / "sheet.png", result.image, display);
-            write_file_atomically(output_dir / "sheet.json", result.record.dump(2) + "\n");
+            const SphereSheet result = render_sphere_sheet(scene, materials, options);
             for (const auto& row : result.record)
                 std::printf("%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f\n",
                             row["material"].get<std::string>().c_str(), row["model"].get<std::string>().c_str(),

@@ -1,0 +1,38 @@
+// What a scene calls for (DESIGN.md, "plan first"): a pure function of the scene, unit-tested without GL; the
+// preview's passes are added to the graph from these flags.
+#pragma once
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "glpreview/scene/scene.hpp"
+
+namespace metalfit::glpreview {
+
+// What the scene calls for. Every flag has a reason string for --explain.
+struct Features {
+    bool environment_capture = false;  // a procedural room (or sphere room): ray-cast by GL into the cube map
+    bool distance_channel = false;     // some sphere uses the distance impostor: the cube map stores distances
+    bool equirect_image = false;       // an image environment at infinity (read with OpenImageIO)
+    bool reference_lut = false;        // some sphere shows the exact reference curve (1D RGB texture)
+    bool model_fits = false;           // some sphere uses a libfit model (fit or closed-form parameters)
+    bool cpu_reference = false;        // the ray-traced reference image (asked for, or needed by difference/metrics)
+    bool difference_image = false;     // |beauty − reference| (asked for)
+    bool metrics = false;              // metrics.json: per-sphere error and ms per frame
+    bool prefiltered_map = false;      // glossy reflections: no sphere is rough (pure mirrors), never needed yet
+    bool irradiance_sh = false;        // diffuse lobe: metals have none, never needed yet
+    std::set<std::string> models;      // libfit model ids used
+    std::set<std::string> shader_variants;  // #define sets of the sphere shader, one per distinct variant
+};
+
+Features plan_features(const Scene& scene);
+
+// The shader #define of an environment type: "ENV_ROOM", "ENV_SPHERE_ROOM" or "ENV_EQUIRECT".
+const char* environment_define(EnvironmentType type);
+
+// The sphere shader's #defines for one sphere (sorted, one per line), e.g. "REFLECTION_DISTANCE_IMPOSTOR",
+// "STRATEGY_FALSE_POSITION", "NITER 4", "FRESNEL_MODEL f82-tint", "ENV_ROOM".
+std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere);
+
+}  // namespace metalfit::glpreview

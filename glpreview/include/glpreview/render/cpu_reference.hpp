@@ -1,0 +1,24 @@
+// The CPU reference: analytic ray tracing of the same scene (same camera, same Fresnel), with exact mirror
+// reflections of the environment. Spheres reflect the environment only (not each other), as in the GPU render,
+// whose cube map is captured without them.
+#pragma once
+
+#include <vector>
+
+#include "glpreview/render/environment.hpp"
+#include "glpreview/render/image.hpp"
+#include "glpreview/scene/scene.hpp"
+#include "glpreview/render/sphere_fresnel.hpp"
+
+namespace metalfit::glpreview {
+
+struct ReferenceRender {
+    Image image;
+    std::vector<int> sphere_id;  // per pixel (top row first): the sphere seen, −1 for the environment
+};
+
+// fresnel[i] belongs to scene.spheres[i]. Runs on `threads` threads (0: all cores).
+ReferenceRender render_reference(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel,
+                                 const EnvironmentTracer& environment, int threads = 0);
+
+}  // namespace metalfit::glpreview

@@ -1,0 +1,97 @@
+// The GL side of a preview: environment capture into a cube map, the beauty frame (background + one draw per
+// sphere with its shader variant), timing, and a probe of the reflection lookup for tests and benchmarks.
+// Needs a current GlContext.
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "glpreview/gl/gl_context.hpp"
+#include "glpreview/gl/objects.hpp"
+#include "glpreview/render/gpu_resources.hpp"
+#include "glpreview/render/image.hpp"
+#include "glpreview/render/plan.hpp"
+#include "glpreview/scene/scene.hpp"
+#include "glpreview/render/sphere_fresnel.hpp"
+
+namespace metalfit::glpreview {
+
+// One probed reflection: where the lookup went, and the cube texel (radiance, distance) found there.
+struct ProbeResult {
+    Vec3 lookup;                // not normalised
+    std::array<float, 4> texel;  // rgb radiance, a distance (when the cube stores distance)
+};
+
+// The GLSL call of a libfit model on the uniforms u_param[k] (one vec3 per parameter, R, G, B), e.g.
+// "metalfit_f82_tint(u_param[0], u_param[1], mu)".
+std::string model_call(const Model& model);
+// Sets u_param[k] of `program` to parameter k's values for R, G and B.
+void set_model_parameters(GLuint program, const Model& model, const RgbParameters& params);
+
+class GpuRenderer {
+public:
+    // fresnel[i] belongs to scene.spheres[i]; `equirect` is the loaded image for an equirect environment (or null,
+    // when the pass graph binds its texture with use_equirect()).
+    // The scene's environment, camera and image size are read when the renderer is made and when a shader variant
+    // is first compiled (their uniforms are set once then); the spheres are read at every frame, so they may move
+    // or change their reflection settings and Fresnel kind between frames.
+    GpuRenderer(const Scene& scene, const Features& features, std::vector<const SphereFresnel*> fresnel,
+                const Image* equirect);
+    GpuRenderer(const GpuRenderer&) = delete;
+    GpuRenderer& operator=(const GpuRenderer&) = delete;
+
+    // Replaces sphere i's Fresnel (the scene's sphere must name the same fresnel kind: "reference" or the model).
+    void set_fresnel(std::size_t sphere, const SphereFresnel* fresnel);
+
+    // Ray-casts the environment into `cube` (once; spheres may move afterwards) and reflects it from then on.
+    void capture_environment(const EnvironmentCube& cube);
+    // The same into a cube map of the renderer's own (tests, benchmarks without a graph).
+    void capture_environment();
+    // Reflects an already captured cube / an equirect texture owned by the caller (the pass graph).
+    void use_environment(const EnvironmentCube& cube) { cube_ = &cube; }
+    void use_equirect(const EquirectTexture& texture) { equirect_ = &texture; }
+    Image render();  // one beauty frame, read back
+    // One beauty frame without read-back or glFinish (the caller brackets it; benchmarks).
+    void draw_frame_for_timing() { draw_frame(); }
+    // Milliseconds of `frames` beauty frames, each between glFinish calls (no read-back).
+    std::vector<double> time_frames(int frames);
+
+    // Reflection lookups of a sphere's reflection settings for rays (x relative to the reference point, unit R),
+    // computed by the shader code the spheres use. Needs the captured cube map.
+    std::vector<ProbeResult> probe(const Sphere& settings, std::span<const std::array<Vec3, 2>> rays);
+    // A cube face as captured (rgba, rows as stored by GL: row 0 is t = −1).
+    std::vector<float> read_cube_face(int face) const;
+    int cube_size() const { return scene_.environment.cube_size; }
+    const EnvironmentCube* cube() const { return cube_; }
+
+    // The shader variants compiled so far (a #define set each), for --explain and tests.
+    std::vector<std::string> compiled_variants() const;
+
+private:
+    EnvironmentCube::Descriptor cube_descriptor() const;
+    GLuint program(const std::string& kind, const std::vector<std::string>& defines, const std::string& fresnel_call = {});
+    void set_environment_uniforms(GLuint program) const;
+    void set_camera_uniforms(GLuint program) const;
+    void draw_frame();
+    void upload_lut(const SphereFresnel* fresnel);
+
+    const Scene& scene_;
+    Features features_;
+    std::vector<const SphereFresnel*> fresnel_;
+    std::map<std::string, gl::Program> programs_;  // shader variants, compiled on first use
+    gl::VertexArray vao_;
+    std::optional<EnvironmentCube> own_cube_;
+    std::optional<EquirectTexture> own_equirect_;
+    const EnvironmentCube* cube_ = nullptr;
+    const EquirectTexture* equirect_ = nullptr;
+    std::map<const SphereFresnel*, gl::Texture> luts_;  // reference LUTs, uploaded on first use
+    gl::Framebuffer framebuffer_;
+    gl::Texture color_;
+    gl::Renderbuffer depth_;
+};
+
+}  // namespace metalfit::glpreview

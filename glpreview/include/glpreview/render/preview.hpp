@@ -1,0 +1,43 @@
+// Runs a scene's pass graph (render/preview_passes.hpp): only the passes the requested outputs need, in order; writes
+// the requested files into a folder.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "glpreview/render/cpu_reference.hpp"
+#include "glpreview/gl/gl_context.hpp"
+#include "glpreview/render/image.hpp"
+#include "glpreview/render/plan.hpp"
+#include "glpreview/scene/scene.hpp"
+#include "libfit/color/color_space.hpp"
+
+namespace metalfit::glpreview {
+
+struct PreviewOptions {
+    std::filesystem::path data_dir;      // libfit's built-in database
+    OcioConfigChoice ocio;               // for the reference curves and the PNG display transform
+    std::filesystem::path output_dir;    // empty: write nothing (tests)
+    int threads = 0;                     // CPU reference threads (0: all cores)
+};
+
+struct PreviewResult {
+    Plan plan;
+    std::string renderer;                     // GL_RENDERER, "" when no GPU pass ran
+    std::optional<Image> beauty;
+    std::optional<ReferenceRender> reference;
+    std::optional<Image> difference;
+    std::vector<double> frame_ms;
+    nlohmann::ordered_json metrics;           // as written to metrics.json (null when not asked for)
+    std::vector<std::filesystem::path> written;
+};
+
+// `context` may be null: one is created when a GPU pass runs (and only then).
+PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlContext* context = nullptr);
+
+}  // namespace metalfit::glpreview

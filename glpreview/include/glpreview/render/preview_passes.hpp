@@ -1,0 +1,90 @@
+// The passes of a preview, added to a pass graph from the scene's features (graph/features.hpp). Each add_*
+// function is one pass: its setup declares what it reads and writes, its execute does the work through a
+// PreviewRun. With a null run the graph can be compiled and explained but not executed (build_plan, --explain).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "glpreview/graph/features.hpp"
+#include "glpreview/graph/pass_graph.hpp"
+#include "glpreview/gl/gl_context.hpp"
+#include "glpreview/io/image_io.hpp"
+#include "glpreview/render/cpu_reference.hpp"
+#include "glpreview/render/gpu_renderer.hpp"
+#include "glpreview/render/gpu_resources.hpp"
+#include "glpreview/render/image.hpp"
+#include "glpreview/render/sphere_fresnel.hpp"
+#include "libfit/color/color_space.hpp"
+
+namespace metalfit::glpreview {
+
+using FrameTimes = std::vector<double>;
+using Json = nlohmann::ordered_json;
+// The Fresnel data of the spheres of one kind (reference LUTs or model parameters); null for the other kind.
+struct FresnelSet {
+    std::vector<const SphereFresnel*> spheres;
+};
+
+// What the passes of one run share: the scene, its resolved Fresnel data, the GL context and renderer (made by the
+// first GPU pass) and the output folder (made by the first file written).
+struct PreviewRun {
+    const Scene& scene;
+    std::filesystem::path output_dir;  // empty: write nothing
+    OcioConfigChoice ocio;
+    int threads = 0;
+    std::vector<const SphereFresnel*> fresnel;  // fresnel[i] of scene.spheres[i]
+    GlContext* context = nullptr;               // the caller's, or own_context
+    std::optional<GlContext> own_context;
+    std::string renderer_name;                  // GL_RENDERER once a GPU pass ran
+    std::optional<GpuRenderer> gpu;
+    std::optional<DisplayTransform> display;
+    bool output_dir_made = false;
+    std::vector<std::filesystem::path> written;
+
+    void open_gl();             // the context (if none) and the renderer; called before the first GPU pass
+    GpuRenderer& renderer();
+    std::filesystem::path output_file(const std::string& name);  // makes the folder (and the display transform)
+};
+
+// Scene inputs every preview graph imports.
+struct SceneInputs {
+    graph::Handle<const Scene*> environment, materials, camera;
+};
+SceneInputs import_scene(graph::PassGraph& graph, const Scene& scene);
+
+// The CPU images and values a preview produces (handles into the graph; a culled writer leaves them empty).
+struct PreviewHandles {
+    std::optional<graph::Handle<EnvironmentCube>> cube;
+    std::optional<graph::Handle<EquirectTexture>> equirect_texture;
+    std::optional<graph::Handle<Image>> equirect_image;
+    std::optional<graph::Handle<FresnelSet>> luts, parameters;
+    graph::Handle<Image> beauty;
+    graph::Handle<ReferenceRender> reference;
+    graph::Handle<Image> difference;
+    graph::Handle<FrameTimes> frame_times;
+    graph::Handle<Json> metrics;
+};
+
+// Every pass of a preview and the skips --explain lists. `run` may be null (compile and explain only).
+PreviewHandles add_preview_passes(graph::PassGraph& graph, const Scene& scene, const Features& features, PreviewRun* run);
+// The effects no scene needs yet, listed after the culled passes.
+void skip_unneeded_effects(graph::PassGraph& graph);
+
+// One pass each (preview_passes.cpp).
+graph::Handle<EnvironmentCube> add_capture_environment_pass(graph::PassGraph&, const Scene&, const Features&,
+                                                            const SceneInputs&, PreviewRun*);
+std::pair<graph::Handle<EquirectTexture>, graph::Handle<Image>> add_load_equirect_pass(graph::PassGraph&, const Scene&);
+graph::Handle<FresnelSet> add_reference_luts_pass(graph::PassGraph&, const Scene&, const SceneInputs&, PreviewRun*);
+graph::Handle<FresnelSet> add_model_parameters_pass(graph::PassGraph&, const Features&, const SceneInputs&, PreviewRun*);
+void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<Image> image, PreviewRun*);
+void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<ReferenceRender> image, PreviewRun*);
+void add_json_file_pass(graph::PassGraph&, const std::string& file, const std::string& why, graph::Handle<Json> json,
+                        PreviewRun*);
+
+}  // namespace metalfit::glpreview

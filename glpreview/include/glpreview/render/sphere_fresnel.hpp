@@ -1,0 +1,66 @@
+// The Fresnel of each sphere, from libfit: the exact reference curve R_c(μ) as a lookup table, or a libfit model with
+// its fitted or closed-form parameters. The GPU and the CPU reference use the same data.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glpreview/scene/scene.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/color/color_space.hpp"
+#include "libfit/color/colorimetry.hpp"
+#include "libfit/fit/fit.hpp"
+#include "libfit/models/model.hpp"
+
+namespace metalfit::glpreview {
+
+// Entries of the reference lookup table (μ_i = i / (n − 1)); the shader interpolates linearly between them.
+inline constexpr int kReferenceLutSize = 256;
+
+struct SphereFresnel {
+    std::string material;       // "gold"
+    std::string source;         // "Johnson"
+    std::string fresnel;        // "reference" or a model id
+    std::string params;         // "fit" or "closed" (models), "" for the reference
+    std::vector<RGB> lut;       // reference: R_c(μ_i)
+    const Model* model = nullptr;
+    RgbParameters parameters;   // model: values per channel
+    double worst_rel_rms = 0;   // model: worst-channel rel_rms of these parameters (0 for the reference)
+
+    // CPU evaluation, as the GPU does it: the table with linear interpolation, or the model in float.
+    RGB operator()(double mu) const;
+};
+
+// Resolves the spheres' materials through libfit's catalog and colour pipeline; one fit per distinct
+// (material, source, model, params), cached.
+class FresnelLibrary {
+public:
+    // `scene_file`: named in errors; relative material files are looked up beside it.
+    FresnelLibrary(const std::filesystem::path& data_dir, const OcioConfigChoice& config,
+                   const std::filesystem::path& scene_file);
+
+    // Throws InputError naming the field (`field`, e.g. "spheres[2].material") for unknown materials/models.
+    const SphereFresnel& get(const Sphere& sphere, const std::string& field);
+
+    // The model with the lowest worst-channel fitted rel_rms, for the sphere sheet (its fit is cached for get()).
+    std::string best_model(const std::string& material);
+
+    const ColorSpaceConverter& converter() const { return converter_; }
+
+private:
+    // The model's fitted or best closed-form parameters; InputError naming `field`.params when none is defined.
+    std::unique_ptr<SphereFresnel> model_fresnel(const Material& material, const ModelResult& result,
+                                                 const std::string& params, const std::string& field) const;
+
+    Catalog catalog_;
+    Colorimetry colorimetry_;
+    ColorSpaceConverter converter_;
+    std::filesystem::path scene_file_;
+    std::map<std::string, std::unique_ptr<SphereFresnel>> cache_;
+};
+
+}  // namespace metalfit::glpreview

@@ -1,0 +1,24 @@
+// Error of the GPU render against the CPU reference, per sphere: linear radiance inside the sphere's mask (the
+// pixels where the reference sees that sphere), over the three channels.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "glpreview/render/cpu_reference.hpp"
+#include "glpreview/render/image.hpp"
+
+namespace metalfit::glpreview {
+
+struct SphereError {
+    double rmse = 0;      // sqrt(mean over mask pixels and channels of (beauty − reference)²)
+    double mean_abs = 0;  // mean over mask pixels and channels of |beauty − reference|
+    std::size_t pixels = 0;
+};
+
+std::vector<SphereError> sphere_errors(const Image& beauty, const ReferenceRender& reference, std::size_t spheres);
+
+// |a − b| per pixel and channel, times `scale`.
+Image absolute_difference(const Image& a, const Image& b, double scale = 1.0);
+
+}  // namespace metalfit::glpreview

@@ -1,0 +1,114 @@
+// The scene of a preview: plain structs parsed strictly from JSON (docs/scene.md). Unknown keys and wrong types are
+// errors naming the field ("scene.json: spheres[1].iterations: expected an integer").
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glpreview/scene/vec3.hpp"
+
+namespace metalfit::glpreview {
+
+struct Camera {
+    Vec3 position{0, 1.2, 3.5};
+    Vec3 look_at{0, 1.0, 0};
+    Vec3 up{0, 1, 0};
+    double fov_y_deg = 45;
+};
+
+// An axis-aligned box inside a room (a column is a box from floor to ceiling).
+struct RoomBox {
+    Vec3 min, max;
+    Vec3 color{0.6, 0.6, 0.6};  // radiance of its top face; sides are darker (docs/scene.md)
+};
+
+// A rectangular emissive panel on the ceiling, in x and z.
+struct CeilingPanel {
+    double min_x = 0, min_z = 0, max_x = 0, max_z = 0;
+    Vec3 radiance{6, 6, 6};
+};
+
+// The procedural analytic room: an axis-aligned box with coloured walls, a checkerboard floor, emissive ceiling
+// panels and optional boxes inside.
+struct Room {
+    Vec3 min{-3, 0, -3}, max{3, 3, 3};
+    Vec3 wall_x_min{0.65, 0.20, 0.15}, wall_x_max{0.15, 0.25, 0.65};  // left, right
+    Vec3 wall_z_min{0.60, 0.60, 0.55}, wall_z_max{0.20, 0.50, 0.25};  // back, front
+    Vec3 floor_light{0.8, 0.8, 0.8}, floor_dark{0.08, 0.08, 0.08};
+    Vec3 ceiling{0.35, 0.35, 0.35};
+    double checker = 0.5;  // size of the floor and wall checks (m)
+    std::vector<CeilingPanel> panels;
+    std::vector<RoomBox> boxes;
+};
+
+// A spherical room of constant distance around the reference point (the sphere proxy's exact case).
+struct SphereRoom {
+    double radius = 4;
+    double checker_deg = 15;  // latitude-longitude checks
+    Vec3 light{0.9, 0.8, 0.6}, dark{0.1, 0.15, 0.3};
+};
+
+// An equirectangular (latitude-longitude) HDR image at infinity; classic reflections only.
+struct Equirect {
+    std::filesystem::path file;  // resolved against the scene file's folder
+    double intensity = 1;
+};
+
+enum class EnvironmentType { room, sphere_room, equirect };
+
+struct Environment {
+    EnvironmentType type = EnvironmentType::room;
+    Room room;
+    SphereRoom sphere_room;
+    Equirect equirect;
+    std::optional<Vec3> reference_point;  // cube map centre; default: the room's centre
+    int cube_size = 256;                  // texels per cube face edge
+
+    Vec3 reference() const;
+};
+
+enum class ReflectionMode { classic, distance_impostor, box_parallax };
+enum class Strategy { secant, false_position, mixed };
+
+struct Sphere {
+    Vec3 center;
+    double radius = 0.5;
+    std::string material = "Au";  // catalog name or a file (resolved against the scene file's folder)
+    std::string source;           // catalog source ("" = primary)
+    std::string fresnel = "reference";  // "reference" or a libfit model id
+    std::string params = "fit";         // "fit" or "closed" (models only)
+    ReflectionMode reflection = ReflectionMode::distance_impostor;
+    Strategy strategy = Strategy::false_position;
+    int iterations = 4;
+};
+
+struct Outputs {
+    bool beauty = true;      // GPU image
+    bool reference = true;   // CPU ray-traced image
+    bool difference = true;  // |beauty − reference|
+    bool metrics = true;     // metrics.json (needs the reference)
+    bool exr = true;         // linear images
+    bool png = true;         // through the OCIO display transform
+    int timing_frames = 5;   // frames for ms_per_frame (median)
+};
+
+struct Scene {
+    std::filesystem::path file;  // where it was read from (for messages and relative paths)
+    int width = 512, height = 512;
+    Camera camera;
+    Environment environment;
+    std::vector<Sphere> spheres;
+    Outputs outputs;
+};
+
+// Throws metalfit::InputError naming the file and the field.
+Scene parse_scene(const std::string& json_text, const std::filesystem::path& file);
+Scene load_scene(const std::filesystem::path& file);
+
+const char* to_string(ReflectionMode mode);  // "classic", "distance-impostor", "box-parallax"
+const char* to_string(Strategy strategy);    // "secant", "false-position", "mixed"
+const char* to_string(EnvironmentType type);  // "room", "sphere-room", "equirect"
+
+}  // namespace metalfit::glpreview

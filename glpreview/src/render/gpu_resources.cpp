@@ -1,0 +1,26 @@
+#include "glpreview/render/gpu_resources.hpp"
+
+#include "glpreview/gl/gl_context.hpp"
+
+namespace metalfit::glpreview {
+
+EnvironmentCube EnvironmentCube::create(const Descriptor& d) {
+    EnvironmentCube cube{gl::create_texture(GL_TEXTURE_CUBE_MAP), d.size};
+    glTextureStorage2D(cube.texture.id(), 1, d.distance ? GL_RGBA32F : GL_RGBA16F, d.size, d.size);
+    glTextureParameteri(cube.texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(cube.texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    check_gl("creating the environment cube map");
+    return cube;
+}
+
+GLuint EquirectTexture::id() const {
+    if (!texture_) {
+        texture_ = gl::create_texture(GL_TEXTURE_2D);
+        glTextureStorage2D(texture_.id(), 1, GL_RGB32F, image_->width, image_->height);
+        glTextureSubImage2D(texture_.id(), 0, 0, 0, image_->width, image_->height, GL_RGB, GL_FLOAT, image_->rgb.data());
+        check_gl("uploading the equirect image");
+    }
+    return texture_.id();
+}
+
+}  // namespace metalfit::glpreview

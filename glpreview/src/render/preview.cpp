@@ -1,0 +1,41 @@
+#include "glpreview/render/preview.hpp"
+
+#include "glpreview/render/preview_passes.hpp"
+#include "glpreview/render/sphere_fresnel.hpp"
+
+namespace metalfit::glpreview {
+
+PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlContext* context) {
+    PreviewResult result;
+    // The materials are the graph's import: resolved (and fitted) before any pass runs, in sphere order, so that a
+    // bad material is reported as before any file is touched.
+    FresnelLibrary library(options.data_dir, options.ocio, scene.file);
+    PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, false, {}};
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        run.fresnel.push_back(&library.get(scene.spheres[i], "spheres[" + std::to_string(i) + "]"));
+
+    graph::PassGraph graph;
+    const Features features = plan_features(scene);
+    const PreviewHandles h = add_preview_passes(graph, scene, features, &run);
+    graph.retain(h.beauty);
+    graph.retain(h.reference);
+    graph.retain(h.difference);
+    graph.retain(h.frame_times);
+    graph.retain(h.metrics);
+    graph.before_first_gpu_pass([&run] { run.open_gl(); });
+    graph.compile();
+    skip_unneeded_effects(graph);
+    result.plan = plan_of(graph, features);
+    graph.execute();
+
+    result.renderer = run.renderer_name;
+    if (const Image* beauty = graph.result(h.beauty)) result.beauty = *beauty;
+    if (const ReferenceRender* reference = graph.result(h.reference)) result.reference = *reference;
+    if (const Image* difference = graph.result(h.difference)) result.difference = *difference;
+    if (const FrameTimes* frame_ms = graph.result(h.frame_times)) result.frame_ms = *frame_ms;
+    if (const Json* metrics = graph.result(h.metrics)) result.metrics = *metrics;
+    result.written = run.written;
+    return result;
+}
+
+}  // namespace metalfit::glpreview

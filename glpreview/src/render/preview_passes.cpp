@@ -1,0 +1,333 @@
+#include "glpreview/render/preview_passes.hpp"
+
+#include "glpreview/render/environment.hpp"
+#include "glpreview/render/sphere_metrics.hpp"
+#include "libfit/base/atomic_file.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/base/sample_statistics.hpp"
+
+namespace metalfit::glpreview {
+namespace {
+
+using graph::Builder;
+using graph::Handle;
+using graph::PassGraph;
+using graph::Processor;
+using graph::Resources;
+
+std::string join(const std::vector<std::string>& items, const char* separator = ", ") {
+    std::string text;
+    for (const auto& item : items) text += (text.empty() ? "" : separator) + item;
+    return text;
+}
+
+struct Empty {};
+template <typename T>
+struct Out {
+    Handle<T> out;
+};
+
+const Image& image_of(const Image& image) { return image; }
+const Image& image_of(const ReferenceRender& render) { return render.image; }
+
+template <typename T>
+void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, PreviewRun* run) {
+    const bool png = std::filesystem::path(file).extension() == ".png";
+    graph.add_pass<Empty>(
+        {"write " + file, png ? "through the OCIO display transform" : "linear half-float EXR", Processor::cpu},
+        [&](Builder& b, Empty&) {
+            b.read(image);
+            b.write_file(file);
+        },
+        [run, file, image, png](const Empty&, Resources& r) {
+            if (run->output_dir.empty()) return;
+            const std::filesystem::path path = run->output_file(file);
+            if (png) write_png(path, image_of(r.get(image)), *run->display);
+            else write_exr(path, image_of(r.get(image)));
+            run->written.push_back(path);
+        });
+}
+
+Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRender& reference, const FrameTimes& frame_ms) {
+    const Scene& scene = run.scene;
+    Json j;
+    j["schema"] = "metalfit.preview-metrics/1";
+    j["scene"] = scene.file.filename().string();
+    j["renderer"] = run.renderer_name;
+    j["size"] = {scene.width, scene.height};
+    j["ms_per_frame"] = frame_ms.empty() ? 0.0 : median(frame_ms);
+    j["frame_ms"] = frame_ms;
+    const auto errors = sphere_errors(beauty, reference, scene.spheres.size());
+    j["spheres"] = Json::array();
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        const bool impostor = s.reflection == ReflectionMode::distance_impostor;
+        Json e;
+        e["sphere"] = i;
+        e["material"] = run.fresnel[i]->material;
+        e["source"] = run.fresnel[i]->source;
+        e["fresnel"] = s.fresnel;
+        e["params"] = s.fresnel == "reference" ? Json(nullptr) : Json(s.params);
+        e["mode"] = to_string(s.reflection);
+        e["strategy"] = impostor ? Json(to_string(s.strategy)) : Json(nullptr);
+        e["iterations"] = impostor ? s.iterations : 0;
+        e["rmse"] = errors[i].rmse;
+        e["mean_abs"] = errors[i].mean_abs;
+        e["pixels"] = errors[i].pixels;
+        j["spheres"].push_back(e);
+    }
+    return j;
+}
+
+// The inputs of a GPU frame (beauty, timing) bound to the renderer.
+struct FrameInputs {
+    std::optional<Handle<EnvironmentCube>> cube;
+    std::optional<Handle<EquirectTexture>> equirect;
+    std::optional<Handle<FresnelSet>> luts, parameters;
+
+    void declare(Builder& b, Handle<const Scene*> camera) const {
+        b.read(camera);
+        if (cube) b.read(*cube);
+        if (equirect) b.read(*equirect);
+        if (luts) b.read(*luts);
+        if (parameters) b.read(*parameters);
+    }
+    GpuRenderer& bind(PreviewRun& run, Resources& r) const {
+        GpuRenderer& gpu = run.renderer();
+        if (cube) gpu.use_environment(r.get(*cube));
+        if (equirect) gpu.use_equirect(r.get(*equirect));
+        return gpu;
+    }
+};
+
+}  // namespace
+
+void PreviewRun::open_gl() {
+    if (gpu) return;
+    if (!context) context = &own_context.emplace(GlContext::create());
+    renderer_name = context->renderer();
+    gpu.emplace(scene, plan_features(scene), fresnel, nullptr);
+}
+
+GpuRenderer& PreviewRun::renderer() {
+    open_gl();
+    return *gpu;
+}
+
+std::filesystem::path PreviewRun::output_file(const std::string& name) {
+    if (!output_dir_made) {
+        std::error_code error;
+        std::filesystem::create_directories(output_dir, error);
+        if (error) throw InputError(InputLocation(output_dir), "cannot create the output folder: " + error.message());
+        if (scene.outputs.png) display = DisplayTransform::create(ocio);
+        output_dir_made = true;
+    }
+    if (!display && std::filesystem::path(name).extension() == ".png") display = DisplayTransform::create(ocio);
+    return output_dir / name;
+}
+
+SceneInputs import_scene(PassGraph& graph, const Scene& scene) {
+    return {graph.import<const Scene*>("environment-description", &scene), graph.import<const Scene*>("materials", &scene),
+            graph.import<const Scene*>("camera", &scene)};
+}
+
+Handle<EnvironmentCube> add_capture_environment_pass(PassGraph& graph, const Scene& scene, const Features& f,
+                                                     const SceneInputs& in, PreviewRun* run) {
+    return graph
+        .add_pass<Out<EnvironmentCube>>(
+            {"capture-environment",
+             std::string("procedural ") + to_string(scene.environment.type) + ": ray-cast by GL into a " +
+                 std::to_string(scene.environment.cube_size) + "² cube map (radiance" + (f.distance_channel ? " + distance" : "") +
+                 "), once, reused by every frame",
+             Processor::gpu},
+            [&](Builder& b, Out<EnvironmentCube>& d) {
+                b.read(in.environment);
+                d.out = b.create<EnvironmentCube>("environment-cube", {scene.environment.cube_size, f.distance_channel});
+            },
+            [run](const Out<EnvironmentCube>& d, Resources& r) { run->renderer().capture_environment(r.get(d.out)); })
+        .out;
+}
+
+std::pair<Handle<EquirectTexture>, Handle<Image>> add_load_equirect_pass(PassGraph& graph, const Scene& scene) {
+    struct Data {
+        Handle<EquirectTexture> texture;
+        Handle<Image> image;
+    };
+    const Data& d = graph.add_pass<Data>(
+        {"load-equirect", "environment at infinity: " + scene.environment.equirect.file.string() + " (OpenImageIO)", Processor::cpu},
+        [](Builder& b, Data& d) {
+            d.texture = b.produce<EquirectTexture>("equirect-texture");
+            d.image = b.produce<Image>("equirect-image");
+        },
+        [file = scene.environment.equirect.file](const Data& d, Resources& r) {
+            const Image& image = r.emplace(d.image, read_image(file));
+            r.emplace(d.texture, std::make_shared<const Image>(image));
+        });
+    return {d.texture, d.image};
+}
+
+Handle<FresnelSet> add_reference_luts_pass(PassGraph& graph, const Scene& scene, const SceneInputs& in, PreviewRun* run) {
+    return graph
+        .add_pass<Out<FresnelSet>>(
+            {"reference-luts", "some sphere shows the exact reference: R_c(μ) from libfit into 1D RGB textures (256 texels)",
+             Processor::cpu},
+            [&](Builder& b, Out<FresnelSet>& d) {
+                b.read(in.materials);
+                d.out = b.produce<FresnelSet>("fresnel-luts");
+            },
+            [run, &scene](const Out<FresnelSet>& d, Resources& r) {
+                FresnelSet& set = r.emplace(d.out);
+                for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+                    set.spheres.push_back(run->fresnel[i]->model ? nullptr : run->fresnel[i]);
+            })
+        .out;
+}
+
+Handle<FresnelSet> add_model_parameters_pass(PassGraph& graph, const Features& f, const SceneInputs& in, PreviewRun* run) {
+    return graph
+        .add_pass<Out<FresnelSet>>(
+            {"model-parameters", "models " + join({f.models.begin(), f.models.end()}) + ": parameters from libfit (Ceres fit or closed form)",
+             Processor::cpu},
+            [&](Builder& b, Out<FresnelSet>& d) {
+                b.read(in.materials);
+                d.out = b.produce<FresnelSet>("model-parameters");
+            },
+            [run](const Out<FresnelSet>& d, Resources& r) {
+                FresnelSet& set = r.emplace(d.out);
+                for (const SphereFresnel* fresnel : run->fresnel) set.spheres.push_back(fresnel->model ? fresnel : nullptr);
+            })
+        .out;
+}
+
+void add_image_file_pass(PassGraph& graph, const std::string& file, Handle<Image> image, PreviewRun* run) {
+    add_image_file(graph, file, image, run);
+}
+void add_image_file_pass(PassGraph& graph, const std::string& file, Handle<ReferenceRender> image, PreviewRun* run) {
+    add_image_file(graph, file, image, run);
+}
+
+void add_json_file_pass(PassGraph& graph, const std::string& file, const std::string& why, Handle<Json> json, PreviewRun* run) {
+    graph.add_pass<Empty>(
+        {"write " + file, why, Processor::cpu},
+        [&](Builder& b, Empty&) {
+            b.read(json);
+            b.write_file(file);
+        },
+        [run, file, json](const Empty&, Resources& r) {
+            if (run->output_dir.empty()) return;
+            const std::filesystem::path path = run->output_file(file);
+            write_file_atomically(path, r.get(json).dump(2) + "\n");
+            run->written.push_back(path);
+        });
+}
+
+PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Features& f, PreviewRun* run) {
+    PreviewHandles h;
+    const SceneInputs in = import_scene(graph, scene);
+    FrameInputs frame;
+    if (f.environment_capture) {
+        h.cube = frame.cube = add_capture_environment_pass(graph, scene, f, in, run);
+        if (!f.distance_channel)
+            graph.skip("distance channel", "no sphere uses the distance impostor: the cube map stores radiance only (RGBA16F)");
+    } else {
+        graph.skip("capture-environment", "the environment is an image at infinity: nothing to capture");
+    }
+    if (f.equirect_image) {
+        const auto [texture, image] = add_load_equirect_pass(graph, scene);
+        h.equirect_texture = frame.equirect = texture;
+        h.equirect_image = image;
+    }
+    if (f.reference_lut) h.luts = frame.luts = add_reference_luts_pass(graph, scene, in, run);
+    else graph.skip("reference-luts", "no sphere uses fresnel 'reference'");
+    if (f.model_fits) h.parameters = frame.parameters = add_model_parameters_pass(graph, f, in, run);
+    else graph.skip("model-parameters", "no sphere uses a libfit model");
+
+    // beauty: one frame of every sphere with its shader variant.
+    h.beauty = graph
+                   .add_pass<Out<Image>>(
+                       {"beauty", std::to_string(f.shader_variants.size()) + " sphere shader variant(s): " +
+                                      join({f.shader_variants.begin(), f.shader_variants.end()}, " | "),
+                        Processor::gpu},
+                       [&](Builder& b, Out<Image>& d) {
+                           frame.declare(b, in.camera);
+                           d.out = b.produce<Image>("beauty-image");
+                       },
+                       [run, frame](const Out<Image>& d, Resources& r) { r.emplace(d.out, frame.bind(*run, r).render()); })
+                   .out;
+    // cpu-reference: the ground truth.
+    h.reference = graph
+                      .add_pass<Out<ReferenceRender>>(
+                          {"cpu-reference", "analytic ray tracing of the same scene: exact mirror reflections, same Fresnel, same camera",
+                           Processor::cpu},
+                          [&](Builder& b, Out<ReferenceRender>& d) {
+                              b.read(in.camera);
+                              if (h.equirect_image) b.read(*h.equirect_image);
+                              if (h.luts) b.read(*h.luts);
+                              if (h.parameters) b.read(*h.parameters);
+                              d.out = b.produce<ReferenceRender>("reference-image");
+                          },
+                          [run, equirect = h.equirect_image](const Out<ReferenceRender>& d, Resources& r) {
+                              const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr);
+                              r.emplace(d.out, render_reference(run->scene, run->fresnel, tracer, run->threads));
+                          })
+                      .out;
+    h.difference = graph
+                       .add_pass<Out<Image>>(
+                           {"difference", "|beauty − reference| per pixel", Processor::cpu},
+                           [&](Builder& b, Out<Image>& d) {
+                               b.read(h.beauty);
+                               b.read(h.reference);
+                               d.out = b.produce<Image>("difference-image");
+                           },
+                           [beauty = h.beauty, reference = h.reference](const Out<Image>& d, Resources& r) {
+                               r.emplace(d.out, absolute_difference(r.get(beauty), r.get(reference).image));
+                           })
+                       .out;
+    h.frame_times = graph
+                        .add_pass<Out<FrameTimes>>(
+                            {"timing", "ms per frame: median of " + std::to_string(scene.outputs.timing_frames) +
+                                           " frames between glFinish calls",
+                             Processor::gpu},
+                            [&](Builder& b, Out<FrameTimes>& d) {
+                                frame.declare(b, in.camera);
+                                d.out = b.produce<FrameTimes>("frame-times");
+                            },
+                            [run, frame](const Out<FrameTimes>& d, Resources& r) {
+                                r.emplace(d.out, frame.bind(*run, r).time_frames(run->scene.outputs.timing_frames));
+                            })
+                        .out;
+    h.metrics = graph
+                    .add_pass<Out<Json>>(
+                        {"metrics", "per sphere: RMSE and mean |difference| of linear radiance inside the sphere mask", Processor::cpu},
+                        [&](Builder& b, Out<Json>& d) {
+                            b.read(h.beauty);
+                            b.read(h.reference);
+                            b.read(h.frame_times);
+                            d.out = b.produce<Json>("metrics");
+                        },
+                        [run, h](const Out<Json>& d, Resources& r) {
+                            r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.frame_times)));
+                        })
+                    .out;
+
+    // Sinks: the files asked for, each bound to its writer.
+    const Outputs& o = scene.outputs;
+    std::vector<std::string> formats;
+    if (o.exr) formats.push_back("exr");
+    if (o.png) formats.push_back("png");
+    for (const auto& format : formats)
+        if (o.beauty) add_image_file_pass(graph, "beauty." + format, h.beauty, run);
+    for (const auto& format : formats)
+        if (o.reference) add_image_file_pass(graph, "reference." + format, h.reference, run);
+    for (const auto& format : formats)
+        if (o.difference) add_image_file_pass(graph, "difference." + format, h.difference, run);
+    if (o.metrics) add_json_file_pass(graph, "metrics.json", "asked for", h.metrics, run);
+    return h;
+}
+
+void skip_unneeded_effects(PassGraph& graph) {
+    graph.skip("prefiltered environment map", "every sphere is a perfect mirror (roughness 0)");
+    graph.skip("SH irradiance", "metals have no diffuse lobe");
+}
+
+}  // namespace metalfit::glpreview

@@ -1,0 +1,124 @@
+#include "glpreview/render/sphere_fresnel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "libfit/base/errors.hpp"
+#include "libfit/fit/fit.hpp"
+#include "libfit/reference/reference_curve.hpp"
+
+namespace metalfit::glpreview {
+
+RGB SphereFresnel::operator()(double mu) const {
+    mu = std::clamp(mu, 0.0, 1.0);
+    if (model) {
+        std::array<double, 3> value{};
+        for (int c = 0; c < 3; ++c) {
+            std::array<float, 8> p{};
+            std::copy(parameters[c].begin(), parameters[c].end(), p.begin());
+            value[c] = model->evaluate(std::span<const float>(p.data(), parameters[c].size()), static_cast<float>(mu));
+        }
+        return {value[0], value[1], value[2]};
+    }
+    const double x = mu * (static_cast<double>(lut.size()) - 1);
+    const std::size_t i = std::min(static_cast<std::size_t>(x), lut.size() - 2);
+    const double f = x - static_cast<double>(i);
+    const RGB& a = lut[i];
+    const RGB& b = lut[i + 1];
+    return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b)};
+}
+
+FresnelLibrary::FresnelLibrary(const std::filesystem::path& data_dir, const OcioConfigChoice& config,
+                               const std::filesystem::path& scene_file)
+    : catalog_(Catalog::load(data_dir)),
+      colorimetry_(Colorimetry::load(data_dir, Observer::cie1931_2deg, Illuminant::D65)),
+      converter_(ColorSpaceConverter::create(config)),
+      scene_file_(scene_file) {}
+
+namespace {
+
+std::string cache_key(const std::string& material, const std::string& source, const std::string& fresnel,
+                      const std::string& params) {
+    return material + "|" + source + "|" + fresnel + "|" + (fresnel == "reference" ? "" : params);
+}
+
+}  // namespace
+
+std::unique_ptr<SphereFresnel> FresnelLibrary::model_fresnel(const Material& material, const ModelResult& r,
+                                                             const std::string& params, const std::string& field) const {
+    auto result = std::make_unique<SphereFresnel>();
+    result->material = material.name;
+    result->source = material.source;
+    result->fresnel = std::string(r.model->id());
+    result->model = r.model;
+    result->params = params;
+    const EvaluatedParameters* chosen = &r.fit.value;
+    if (params == "closed") {
+        if (!r.best_closed)
+            throw InputError(InputLocation(scene_file_, 0, field + ".params"),
+                             "no closed form of " + result->fresnel + " is defined for " + material.name + ": " +
+                                 (r.closed_forms.empty() ? std::string("none") : r.closed_forms.front().undefined));
+        chosen = &*r.closed_forms[*r.best_closed].value;
+    }
+    result->parameters = chosen->params;
+    result->worst_rel_rms = worst_channel(chosen->metrics.rel_rms);
+    return result;
+}
+
+const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string& field) {
+    const std::string key = cache_key(sphere.material, sphere.source, sphere.fresnel, sphere.params);
+    if (auto it = cache_.find(key); it != cache_.end()) return *it->second;
+
+    std::string material_argument = sphere.material;
+    if (looks_like_path(material_argument) && std::filesystem::path(material_argument).is_relative())
+        material_argument = (scene_file_.parent_path() / material_argument).string();
+    Material material;
+    try {
+        material = load_material(catalog_, material_argument, sphere.source);
+    } catch (const UsageError& e) {
+        throw InputError(InputLocation(scene_file_, 0, field + ".material"), e.what());
+    }
+    const SpectralOptions spectral{};
+    std::unique_ptr<SphereFresnel> result;
+    if (sphere.fresnel == "reference") {
+        result = std::make_unique<SphereFresnel>();
+        result->material = material.name;
+        result->source = material.source;
+        result->fresnel = sphere.fresnel;
+        const ReferenceCurve curve(material, colorimetry_, converter_, spectral);
+        for (int i = 0; i < kReferenceLutSize; ++i) result->lut.push_back(curve(i / double(kReferenceLutSize - 1)));
+    } else {
+        const Model* model = nullptr;
+        try {
+            model = &find_model(sphere.fresnel);
+        } catch (const UsageError& e) {
+            throw InputError(InputLocation(scene_file_, 0, field + ".fresnel"), std::string(e.what()) + " (or 'reference')");
+        }
+        MaterialFitRequest request{spectral, ErrorSettings{}, {model}};
+        result = model_fresnel(material, fit_material(material, colorimetry_, converter_, request).models.front(),
+                               sphere.params, field);
+    }
+    return *cache_.emplace(key, std::move(result)).first->second;
+}
+
+std::string FresnelLibrary::best_model(const std::string& material_name) {
+    const Material material = load_material(catalog_, material_name);
+    std::vector<const Model*> models(all_models().begin(), all_models().end());
+    const MaterialFit fit = fit_material(material, colorimetry_, converter_, {SpectralOptions{}, ErrorSettings{}, models});
+    std::string best;
+    double best_error = std::numeric_limits<double>::infinity();
+    for (const ModelResult& r : fit.models) {
+        // Every model's fit is kept, so that get() of the winner does not fit it again.
+        cache_.try_emplace(cache_key(material_name, "", std::string(r.model->id()), "fit"),
+                           model_fresnel(material, r, "fit", "sheet material " + material_name));
+        const double e = worst_channel(r.fit.value.metrics.rel_rms);
+        if (e < best_error) {
+            best_error = e;
+            best = std::string(r.model->id());
+        }
+    }
+    return best;
+}
+
+}  // namespace metalfit::glpreview

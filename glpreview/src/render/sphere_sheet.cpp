@@ -1,0 +1,115 @@
+#include "glpreview/render/sphere_sheet.hpp"
+
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+#include "glpreview/render/gpu_renderer.hpp"
+#include "glpreview/render/preview_passes.hpp"
+#include "glpreview/render/sphere_fresnel.hpp"
+#include "glpreview/render/sphere_metrics.hpp"
+#include "libfit/base/errors.hpp"
+
+namespace metalfit::glpreview {
+namespace {
+
+void paste(Image& sheet, const Image& cell, int column, int row) {
+    for (int y = 0; y < cell.height; ++y)
+        for (int x = 0; x < cell.width; ++x) sheet.set(column * cell.width + x, row * cell.height + y, cell.at(x, y));
+}
+
+}  // namespace
+
+SphereSheet render_sphere_sheet(const Scene& base, const std::vector<std::string>& materials, const PreviewOptions& options,
+                                GlContext* context) {
+    using namespace graph;
+    if (base.spheres.size() != 1) throw InputError(InputLocation(base.file, 0, "spheres"), "a sheet scene holds exactly one sphere");
+    FresnelLibrary library(options.data_dir, options.ocio, base.file);
+    Scene scene = base;  // the renderer's scene: only the sphere's Fresnel kind changes between cells
+    PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, false, {}};
+    const Features features = plan_features(scene);
+
+    struct Row {
+        const SphereFresnel* reference;
+        const SphereFresnel* model;
+    };
+    using Rows = std::vector<Row>;
+    PassGraph graph;
+    const SceneInputs in = import_scene(graph, scene);
+    const Handle<Rows> rows =
+        graph
+            .add_pass<Handle<Rows>>(
+                {"sheet-fresnel", "per material: the reference LUT and the best fitted libfit model", Processor::cpu},
+                [&](Builder& b, Handle<Rows>& out) {
+                    b.read(in.materials);
+                    out = b.produce<Rows>("sheet-fresnel");
+                },
+                [&](const Handle<Rows>& out, Resources& r) {
+                    Rows& result = r.emplace(out);
+                    for (const std::string& name : materials) {
+                        Sphere sphere = base.spheres[0];
+                        sphere.material = name;
+                        sphere.fresnel = "reference";
+                        const SphereFresnel& reference = library.get(sphere, "sheet material " + name);
+                        sphere.fresnel = library.best_model(name);
+                        sphere.params = "fit";
+                        result.push_back({&reference, &library.get(sphere, "sheet material " + name)});
+                    }
+                    if (!result.empty()) run.fresnel = {result.front().reference};
+                })
+            ;
+    const Handle<EnvironmentCube> cube = add_capture_environment_pass(graph, scene, features, in, &run);
+    struct Cells {
+        Handle<Image> image;
+        Handle<Json> record;
+    };
+    const Cells& cells = graph.add_pass<Cells>(
+        {"sheet-cells", "per material: reference | model | |difference| x 10, one GPU frame each", Processor::gpu},
+        [&](Builder& b, Cells& d) {
+            b.read(rows);
+            b.read(cube);
+            d.image = b.produce<Image>("sheet-image");
+            d.record = b.produce<Json>("sheet-record");
+        },
+        [&](const Cells& d, Resources& r) {
+            GpuRenderer& gpu = run.renderer();
+            gpu.use_environment(r.get(cube));
+            const Rows& all = r.get(rows);
+            Image& sheet = r.emplace(d.image, 3 * scene.width, static_cast<int>(all.size()) * scene.height);
+            Json& record = r.emplace(d.record, Json::array());
+            for (std::size_t row = 0; row < all.size(); ++row) {
+                const SphereFresnel& model = *all[row].model;
+                scene.spheres[0].fresnel = "reference";
+                gpu.set_fresnel(0, all[row].reference);
+                const Image reference_image = gpu.render();
+                scene.spheres[0].fresnel = model.fresnel;
+                gpu.set_fresnel(0, &model);
+                const Image model_image = gpu.render();
+                const Image difference = absolute_difference(model_image, reference_image, kSheetDifferenceScale);
+                paste(sheet, reference_image, 0, static_cast<int>(row));
+                paste(sheet, model_image, 1, static_cast<int>(row));
+                paste(sheet, difference, 2, static_cast<int>(row));
+                double squared = 0;
+                for (std::size_t i = 0; i < model_image.rgb.size(); ++i) {
+                    const double diff = double(model_image.rgb[i]) - double(reference_image.rgb[i]);
+                    squared += diff * diff;
+                }
+                record.push_back({{"row", row},
+                                  {"material", model.material},
+                                  {"source", model.source},
+                                  {"model", model.fresnel},
+                                  {"model_worst_rel_rms", model.worst_rel_rms},
+                                  {"image_rmse_model_vs_reference", std::sqrt(squared / double(model_image.rgb.size()))}});
+            }
+        });
+    add_image_file_pass(graph, "sheet.exr", cells.image, &run);
+    add_image_file_pass(graph, "sheet.png", cells.image, &run);
+    add_json_file_pass(graph, "sheet.json", "the rows' record", cells.record, &run);
+    graph.retain(cells.record);
+    graph.before_first_gpu_pass([&run] { run.open_gl(); });
+    graph.compile();
+    graph.execute();
+    return {*graph.result(cells.record), run.written};
+}
+
+}  // namespace metalfit::glpreview

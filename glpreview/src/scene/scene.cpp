@@ -1,0 +1,352 @@
+#include "glpreview/scene/scene.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+
+#include "libfit/base/errors.hpp"
+
+namespace metalfit::glpreview {
+namespace {
+
+using nlohmann::json;
+
+// Reads one JSON object strictly: every key must be known, every value of the expected type. Errors name the file
+// and the dotted field path.
+class Reader {
+public:
+    Reader(const json& value, std::string path, const std::filesystem::path& file,
+           std::initializer_list<const char*> keys)
+        : value_(value), path_(std::move(path)), file_(file) {
+        if (!value_.is_object()) fail(path_, "expected an object");
+        for (const auto& [key, _] : value_.items()) {
+            const bool known = std::any_of(keys.begin(), keys.end(), [&](const char* k) { return key == k; });
+            if (!known) {
+                std::string list;
+                for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
+                fail(field(key), "unknown key (known: " + list + ")");
+            }
+        }
+    }
+
+    bool has(const char* key) const { return value_.contains(key); }
+    const std::filesystem::path& file() const { return file_; }
+    const json& at(const char* key) const { return value_.at(key); }
+    std::string field(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+    [[noreturn]] void fail(const std::string& field, const std::string& message) const {
+        throw InputError(InputLocation(file_, 0, field), message);
+    }
+
+    void read(const char* key, double& out, double min, double max) const {
+        if (!has(key)) return;
+        const json& v = at(key);
+        if (!v.is_number()) fail(field(key), "expected a number");
+        out = v.get<double>();
+        if (!(out >= min && out <= max)) fail(field(key), "must be in [" + num(min) + ", " + num(max) + "]");
+    }
+    void read(const char* key, int& out, int min, int max) const {
+        if (!has(key)) return;
+        const json& v = at(key);
+        if (!v.is_number_integer()) fail(field(key), "expected an integer");
+        const auto i = v.get<long long>();
+        if (i < min || i > max) fail(field(key), "must be in [" + num(min) + ", " + num(max) + "]");
+        out = static_cast<int>(i);
+    }
+    void read(const char* key, bool& out) const {
+        if (!has(key)) return;
+        if (!at(key).is_boolean()) fail(field(key), "expected true or false");
+        out = at(key).get<bool>();
+    }
+    void read(const char* key, std::string& out) const {
+        if (!has(key)) return;
+        if (!at(key).is_string()) fail(field(key), "expected a string");
+        out = at(key).get<std::string>();
+        if (out.empty()) fail(field(key), "must not be empty");
+    }
+    void read(const char* key, Vec3& out) const {
+        if (!has(key)) return;
+        const json& v = at(key);
+        if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_number(); }))
+            fail(field(key), "expected an array of 3 numbers");
+        out = {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+    }
+    void read_color(const char* key, Vec3& out) const {
+        read(key, out);
+        if (has(key) && (out.x < 0 || out.y < 0 || out.z < 0)) fail(field(key), "radiance must not be negative");
+    }
+    template <typename Enum>
+    void read_enum(const char* key, Enum& out, std::initializer_list<std::pair<const char*, Enum>> names) const {
+        std::string text;
+        read(key, text);
+        if (text.empty()) return;
+        std::string list;
+        for (const auto& [name, value] : names) {
+            if (text == name) {
+                out = value;
+                return;
+            }
+            list += (list.empty() ? "" : ", ") + std::string(name);
+        }
+        fail(field(key), "unknown value '" + text + "' (known: " + list + ")");
+    }
+    // Calls f(element, "key[i]") for each element of an array-valued key.
+    template <typename F>
+    void each(const char* key, F f) const {
+        if (!has(key)) return;
+        if (!at(key).is_array()) fail(field(key), "expected an array");
+        for (std::size_t i = 0; i < at(key).size(); ++i) f(at(key)[i], field(key) + "[" + std::to_string(i) + "]");
+    }
+
+private:
+    static std::string num(double v) {
+        std::ostringstream s;
+        s << v;
+        return s.str();
+    }
+    const json& value_;
+    std::string path_;
+    const std::filesystem::path& file_;
+};
+
+constexpr double kBig = 1e6;
+
+void check_box(const Reader& r, const char* what, const Vec3& min, const Vec3& max) {
+    if (!(min.x < max.x && min.y < max.y && min.z < max.z)) r.fail(r.field(what), "min must be below max on every axis");
+}
+
+Room read_room(const Reader& r) {
+    Room room;
+    r.read("min", room.min);
+    r.read("max", room.max);
+    check_box(r, "max", room.min, room.max);
+    r.read_color("wall_x_min", room.wall_x_min);
+    r.read_color("wall_x_max", room.wall_x_max);
+    r.read_color("wall_z_min", room.wall_z_min);
+    r.read_color("wall_z_max", room.wall_z_max);
+    r.read_color("floor_light", room.floor_light);
+    r.read_color("floor_dark", room.floor_dark);
+    r.read_color("ceiling", room.ceiling);
+    r.read("checker", room.checker, 1e-3, kBig);
+    bool panels_given = false;
+    r.each("panels", [&](const json& v, const std::string& path) {
+        panels_given = true;
+        Reader p(v, path, r.file(), {"min", "max", "radiance"});
+        CeilingPanel panel;
+        auto read2 = [&](const char* key, double& a, double& b) {
+            if (!p.has(key)) p.fail(p.field(key), "missing ([x, z])");
+            const json& e = p.at(key);
+            if (!e.is_array() || e.size() != 2 || !e[0].is_number() || !e[1].is_number())
+                p.fail(p.field(key), "expected [x, z]");
+            a = e[0].get<double>();
+            b = e[1].get<double>();
+        };
+        read2("min", panel.min_x, panel.min_z);
+        read2("max", panel.max_x, panel.max_z);
+        if (!(panel.min_x < panel.max_x && panel.min_z < panel.max_z)) p.fail(p.field("max"), "min must be below max");
+        p.read_color("radiance", panel.radiance);
+        room.panels.push_back(panel);
+    });
+    if (!panels_given) {  // default: a 2 × 2 grid of panels over the room's middle
+        const double cx = 0.5 * (room.min.x + room.max.x), cz = 0.5 * (room.min.z + room.max.z);
+        const double sx = 0.15 * (room.max.x - room.min.x), sz = 0.15 * (room.max.z - room.min.z);
+        for (int i : {-1, 1})
+            for (int j : {-1, 1})
+                room.panels.push_back({cx + i * sx - 0.4 * sx, cz + j * sz - 0.4 * sz, cx + i * sx + 0.4 * sx,
+                                       cz + j * sz + 0.4 * sz, {6, 6, 6}});
+    }
+    r.each("boxes", [&](const json& v, const std::string& path) {
+        Reader b(v, path, r.file(), {"min", "max", "color"});
+        RoomBox box;
+        if (!b.has("min") || !b.has("max")) b.fail(path, "a box needs min and max");
+        b.read("min", box.min);
+        b.read("max", box.max);
+        check_box(b, "max", box.min, box.max);
+        b.read_color("color", box.color);
+        room.boxes.push_back(box);
+    });
+    r.each("columns", [&](const json& v, const std::string& path) {
+        Reader c(v, path, r.file(), {"center", "half_width", "color"});
+        if (!c.has("center")) c.fail(c.field("center"), "missing ([x, z])");
+        const json& e = c.at("center");
+        if (!e.is_array() || e.size() != 2 || !e[0].is_number() || !e[1].is_number())
+            c.fail(c.field("center"), "expected [x, z]");
+        double half = 0.2;
+        c.read("half_width", half, 1e-3, kBig);
+        RoomBox box;
+        box.min = {e[0].get<double>() - half, room.min.y, e[1].get<double>() - half};
+        box.max = {e[0].get<double>() + half, room.max.y, e[1].get<double>() + half};
+        c.read_color("color", box.color);
+        room.boxes.push_back(box);
+    });
+    return room;
+}
+
+}  // namespace
+
+Vec3 Environment::reference() const {
+    if (reference_point) return *reference_point;
+    if (type == EnvironmentType::room) return 0.5 * (room.min + room.max);
+    return {0, 0, 0};
+}
+
+const char* to_string(ReflectionMode mode) {
+    switch (mode) {
+        case ReflectionMode::classic: return "classic";
+        case ReflectionMode::distance_impostor: return "distance-impostor";
+        case ReflectionMode::box_parallax: return "box-parallax";
+    }
+    return "?";
+}
+
+const char* to_string(Strategy strategy) {
+    switch (strategy) {
+        case Strategy::secant: return "secant";
+        case Strategy::false_position: return "false-position";
+        case Strategy::mixed: return "mixed";
+    }
+    return "?";
+}
+
+const char* to_string(EnvironmentType type) {
+    switch (type) {
+        case EnvironmentType::room: return "room";
+        case EnvironmentType::sphere_room: return "sphere-room";
+        case EnvironmentType::equirect: return "equirect";
+    }
+    return "?";
+}
+
+Scene parse_scene(const std::string& json_text, const std::filesystem::path& file) {
+    json root;
+    try {
+        root = json::parse(json_text);
+    } catch (const json::parse_error& e) {
+        // nlohmann reports the byte offset; turn it into a line number.
+        const auto offset = std::min<std::size_t>(e.byte, json_text.size());
+        const int line = 1 + static_cast<int>(std::count(json_text.begin(), json_text.begin() + static_cast<long>(offset), '\n'));
+        std::string what = e.what();
+        const auto colon = what.rfind(": ");
+        throw InputError(InputLocation(file, line), "invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon + 2)));
+    }
+    Scene scene;
+    scene.file = file;
+    Reader top(root, "", file, {"image", "camera", "environment", "spheres", "outputs"});
+
+    if (top.has("image")) {
+        Reader r(top.at("image"), "image", file, {"width", "height"});
+        r.read("width", scene.width, 1, 8192);
+        r.read("height", scene.height, 1, 8192);
+    }
+    if (top.has("camera")) {
+        Reader r(top.at("camera"), "camera", file, {"position", "look_at", "up", "fov_y_deg"});
+        r.read("position", scene.camera.position);
+        r.read("look_at", scene.camera.look_at);
+        r.read("up", scene.camera.up);
+        r.read("fov_y_deg", scene.camera.fov_y_deg, 1, 170);
+        if (length(scene.camera.look_at - scene.camera.position) == 0) r.fail("camera.look_at", "equals the position");
+        if (length(cross(scene.camera.look_at - scene.camera.position, scene.camera.up)) < 1e-9)
+            r.fail("camera.up", "is parallel to the viewing direction");
+    }
+    {
+        static const json no_environment = json::object();  // the default room, with its default panels
+        const json& env = top.has("environment") ? top.at("environment") : no_environment;
+        Environment& e = scene.environment;
+        std::string type = "room";
+        if (env.is_object() && env.contains("type")) {
+            if (!env["type"].is_string()) top.fail("environment.type", "expected a string");
+            type = env["type"].get<std::string>();
+        }
+        if (type == "room") {
+            Reader r(env, "environment", file,
+                     {"type", "reference_point", "cube_size", "min", "max", "wall_x_min", "wall_x_max", "wall_z_min",
+                      "wall_z_max", "floor_light", "floor_dark", "ceiling", "checker", "panels", "boxes", "columns"});
+            e.type = EnvironmentType::room;
+            e.room = read_room(r);
+            r.read("cube_size", e.cube_size, 8, 4096);
+            if (r.has("reference_point")) {
+                Vec3 p;
+                r.read("reference_point", p);
+                e.reference_point = p;
+                for (int i = 0; i < 3; ++i)
+                    if (!(p[i] > e.room.min[i] && p[i] < e.room.max[i])) r.fail("environment.reference_point", "must be inside the room");
+            }
+        } else if (type == "sphere-room") {
+            Reader r(env, "environment", file, {"type", "reference_point", "cube_size", "radius", "checker_deg", "light", "dark"});
+            e.type = EnvironmentType::sphere_room;
+            r.read("radius", e.sphere_room.radius, 1e-3, kBig);
+            r.read("checker_deg", e.sphere_room.checker_deg, 0.1, 180);
+            r.read_color("light", e.sphere_room.light);
+            r.read_color("dark", e.sphere_room.dark);
+            r.read("cube_size", e.cube_size, 8, 4096);
+            if (r.has("reference_point")) {
+                Vec3 p;
+                r.read("reference_point", p);
+                e.reference_point = p;
+            }
+        } else if (type == "equirect") {
+            Reader r(env, "environment", file, {"type", "file", "intensity"});
+            e.type = EnvironmentType::equirect;
+            std::string path;
+            r.read("file", path);
+            if (path.empty()) r.fail("environment.file", "missing (an equirectangular EXR or HDR image)");
+            e.equirect.file = std::filesystem::path(path).is_absolute() ? std::filesystem::path(path)
+                                                                        : file.parent_path() / path;
+            r.read("intensity", e.equirect.intensity, 0, kBig);
+        } else {
+            top.fail("environment.type", "unknown value '" + type + "' (known: room, sphere-room, equirect)");
+        }
+    }
+    if (!top.has("spheres")) top.fail("spheres", "missing (at least one sphere)");
+    top.each("spheres", [&](const json& v, const std::string& path) {
+        Reader r(v, path, file, {"center", "radius", "material", "source", "fresnel", "params", "reflection", "strategy", "iterations"});
+        Sphere s;
+        if (!r.has("center")) r.fail(r.field("center"), "missing");
+        r.read("center", s.center);
+        r.read("radius", s.radius, 1e-4, kBig);
+        r.read("material", s.material);
+        r.read("source", s.source);
+        r.read("fresnel", s.fresnel);
+        r.read("params", s.params);
+        if (s.params != "fit" && s.params != "closed") r.fail(r.field("params"), "unknown value '" + s.params + "' (known: fit, closed)");
+        r.read_enum("reflection", s.reflection,
+                    {{"classic", ReflectionMode::classic},
+                     {"distance-impostor", ReflectionMode::distance_impostor},
+                     {"box-parallax", ReflectionMode::box_parallax}});
+        r.read_enum("strategy", s.strategy,
+                    {{"secant", Strategy::secant}, {"false-position", Strategy::false_position}, {"mixed", Strategy::mixed}});
+        r.read("iterations", s.iterations, 0, 64);
+        if (s.reflection != ReflectionMode::classic && scene.environment.type == EnvironmentType::equirect)
+            r.fail(r.field("reflection"), "an equirect environment is at infinity: only 'classic' reflections");
+        if (s.reflection == ReflectionMode::box_parallax && scene.environment.type != EnvironmentType::room)
+            r.fail(r.field("reflection"), "box-parallax needs a room environment");
+        scene.spheres.push_back(s);
+    });
+    if (scene.spheres.empty()) top.fail("spheres", "at least one sphere");
+    if (top.has("outputs")) {
+        Reader r(top.at("outputs"), "outputs", file, {"beauty", "reference", "difference", "metrics", "exr", "png", "timing_frames"});
+        Outputs& o = scene.outputs;
+        r.read("beauty", o.beauty);
+        r.read("reference", o.reference);
+        r.read("difference", o.difference);
+        r.read("metrics", o.metrics);
+        r.read("exr", o.exr);
+        r.read("png", o.png);
+        r.read("timing_frames", o.timing_frames, 5, 1000);
+        if (!o.exr && !o.png && (o.beauty || o.reference || o.difference)) r.fail("outputs.exr", "images asked for but neither exr nor png");
+    }
+    return scene;
+}
+
+Scene load_scene(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw InputError(InputLocation(file), "cannot read the scene file");
+    std::stringstream text;
+    text << in.rdbuf();
+    return parse_scene(text.str(), file);
+}
+
+}  // namespace metalfit::glpreview
