@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
     try {
         if (bench_shader_cost || bench_localization_cost) {
             GlContext context = GlContext::create();
-            const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir), {}, 0};
+            const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
             const auto result = bench_shader_cost ? bench_shaders(context, quick) : bench_localization(context, options, quick);
             if (json) {
                 std::cout << result.dump(2) << "\n";
@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
             std::cout << explain(build_plan(scene), scene);
             return ok;
         }
-        PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir), output_dir, 0};
+        PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), output_dir, 0};
         if (!sheet.empty()) {
             std::vector<std::string> materials;
             std::stringstream list(sheet);

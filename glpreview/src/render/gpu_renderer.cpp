@@ -32,7 +32,7 @@ std::string model_call(const Model& model) {
     return call + "mu)";
 }
 
-void set_model_parameters(GLuint program, const Model& model, const RgbParameters& params) {
+void set_model_parameters(GLuint program, const Model& model, const ModelParameters& params) {
     for (std::size_t k = 0; k < model.parameters().size(); ++k)
         set(program, ("u_param[" + std::to_string(k) + "]").c_str(), Vec3{params[0][k], params[1][k], params[2][k]});
 }

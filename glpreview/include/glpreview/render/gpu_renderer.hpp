@@ -30,7 +30,7 @@ struct ProbeResult {
 // "metalfit_f82_tint(u_param[0], u_param[1], mu)".
 std::string model_call(const Model& model);
 // Sets u_param[k] of `program` to parameter k's values for R, G and B.
-void set_model_parameters(GLuint program, const Model& model, const RgbParameters& params);
+void set_model_parameters(GLuint program, const Model& model, const ModelParameters& params);
 
 class GpuRenderer {
 public:

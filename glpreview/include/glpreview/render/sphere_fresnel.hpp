@@ -28,7 +28,7 @@ struct SphereFresnel {
     std::string params;         // "fit" or "closed" (models), "" for the reference
     std::vector<RGB> lut;       // reference: R_c(μ_i)
     const Model* model = nullptr;
-    RgbParameters parameters;   // model: values per channel
+    ModelParameters parameters;   // model: values per channel
     double worst_rel_rms = 0;   // model: worst-channel rel_rms of these parameters (0 for the reference)
 
     // CPU evaluation, as the GPU does it: the table with linear interpolation, or the model in float.

@@ -66,7 +66,6 @@ public:
 private:
     std::array<ChannelParameters, 3> channels_;
 };
-using RgbParameters = ModelParameters;  // the former name, kept for glpreview until it moves to ModelParameters
 
 // What closed forms are computed from.
 struct ClosedFormInput {
