@@ -18,6 +18,7 @@
 #include "glpreview/scene.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/version.hpp"
 
 namespace {
 

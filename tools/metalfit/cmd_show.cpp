@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/reference/reference_curve.hpp"
+#include "libfit/base/version.hpp"
 
 namespace metalfit::cli {
 namespace {
