@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
 #if METALFIT_HAVE_BENCH
     auto run_bench = cli::add_bench_command(bench, global);
 #else
-    bench.allow_extras();
+    bench.allow_extras()->fallthrough(false);
     const auto run_bench = [] {
         throw UsageError("bench: this metalfit was built without the bench (configure with -DMETALFIT_BUILD_BENCH=ON)");
     };
