@@ -1,5 +1,6 @@
 #include "metalfit_bench/bench_report.hpp"
 #include "report_tables.hpp"
+#include "libfit/base/version.hpp"
 
 namespace metalfit::bench {
 namespace {

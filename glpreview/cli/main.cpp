@@ -17,6 +17,7 @@
 #include "glpreview/scene/scene.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/version.hpp"
 
 namespace {
 

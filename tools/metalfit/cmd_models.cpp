@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "libfit/models/model.hpp"
+#include "libfit/base/version.hpp"
 
 namespace metalfit::cli {
 namespace {

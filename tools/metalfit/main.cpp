@@ -8,6 +8,7 @@
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/version.hpp"
 
 namespace metalfit::cli {
 
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.fallthrough();
     cli::GlobalOptions global{default_data_dir(), std::nullopt};
-    app.add_option("--data-dir", global.data_dir, "Built-in database folder (default: $METALFIT_DATA or the source tree's data/)")
+    app.add_option("--data-dir", global.data_dir, "Built-in database folder (default: $METALFIT_DATA, else ../share/metalfit beside the executable, else the source tree's data/)")
         ->check(CLI::ExistingDirectory);
     app.add_option("--ocio-config", global.ocio_config, "OCIO config to use when $OCIO is not set (default: data/ocio/config.ocio)");
 
@@ -50,7 +51,14 @@ int main(int argc, char** argv) {
     auto& models = *app.add_subcommand("models", "The Fresnel models: parameters, bounds and GLSL");
     auto run_models = cli::add_models_command(models, global);
     auto& bench = *app.add_subcommand("bench", "What accuracy costs: model evaluation, fit, SPIR-V and GPU timings against accuracy");
+#if METALFIT_HAVE_BENCH
     auto run_bench = cli::add_bench_command(bench, global);
+#else
+    bench.allow_extras()->fallthrough(false);
+    const auto run_bench = [] {
+        throw UsageError("bench: this metalfit was built without the bench (configure with -DMETALFIT_BUILD_BENCH=ON)");
+    };
+#endif
     auto& export_ = *app.add_subcommand("export", "Write shader-ready constants: JSON, GLSL, HLSL, MaterialX, OpenPBR, C++");
     auto run_export = cli::add_export_command(export_, global);
 

@@ -14,6 +14,7 @@
 #include "export/export_formats.hpp"
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/version.hpp"
 #include "libfit/models/registry.hpp"
 
 namespace metalfit {

@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "export/export_formats.hpp"
+#include "libfit/base/version.hpp"
 
 namespace metalfit::detail {
 

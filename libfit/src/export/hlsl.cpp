@@ -4,6 +4,7 @@
 #include <map>
 
 #include "export/export_formats.hpp"
+#include "libfit/base/version.hpp"
 
 namespace metalfit {
 

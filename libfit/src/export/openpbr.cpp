@@ -2,6 +2,7 @@
 // F82-tint metal Fresnel), as JSON and as a MaterialX document with open_pbr_surface. Models that are not an F82-tint
 // curve (lazanyi-comp, conductor-rgb, gulbrandsen) are written as the material's f82-tint parameters, said so.
 #include "export/export_formats.hpp"
+#include "libfit/base/version.hpp"
 
 namespace metalfit::detail {
 

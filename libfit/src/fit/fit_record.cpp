@@ -1,6 +1,7 @@
 #include "libfit/fit/fit_record.hpp"
 
 #include "libfit/base/file_digest.hpp"
+#include "libfit/base/version.hpp"
 
 namespace metalfit {
 

@@ -1,5 +1,6 @@
 #include "libfit/reference/reflectance_summary.hpp"
 
+#include "libfit/base/version.hpp"
 #include "libfit/io/material.hpp"
 
 namespace metalfit {
