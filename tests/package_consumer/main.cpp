@@ -23,11 +23,12 @@ int main() {
         const MaterialFit fit = fit_material(gold, colorimetry, converter, request);
 
         std::cout << "version " << METALFIT_VERSION << "\n" << "data_dir " << data.string() << "\n";
-        const RgbParameters& p = fit.models.at(0).fit.value.params;
+        const ModelParameters& p = fit.models.at(0).fit.value.params;
+        const RGB F0 = p.parameter(0), tint = p.parameter(1);
         for (int c = 0; c < 3; ++c) {
             char line[128];
             std::snprintf(line, sizeof line, "F0 %d %.17g\nfit_F0 %d %.17g\nfit_tint %d %.17g\n", c, fit.F0[c], c,
-                          p[c][0], c, p[c][1]);
+                          F0[c], c, tint[c]);
             std::cout << line;
         }
         return 0;
