@@ -23,9 +23,9 @@ TEST(Colorimetry, PerfectReflectorHasUnitLuminanceForEveryObserverAndIlluminant)
         for (Illuminant i : {Illuminant::D65, Illuminant::A, Illuminant::E}) {
             const Colorimetry c = Colorimetry::load(kData, o, i);
             EXPECT_NEAR(c.white().Y, 1.0, 1e-12) << to_string(o) << " " << to_string(i);
-            ASSERT_EQ(c.wavelengths_nm().size(), 471u);
-            EXPECT_EQ(c.wavelengths_nm().front(), 360.0);
-            EXPECT_EQ(c.wavelengths_nm().back(), 830.0);
+            ASSERT_EQ(c.weights().size(), 471u);
+            EXPECT_EQ(c.weights().first_nm(), 360);
+            EXPECT_EQ(c.weights().last_nm(), 830);
         }
 }
 
@@ -51,17 +51,36 @@ TEST(Colorimetry, EqualEnergyWhiteIsTheRatioOfTheTableSums) {
 
 TEST(Colorimetry, IntegrationIsLinearInReflectance) {
     const Colorimetry c = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::D65);
-    const std::vector<double> grey(c.wavelengths_nm().size(), 0.25);
+    const DenseSpectrum<double> grey(360, 830, 0.25);
     const XYZ g = c.integrate(grey);
     EXPECT_NEAR(g.X, 0.25 * c.white().X, 1e-14);
     EXPECT_NEAR(g.Y, 0.25, 1e-14);
     EXPECT_NEAR(g.Z, 0.25 * c.white().Z, 1e-14);
     // A reflectance that is 1 only above 600 nm is reddish: X/Y above the white's, Z tiny.
-    std::vector<double> red(c.wavelengths_nm().size(), 0.0);
-    for (std::size_t i = 0; i < red.size(); ++i) red[i] = c.wavelengths_nm()[i] >= 600.0 ? 1.0 : 0.0;
+    const auto red = DenseSpectrum<double>::sampled(360, 830, [](int nm) { return nm >= 600 ? 1.0 : 0.0; });
     const XYZ r = c.integrate(red);
     EXPECT_GT(r.X / r.Y, c.white().X / c.white().Y);
     EXPECT_LT(r.Z, 0.01);
+    // A reflectance on another grid is refused, not misaligned.
+    EXPECT_THROW((void)c.integrate(DenseSpectrum<double>(361, 831, 1.0)), std::invalid_argument);
+    EXPECT_THROW((void)c.integrate(DenseSpectrum<double>(360, 829, 1.0)), std::invalid_argument);
+}
+
+TEST(DenseSpectrum, GridIndexingAndMapping) {
+    const auto s = DenseSpectrum<double>::sampled(400, 404, [](int nm) { return nm - 400.0; });
+    EXPECT_EQ(s.size(), 5u);
+    EXPECT_EQ(s.last_nm(), 404);
+    EXPECT_EQ(s.at_nm(403), 3.0);
+    EXPECT_EQ(s.nm(2), 402);
+    EXPECT_THROW((void)s.at_nm(399), std::out_of_range);
+    EXPECT_THROW((void)s.at_nm(405), std::out_of_range);
+    EXPECT_THROW(DenseSpectrum<double>(500, 499), std::invalid_argument);
+    const DenseSpectrum<XYZ> m = s.map([](double v) { return XYZ{v, 2 * v, 3 * v}; });
+    ASSERT_TRUE(m.same_grid(s));
+    EXPECT_EQ(m.at_nm(404), (XYZ{4, 8, 12}));
+    // Σ a·b against the hand sum 0·0 + 1·1 + ... + 4·4 = 30.
+    EXPECT_EQ(sum_of_products(s, s), 30.0);
+    EXPECT_THROW((void)sum_of_products(s, DenseSpectrum<double>(400, 405)), std::invalid_argument);
 }
 
 TEST(Colorimetry, BadInputsAreNamedErrors) {

@@ -77,34 +77,18 @@ Colorimetry Colorimetry::load(const std::filesystem::path& data_dir, Observer ob
     c.observer_ = observer;
     c.illuminant_ = illuminant;
     const int first = static_cast<int>(kVisibleRange.min_nm), last = static_cast<int>(kVisibleRange.max_nm);
-    double y_sum = 0.0;
-    for (int nm = first; nm <= last; ++nm) {
+    const DenseSpectrum<XYZ> weighted = DenseSpectrum<XYZ>::sampled(first, last, [&](int nm) {
         const auto& xyz = at(cmf, nm, cmf_file);
         const double s = illuminant == Illuminant::E ? 1.0 : at(spd, nm, spd_file)[0];
-        c.wavelengths_.push_back(nm);
-        c.wx_.push_back(s * xyz[0]);
-        c.wy_.push_back(s * xyz[1]);
-        c.wz_.push_back(s * xyz[2]);
-        y_sum += s * xyz[1];
-    }
-    for (std::size_t i = 0; i < c.wavelengths_.size(); ++i) {
-        c.wx_[i] /= y_sum;
-        c.wy_[i] /= y_sum;
-        c.wz_[i] /= y_sum;
-    }
-    const std::vector<double> ones(c.wavelengths_.size(), 1.0);
-    c.white_ = c.integrate(ones);
+        return XYZ{s * xyz[0], s * xyz[1], s * xyz[2]};
+    });
+    double y_sum = 0.0;
+    for (const XYZ& w : weighted.values()) y_sum += w.Y;
+    c.weights_ = weighted.map([y_sum](const XYZ& w) { return w / y_sum; });
+    c.white_ = c.integrate(DenseSpectrum<double>(first, last, 1.0));
     return c;
 }
 
-XYZ Colorimetry::integrate(std::span<const double> reflectance) const {
-    XYZ out;
-    for (std::size_t i = 0; i < wavelengths_.size(); ++i) {
-        out.X += reflectance[i] * wx_[i];
-        out.Y += reflectance[i] * wy_[i];
-        out.Z += reflectance[i] * wz_[i];
-    }
-    return out;
-}
+XYZ Colorimetry::integrate(const DenseSpectrum<double>& reflectance) const { return sum_of_products(reflectance, weights_); }
 
 }  // namespace metalfit

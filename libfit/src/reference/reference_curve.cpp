@@ -26,14 +26,15 @@ ReferenceCurve::ReferenceCurve(const Material& material, const Colorimetry& colo
                                ColorSpaceConverter converter, SpectralOptions options)
     : colorimetry_(colorimetry), converter_(std::move(converter)) {
     require_visible_coverage(material, options);
-    for (double nm : colorimetry_.wavelengths_nm()) eta_.push_back(material.index(nm, options.interpolation, options.out_of_range));
+    const DenseSpectrum<XYZ>& grid = colorimetry_.weights();
+    eta_ = DenseSpectrum<std::complex<double>>::sampled(grid.first_nm(), grid.last_nm(), [&](int nm) {
+        return material.index(nm, options.interpolation, options.out_of_range);
+    });
     raw_white_ = converter_(colorimetry_.white());
 }
 
 XYZ ReferenceCurve::xyz(double mu) const {
-    std::vector<double> reflectance(eta_.size());
-    for (std::size_t i = 0; i < eta_.size(); ++i) reflectance[i] = fresnel(mu, eta_[i]);
-    return colorimetry_.integrate(reflectance);
+    return colorimetry_.integrate(eta_.map([mu](const std::complex<double>& eta) { return fresnel(mu, eta); }));
 }
 
 RGB ReferenceCurve::operator()(double mu) const { return converter_(xyz(mu)) / raw_white_; }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "libfit/color/color.hpp"
+#include "libfit/spectral/dense_spectrum.hpp"
 
 namespace metalfit {
 
@@ -27,9 +28,10 @@ public:
     static Colorimetry load(const std::filesystem::path& data_dir, Observer observer,
                             Illuminant illuminant);
 
-    std::span<const double> wavelengths_nm() const { return wavelengths_; }
-    // reflectance[i] is the reflectance at wavelengths_nm()[i].
-    XYZ integrate(std::span<const double> reflectance) const;
+    // The weights S·x̄, S·ȳ, S·z̄ on the 1 nm grid of 360–830 nm; a reflectance to integrate lies on the same grid.
+    const DenseSpectrum<XYZ>& weights() const { return weights_; }
+    // Σ_λ R(λ) w(λ); throws std::invalid_argument for a reflectance on another grid.
+    XYZ integrate(const DenseSpectrum<double>& reflectance) const;
     // XYZ of the perfect reflector under this illuminant (Y = 1).
     XYZ white() const { return white_; }
     Observer observer() const { return observer_; }
@@ -38,8 +40,7 @@ public:
 private:
     Observer observer_{};
     Illuminant illuminant_{};
-    std::vector<double> wavelengths_;
-    std::vector<double> wx_, wy_, wz_;
+    DenseSpectrum<XYZ> weights_;
     XYZ white_;
 };
 

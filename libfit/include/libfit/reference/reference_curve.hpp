@@ -8,6 +8,7 @@
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
 #include "libfit/io/material.hpp"
+#include "libfit/spectral/dense_spectrum.hpp"
 
 namespace metalfit {
 
@@ -20,7 +21,7 @@ struct SpectralOptions {
 };
 
 // R_c(μ) = RGB_c(XYZ(F(·, μ))) / RGB_c(perfect reflector) (DESIGN.md), so R_c(0) = 1 in every
-// space. η(λ) is sampled once at the colorimetry's wavelengths; each μ costs one Fresnel
+// space. η(λ) is sampled once on the colorimetry's 1 nm grid; each μ costs one Fresnel
 // evaluation per wavelength and one OCIO conversion.
 class ReferenceCurve {
 public:
@@ -37,7 +38,7 @@ public:
     const ColorSpaceConverter& converter() const { return converter_; }
 
 private:
-    std::vector<std::complex<double>> eta_;  // at colorimetry wavelengths
+    DenseSpectrum<std::complex<double>> eta_;  // on the colorimetry's grid
     Colorimetry colorimetry_;
     ColorSpaceConverter converter_;
     RGB raw_white_;
