@@ -25,10 +25,9 @@ for material in Au Ag Cu Al Cr Ti TiN Cu-Zn; do
   "$metalfit" show "$material" -o "$out/show-$material.txt"
   "$metalfit" show "$material" --json -o "$out/show-$material.json"
 done
-"$metalfit" fit --all --model all --json -o "$out/fit.json" --timings 2> "$out/fit-timings.txt" \
+"$metalfit" fit --all --model all --json -o "$out/fit.json" --summary "$out/fit-summary.md" --timings 2> "$out/fit-timings.txt" \
   || { cat "$out/fit-timings.txt" >&2; exit 1; }
 "$metalfit" fit --all --model all -o "$out/fit.txt"
-python3 scripts/fit-summary.py "$out/fit.json" > "$out/fit-summary.md"
 "$metalfit" export --all --model all --format all -o "$out/export"
 python3 scripts/export-summary.py "$out/export" > "$out/export-summary.md"
 build/bin/glpreview data/scenes/difficult-room.json -o "$out/preview" > "$out/preview-metrics.txt"

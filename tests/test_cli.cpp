@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 
 namespace {
@@ -205,6 +206,36 @@ TEST_F(Cli, FitJsonRecordHasTheDocumentedShape) {
     // F0 above 1 is kept by the models whose F0 is a free parameter.
     EXPECT_GT(gold["models"]["schlick"]["fit"]["params"]["F0"][0].get<double>(), 1.0);
     EXPECT_GT(gold["models"]["f82-tint"]["fit"]["params"]["F0"][0].get<double>(), 1.0);
+}
+
+TEST_F(Cli, FitSummaryRowsAreTheRecordsWorstChannels) {
+    // The Markdown summary and the JSON record are written by different code from the same fits: each cell of the
+    // summary must be 100 × the largest rel_rms channel of the record, to two decimals.
+    const fs::path summary = dir_ / "summary.md";
+    const Result r = run("fit Zn --model schlick,lazanyi-comp,f82-tint --json --summary '" + summary.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto record = nlohmann::json::parse(r.out)["materials"]["Zn"]["models"];
+    const auto worst = [](const nlohmann::json& metrics) -> std::string {
+        if (metrics.is_null()) return "—";
+        double w = 0;
+        for (const auto& v : metrics["rel_rms"]) {
+            if (v.is_null()) return "—";
+            w = std::max(w, v.get<double>());
+        }
+        char text[32];
+        std::snprintf(text, sizeof text, "%.2f", 100 * w);
+        return text;
+    };
+    std::string row = "| Zn |", median = "| **median fit** |";
+    for (const char* model : {"schlick", "lazanyi-comp", "f82-tint"}) {
+        const auto& m = record[model];
+        row += " " + worst(m["fit"]["metrics"]) + " / " + worst(m["closed"].contains("metrics") ? m["closed"]["metrics"] : nlohmann::json()) + " |";
+        median += " " + worst(m["fit"]["metrics"]) + " |";  // one material: the median is its value
+    }
+    const std::string text = read_file(summary);
+    EXPECT_NE(text.find("| material | schlick | lazanyi-comp | f82-tint |\n"), std::string::npos) << text;
+    EXPECT_NE(text.find(row + "\n"), std::string::npos) << row << "\n" << text;
+    EXPECT_NE(text.find(median + "\n"), std::string::npos) << median << "\n" << text;
 }
 
 TEST_F(Cli, FitRunsAreByteIdenticalWhateverTheThreads) {

@@ -27,6 +27,7 @@
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/fit/catalog_summary.hpp"
 #include "libfit/fit/fit.hpp"
 #include "libfit/fit/fit_record.hpp"
 #include "libfit/optics/fresnel.hpp"
@@ -859,4 +860,14 @@ TEST(FitRecord, TwoRunsOfGoldAreByteIdentical) {
 }
 
 }  // namespace
+TEST(CatalogSummary, SpreadLeavesUndefinedValuesOut) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const Spread s = spread_of_defined({0.4, nan, 0.1, 0.3, nan, 0.2});
+    EXPECT_DOUBLE_EQ(s.median, 0.25);  // of 0.1, 0.2, 0.3, 0.4
+    EXPECT_DOUBLE_EQ(s.worst, 0.4);
+    EXPECT_DOUBLE_EQ(spread_of_defined({0.7}).median, 0.7);
+    EXPECT_TRUE(std::isnan(spread_of_defined({nan, nan}).median));
+    EXPECT_TRUE(std::isnan(spread_of_defined({}).worst));
+}
+
 }  // namespace metalfit

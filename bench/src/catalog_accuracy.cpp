@@ -6,18 +6,19 @@
 #include <limits>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/fit/catalog_summary.hpp"
 #include "libfit/fit/fit.hpp"
 #include "libfit/base/interleaved_timer.hpp"
 #include "metalfit_bench/reference_lut.hpp"
 
 namespace metalfit::bench {
 
+// The catalog summary's definitions (libfit/fit/catalog_summary.hpp), so that the bench and `metalfit fit --summary`
+// print the same median and worst.
 void summarise(AccuracySummary& s) {
-    std::vector<double> defined;
-    for (double v : s.worst_rel_rms)
-        if (!std::isnan(v)) defined.push_back(v);
-    s.median = median(defined);
-    s.worst = defined.empty() ? std::numeric_limits<double>::quiet_NaN() : *std::max_element(defined.begin(), defined.end());
+    const Spread spread = spread_of_defined(s.worst_rel_rms);
+    s.median = spread.median;
+    s.worst = spread.worst;
 }
 
 const AccuracySummary* CatalogAccuracy::find(std::string_view id) const {

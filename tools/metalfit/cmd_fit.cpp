@@ -18,6 +18,7 @@
 #include "libfit/io/catalog.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/fit/fit.hpp"
+#include "libfit/fit/catalog_summary.hpp"
 #include "libfit/fit/fit_record.hpp"
 
 namespace metalfit::cli {
@@ -36,6 +37,7 @@ struct FitOptions {
     bool json = false;
     bool timings = false;
     std::filesystem::path output;
+    std::filesystem::path summary;  // --summary: the catalog summary (Markdown)
 };
 
 std::string params_text(const Model& model, const ModelParameters& p) {
@@ -135,6 +137,7 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
 
     const FitRecordContext context{setup.config, setup.converter.space(), setup.colorimetry.observer(),
                                    setup.colorimetry.illuminant(), setup.spectral, error};
+    if (!o.summary.empty()) emit(catalog_summary_markdown(summarize_catalog(fits), context), o.summary);
     if (o.json) {
         emit(fit_record(fits, context).dump(2) + "\n", o.output);
         return;
@@ -161,6 +164,8 @@ std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global
     app.add_flag("--json", o->json, "Print the fit record (JSON, docs/fit-record.md)");
     app.add_flag("--timings", o->timings, "Print where the time goes (reference curves, closed forms, Ceres, metrics) on stderr");
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
+    app.add_option("--summary", o->summary,
+                   "Also write the catalog summary (Markdown: worst-channel rel_rms per material and model, median, worst) to this file");
     return [o, &global] { run_fit(*o, global); };
 }
 
