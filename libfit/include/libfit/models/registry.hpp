@@ -3,8 +3,9 @@
 // model folders) and the exporters (through the traits below) — is derived from it.
 //
 // Adding a model: a folder libfit/include/libfit/models/<model>/ with <model>.hpp (the struct, see ModelDefinition),
-// <model>.cpp (its closed forms) and <model>.glsl (its GLSL), and one line in Registry below. Nothing else: a
-// struct that lacks a trait an exporter needs does not compile (docs/development.md, "Adding a model").
+// <model>.cpp (its closed forms) and <model>.glsl (its GLSL), and one line in Registry below (the build includes
+// the folder's header here by itself). Nothing else: a struct that lacks a trait an exporter needs does not compile
+// (docs/development.md, "Adding a model").
 #pragma once
 
 #include <algorithm>
@@ -15,13 +16,8 @@
 #include <string_view>
 #include <vector>
 
-#include "libfit/models/conductor_rgb/conductor_rgb.hpp"
-#include "libfit/models/f82_tint/f82_tint.hpp"
-#include "libfit/models/gulbrandsen/gulbrandsen.hpp"
-#include "libfit/models/lazanyi/lazanyi.hpp"
-#include "libfit/models/lazanyi_comp/lazanyi_comp.hpp"
 #include "libfit/models/model.hpp"
-#include "libfit/models/schlick/schlick.hpp"
+#include "libfit/models/model_headers.hpp"  // generated: the header of every model folder
 
 namespace metalfit {
 
