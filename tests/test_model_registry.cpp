@@ -2,6 +2,7 @@
 // list, and the compile-time trait checks that make a model without an exporter's trait fail to build.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -51,6 +52,22 @@ TYPED_TEST(EveryModel, TheRuntimeModelIsTheStruct) {
         for (double mu : {0.0, 0.1, 0.5, 0.9, 1.0}) EXPECT_EQ(model.evaluate(std::span<const double>(p), mu), M::evaluate(p.data(), mu)) << mu;
     // Its GLSL defines the function the model names.
     EXPECT_NE(model.glsl_source().find("vec3 " + std::string(M::kGlslFunction) + "("), std::string::npos);
+}
+
+TYPED_TEST(EveryModel, GrazingIsOneAndFloatAgreesWithDouble) {
+    // F(0) = 1 is built into every model (DESIGN.md); the float overload (what shaders and the bench evaluate) follows
+    // the double one to float precision on curves of order 1.
+    using M = TypeParam;
+    for (const ChannelParameters& p : sample_parameters<M>()) {
+        EXPECT_NEAR(M::evaluate(p.data(), 0.0), 1.0, 1e-12);
+        const std::vector<float> pf(p.begin(), p.end());
+        const ChannelParameters pd(pf.begin(), pf.end());
+        for (int i = 0; i <= 32; ++i) {
+            const float mu = static_cast<float>(i) / 32.0f;
+            const double exact = M::evaluate(pd.data(), static_cast<double>(mu));
+            EXPECT_NEAR(M::evaluate(pf.data(), mu), exact, 1e-4 * std::max(1.0, std::abs(exact))) << "mu=" << mu;
+        }
+    }
 }
 
 TYPED_TEST(EveryModel, AppearsOnceInTheRuntimeList) {
