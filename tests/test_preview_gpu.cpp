@@ -13,10 +13,12 @@
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/gl/gl_context.hpp"
+#include "glpreview/render/gpu_bench.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/render/preview.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
+#include "libfit/models/model.hpp"
 #include "libfit/color/color_space.hpp"
 #include "test_support.hpp"
 
@@ -314,6 +316,22 @@ TEST(PreviewGpu, GoldenImage) {
         if (worst > 5) ++failing;
     }
     EXPECT_LE(failing, expected.rgb.size() / 3 / 1000) << failing << " pixels differ by more than 5/255";
+}
+
+
+// The shader benchmark through its pass graph: one row per libfit model and the reference LUT, each timed, and the
+// exact pass's paired ratio to itself is 1.
+TEST(PreviewGpu, ShaderBenchmarkTimesEveryModelAndTheReferenceLut) {
+    const nlohmann::ordered_json j = bench_shaders(gl(), options(), true);
+    ASSERT_EQ(j["models"].size(), all_models().size() + 1);
+    EXPECT_EQ(j["models"].back()["model"], "reference-lut");
+    EXPECT_EQ(j["evaluations_per_pixel"], kShaderBenchEvaluationsPerPixel);
+    for (const auto& m : j["models"]) {
+        EXPECT_GT(m["ms_per_frame"].get<double>(), 0) << m["model"];
+        if (m["model"] == "conductor-rgb") {
+            EXPECT_EQ(m["ratio_to_conductor_rgb"].get<double>(), 1.0);
+        }
+    }
 }
 
 }  // namespace

@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <numbers>
 
 #include "glpreview/render/environment.hpp"
+#include "glpreview/render/gpu_bench.hpp"
 #include "glpreview/render/plan.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "libfit/base/errors.hpp"
@@ -176,6 +178,58 @@ TEST(PreviewEnvironment, EquirectSamplesTexelCentresExactlyAndWraps) {
     const double theta = 1.5 / 4 * std::numbers::pi;
     const Vec3 seam{0, std::cos(theta), std::sin(theta)};  // u = 0 (and 1): atan2(0, −z) = ±π
     EXPECT_NEAR(sample_equirect(image, seam).x, 3.5, 1e-9);
+}
+
+
+// The GPU benchmarks are one pass graph: asking for one benchmark's record culls every pass of the other, and the
+// graph creates each GL resource just before the pass that uses it and frees it after its last use.
+std::vector<std::string> pass_names(const graph::PassGraph& g) {
+    std::vector<std::string> names;
+    for (const auto& p : g.passes()) names.push_back(p.name);
+    return names;
+}
+const graph::Lifetime& lifetime(const graph::PassGraph& g, const std::string& resource) {
+    const auto& all = g.lifetimes();
+    const auto it = std::find_if(all.begin(), all.end(), [&](const graph::Lifetime& l) { return l.resource == resource; });
+    if (it == all.end()) throw std::runtime_error("no lifetime of " + resource);
+    return *it;
+}
+bool culled(const graph::PassGraph& g, const std::string& pass) {
+    return std::any_of(g.skipped().begin(), g.skipped().end(),
+                       [&](const graph::SkippedPass& s) { return s.name == pass && s.why.starts_with("culled"); });
+}
+
+TEST(PreviewBenchGraph, TheShaderBenchmarkRunsOnlyItsPasses) {
+    GpuBenchRun run{{test::kData, choose_ocio_config(std::nullopt, test::kData), {}, 0}, true, nullptr, localization_rooms(test::kData, true), {}};
+    graph::PassGraph g;
+    const GpuBenchHandles records = add_gpu_bench_passes(g, run);
+    g.request(records.shaders);
+    g.compile();
+    EXPECT_EQ(pass_names(g), (std::vector<std::string>{"model-cost-programs", "shader-timing", "shader-record"}));
+    for (const char* pass : {"bench-fresnel", "cpu-reference empty", "capture-environment difficult", "localization-timing empty",
+                             "localization-record"})
+        EXPECT_TRUE(culled(g, pass)) << pass;
+    EXPECT_EQ(lifetime(g, "cost-target").first, 1u);  // made for the timing pass, freed after it
+    EXPECT_EQ(lifetime(g, "cost-target").last, 1u);
+    EXPECT_FALSE(run.library);  // the localization's libfit work never started
+}
+
+TEST(PreviewBenchGraph, TheLocalizationBenchmarkFreesEachRoomsCubeBeforeTheNextIsMade) {
+    GpuBenchRun run{{test::kData, choose_ocio_config(std::nullopt, test::kData), {}, 0}, true, nullptr, localization_rooms(test::kData, true), {}};
+    ASSERT_EQ(run.rooms.size(), 2u);
+    EXPECT_TRUE(run.rooms[0].scene.environment.room.boxes.empty());
+    EXPECT_FALSE(run.rooms[1].scene.environment.room.boxes.empty());
+    graph::PassGraph g;
+    const GpuBenchHandles records = add_gpu_bench_passes(g, run);
+    g.request(records.localization);
+    g.compile();
+    EXPECT_EQ(pass_names(g), (std::vector<std::string>{"bench-fresnel", "cpu-reference empty", "capture-environment empty",
+                                                       "localization-timing empty", "cpu-reference difficult",
+                                                       "capture-environment difficult", "localization-timing difficult",
+                                                       "localization-record"}));
+    for (const char* pass : {"model-cost-programs", "shader-timing", "shader-record"}) EXPECT_TRUE(culled(g, pass)) << pass;
+    EXPECT_LT(lifetime(g, "environment-cube empty").last, lifetime(g, "environment-cube difficult").first);
+    EXPECT_EQ(lifetime(g, "renderer empty").last, lifetime(g, "environment-cube empty").last);
 }
 
 }  // namespace
