@@ -10,6 +10,7 @@
 #include "glpreview/render/plan.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/color/display_transform.hpp"
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
@@ -230,6 +231,26 @@ TEST(PreviewBenchGraph, TheLocalizationBenchmarkFreesEachRoomsCubeBeforeTheNextI
     for (const char* pass : {"model-cost-programs", "shader-timing", "shader-record"}) EXPECT_TRUE(culled(g, pass)) << pass;
     EXPECT_LT(lifetime(g, "environment-cube empty").last, lifetime(g, "environment-cube difficult").first);
     EXPECT_EQ(lifetime(g, "renderer empty").last, lifetime(g, "environment-cube empty").last);
+}
+
+
+// The PNGs' display transform is libfit's: scene-linear → sRGB display, clamped, 8 bits; a config it cannot use is
+// a ColorConfigError naming the config and no command-line flag.
+TEST(PreviewDisplay, LibfitsDisplayTransformEncodesSceneLinearAsSrgb) {
+    const DisplayTransform display = DisplayTransform::create(choose_ocio_config(std::nullopt, test::kData));
+    const std::vector<float> linear{0.0f, 1.0f, 0.18f, 2.0f, -1.0f, 0.5f};
+    const std::vector<unsigned char> encoded = display.apply(linear, 2, 1);
+    // sRGB's curve: 0.18 → 0.4614 → 118, 0.5 → 0.7354 → 188; 2 and −1 clamp.
+    EXPECT_EQ(encoded, (std::vector<unsigned char>{0, 255, 118, 255, 0, 188}));
+    EXPECT_NE(display.description().find("sRGB"), std::string::npos) << display.description();
+    try {
+        DisplayTransform::create({test::kData / "no-such.ocio", "explicit"});
+        ADD_FAILURE() << "no error";
+    } catch (const ColorConfigError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("no-such.ocio: no display transform from scene_linear"), std::string::npos) << what;
+        EXPECT_EQ(what.find("--"), std::string::npos) << what;
+    }
 }
 
 }  // namespace
