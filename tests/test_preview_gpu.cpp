@@ -259,7 +259,7 @@ TEST(PreviewGpu, ClassicModeEqualsTheCpuReferenceForAnEnvironmentAtInfinity) {
     Sphere copper = gold;
     copper.center = {0.6, 0, 0};
     copper.material = "Cu";
-    copper.fresnel = "f82-tint";
+    copper.fresnel = ModelFresnel{"f82-tint", ParameterSource::fit};
     scene.spheres = {gold, copper};
     scene.outputs.timing_frames = 5;
     const PreviewResult result = run_preview(scene, options(), &gl());

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <algorithm>
 #include <numbers>
+#include <set>
 
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/gpu_bench.hpp"
@@ -34,7 +35,7 @@ TEST(PreviewScene, DefaultsForAMinimalScene) {
     const Scene scene = parse_scene(kMinimal, "s.json");
     ASSERT_EQ(scene.spheres.size(), 1u);
     EXPECT_EQ(scene.environment.type, EnvironmentType::room);
-    EXPECT_EQ(scene.spheres[0].fresnel, "reference");
+    EXPECT_TRUE(shows_reference(scene.spheres[0]));
     EXPECT_EQ(scene.spheres[0].reflection, ReflectionMode::distance_impostor);
     EXPECT_EQ(scene.environment.room.panels.size(), 4u);  // the default 2 × 2 ceiling panels
     const Vec3 o = scene.environment.reference();
@@ -181,6 +182,48 @@ TEST(PreviewEnvironment, EquirectSamplesTexelCentresExactlyAndWraps) {
     EXPECT_NEAR(sample_equirect(image, seam).x, 3.5, 1e-9);
 }
 
+
+// A sphere's Fresnel is parsed into a variant (the reference, or a model id with its parameter source); the parse
+// rejects what the string fields rejected, with the same messages, and "params" is still checked on a reference sphere.
+TEST(PreviewScene, FresnelIsParsedIntoATypedChoice) {
+    const std::string bad = "bad.json: spheres[0].";
+    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "fresnel": 3}]})"), bad + "fresnel: expected a string");
+    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "fresnel": ""}]})"), bad + "fresnel: must not be empty");
+    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "fresnel": "schlick", "params": "closd"}]})"),
+              bad + "params: unknown value 'closd' (known: fit, closed)");
+    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "params": "closd"}]})"),
+              bad + "params: unknown value 'closd' (known: fit, closed)");
+    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "params": true}]})"), bad + "params: expected a string");
+
+    const Scene scene = scene_with(R"([{"center": [0,1,0], "fresnel": "f82-tint", "params": "closed"},
+                                       {"center": [1,1,0], "fresnel": "schlick"},
+                                       {"center": [2,1,0], "fresnel": "reference", "params": "closed"}])");
+    const auto* closed = std::get_if<ModelFresnel>(&scene.spheres[0].fresnel);
+    ASSERT_NE(closed, nullptr);
+    EXPECT_EQ(closed->model, "f82-tint");
+    EXPECT_EQ(closed->parameters, ParameterSource::closed);
+    EXPECT_EQ(std::get<ModelFresnel>(scene.spheres[1].fresnel).parameters, ParameterSource::fit);
+    EXPECT_TRUE(shows_reference(scene.spheres[2]));
+    EXPECT_EQ(fresnel_name(scene.spheres[0].fresnel), "f82-tint");
+    EXPECT_EQ(fresnel_name(scene.spheres[2].fresnel), "reference");
+    // An unknown model id is resolved (and reported) where the sphere's Fresnel data is made, as before: the plan
+    // of such a scene can still be explained.
+    const Features f = plan_features(scene_with(R"([{"center": [0,1,0], "fresnel": "nope"}])"));
+    EXPECT_EQ(f.models, (std::set<std::string>{"nope"}));
+}
+
+TEST(PreviewScene, AnUnknownModelIsReportedWhenItsFresnelIsMadeWithTheSameMessage) {
+    FresnelLibrary library(test::kData, choose_ocio_config(std::nullopt, test::kData), "scene.json");
+    Sphere sphere;
+    sphere.fresnel = ModelFresnel{"nope", ParameterSource::fit};
+    try {
+        library.get(sphere, "spheres[1]");
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(test::Contains(e.what(), "scene.json: spheres[1].fresnel: unknown model 'nope' (known: ")) << e.what();
+        EXPECT_TRUE(test::Contains(e.what(), ") (or 'reference')")) << e.what();
+    }
+}
 
 // The GPU benchmarks are one pass graph: asking for one benchmark's record culls every pass of the other, and the
 // graph creates each GL resource just before the pass that uses it and frees it after its last use.

@@ -87,7 +87,7 @@ std::vector<LocalizationRoom> localization_rooms(const std::filesystem::path& da
     std::vector<LocalizationRoom> rooms{{"empty", std::move(empty)}, {"difficult", std::move(difficult)}};
     for (LocalizationRoom& room : rooms) {
         Sphere& sphere = room.scene.spheres.at(0);
-        sphere.fresnel = "reference";
+        sphere.fresnel = ReferenceFresnel{};
         sphere.reflection = ReflectionMode::distance_impostor;  // the renderer's cube stores distances
     }
     return rooms;

@@ -220,6 +220,13 @@ const char* to_string(EnvironmentType type) {
     return "?";
 }
 
+const char* to_string(ParameterSource source) { return source == ParameterSource::closed ? "closed" : "fit"; }
+
+std::string fresnel_name(const FresnelChoice& fresnel) {
+    if (const auto* model = std::get_if<ModelFresnel>(&fresnel)) return model->model;
+    return "reference";
+}
+
 Scene parse_scene(const std::string& json_text, const std::filesystem::path& file) {
     json root;
     try {
@@ -309,9 +316,12 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         r.read("radius", s.radius, 1e-4, kBig);
         r.read("material", s.material);
         r.read("source", s.source);
-        r.read("fresnel", s.fresnel);
-        r.read("params", s.params);
-        if (s.params != "fit" && s.params != "closed") r.fail(r.field("params"), "unknown value '" + s.params + "' (known: fit, closed)");
+        std::string fresnel = "reference", params = "fit";
+        r.read("fresnel", fresnel);
+        r.read("params", params);
+        if (params != "fit" && params != "closed") r.fail(r.field("params"), "unknown value '" + params + "' (known: fit, closed)");
+        if (fresnel != "reference")  // "params" is checked on a reference sphere too, and means nothing there
+            s.fresnel = ModelFresnel{fresnel, params == "closed" ? ParameterSource::closed : ParameterSource::fit};
         r.read_enum("reflection", s.reflection,
                     {{"classic", ReflectionMode::classic},
                      {"distance-impostor", ReflectionMode::distance_impostor},

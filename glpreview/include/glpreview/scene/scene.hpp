@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "glpreview/scene/vec3.hpp"
@@ -72,13 +73,23 @@ struct Environment {
 enum class ReflectionMode { classic, distance_impostor, box_parallax };
 enum class Strategy { secant, false_position, mixed };
 
+// What a sphere's Fresnel is: the exact reference curve, or a libfit model (named by its id, resolved against the
+// model registry when the sphere's Fresnel data is made, where an unknown id is reported) with its parameters
+// fitted or in closed form.
+enum class ParameterSource { fit, closed };
+struct ReferenceFresnel {};
+struct ModelFresnel {
+    std::string model;  // a libfit model id, "f82-tint"
+    ParameterSource parameters = ParameterSource::fit;
+};
+using FresnelChoice = std::variant<ReferenceFresnel, ModelFresnel>;
+
 struct Sphere {
     Vec3 center;
     double radius = 0.5;
     std::string material = "Au";  // catalog name or a file (resolved against the scene file's folder)
     std::string source;           // catalog source ("" = primary)
-    std::string fresnel = "reference";  // "reference" or a libfit model id
-    std::string params = "fit";         // "fit" or "closed" (models only)
+    FresnelChoice fresnel = ReferenceFresnel{};  // JSON: "fresnel": "reference" or a model id, "params": "fit" | "closed"
     ReflectionMode reflection = ReflectionMode::distance_impostor;
     Strategy strategy = Strategy::false_position;
     int iterations = 4;
@@ -110,5 +121,8 @@ Scene load_scene(const std::filesystem::path& file);
 const char* to_string(ReflectionMode mode);  // "classic", "distance-impostor", "box-parallax"
 const char* to_string(Strategy strategy);    // "secant", "false-position", "mixed"
 const char* to_string(EnvironmentType type);  // "room", "sphere-room", "equirect"
+const char* to_string(ParameterSource source);  // "fit", "closed"
+std::string fresnel_name(const FresnelChoice& fresnel);  // "reference" or the model id, as in the scene JSON
+inline bool shows_reference(const Sphere& sphere) { return std::holds_alternative<ReferenceFresnel>(sphere.fresnel); }
 
 }  // namespace metalfit::glpreview
