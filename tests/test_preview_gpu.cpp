@@ -142,8 +142,8 @@ TEST(PreviewGpu, CapturedCubeMatchesTheCpuTracerAtTexelCentres) {
                 const float* v = &texels[4 * (static_cast<std::size_t>(j) * n + i)];
                 ++total;
                 worst_distance = std::max(worst_distance, std::abs(v[3] - hit.t) / hit.t);
-                const double radiance_error = std::max({std::abs(v[0] - hit.radiance.x), std::abs(v[1] - hit.radiance.y),
-                                                        std::abs(v[2] - hit.radiance.z)});
+                const double radiance_error = std::max({std::abs(v[0] - hit.radiance.r), std::abs(v[1] - hit.radiance.g),
+                                                        std::abs(v[2] - hit.radiance.b)});
                 if (radiance_error > 1e-4) ++mismatched;  // a checker edge crossed in float
             }
     }

@@ -135,20 +135,20 @@ TEST(PreviewEnvironment, RoomHitsAndRadianceRules) {
     const Vec3 o{0, 1, 0};
     EnvironmentHit up = tracer.trace(o, {0, 1, 0});  // the ceiling panel
     EXPECT_DOUBLE_EQ(up.t, 2.0);
-    EXPECT_DOUBLE_EQ(up.radiance.y, 8.0);
+    EXPECT_DOUBLE_EQ(up.radiance.g, 8.0);
     EnvironmentHit box = tracer.trace({0, 0.5, 0}, {1, 0, 0});  // the box's −x face, shade 0.7
     EXPECT_DOUBLE_EQ(box.t, 1.0);
-    EXPECT_DOUBLE_EQ(box.radiance.x, 0.7 * 0.5);
+    EXPECT_DOUBLE_EQ(box.radiance.r, 0.7 * 0.5);
     EnvironmentHit wall = tracer.trace({0, 0.5, 0.2}, {-1, 0, 0});  // left wall at x = −2, check (z 0.2, y 0.5): even
     EXPECT_DOUBLE_EQ(wall.t, 2.0);
-    EXPECT_DOUBLE_EQ(wall.radiance.x, env.room.wall_x_min.x);
-    EXPECT_DOUBLE_EQ(tracer.trace({0, 1.5, 0.2}, {-1, 0, 0}).radiance.x, 0.75 * env.room.wall_x_min.x);  // odd check
+    EXPECT_DOUBLE_EQ(wall.radiance.r, env.room.wall_x_min.r);
+    EXPECT_DOUBLE_EQ(tracer.trace({0, 1.5, 0.2}, {-1, 0, 0}).radiance.r, 0.75 * env.room.wall_x_min.r);  // odd check
     const Vec3 d = normalize({0.3, -1, 0.2});  // the floor at y = 0, t = 1/|d.y|
     EnvironmentHit floor = tracer.trace(o, d);
     EXPECT_NEAR(floor.t, 1.0 / std::abs(d.y), 1e-12);
     const Vec3 p = o + floor.t * d;
     const bool even = ((int(std::floor(p.x)) + int(std::floor(p.z))) & 1) == 0;
-    EXPECT_DOUBLE_EQ(floor.radiance.x, even ? env.room.floor_light.x : env.room.floor_dark.x);
+    EXPECT_DOUBLE_EQ(floor.radiance.r, even ? env.room.floor_light.r : env.room.floor_dark.r);
 }
 
 TEST(PreviewEnvironment, SphereRoomDistanceIsTheClosedForm) {
@@ -172,16 +172,26 @@ TEST(PreviewEnvironment, EquirectSamplesTexelCentresExactlyAndWraps) {
         for (int y : {0, 2}) {
             const double phi = ((x + 0.5) / 8 - 0.5) * 2 * std::numbers::pi, theta = (y + 0.5) / 4 * std::numbers::pi;
             const Vec3 d{std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
-            const Vec3 v = sample_equirect(image, d);
-            EXPECT_NEAR(v.x, x, 1e-9);
-            EXPECT_NEAR(v.y, y, 1e-9);
+            const RGB v = sample_equirect(image, d);
+            EXPECT_NEAR(v.r, x, 1e-9);
+            EXPECT_NEAR(v.g, y, 1e-9);
         }
     // Half-way across the seam between column 7 and column 0: the mean of the two.
     const double theta = 1.5 / 4 * std::numbers::pi;
     const Vec3 seam{0, std::cos(theta), std::sin(theta)};  // u = 0 (and 1): atan2(0, −z) = ±π
-    EXPECT_NEAR(sample_equirect(image, seam).x, 3.5, 1e-9);
+    EXPECT_NEAR(sample_equirect(image, seam).r, 3.5, 1e-9);
 }
 
+
+// Colours are parsed into libfit RGB with the messages the Vec3 reading gave.
+TEST(PreviewScene, ColoursAreRgbWithTheSameMessages) {
+    EXPECT_EQ(parse_error(R"({"environment": {"ceiling": [0.1, -0.2, 0.3]}, "spheres": [{"center": [0,1,0]}]})"),
+              "bad.json: environment.ceiling: radiance must not be negative");
+    EXPECT_EQ(parse_error(R"({"environment": {"ceiling": [0.1, 0.2]}, "spheres": [{"center": [0,1,0]}]})"),
+              "bad.json: environment.ceiling: expected an array of 3 numbers");
+    const Scene scene = parse_scene(R"({"environment": {"ceiling": [0.1, 0.2, 0.3]}, "spheres": [{"center": [0,1,0]}]})", "s.json");
+    EXPECT_EQ(scene.environment.room.ceiling, (RGB{0.1, 0.2, 0.3}));
+}
 
 // A sphere's Fresnel is parsed into a variant (the reference, or a model id with its parameter source); the parse
 // rejects what the string fields rejected, with the same messages, and "params" is still checked on a reference sphere.

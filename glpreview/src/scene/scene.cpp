@@ -74,9 +74,12 @@ public:
             fail(field(key), "expected an array of 3 numbers");
         out = {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
     }
-    void read_color(const char* key, Vec3& out) const {
-        read(key, out);
-        if (has(key) && (out.x < 0 || out.y < 0 || out.z < 0)) fail(field(key), "radiance must not be negative");
+    void read_color(const char* key, RGB& out) const {
+        if (!has(key)) return;
+        Vec3 triple;
+        read(key, triple);
+        if (triple.x < 0 || triple.y < 0 || triple.z < 0) fail(field(key), "radiance must not be negative");
+        out = {triple.x, triple.y, triple.z};
     }
     template <typename Enum>
     void read_enum(const char* key, Enum& out, std::initializer_list<std::pair<const char*, Enum>> names) const {

@@ -1,4 +1,5 @@
-// The scene of a preview: plain structs parsed strictly from JSON (docs/scene.md). Unknown keys and wrong types are
+// The scene of a preview: plain structs parsed strictly from JSON (docs/scene.md); positions are Vec3, radiance
+// and colours libfit RGB (linear, the scene_linear space). Unknown keys and wrong types are
 // errors naming the field ("scene.json: spheres[1].iterations: expected an integer").
 #pragma once
 
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "glpreview/scene/vec3.hpp"
+#include "libfit/color/color.hpp"
 
 namespace metalfit::glpreview {
 
@@ -22,23 +24,23 @@ struct Camera {
 // An axis-aligned box inside a room (a column is a box from floor to ceiling).
 struct RoomBox {
     Vec3 min, max;
-    Vec3 color{0.6, 0.6, 0.6};  // radiance of its top face; sides are darker (docs/scene.md)
+    RGB color{0.6, 0.6, 0.6};  // radiance of its top face; sides are darker (docs/scene.md)
 };
 
 // A rectangular emissive panel on the ceiling, in x and z.
 struct CeilingPanel {
     double min_x = 0, min_z = 0, max_x = 0, max_z = 0;
-    Vec3 radiance{6, 6, 6};
+    RGB radiance{6, 6, 6};
 };
 
 // The procedural analytic room: an axis-aligned box with coloured walls, a checkerboard floor, emissive ceiling
 // panels and optional boxes inside.
 struct Room {
     Vec3 min{-3, 0, -3}, max{3, 3, 3};
-    Vec3 wall_x_min{0.65, 0.20, 0.15}, wall_x_max{0.15, 0.25, 0.65};  // left, right
-    Vec3 wall_z_min{0.60, 0.60, 0.55}, wall_z_max{0.20, 0.50, 0.25};  // back, front
-    Vec3 floor_light{0.8, 0.8, 0.8}, floor_dark{0.08, 0.08, 0.08};
-    Vec3 ceiling{0.35, 0.35, 0.35};
+    RGB wall_x_min{0.65, 0.20, 0.15}, wall_x_max{0.15, 0.25, 0.65};  // left, right
+    RGB wall_z_min{0.60, 0.60, 0.55}, wall_z_max{0.20, 0.50, 0.25};  // back, front
+    RGB floor_light{0.8, 0.8, 0.8}, floor_dark{0.08, 0.08, 0.08};
+    RGB ceiling{0.35, 0.35, 0.35};
     double checker = 0.5;  // size of the floor and wall checks (m)
     std::vector<CeilingPanel> panels;
     std::vector<RoomBox> boxes;
@@ -48,7 +50,7 @@ struct Room {
 struct SphereRoom {
     double radius = 4;
     double checker_deg = 15;  // latitude-longitude checks
-    Vec3 light{0.9, 0.8, 0.6}, dark{0.1, 0.15, 0.3};
+    RGB light{0.9, 0.8, 0.6}, dark{0.1, 0.15, 0.3};
 };
 
 // An equirectangular (latitude-longitude) HDR image at infinity; classic reflections only.
