@@ -13,10 +13,12 @@
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/gl/gl_context.hpp"
+#include "glpreview/render/gpu_bench.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/render/preview.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
+#include "libfit/models/model.hpp"
 #include "libfit/color/color_space.hpp"
 #include "test_support.hpp"
 
@@ -140,8 +142,8 @@ TEST(PreviewGpu, CapturedCubeMatchesTheCpuTracerAtTexelCentres) {
                 const float* v = &texels[4 * (static_cast<std::size_t>(j) * n + i)];
                 ++total;
                 worst_distance = std::max(worst_distance, std::abs(v[3] - hit.t) / hit.t);
-                const double radiance_error = std::max({std::abs(v[0] - hit.radiance.x), std::abs(v[1] - hit.radiance.y),
-                                                        std::abs(v[2] - hit.radiance.z)});
+                const double radiance_error = std::max({std::abs(v[0] - hit.radiance.r), std::abs(v[1] - hit.radiance.g),
+                                                        std::abs(v[2] - hit.radiance.b)});
                 if (radiance_error > 1e-4) ++mismatched;  // a checker edge crossed in float
             }
     }
@@ -257,7 +259,7 @@ TEST(PreviewGpu, ClassicModeEqualsTheCpuReferenceForAnEnvironmentAtInfinity) {
     Sphere copper = gold;
     copper.center = {0.6, 0, 0};
     copper.material = "Cu";
-    copper.fresnel = "f82-tint";
+    copper.fresnel = ModelFresnel{"f82-tint", ParameterSource::fit};
     scene.spheres = {gold, copper};
     scene.outputs.timing_frames = 5;
     const PreviewResult result = run_preview(scene, options(), &gl());
@@ -314,6 +316,22 @@ TEST(PreviewGpu, GoldenImage) {
         if (worst > 5) ++failing;
     }
     EXPECT_LE(failing, expected.rgb.size() / 3 / 1000) << failing << " pixels differ by more than 5/255";
+}
+
+
+// The shader benchmark through its pass graph: one row per libfit model and the reference LUT, each timed, and the
+// exact pass's paired ratio to itself is 1.
+TEST(PreviewGpu, ShaderBenchmarkTimesEveryModelAndTheReferenceLut) {
+    const nlohmann::ordered_json j = bench_shaders(gl(), options(), true);
+    ASSERT_EQ(j["models"].size(), all_models().size() + 1);
+    EXPECT_EQ(j["models"].back()["model"], "reference-lut");
+    EXPECT_EQ(j["evaluations_per_pixel"], kShaderBenchEvaluationsPerPixel);
+    for (const auto& m : j["models"]) {
+        EXPECT_GT(m["ms_per_frame"].get<double>(), 0) << m["model"];
+        if (m["model"] == "conductor-rgb") {
+            EXPECT_EQ(m["ratio_to_conductor_rgb"].get<double>(), 1.0);
+        }
+    }
 }
 
 }  // namespace

@@ -2,12 +2,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <numbers>
+#include <set>
 
 #include "glpreview/render/environment.hpp"
+#include "glpreview/render/gpu_bench.hpp"
 #include "glpreview/render/plan.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/color/display_transform.hpp"
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
@@ -31,7 +35,7 @@ TEST(PreviewScene, DefaultsForAMinimalScene) {
     const Scene scene = parse_scene(kMinimal, "s.json");
     ASSERT_EQ(scene.spheres.size(), 1u);
     EXPECT_EQ(scene.environment.type, EnvironmentType::room);
-    EXPECT_EQ(scene.spheres[0].fresnel, "reference");
+    EXPECT_TRUE(shows_reference(scene.spheres[0]));
     EXPECT_EQ(scene.spheres[0].reflection, ReflectionMode::distance_impostor);
     EXPECT_EQ(scene.environment.room.panels.size(), 4u);  // the default 2 × 2 ceiling panels
     const Vec3 o = scene.environment.reference();
@@ -131,20 +135,20 @@ TEST(PreviewEnvironment, RoomHitsAndRadianceRules) {
     const Vec3 o{0, 1, 0};
     EnvironmentHit up = tracer.trace(o, {0, 1, 0});  // the ceiling panel
     EXPECT_DOUBLE_EQ(up.t, 2.0);
-    EXPECT_DOUBLE_EQ(up.radiance.y, 8.0);
+    EXPECT_DOUBLE_EQ(up.radiance.g, 8.0);
     EnvironmentHit box = tracer.trace({0, 0.5, 0}, {1, 0, 0});  // the box's −x face, shade 0.7
     EXPECT_DOUBLE_EQ(box.t, 1.0);
-    EXPECT_DOUBLE_EQ(box.radiance.x, 0.7 * 0.5);
+    EXPECT_DOUBLE_EQ(box.radiance.r, 0.7 * 0.5);
     EnvironmentHit wall = tracer.trace({0, 0.5, 0.2}, {-1, 0, 0});  // left wall at x = −2, check (z 0.2, y 0.5): even
     EXPECT_DOUBLE_EQ(wall.t, 2.0);
-    EXPECT_DOUBLE_EQ(wall.radiance.x, env.room.wall_x_min.x);
-    EXPECT_DOUBLE_EQ(tracer.trace({0, 1.5, 0.2}, {-1, 0, 0}).radiance.x, 0.75 * env.room.wall_x_min.x);  // odd check
+    EXPECT_DOUBLE_EQ(wall.radiance.r, env.room.wall_x_min.r);
+    EXPECT_DOUBLE_EQ(tracer.trace({0, 1.5, 0.2}, {-1, 0, 0}).radiance.r, 0.75 * env.room.wall_x_min.r);  // odd check
     const Vec3 d = normalize({0.3, -1, 0.2});  // the floor at y = 0, t = 1/|d.y|
     EnvironmentHit floor = tracer.trace(o, d);
     EXPECT_NEAR(floor.t, 1.0 / std::abs(d.y), 1e-12);
     const Vec3 p = o + floor.t * d;
     const bool even = ((int(std::floor(p.x)) + int(std::floor(p.z))) & 1) == 0;
-    EXPECT_DOUBLE_EQ(floor.radiance.x, even ? env.room.floor_light.x : env.room.floor_dark.x);
+    EXPECT_DOUBLE_EQ(floor.radiance.r, even ? env.room.floor_light.r : env.room.floor_dark.r);
 }
 
 TEST(PreviewEnvironment, SphereRoomDistanceIsTheClosedForm) {
@@ -168,14 +172,138 @@ TEST(PreviewEnvironment, EquirectSamplesTexelCentresExactlyAndWraps) {
         for (int y : {0, 2}) {
             const double phi = ((x + 0.5) / 8 - 0.5) * 2 * std::numbers::pi, theta = (y + 0.5) / 4 * std::numbers::pi;
             const Vec3 d{std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
-            const Vec3 v = sample_equirect(image, d);
-            EXPECT_NEAR(v.x, x, 1e-9);
-            EXPECT_NEAR(v.y, y, 1e-9);
+            const RGB v = sample_equirect(image, d);
+            EXPECT_NEAR(v.r, x, 1e-9);
+            EXPECT_NEAR(v.g, y, 1e-9);
         }
     // Half-way across the seam between column 7 and column 0: the mean of the two.
     const double theta = 1.5 / 4 * std::numbers::pi;
     const Vec3 seam{0, std::cos(theta), std::sin(theta)};  // u = 0 (and 1): atan2(0, −z) = ±π
-    EXPECT_NEAR(sample_equirect(image, seam).x, 3.5, 1e-9);
+    EXPECT_NEAR(sample_equirect(image, seam).r, 3.5, 1e-9);
+}
+
+
+// Colours are parsed into libfit RGB with the messages the Vec3 reading gave.
+TEST(PreviewScene, ColoursAreRgbWithTheSameMessages) {
+    EXPECT_EQ(parse_error(R"({"environment": {"ceiling": [0.1, -0.2, 0.3]}, "spheres": [{"center": [0,1,0]}]})"),
+              "bad.json: environment.ceiling: radiance must not be negative");
+    EXPECT_EQ(parse_error(R"({"environment": {"ceiling": [0.1, 0.2]}, "spheres": [{"center": [0,1,0]}]})"),
+              "bad.json: environment.ceiling: expected an array of 3 numbers");
+    const Scene scene = parse_scene(R"({"environment": {"ceiling": [0.1, 0.2, 0.3]}, "spheres": [{"center": [0,1,0]}]})", "s.json");
+    EXPECT_EQ(scene.environment.room.ceiling, (RGB{0.1, 0.2, 0.3}));
+}
+
+// A sphere's Fresnel is parsed into a variant (the reference, or a model id with its parameter source); the parse
+// rejects what the string fields rejected, with the same messages, and "params" is still checked on a reference sphere.
+TEST(PreviewScene, FresnelIsParsedIntoATypedChoice) {
+    const std::string bad = "bad.json: spheres[0].";
+    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "fresnel": 3}]})"), bad + "fresnel: expected a string");
+    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "fresnel": ""}]})"), bad + "fresnel: must not be empty");
+    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "fresnel": "schlick", "params": "closd"}]})"),
+              bad + "params: unknown value 'closd' (known: fit, closed)");
+    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "params": "closd"}]})"),
+              bad + "params: unknown value 'closd' (known: fit, closed)");
+    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "params": true}]})"), bad + "params: expected a string");
+
+    const Scene scene = scene_with(R"([{"center": [0,1,0], "fresnel": "f82-tint", "params": "closed"},
+                                       {"center": [1,1,0], "fresnel": "schlick"},
+                                       {"center": [2,1,0], "fresnel": "reference", "params": "closed"}])");
+    const auto* closed = std::get_if<ModelFresnel>(&scene.spheres[0].fresnel);
+    ASSERT_NE(closed, nullptr);
+    EXPECT_EQ(closed->model, "f82-tint");
+    EXPECT_EQ(closed->parameters, ParameterSource::closed);
+    EXPECT_EQ(std::get<ModelFresnel>(scene.spheres[1].fresnel).parameters, ParameterSource::fit);
+    EXPECT_TRUE(shows_reference(scene.spheres[2]));
+    EXPECT_EQ(fresnel_name(scene.spheres[0].fresnel), "f82-tint");
+    EXPECT_EQ(fresnel_name(scene.spheres[2].fresnel), "reference");
+    // An unknown model id is resolved (and reported) where the sphere's Fresnel data is made, as before: the plan
+    // of such a scene can still be explained.
+    const Features f = plan_features(scene_with(R"([{"center": [0,1,0], "fresnel": "nope"}])"));
+    EXPECT_EQ(f.models, (std::set<std::string>{"nope"}));
+}
+
+TEST(PreviewScene, AnUnknownModelIsReportedWhenItsFresnelIsMadeWithTheSameMessage) {
+    FresnelLibrary library(test::kData, choose_ocio_config(std::nullopt, test::kData), "scene.json");
+    Sphere sphere;
+    sphere.fresnel = ModelFresnel{"nope", ParameterSource::fit};
+    try {
+        library.get(sphere, "spheres[1]");
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(test::Contains(e.what(), "scene.json: spheres[1].fresnel: unknown model 'nope' (known: ")) << e.what();
+        EXPECT_TRUE(test::Contains(e.what(), ") (or 'reference')")) << e.what();
+    }
+}
+
+// The GPU benchmarks are one pass graph: asking for one benchmark's record culls every pass of the other, and the
+// graph creates each GL resource just before the pass that uses it and frees it after its last use.
+std::vector<std::string> pass_names(const graph::PassGraph& g) {
+    std::vector<std::string> names;
+    for (const auto& p : g.passes()) names.push_back(p.name);
+    return names;
+}
+const graph::Lifetime& lifetime(const graph::PassGraph& g, const std::string& resource) {
+    const auto& all = g.lifetimes();
+    const auto it = std::find_if(all.begin(), all.end(), [&](const graph::Lifetime& l) { return l.resource == resource; });
+    if (it == all.end()) throw std::runtime_error("no lifetime of " + resource);
+    return *it;
+}
+bool culled(const graph::PassGraph& g, const std::string& pass) {
+    return std::any_of(g.skipped().begin(), g.skipped().end(),
+                       [&](const graph::SkippedPass& s) { return s.name == pass && s.why.starts_with("culled"); });
+}
+
+TEST(PreviewBenchGraph, TheShaderBenchmarkRunsOnlyItsPasses) {
+    GpuBenchRun run{{test::kData, choose_ocio_config(std::nullopt, test::kData), {}, 0}, true, nullptr, localization_rooms(test::kData, true), {}};
+    graph::PassGraph g;
+    const GpuBenchHandles records = add_gpu_bench_passes(g, run);
+    g.request(records.shaders);
+    g.compile();
+    EXPECT_EQ(pass_names(g), (std::vector<std::string>{"model-cost-programs", "shader-timing", "shader-record"}));
+    for (const char* pass : {"bench-fresnel", "cpu-reference empty", "capture-environment difficult", "localization-timing empty",
+                             "localization-record"})
+        EXPECT_TRUE(culled(g, pass)) << pass;
+    EXPECT_EQ(lifetime(g, "cost-target").first, 1u);  // made for the timing pass, freed after it
+    EXPECT_EQ(lifetime(g, "cost-target").last, 1u);
+    EXPECT_FALSE(run.library);  // the localization's libfit work never started
+}
+
+TEST(PreviewBenchGraph, TheLocalizationBenchmarkFreesEachRoomsCubeBeforeTheNextIsMade) {
+    GpuBenchRun run{{test::kData, choose_ocio_config(std::nullopt, test::kData), {}, 0}, true, nullptr, localization_rooms(test::kData, true), {}};
+    ASSERT_EQ(run.rooms.size(), 2u);
+    EXPECT_TRUE(run.rooms[0].scene.environment.room.boxes.empty());
+    EXPECT_FALSE(run.rooms[1].scene.environment.room.boxes.empty());
+    graph::PassGraph g;
+    const GpuBenchHandles records = add_gpu_bench_passes(g, run);
+    g.request(records.localization);
+    g.compile();
+    EXPECT_EQ(pass_names(g), (std::vector<std::string>{"bench-fresnel", "cpu-reference empty", "capture-environment empty",
+                                                       "localization-timing empty", "cpu-reference difficult",
+                                                       "capture-environment difficult", "localization-timing difficult",
+                                                       "localization-record"}));
+    for (const char* pass : {"model-cost-programs", "shader-timing", "shader-record"}) EXPECT_TRUE(culled(g, pass)) << pass;
+    EXPECT_LT(lifetime(g, "environment-cube empty").last, lifetime(g, "environment-cube difficult").first);
+    EXPECT_EQ(lifetime(g, "renderer empty").last, lifetime(g, "environment-cube empty").last);
+}
+
+
+// The PNGs' display transform is libfit's: scene-linear → sRGB display, clamped, 8 bits; a config it cannot use is
+// a ColorConfigError naming the config and no command-line flag.
+TEST(PreviewDisplay, LibfitsDisplayTransformEncodesSceneLinearAsSrgb) {
+    const DisplayTransform display = DisplayTransform::create(choose_ocio_config(std::nullopt, test::kData));
+    const std::vector<float> linear{0.0f, 1.0f, 0.18f, 2.0f, -1.0f, 0.5f};
+    const std::vector<unsigned char> encoded = display.apply(linear, 2, 1);
+    // sRGB's curve: 0.18 → 0.4614 → 118, 0.5 → 0.7354 → 188; 2 and −1 clamp.
+    EXPECT_EQ(encoded, (std::vector<unsigned char>{0, 255, 118, 255, 0, 188}));
+    EXPECT_NE(display.description().find("sRGB"), std::string::npos) << display.description();
+    try {
+        DisplayTransform::create({test::kData / "no-such.ocio", "explicit"});
+        ADD_FAILURE() << "no error";
+    } catch (const ColorConfigError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("no-such.ocio: no display transform from scene_linear"), std::string::npos) << what;
+        EXPECT_EQ(what.find("--"), std::string::npos) << what;
+    }
 }
 
 }  // namespace

@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
         if (bench_shader_cost || bench_localization_cost) {
             GlContext context = GlContext::create();
             const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
-            const auto result = bench_shader_cost ? bench_shaders(context, quick) : bench_localization(context, options, quick);
+            const auto result = bench_shader_cost ? bench_shaders(context, options, quick) : bench_localization(context, options, quick);
             if (json) {
                 std::cout << result.dump(2) << "\n";
                 return ok;

@@ -35,7 +35,7 @@ std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere
             defines.push_back("NITER " + std::to_string(sphere.iterations));
             break;
     }
-    defines.push_back(sphere.fresnel == "reference" ? "FRESNEL_REFERENCE" : "FRESNEL_MODEL " + sphere.fresnel);
+    defines.push_back(shows_reference(sphere) ? "FRESNEL_REFERENCE" : "FRESNEL_MODEL " + fresnel_name(sphere.fresnel));
     std::sort(defines.begin(), defines.end());
     return defines;
 }
@@ -47,10 +47,11 @@ Features plan_features(const Scene& scene) {
     f.equirect_image = type == EnvironmentType::equirect;
     for (const Sphere& s : scene.spheres) {
         if (s.reflection == ReflectionMode::distance_impostor) f.distance_channel = true;
-        if (s.fresnel == "reference") f.reference_lut = true;
-        else {
+        if (const auto* model = std::get_if<ModelFresnel>(&s.fresnel)) {
             f.model_fits = true;
-            f.models.insert(s.fresnel);
+            f.models.insert(model->model);
+        } else {
+            f.reference_lut = true;
         }
         f.shader_variants.insert(join(sphere_defines(scene, s), " "));
     }

@@ -1,6 +1,5 @@
 #include "glpreview/io/image_io.hpp"
 
-#include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -9,8 +8,6 @@
 #include <system_error>
 
 #include "libfit/base/errors.hpp"
-
-namespace OCIO = OCIO_NAMESPACE;
 
 namespace metalfit::glpreview {
 namespace {
@@ -65,48 +62,8 @@ void write_exr(const std::filesystem::path& file, const Image& image) {
     write_pixels(file, spec, OIIO::TypeDesc::FLOAT, image.rgb.data());
 }
 
-struct DisplayTransform::Impl {
-    OCIO::ConstCPUProcessorRcPtr processor;
-};
-
-DisplayTransform DisplayTransform::create(const OcioConfigChoice& choice) {
-    try {
-        auto config = OCIO::Config::CreateFromFile(choice.path.string().c_str());
-        const char* display = config->getDefaultDisplay();
-        const char* view = config->getDefaultView(display);
-        auto transform = OCIO::DisplayViewTransform::Create();
-        transform->setSrc(OCIO::ROLE_SCENE_LINEAR);
-        transform->setDisplay(display);
-        transform->setView(view);
-        auto processor = config->getProcessor(transform);
-        auto impl = std::make_unique<Impl>();
-        impl->processor = processor->getDefaultCPUProcessor();
-        const auto scene_linear = config->getColorSpace(OCIO::ROLE_SCENE_LINEAR);
-        return DisplayTransform(std::move(impl), std::string(scene_linear ? scene_linear->getName() : "scene_linear") +
-                                                     " → " + display + " / " + view);
-    } catch (const OCIO::Exception& e) {
-        throw ColorConfigError(choice.path.string() + ": no display transform from scene_linear: " + e.what());
-    }
-}
-
-DisplayTransform::DisplayTransform(std::unique_ptr<Impl> impl, std::string description)
-    : impl_(std::move(impl)), description_(std::move(description)) {}
-DisplayTransform::~DisplayTransform() = default;
-DisplayTransform::DisplayTransform(DisplayTransform&&) noexcept = default;
-DisplayTransform& DisplayTransform::operator=(DisplayTransform&&) noexcept = default;
-
-std::vector<unsigned char> DisplayTransform::apply(const Image& image) const {
-    std::vector<float> pixels = image.rgb;
-    OCIO::PackedImageDesc desc(pixels.data(), image.width, image.height, 3);
-    impl_->processor->apply(desc);
-    std::vector<unsigned char> out(pixels.size());
-    for (std::size_t i = 0; i < pixels.size(); ++i)
-        out[i] = static_cast<unsigned char>(std::lround(std::clamp(pixels[i], 0.0f, 1.0f) * 255.0f));
-    return out;
-}
-
 void write_png(const std::filesystem::path& file, const Image& image, const DisplayTransform& display) {
-    const std::vector<unsigned char> pixels = display.apply(image);
+    const std::vector<unsigned char> pixels = display.apply(image.rgb, image.width, image.height);
     OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
     write_pixels(file, spec, OIIO::TypeDesc::UINT8, pixels.data());
 }

@@ -34,7 +34,7 @@ ReferenceRender render_reference(const Scene& scene, const std::vector<const Sph
                         nearest = static_cast<int>(s);
                     }
                 }
-                Vec3 radiance;
+                RGB radiance;
                 if (nearest < 0) {
                     radiance = environment.trace(basis.position, d).radiance;
                 } else {
@@ -44,7 +44,7 @@ ReferenceRender render_reference(const Scene& scene, const std::vector<const Sph
                     const double mu = std::clamp(-dot(d, n), 0.0, 1.0);
                     const Vec3 r = normalize(reflect(d, n));
                     const RGB f = (*fresnel[static_cast<std::size_t>(nearest)])(mu);
-                    radiance = Vec3{f.r, f.g, f.b} * environment.trace(p, r).radiance;
+                    radiance = f * environment.trace(p, r).radiance;
                 }
                 out.image.set(px, row, radiance);
                 out.sphere_id[static_cast<std::size_t>(row) * w + px] = nearest;

@@ -100,11 +100,11 @@ EnvironmentHit EnvironmentTracer::trace_sphere_room(Vec3 origin, Vec3 d) const {
     return {checker_even(lat, lon, sr.checker_deg) ? sr.light : sr.dark, t};
 }
 
-Vec3 EnvironmentTracer::equirect_radiance(Vec3 dir) const {
+RGB EnvironmentTracer::equirect_radiance(Vec3 dir) const {
     return environment_.equirect.intensity * sample_equirect(*equirect_, dir);
 }
 
-Vec3 sample_equirect(const Image& image, Vec3 d) {
+RGB sample_equirect(const Image& image, Vec3 d) {
     const double u = 0.5 + std::atan2(d.x, -d.z) / (2 * std::numbers::pi);
     const double v = std::acos(std::clamp(d.y, -1.0, 1.0)) / std::numbers::pi;
     const double x = u * image.width - 0.5, y = v * image.height - 0.5;
@@ -114,8 +114,8 @@ Vec3 sample_equirect(const Image& image, Vec3 d) {
     auto clamp_row = [&](int j) { return std::clamp(j, 0, image.height - 1); };
     const int xa = wrap(static_cast<int>(x0)), xb = wrap(static_cast<int>(x0) + 1);
     const int ya = clamp_row(static_cast<int>(y0)), yb = clamp_row(static_cast<int>(y0) + 1);
-    const Vec3 top = (1 - fx) * image.at(xa, ya) + fx * image.at(xb, ya);
-    const Vec3 bottom = (1 - fx) * image.at(xa, yb) + fx * image.at(xb, yb);
+    const RGB top = (1 - fx) * image.at(xa, ya) + fx * image.at(xb, ya);
+    const RGB bottom = (1 - fx) * image.at(xa, yb) + fx * image.at(xb, yb);
     return (1 - fy) * top + fy * bottom;
 }
 

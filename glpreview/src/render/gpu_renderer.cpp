@@ -15,6 +15,10 @@ void set(GLuint program, const char* name, Vec3 v) {
     glProgramUniform3f(program, glGetUniformLocation(program, name), static_cast<float>(v.x), static_cast<float>(v.y),
                        static_cast<float>(v.z));
 }
+void set(GLuint program, const char* name, const RGB& v) {
+    glProgramUniform3f(program, glGetUniformLocation(program, name), static_cast<float>(v.r), static_cast<float>(v.g),
+                       static_cast<float>(v.b));
+}
 void set(GLuint program, const char* name, float v) { glProgramUniform1f(program, glGetUniformLocation(program, name), v); }
 void set(GLuint program, const char* name, int v) { glProgramUniform1i(program, glGetUniformLocation(program, name), v); }
 

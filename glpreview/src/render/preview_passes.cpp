@@ -66,8 +66,9 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
         e["sphere"] = i;
         e["material"] = run.fresnel[i]->material;
         e["source"] = run.fresnel[i]->source;
-        e["fresnel"] = s.fresnel;
-        e["params"] = s.fresnel == "reference" ? Json(nullptr) : Json(s.params);
+        e["fresnel"] = fresnel_name(s.fresnel);
+        const auto* model = std::get_if<ModelFresnel>(&s.fresnel);
+        e["params"] = model ? Json(to_string(model->parameters)) : Json(nullptr);
         e["mode"] = to_string(s.reflection);
         e["strategy"] = impostor ? Json(to_string(s.strategy)) : Json(nullptr);
         e["iterations"] = impostor ? s.iterations : 0;

@@ -38,15 +38,15 @@ FresnelLibrary::FresnelLibrary(const std::filesystem::path& data_dir, const Ocio
 
 namespace {
 
-std::string cache_key(const std::string& material, const std::string& source, const std::string& fresnel,
-                      const std::string& params) {
-    return material + "|" + source + "|" + fresnel + "|" + (fresnel == "reference" ? "" : params);
+std::string cache_key(const std::string& material, const std::string& source, const FresnelChoice& fresnel) {
+    const auto* model = std::get_if<ModelFresnel>(&fresnel);
+    return material + "|" + source + "|" + fresnel_name(fresnel) + "|" + (model ? to_string(model->parameters) : "");
 }
 
 }  // namespace
 
 std::unique_ptr<SphereFresnel> FresnelLibrary::model_fresnel(const Material& material, const ModelResult& r,
-                                                             const std::string& params, const std::string& field) const {
+                                                             ParameterSource params, const std::string& field) const {
     auto result = std::make_unique<SphereFresnel>();
     result->material = material.name;
     result->source = material.source;
@@ -54,7 +54,7 @@ std::unique_ptr<SphereFresnel> FresnelLibrary::model_fresnel(const Material& mat
     result->model = r.model;
     result->params = params;
     const EvaluatedParameters* chosen = &r.fit.value;
-    if (params == "closed") {
+    if (params == ParameterSource::closed) {
         if (!r.best_closed)
             throw InputError(InputLocation(scene_file_, 0, field + ".params"),
                              "no closed form of " + result->fresnel + " is defined for " + material.name + ": " +
@@ -67,7 +67,7 @@ std::unique_ptr<SphereFresnel> FresnelLibrary::model_fresnel(const Material& mat
 }
 
 const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string& field) {
-    const std::string key = cache_key(sphere.material, sphere.source, sphere.fresnel, sphere.params);
+    const std::string key = cache_key(sphere.material, sphere.source, sphere.fresnel);
     if (auto it = cache_.find(key); it != cache_.end()) return *it->second;
 
     std::string material_argument = sphere.material;
@@ -81,23 +81,24 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
     }
     const SpectralOptions spectral{};
     std::unique_ptr<SphereFresnel> result;
-    if (sphere.fresnel == "reference") {
+    if (shows_reference(sphere)) {
         result = std::make_unique<SphereFresnel>();
         result->material = material.name;
         result->source = material.source;
-        result->fresnel = sphere.fresnel;
+        result->fresnel = "reference";
         const ReferenceCurve curve(material, colorimetry_, converter_, spectral);
         for (int i = 0; i < kReferenceLutSize; ++i) result->lut.push_back(curve(i / double(kReferenceLutSize - 1)));
     } else {
+        const ModelFresnel& chosen = std::get<ModelFresnel>(sphere.fresnel);
         const Model* model = nullptr;
         try {
-            model = &find_model(sphere.fresnel);
+            model = &find_model(chosen.model);
         } catch (const UsageError& e) {
             throw InputError(InputLocation(scene_file_, 0, field + ".fresnel"), std::string(e.what()) + " (or 'reference')");
         }
         MaterialFitRequest request{spectral, ErrorSettings{}, {model}};
         result = model_fresnel(material, fit_material(material, colorimetry_, converter_, request).models.front(),
-                               sphere.params, field);
+                               chosen.parameters, field);
     }
     return *cache_.emplace(key, std::move(result)).first->second;
 }
@@ -110,8 +111,8 @@ std::string FresnelLibrary::best_model(const std::string& material_name) {
     double best_error = std::numeric_limits<double>::infinity();
     for (const ModelResult& r : fit.models) {
         // Every model's fit is kept, so that get() of the winner does not fit it again.
-        cache_.try_emplace(cache_key(material_name, "", std::string(r.model->id()), "fit"),
-                           model_fresnel(material, r, "fit", "sheet material " + material_name));
+        cache_.try_emplace(cache_key(material_name, "", ModelFresnel{std::string(r.model->id()), ParameterSource::fit}),
+                           model_fresnel(material, r, ParameterSource::fit, "sheet material " + material_name));
         const double e = worst_channel(r.fit.value.metrics.rel_rms);
         if (e < best_error) {
             best_error = e;

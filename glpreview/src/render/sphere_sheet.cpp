@@ -49,10 +49,9 @@ SphereSheet render_sphere_sheet(const Scene& base, const std::vector<std::string
                     for (const std::string& name : materials) {
                         Sphere sphere = base.spheres[0];
                         sphere.material = name;
-                        sphere.fresnel = "reference";
+                        sphere.fresnel = ReferenceFresnel{};
                         const SphereFresnel& reference = library.get(sphere, "sheet material " + name);
-                        sphere.fresnel = library.best_model(name);
-                        sphere.params = "fit";
+                        sphere.fresnel = ModelFresnel{library.best_model(name), ParameterSource::fit};
                         result.push_back({&reference, &library.get(sphere, "sheet material " + name)});
                     }
                     if (!result.empty()) run.fresnel = {result.front().reference};
@@ -79,10 +78,10 @@ SphereSheet render_sphere_sheet(const Scene& base, const std::vector<std::string
             Json& record = r.emplace(d.record, Json::array());
             for (std::size_t row = 0; row < all.size(); ++row) {
                 const SphereFresnel& model = *all[row].model;
-                scene.spheres[0].fresnel = "reference";
+                scene.spheres[0].fresnel = ReferenceFresnel{};
                 gpu.set_fresnel(0, all[row].reference);
                 const Image reference_image = gpu.render();
-                scene.spheres[0].fresnel = model.fresnel;
+                scene.spheres[0].fresnel = ModelFresnel{model.fresnel, ParameterSource::fit};
                 gpu.set_fresnel(0, &model);
                 const Image model_image = gpu.render();
                 const Image difference = absolute_difference(model_image, reference_image, kSheetDifferenceScale);

@@ -74,9 +74,12 @@ public:
             fail(field(key), "expected an array of 3 numbers");
         out = {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
     }
-    void read_color(const char* key, Vec3& out) const {
-        read(key, out);
-        if (has(key) && (out.x < 0 || out.y < 0 || out.z < 0)) fail(field(key), "radiance must not be negative");
+    void read_color(const char* key, RGB& out) const {
+        if (!has(key)) return;
+        Vec3 triple;
+        read(key, triple);
+        if (triple.x < 0 || triple.y < 0 || triple.z < 0) fail(field(key), "radiance must not be negative");
+        out = {triple.x, triple.y, triple.z};
     }
     template <typename Enum>
     void read_enum(const char* key, Enum& out, std::initializer_list<std::pair<const char*, Enum>> names) const {
@@ -220,6 +223,13 @@ const char* to_string(EnvironmentType type) {
     return "?";
 }
 
+const char* to_string(ParameterSource source) { return source == ParameterSource::closed ? "closed" : "fit"; }
+
+std::string fresnel_name(const FresnelChoice& fresnel) {
+    if (const auto* model = std::get_if<ModelFresnel>(&fresnel)) return model->model;
+    return "reference";
+}
+
 Scene parse_scene(const std::string& json_text, const std::filesystem::path& file) {
     json root;
     try {
@@ -309,9 +319,12 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         r.read("radius", s.radius, 1e-4, kBig);
         r.read("material", s.material);
         r.read("source", s.source);
-        r.read("fresnel", s.fresnel);
-        r.read("params", s.params);
-        if (s.params != "fit" && s.params != "closed") r.fail(r.field("params"), "unknown value '" + s.params + "' (known: fit, closed)");
+        std::string fresnel = "reference", params = "fit";
+        r.read("fresnel", fresnel);
+        r.read("params", params);
+        if (params != "fit" && params != "closed") r.fail(r.field("params"), "unknown value '" + params + "' (known: fit, closed)");
+        if (fresnel != "reference")  // "params" is checked on a reference sphere too, and means nothing there
+            s.fresnel = ModelFresnel{fresnel, params == "closed" ? ParameterSource::closed : ParameterSource::fit};
         r.read_enum("reflection", s.reflection,
                     {{"classic", ReflectionMode::classic},
                      {"distance-impostor", ReflectionMode::distance_impostor},

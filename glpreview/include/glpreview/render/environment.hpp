@@ -11,7 +11,7 @@
 namespace metalfit::glpreview {
 
 struct EnvironmentHit {
-    Vec3 radiance;
+    RGB radiance;
     double t = std::numeric_limits<double>::infinity();  // ray parameter of the hit (∞ for an image at infinity)
 };
 
@@ -26,13 +26,13 @@ public:
 private:
     EnvironmentHit trace_room(Vec3 origin, Vec3 dir) const;
     EnvironmentHit trace_sphere_room(Vec3 origin, Vec3 dir) const;
-    Vec3 equirect_radiance(Vec3 dir) const;
+    RGB equirect_radiance(Vec3 dir) const;
 
     const Environment& environment_;
     const Image* equirect_;
 };
 
 // Bilinear lookup in an equirect image (u wraps, v clamps), as the shader does it with texelFetch.
-Vec3 sample_equirect(const Image& image, Vec3 dir);
+RGB sample_equirect(const Image& image, Vec3 dir);
 
 }  // namespace metalfit::glpreview

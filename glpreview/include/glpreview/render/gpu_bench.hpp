@@ -4,28 +4,59 @@
 // - localization cost: ms per frame and error against the CPU reference for classic, box-parallax and the
 //   distance impostor (secant, false position, mixed) at 0 … 16 iterations, in the empty and the difficult room.
 // Frames are interleaved across the variants (round-robin) and the median per variant is kept, so that drifts of
-// a shared machine hit every variant alike. Used by `glpreview --bench-*` and, through it, `metalfit bench`.
+// a shared machine hit every variant alike. Both benchmarks are passes of one pass graph (add_gpu_bench_passes):
+// the record asked for decides which passes run, the graph creates and frees their GL resources. Used by
+// `glpreview --bench-*` and, through it, `metalfit bench`.
 #pragma once
 
-#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "glpreview/gl/gl_context.hpp"
+#include "glpreview/graph/pass_graph.hpp"
 #include "glpreview/render/preview.hpp"
+#include "glpreview/render/sphere_fresnel.hpp"
+#include "glpreview/scene/scene.hpp"
 
 namespace metalfit::glpreview {
 
 // Each pixel evaluates the model this many times (at different μ) so that the pass measures the model and not
 // the framebuffer write; the JSON says so.
 inline constexpr int kShaderBenchEvaluationsPerPixel = 16;
+inline constexpr int kShaderBenchSize = 1024;
+
+// A room of the localization benchmark: data/scenes/sheet.json ("difficult") or the same room emptied ("empty"),
+// seen from close by so that the sphere fills most of the frame; its one sphere shows the reference Fresnel.
+struct LocalizationRoom {
+    std::string name;
+    Scene scene;
+};
+std::vector<LocalizationRoom> localization_rooms(const std::filesystem::path& data_dir, bool quick);
+
+// What the benchmark passes share (as PreviewRun does for a preview): the settings, the rooms (their spheres
+// change reflection settings between timed frames), the GL context (null: the graph can be compiled, not run).
+struct GpuBenchRun {
+    PreviewOptions options;
+    bool quick = false;
+    GlContext* context = nullptr;
+    std::vector<LocalizationRoom> rooms;
+    std::optional<FresnelLibrary> library;  // made by the localization's first pass
+};
+
+// The records the benchmarks produce; request one, and the graph culls the other benchmark's passes.
+struct GpuBenchHandles {
+    graph::Handle<nlohmann::ordered_json> shaders, localization;
+};
+GpuBenchHandles add_gpu_bench_passes(graph::PassGraph& graph, GpuBenchRun& run);
 
 // {"renderer", "size", "frames", "evaluations_per_pixel", "models": [{"model", "ms_per_frame", "ratio_to_conductor_rgb"}]}
-nlohmann::ordered_json bench_shaders(GlContext& context, bool quick);
+nlohmann::ordered_json bench_shaders(GlContext& context, const PreviewOptions& options, bool quick);
 
 // {"renderer", "size", "frames", "rooms": [{"room", "rows": [{"mode", "strategy", "iterations", "ms_per_frame",
-//  "ratio_to_classic", "rmse", "mean_abs"}]}]}; the rooms are data/scenes/sheet.json and the same room emptied,
-// seen from close by so that the sphere fills most of the frame.
+//  "ratio_to_classic", "rmse", "mean_abs"}]}]}.
 nlohmann::ordered_json bench_localization(GlContext& context, const PreviewOptions& options, bool quick);
 
 }  // namespace metalfit::glpreview

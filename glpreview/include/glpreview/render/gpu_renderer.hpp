@@ -44,7 +44,7 @@ public:
     GpuRenderer(const GpuRenderer&) = delete;
     GpuRenderer& operator=(const GpuRenderer&) = delete;
 
-    // Replaces sphere i's Fresnel (the scene's sphere must name the same fresnel kind: "reference" or the model).
+    // Replaces sphere i's Fresnel (the scene's sphere must show the same Fresnel: the reference or that model).
     void set_fresnel(std::size_t sphere, const SphereFresnel* fresnel);
 
     // Ray-casts the environment into `cube` (once; spheres may move afterwards) and reflects it from then on.

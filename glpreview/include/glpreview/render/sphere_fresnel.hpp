@@ -25,7 +25,7 @@ struct SphereFresnel {
     std::string material;       // "gold"
     std::string source;         // "Johnson"
     std::string fresnel;        // "reference" or a model id
-    std::string params;         // "fit" or "closed" (models), "" for the reference
+    std::optional<ParameterSource> params;  // models: fitted or closed-form parameters
     std::vector<RGB> lut;       // reference: R_c(μ_i)
     const Model* model = nullptr;
     ModelParameters parameters;   // model: values per channel
@@ -54,7 +54,7 @@ public:
 private:
     // The model's fitted or best closed-form parameters; InputError naming `field`.params when none is defined.
     std::unique_ptr<SphereFresnel> model_fresnel(const Material& material, const ModelResult& result,
-                                                 const std::string& params, const std::string& field) const;
+                                                 ParameterSource params, const std::string& field) const;
 
     Catalog catalog_;
     Colorimetry colorimetry_;

@@ -1,13 +1,16 @@
-// The scene of a preview: plain structs parsed strictly from JSON (docs/scene.md). Unknown keys and wrong types are
+// The scene of a preview: plain structs parsed strictly from JSON (docs/scene.md); positions are Vec3, radiance
+// and colours libfit RGB (linear, the scene_linear space). Unknown keys and wrong types are
 // errors naming the field ("scene.json: spheres[1].iterations: expected an integer").
 #pragma once
 
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "glpreview/scene/vec3.hpp"
+#include "libfit/color/color.hpp"
 
 namespace metalfit::glpreview {
 
@@ -21,23 +24,23 @@ struct Camera {
 // An axis-aligned box inside a room (a column is a box from floor to ceiling).
 struct RoomBox {
     Vec3 min, max;
-    Vec3 color{0.6, 0.6, 0.6};  // radiance of its top face; sides are darker (docs/scene.md)
+    RGB color{0.6, 0.6, 0.6};  // radiance of its top face; sides are darker (docs/scene.md)
 };
 
 // A rectangular emissive panel on the ceiling, in x and z.
 struct CeilingPanel {
     double min_x = 0, min_z = 0, max_x = 0, max_z = 0;
-    Vec3 radiance{6, 6, 6};
+    RGB radiance{6, 6, 6};
 };
 
 // The procedural analytic room: an axis-aligned box with coloured walls, a checkerboard floor, emissive ceiling
 // panels and optional boxes inside.
 struct Room {
     Vec3 min{-3, 0, -3}, max{3, 3, 3};
-    Vec3 wall_x_min{0.65, 0.20, 0.15}, wall_x_max{0.15, 0.25, 0.65};  // left, right
-    Vec3 wall_z_min{0.60, 0.60, 0.55}, wall_z_max{0.20, 0.50, 0.25};  // back, front
-    Vec3 floor_light{0.8, 0.8, 0.8}, floor_dark{0.08, 0.08, 0.08};
-    Vec3 ceiling{0.35, 0.35, 0.35};
+    RGB wall_x_min{0.65, 0.20, 0.15}, wall_x_max{0.15, 0.25, 0.65};  // left, right
+    RGB wall_z_min{0.60, 0.60, 0.55}, wall_z_max{0.20, 0.50, 0.25};  // back, front
+    RGB floor_light{0.8, 0.8, 0.8}, floor_dark{0.08, 0.08, 0.08};
+    RGB ceiling{0.35, 0.35, 0.35};
     double checker = 0.5;  // size of the floor and wall checks (m)
     std::vector<CeilingPanel> panels;
     std::vector<RoomBox> boxes;
@@ -47,7 +50,7 @@ struct Room {
 struct SphereRoom {
     double radius = 4;
     double checker_deg = 15;  // latitude-longitude checks
-    Vec3 light{0.9, 0.8, 0.6}, dark{0.1, 0.15, 0.3};
+    RGB light{0.9, 0.8, 0.6}, dark{0.1, 0.15, 0.3};
 };
 
 // An equirectangular (latitude-longitude) HDR image at infinity; classic reflections only.
@@ -72,13 +75,23 @@ struct Environment {
 enum class ReflectionMode { classic, distance_impostor, box_parallax };
 enum class Strategy { secant, false_position, mixed };
 
+// What a sphere's Fresnel is: the exact reference curve, or a libfit model (named by its id, resolved against the
+// model registry when the sphere's Fresnel data is made, where an unknown id is reported) with its parameters
+// fitted or in closed form.
+enum class ParameterSource { fit, closed };
+struct ReferenceFresnel {};
+struct ModelFresnel {
+    std::string model;  // a libfit model id, "f82-tint"
+    ParameterSource parameters = ParameterSource::fit;
+};
+using FresnelChoice = std::variant<ReferenceFresnel, ModelFresnel>;
+
 struct Sphere {
     Vec3 center;
     double radius = 0.5;
     std::string material = "Au";  // catalog name or a file (resolved against the scene file's folder)
     std::string source;           // catalog source ("" = primary)
-    std::string fresnel = "reference";  // "reference" or a libfit model id
-    std::string params = "fit";         // "fit" or "closed" (models only)
+    FresnelChoice fresnel = ReferenceFresnel{};  // JSON: "fresnel": "reference" or a model id, "params": "fit" | "closed"
     ReflectionMode reflection = ReflectionMode::distance_impostor;
     Strategy strategy = Strategy::false_position;
     int iterations = 4;
@@ -110,5 +123,8 @@ Scene load_scene(const std::filesystem::path& file);
 const char* to_string(ReflectionMode mode);  // "classic", "distance-impostor", "box-parallax"
 const char* to_string(Strategy strategy);    // "secant", "false-position", "mixed"
 const char* to_string(EnvironmentType type);  // "room", "sphere-room", "equirect"
+const char* to_string(ParameterSource source);  // "fit", "closed"
+std::string fresnel_name(const FresnelChoice& fresnel);  // "reference" or the model id, as in the scene JSON
+inline bool shows_reference(const Sphere& sphere) { return std::holds_alternative<ReferenceFresnel>(sphere.fresnel); }
 
 }  // namespace metalfit::glpreview
