@@ -35,7 +35,7 @@ struct CostRow {
     std::string kind;  // "model", "exact", "lut"
     std::string description;
     std::optional<int> params_per_channel;
-    double median_rel_rms = 0;  // catalog, worst channel, as fit-summary.py
+    double median_rel_rms = 0;  // catalog, worst channel, as libfit/fit/catalog_summary
     double worst_rel_rms = 0;
     std::string accuracy_source;      // where the accuracy comes from
     double ns_scalar = 0;             // per evaluation (3 channels), median over rounds

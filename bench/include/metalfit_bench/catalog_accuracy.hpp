@@ -1,4 +1,4 @@
-// Accuracy over the built-in catalog, computed as scripts/fit-summary.py computes it from `metalfit fit --all`:
+// Accuracy over the built-in catalog, computed with the definitions of libfit/fit/catalog_summary (`metalfit fit --all --summary`):
 // per material the worst-channel rel_rms of each model's fit, then the median and the worst over the materials.
 // Also the same figures for the reference LUTs (their rel_rms against the reference at the same nodes), and the
 // time each model's fit_model() takes per material (closed forms, every Ceres start, metrics).
@@ -33,7 +33,7 @@ struct CatalogAccuracy {
 CatalogAccuracy catalog_accuracy(const Environment& env, std::span<const int> lut_entries,
                                  const std::function<void(std::size_t, std::size_t)>& progress = {});
 
-// The median and worst of a summary's values (NaN ignored), as fit-summary.py does.
+// The median and worst of a summary's values (NaN ignored): libfit's spread_of_defined.
 void summarise(AccuracySummary& summary);
 
 }  // namespace metalfit::bench

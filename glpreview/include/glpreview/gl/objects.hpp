@@ -57,35 +57,33 @@ using Query = Object<detail::delete_query>;
 using Program = Object<detail::delete_program>;
 using Shader = Object<detail::delete_shader>;
 
-inline Texture create_texture(GLenum target) {
+namespace detail {
+// A new object from one of GL 4.5's glCreate*(…, 1, &id) calls, owned by its handle.
+template <class Handle, class Create>
+Handle create_one(Create&& create) {
     GLuint id = 0;
-    glCreateTextures(target, 1, &id);
-    return Texture(id);
+    create(&id);
+    return Handle(id);
+}
+}  // namespace detail
+
+inline Texture create_texture(GLenum target) {
+    return detail::create_one<Texture>([&](GLuint* id) { glCreateTextures(target, 1, id); });
 }
 inline Framebuffer create_framebuffer() {
-    GLuint id = 0;
-    glCreateFramebuffers(1, &id);
-    return Framebuffer(id);
+    return detail::create_one<Framebuffer>([](GLuint* id) { glCreateFramebuffers(1, id); });
 }
 inline Renderbuffer create_renderbuffer() {
-    GLuint id = 0;
-    glCreateRenderbuffers(1, &id);
-    return Renderbuffer(id);
+    return detail::create_one<Renderbuffer>([](GLuint* id) { glCreateRenderbuffers(1, id); });
 }
 inline Buffer create_buffer() {
-    GLuint id = 0;
-    glCreateBuffers(1, &id);
-    return Buffer(id);
+    return detail::create_one<Buffer>([](GLuint* id) { glCreateBuffers(1, id); });
 }
 inline VertexArray create_vertex_array() {
-    GLuint id = 0;
-    glCreateVertexArrays(1, &id);
-    return VertexArray(id);
+    return detail::create_one<VertexArray>([](GLuint* id) { glCreateVertexArrays(1, id); });
 }
 inline Query create_query(GLenum target) {
-    GLuint id = 0;
-    glCreateQueries(target, 1, &id);
-    return Query(id);
+    return detail::create_one<Query>([&](GLuint* id) { glCreateQueries(target, 1, id); });
 }
 inline Program create_program() { return Program(glCreateProgram()); }
 inline Shader create_shader(GLenum type) { return Shader(glCreateShader(type)); }
