@@ -33,7 +33,7 @@ std::string signature(const Model& m) {
 void run_models(const ModelsOptions& o) {
     const std::vector<const Model*> models = parse_model_list(o.models);
     if (o.glsl) {
-        emit("// metalfit " METALFIT_VERSION " Fresnel models (libfit/shaders): F(mu), mu = cos(theta), per RGB channel.\n" +
+        emit("// metalfit " METALFIT_VERSION " Fresnel models (libfit/models): F(mu), mu = cos(theta), per RGB channel.\n" +
                  glsl_library(models),
              o.output);
         return;

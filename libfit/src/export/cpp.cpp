@@ -80,7 +80,7 @@ namespace detail {
 std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials, const ExportContext& context) {
     std::vector<ExportFile> files;
     files.push_back({"cpp/metalfit_models.hpp",
-                     "// metalfit " METALFIT_VERSION " Fresnel models for C++: the GLSL of libfit/shaders, unchanged but for "
+                     "// metalfit " METALFIT_VERSION " Fresnel models for C++: the GLSL of libfit/models, unchanged but for "
                      "`inline`, over a\n// small vec3 prelude (docs/export.md). F(mu), mu = cos(theta), per RGB channel.\n"
                      "#pragma once\n\n" +
                          std::string(kCppPrelude) + inline_functions(glsl_library(context.request.models)) +

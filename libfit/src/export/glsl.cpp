@@ -32,7 +32,7 @@ std::vector<ExportFile> export_glsl(const std::vector<MaterialExport>& materials
     static constexpr ShaderSyntax kGlsl{"const vec3", "vec3", "metalfit_models.glsl"};
     std::vector<ExportFile> files;
     files.push_back({"glsl/metalfit_models.glsl",
-                     "// metalfit " METALFIT_VERSION " Fresnel models: the GLSL of libfit/shaders, unchanged (`metalfit models --glsl`).\n"
+                     "// metalfit " METALFIT_VERSION " Fresnel models: the GLSL of libfit/models, unchanged (`metalfit models --glsl`).\n"
                      "// F(mu), mu = cos(theta), per RGB channel. Paste after #version (GLSL >= 1.30 or ES 3.00).\n" +
                          glsl_library(context.request.models)});
     for (const MaterialExport& m : materials)

@@ -85,7 +85,7 @@ std::vector<ExportFile> export_hlsl(const std::vector<MaterialExport>& materials
     static constexpr ShaderSyntax kHlsl{"static const float3", "float3", "metalfit_models.hlsl"};
     std::vector<ExportFile> files;
     files.push_back({"hlsl/metalfit_models.hlsl",
-                     "// metalfit " METALFIT_VERSION " Fresnel models for HLSL: libfit/shaders translated mechanically "
+                     "// metalfit " METALFIT_VERSION " Fresnel models for HLSL: the GLSL of libfit/models translated mechanically "
                      "(prelude + token mapping, docs/export.md).\n// F(mu), mu = cos(theta), per RGB channel.\n" +
                          hlsl_from_glsl(glsl_library(context.request.models))});
     for (const MaterialExport& m : materials)
