@@ -3,7 +3,7 @@
 #include <string>
 #include <tuple>
 
-#include "fit/fit_channel.hpp"
+#include "models/fit_channel.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/models/registry.hpp"

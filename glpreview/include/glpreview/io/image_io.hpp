@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "glpreview/render/image.hpp"
+#include "glpreview/io/image.hpp"
 #include "libfit/color/display_transform.hpp"
 
 namespace metalfit::glpreview {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "glpreview/render/environment.hpp"
-#include "glpreview/render/image.hpp"
+#include "glpreview/io/image.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <limits>
 
-#include "glpreview/render/image.hpp"
+#include "glpreview/io/image.hpp"
 #include "glpreview/scene/scene.hpp"
 
 namespace metalfit::glpreview {

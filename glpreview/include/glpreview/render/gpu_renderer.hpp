@@ -13,7 +13,7 @@
 #include "glpreview/gl/gl_context.hpp"
 #include "glpreview/gl/objects.hpp"
 #include "glpreview/render/gpu_resources.hpp"
-#include "glpreview/render/image.hpp"
+#include "glpreview/io/image.hpp"
 #include "glpreview/render/plan.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"

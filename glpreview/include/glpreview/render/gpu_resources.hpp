@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "glpreview/gl/objects.hpp"
-#include "glpreview/render/image.hpp"
+#include "glpreview/io/image.hpp"
 
 namespace metalfit::glpreview {
 

@@ -12,7 +12,7 @@
 
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/gl/gl_context.hpp"
-#include "glpreview/render/image.hpp"
+#include "glpreview/io/image.hpp"
 #include "glpreview/render/plan.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "libfit/color/color_space.hpp"

@@ -18,7 +18,7 @@
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/gpu_resources.hpp"
-#include "glpreview/render/image.hpp"
+#include "glpreview/io/image.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
 #include "libfit/color/color_space.hpp"
 

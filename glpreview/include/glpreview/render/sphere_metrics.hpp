@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "glpreview/render/cpu_reference.hpp"
-#include "glpreview/render/image.hpp"
+#include "glpreview/io/image.hpp"
 
 namespace metalfit::glpreview {
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "libfit/color/color.hpp"
+#include "libfit/reference/channel_target.hpp"
 
 namespace metalfit {
 
@@ -86,15 +87,6 @@ struct ClosedForm {
     bool defined() const;
     ModelParameters params() const;      // requires defined()
     std::string undefined_reason() const;  // "red: ...; blue: ..." (empty when defined)
-};
-
-// One channel of a reference curve at the quadrature nodes, ready for least squares:
-// residual_i = scale_i (M(μ_i) − value_i) with scale_i = sqrt(W_i w(μ_i)) / (value_i for rel, 1 for abs),
-// so that ½ Σ residual² = ½ (chosen rms)².
-struct ChannelTarget {
-    std::vector<double> mu;
-    std::vector<double> value;
-    std::vector<double> scale;
 };
 
 struct SolverSummary {

@@ -9,7 +9,7 @@
 
 #include "libfit/color/color.hpp"
 #include "libfit/color/color_difference.hpp"
-#include "libfit/models/model.hpp"
+#include "libfit/reference/channel_target.hpp"
 #include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit {

@@ -1,4 +1,4 @@
-// Ceres least squares of one channel of one model (internal; used by the model adapters in models.cpp).
+// Ceres least squares of one channel of one model (internal: the model adapters in model.cpp instantiate it for every registered model).
 #pragma once
 
 #include <ceres/ceres.h>
