@@ -1,14 +1,10 @@
 // metalfit fit: closed forms and Ceres fits of cheap Fresnel models for one material or the whole catalog.
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cstdio>
-#include <exception>
 #include <functional>
 #include <iostream>
-#include <mutex>
 #include <sstream>
 #include <thread>
 
