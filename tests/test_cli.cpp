@@ -210,6 +210,33 @@ TEST_F(Cli, FitJsonRecordHasTheDocumentedShape) {
     EXPECT_GT(gold["models"]["f82-tint"]["fit"]["params"]["F0"][0].get<double>(), 1.0);
 }
 
+TEST_F(Cli, ExportIntoANewFolderGivenWithATrailingSlash) {
+    // The README's example: `-o gold/` names the folder gold, which does not exist yet.
+    const Result r = run("export gold --model f82-tint --format glsl,mtlx -o '" + (dir_ / "gold").string() + "/'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(fs::is_regular_file(dir_ / "gold" / "glsl" / "metalfit_models.glsl"));
+    EXPECT_TRUE(fs::is_regular_file(dir_ / "gold" / "mtlx" / "metalfit_au_f82_tint.mtlx"));
+}
+
+TEST_F(Cli, UnknownCommandAndMissingMaterialSayWhatIsWrong) {
+    for (const char* args : {"shwo gold", "--data-dir '" METALFIT_TEST_DATA "' shwo"}) {
+        const Result r = run(args);
+        EXPECT_EQ(r.exit_code, 2) << args;
+        expect_one_line_error(r, "unknown command 'shwo'");
+        EXPECT_NE(r.err.find("show"), std::string::npos) << r.err;  // the commands are listed
+    }
+    for (const char* command : {"fit", "export --model f82-tint --format glsl -o x"}) {
+        const Result neither = run(command);
+        EXPECT_EQ(neither.exit_code, 2) << command;
+        expect_one_line_error(neither, "give a material (catalog name or file), or --all");
+        EXPECT_EQ(neither.err.find("not both"), std::string::npos) << neither.err;
+    }
+    const Result both = run("fit Au --all");
+    EXPECT_EQ(both.exit_code, 2);
+    expect_one_line_error(both, "not both");
+    EXPECT_FALSE(fs::exists(dir_ / "x"));
+}
+
 TEST_F(Cli, FitSummaryRowsAreTheRecordsWorstChannels) {
     // The Markdown summary and the JSON record are written by different code from the same fits: each cell of the
     // summary must be 100 × the largest rel_rms channel of the record, to two decimals.

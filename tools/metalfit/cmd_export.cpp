@@ -27,7 +27,8 @@ struct ExportOptions {
 };
 
 void run_export(const ExportOptions& o, const GlobalOptions& global) {
-    if (o.all == !o.material.empty()) throw UsageError("export: give a material (or file) or --all, not both");
+    if (!o.all && o.material.empty()) throw UsageError("export: give a material (catalog name or file), or --all");
+    if (o.all && !o.material.empty()) throw UsageError("export: give a material or --all, not both");
     if (o.all && !o.source.empty()) throw UsageError("export: --source needs a single material");
     // Every argument is checked before any work, so that a usage error costs nothing and writes nothing.
     const ExportRequest request{parse_export_formats(o.formats), parse_model_list(o.models), parse_parameter_source(o.params),

@@ -114,7 +114,8 @@ void print_timings(const std::vector<MaterialFit>& fits, double wall_seconds, in
 }
 
 void run_fit(const FitOptions& o, const GlobalOptions& global) {
-    if (o.all == !o.material.empty()) throw UsageError("fit: give a material (or file) or --all, not both");
+    if (!o.all && o.material.empty()) throw UsageError("fit: give a material (catalog name or file), or --all");
+    if (o.all && !o.material.empty()) throw UsageError("fit: give a material or --all, not both");
     if (o.all && !o.source.empty()) throw UsageError("fit: --source needs a single material");
     const Catalog catalog = Catalog::load(global.data_dir);
     const auto loaders = material_loaders(catalog, o.all, o.material, o.source);

@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 
 namespace metalfit::cli {
 
@@ -32,5 +34,9 @@ void warn(const std::string& message);
 
 // v with `digits` decimals for human-readable tables; "-" for NaN (an undefined metric).
 std::string fixed(double v, int digits = 5);
+
+// The first word of the command line that is neither an option nor the value of one of `options_with_values`
+// (empty if none): the command a user typed, for the message about an unknown one.
+std::string first_command_word(int argc, char** argv, std::initializer_list<std::string_view> options_with_values);
 
 }  // namespace metalfit::cli

@@ -1,6 +1,9 @@
 // metalfit: measured metal n,k → shader-ready Fresnel constants. A thin layer over libfit.
 // Exit codes (docs/cli.md): 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 colour configuration.
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <string_view>
 #include <cstdio>
 #include <iostream>
 
@@ -24,6 +27,16 @@ std::string fixed(double v, int digits) {
     char text[32];
     std::snprintf(text, sizeof text, "%.*f", digits, v);
     return text;
+}
+
+// The first word of the command line that is neither an option nor an option's value: the command a user typed.
+std::string first_command_word(int argc, char** argv, std::initializer_list<std::string_view> options_with_values) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view arg = argv[i];
+        if (arg.empty() || arg[0] != '-') return std::string(arg);
+        if (std::find(options_with_values.begin(), options_with_values.end(), arg) != options_with_values.end()) ++i;
+    }
+    return {};
 }
 
 }  // namespace metalfit::cli
@@ -65,6 +78,15 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
+        // CLI11 says "A subcommand is required" for a mistyped one too: name the word and the commands instead.
+        if (app.get_subcommands().empty())
+            if (const std::string word = cli::first_command_word(argc, argv, {"--data-dir", "--ocio-config"}); !word.empty()) {
+                std::string known;
+                for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+                    known += (known.empty() ? "" : ", ") + sub->get_name();
+                std::fprintf(stderr, "metalfit: unknown command '%s' (commands: %s; --help for more)\n", word.c_str(), known.c_str());
+                return usage;
+            }
         const int code = app.exit(e);
         return code == 0 ? ok : usage;
     }

@@ -298,8 +298,11 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
     return files;
 }
 
-void write_export(const std::filesystem::path& dir, const std::vector<ExportFile>& files) {
+void write_export(const std::filesystem::path& requested_dir, const std::vector<ExportFile>& files) {
     namespace fs = std::filesystem;
+    // "gold/" names the folder "gold": without the trailing separator, so that creating it is not tried twice.
+    const fs::path dir = requested_dir.has_filename() || !requested_dir.has_relative_path() ? requested_dir
+                                                                                          : requested_dir.parent_path();
     std::error_code ec;
     // Folders this call creates, outermost first, so that a failure can take them away again.
     std::vector<fs::path> created;
