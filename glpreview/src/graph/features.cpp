@@ -2,17 +2,9 @@
 
 #include <algorithm>
 
+#include "libfit/base/text.hpp"
+
 namespace metalfit::glpreview {
-namespace {
-
-std::string join(const std::vector<std::string>& items, const char* separator) {
-    std::string text;
-    for (const auto& item : items) text += (text.empty() ? "" : separator) + item;
-    return text;
-}
-
-}  // namespace
-
 const char* environment_define(EnvironmentType type) {
     switch (type) {
         case EnvironmentType::room: return "ENV_ROOM";

@@ -3,17 +3,9 @@
 #include <algorithm>
 #include <set>
 
+#include "libfit/base/text.hpp"
+
 namespace metalfit::glpreview::graph {
-namespace {
-
-std::string join(const std::vector<std::string>& items) {
-    std::string text;
-    for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
-    return text;
-}
-
-}  // namespace
-
 std::any& Resources::slot(std::size_t resource) {
     if (!graph_.declared(pass_, resource))
         throw GraphError("pass '" + graph_.passes_.at(pass_).info.name + "' uses '" + graph_.resources_.at(resource).name +

@@ -6,17 +6,9 @@
 #include <map>
 #include <sstream>
 
+#include "libfit/base/text.hpp"
+
 namespace metalfit::glpreview {
-namespace {
-
-std::string join(const std::vector<std::string>& items, const char* separator = ", ") {
-    std::string text;
-    for (const auto& item : items) text += (text.empty() ? "" : separator) + item;
-    return text;
-}
-
-}  // namespace
-
 bool Plan::runs(const std::string& pass_name) const {
     return std::any_of(passes.begin(), passes.end(), [&](const Pass& p) { return p.name == pass_name; });
 }

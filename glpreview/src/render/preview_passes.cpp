@@ -5,6 +5,7 @@
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/sample_statistics.hpp"
+#include "libfit/base/text.hpp"
 
 namespace metalfit::glpreview {
 namespace {
@@ -14,12 +15,6 @@ using graph::Handle;
 using graph::PassGraph;
 using graph::Processor;
 using graph::Resources;
-
-std::string join(const std::vector<std::string>& items, const char* separator = ", ") {
-    std::string text;
-    for (const auto& item : items) text += (text.empty() ? "" : separator) + item;
-    return text;
-}
 
 struct Empty {};
 template <typename T>
