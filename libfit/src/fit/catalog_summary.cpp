@@ -57,7 +57,7 @@ std::string catalog_summary_markdown(const CatalogSummary& summary, const FitRec
     const ErrorSettings& e = context.error;
     s << "Worst-channel `rel_rms` in %, fit / best closed form; " << context.space << ", " << to_string(context.illuminant)
       << ", " << to_string(context.observer) << ", "
-      << (context.spectral.interpolation == Interpolation::pchip ? "pchip" : "linear") << " interpolation, "
+      << to_string(context.spectral.interpolation) << " interpolation, "
       << to_string(e.metric) << " metric, " << to_string(e.weight) << " weight, " << e.nodes << " nodes (metalfit "
       << METALFIT_VERSION << ").\n\n";
     s << "| material |";

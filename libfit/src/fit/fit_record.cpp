@@ -124,7 +124,7 @@ Json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContex
                                {"origin", context.config.origin},
                                {"sha256", sha256_file(context.config.path)}}},
               {"color_space", context.space},
-              {"interpolation", context.spectral.interpolation == Interpolation::pchip ? "pchip" : "linear"},
+              {"interpolation", to_string(context.spectral.interpolation)},
               {"out_of_range", context.spectral.out_of_range == OutOfRange::clamp ? "clamp" : "error"},
               {"white_balance", "R_c = RGB_c(F) / RGB_c(perfect reflector)"},
               {"nodes", e.nodes},

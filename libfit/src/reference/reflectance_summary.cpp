@@ -53,7 +53,7 @@ nlohmann::json reflectance_record(const Material& material, const ReferenceCurve
                        {"points_360_830", material.index.n.tabulated_points_in(kVisibleRange)},
                        {"cmf", to_string(colorimetry.observer())},
                        {"illuminant", to_string(colorimetry.illuminant())},
-                       {"interpolation", spectral.interpolation == Interpolation::pchip ? "pchip" : "linear"},
+                       {"interpolation", to_string(spectral.interpolation)},
                        {"extrapolate", spectral.out_of_range == OutOfRange::clamp},
                        {"ocio_config", config.path.string()},
                        {"ocio_config_origin", config.origin},

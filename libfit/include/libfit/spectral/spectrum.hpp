@@ -10,6 +10,8 @@
 namespace metalfit {
 
 enum class Interpolation { linear, pchip };
+// "linear" / "pchip", as records and options spell them.
+inline const char* to_string(Interpolation i) { return i == Interpolation::pchip ? "pchip" : "linear"; }
 // What to do when asked for a wavelength outside the measured range.
 enum class OutOfRange { error, clamp };
 
