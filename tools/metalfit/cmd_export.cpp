@@ -40,8 +40,7 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     const MaterialFitRequest fit_request{setup.spectral, error, models_to_fit(request)};
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     TerminalProgress progress;
-    const std::vector<MaterialFit> fits =
-        fit_materials(loaders, {setup.config, setup.colorimetry, setup.converter}, fit_request, jobs, progress.callback());
+    const std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), fit_request, jobs, progress.callback());
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
     const FitRecordContext context{setup.config, setup.converter.space(), setup.colorimetry.observer(),

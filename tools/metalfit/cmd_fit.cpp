@@ -126,8 +126,7 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     const auto start = std::chrono::steady_clock::now();
     TerminalProgress progress;
-    const std::vector<MaterialFit> fits =
-        fit_materials(loaders, {setup.config, setup.colorimetry, setup.converter}, request, jobs, progress.callback());
+    const std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), request, jobs, progress.callback());
     if (o.timings) print_timings(fits, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), jobs);
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
+#include "libfit/fit/fit_batch.hpp"
 #include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit::cli {
@@ -28,6 +29,9 @@ struct ColourSetup {
     Colorimetry colorimetry;
     ColorSpaceConverter converter;
     SpectralOptions spectral;
+
+    // The colour pipeline of a batch fit (fit_materials), referring to this setup.
+    BatchColour batch() const { return {config, colorimetry, converter}; }
 };
 
 // Warns when --ocio-config is overridden by $OCIO.
