@@ -54,8 +54,8 @@ public:
     template <class G>
     auto map(G&& g) const -> DenseSpectrum<std::decay_t<decltype(g(std::declval<const T&>()))>> {
         using U = std::decay_t<decltype(g(std::declval<const T&>()))>;
-        DenseSpectrum<U> out = DenseSpectrum<U>::sampled(first_nm(), last_nm(), [&](int nm) { return g(at_nm(nm)); });
-        return out;
+        std::size_t i = 0;  // sampled() visits the grid in order: the i-th value is the one at nm(i)
+        return DenseSpectrum<U>::sampled(first_nm(), last_nm(), [&](int) { return g(values_[i++]); });
     }
 
 private:
