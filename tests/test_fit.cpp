@@ -27,6 +27,7 @@
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/interleaved_timer.hpp"
 #include "libfit/fit/catalog_summary.hpp"
 #include "libfit/fit/fit.hpp"
 #include "libfit/fit/fit_record.hpp"
@@ -868,6 +869,21 @@ TEST(CatalogSummary, SpreadLeavesUndefinedValuesOut) {
     EXPECT_DOUBLE_EQ(spread_of_defined({0.7}).median, 0.7);
     EXPECT_TRUE(std::isnan(spread_of_defined({nan, nan}).median));
     EXPECT_TRUE(std::isnan(spread_of_defined({}).worst));
+}
+
+TEST(InterleavedTimer, OneCallPerSampleRunsEachJobOnceToWarmUpThenOncePerRoundInTurn) {
+    // What glpreview's GPU rounds rely on: with seconds_per_sample 0 every sample is one call, the calibration call
+    // comes first, and the rounds alternate between the jobs.
+    std::string calls;
+    const std::vector<TimedJob> jobs{{[&] { calls += 'a'; }, 1}, {[&] { calls += 'b'; }, 1}};
+    const std::vector<JobTiming> timings = time_interleaved(jobs, {3, 0.0});
+    EXPECT_EQ(calls, "ab" "ababab");
+    ASSERT_EQ(timings.size(), 2u);
+    for (const JobTiming& t : timings) {
+        ASSERT_EQ(t.ns_per_item.size(), 3u);
+        for (double ns : t.ns_per_item) EXPECT_GE(ns, 0.0);
+        EXPECT_EQ(t.median_ns, median(t.ns_per_item));
+    }
 }
 
 }  // namespace metalfit
