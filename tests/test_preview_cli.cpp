@@ -120,5 +120,56 @@ TEST(PreviewCli, BenchmarkModesPrintTheirJson) {
     }
 }
 
+
+// A one-sphere scene under the shipped equirect sky (a user's HDRI): the sheet renders under it.
+fs::path write_equirect_sheet_scene(const TempDir& dir) {
+    return dir.write("sky-sheet.json", R"({"image": {"width": 48, "height": 48},
+        "camera": {"position": [0, 0.2, 3.0], "look_at": [0, 0.2, 0], "fov_y_deg": 30},
+        "environment": {"type": "equirect", "file": ")" + (kData / "scenes" / "sky.hdr").string() + R"(", "intensity": 1.0},
+        "spheres": [{"center": [0, 0.2, 0], "radius": 0.5, "reflection": "classic"}]})");
+}
+
+TEST(PreviewCli, SheetRendersUnderAnEquirectEnvironment) {
+    TempDir dir;
+    const fs::path scene = write_equirect_sheet_scene(dir);
+    const CommandRun run = glpreview(scene.string() + " --sheet Au -o " + (dir.path() / "out").string(), dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_TRUE(fs::exists(dir.path() / "out" / "sheet.png"));
+    const auto record = nlohmann::json::parse(read_file(dir.path() / "out" / "sheet.json"));
+    ASSERT_EQ(record.size(), 1u);
+    EXPECT_EQ(record[0]["material"], "gold");
+}
+
+TEST(PreviewCli, ExplainWithSheetPrintsTheSheetsPlan) {
+    TempDir dir;
+    const fs::path scene = write_equirect_sheet_scene(dir);
+    const CommandRun run = glpreview(scene.string() + " --sheet Au,Cu --explain -o " + (dir.path() / "out").string(), dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_TRUE(Contains(run.out, "sheet-fresnel")) << run.out;
+    EXPECT_TRUE(Contains(run.out, "Au, Cu")) << run.out;
+    EXPECT_TRUE(Contains(run.out, "load-equirect")) << run.out;
+    EXPECT_TRUE(Contains(run.out, "sheet.png")) << run.out;
+    EXPECT_FALSE(Contains(run.out, "cpu-reference")) << run.out;  // the scene's own plan has it; the sheet does not
+    EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
+TEST(PreviewCli, SheetFilesAreRelativeToTheCurrentFolderNotTheScenes) {
+    TempDir dir;
+    fs::create_directories(dir.path() / "scenes");
+    const fs::path scene = dir.write("scenes/sheet.json", R"({"image": {"width": 32, "height": 32},
+        "spheres": [{"center": [0, 1, 0], "radius": 0.5, "reflection": "classic"}]})");
+    fs::copy_file(kFixtures / "valid-nk.csv", dir.path() / "my-gold.csv");
+    // Run in dir: "my-gold.csv" is there, not beside the scene.
+    const fs::path previous = fs::current_path();
+    fs::current_path(dir.path());
+    const CommandRun explained = glpreview(scene.string() + " --sheet my-gold.csv --explain", dir);
+    const CommandRun rendered = glpreview(scene.string() + " --sheet my-gold.csv -o out", dir);
+    fs::current_path(previous);
+    EXPECT_EQ(explained.exit_code, 0) << explained.err;
+    EXPECT_TRUE(Contains(explained.out, (dir.path() / "my-gold.csv").string())) << explained.out;
+    ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
+    EXPECT_TRUE(fs::exists(dir.path() / "out" / "sheet.json"));
+}
+
 }  // namespace
 }  // namespace metalfit::test

@@ -18,6 +18,7 @@
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/version.hpp"
+#include "libfit/io/catalog.hpp"
 
 namespace {
 
@@ -94,17 +95,18 @@ int main(int argc, char** argv) {
             scene.width = std::stoi(m[1]);
             scene.height = std::stoi(m[2]);
         }
+        // --sheet materials given as files are the user's paths: relative to the current folder, not to the scene's.
+        std::vector<std::string> sheet_materials;
+        std::stringstream list(sheet);
+        for (std::string m; std::getline(list, m, ',');)
+            if (!m.empty()) sheet_materials.push_back(looks_like_path(m) ? std::filesystem::absolute(m).string() : m);
         if (explain_only) {
-            std::cout << explain(build_plan(scene), scene);
+            std::cout << explain(sheet.empty() ? build_plan(scene) : build_sheet_plan(scene, sheet_materials), scene);
             return ok;
         }
         PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), output_dir, 0};
         if (!sheet.empty()) {
-            std::vector<std::string> materials;
-            std::stringstream list(sheet);
-            for (std::string m; std::getline(list, m, ',');)
-                if (!m.empty()) materials.push_back(m);
-            const SphereSheet result = render_sphere_sheet(scene, materials, options);
+            const SphereSheet result = render_sphere_sheet(scene, sheet_materials, options);
             for (const auto& row : result.record)
                 std::printf("%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f\n",
                             row["material"].get<std::string>().c_str(), row["model"].get<std::string>().c_str(),

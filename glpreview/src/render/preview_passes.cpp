@@ -16,11 +16,9 @@ using graph::PassGraph;
 using graph::Processor;
 using graph::Resources;
 
+using graph::Out;
+
 struct Empty {};
-template <typename T>
-struct Out {
-    Handle<T> out;
-};
 
 const Image& image_of(const Image& image) { return image; }
 const Image& image_of(const ReferenceRender& render) { return render.image; }
@@ -77,21 +75,18 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
 
 // The inputs of a GPU frame (beauty, timing) bound to the renderer.
 struct FrameInputs {
-    std::optional<Handle<EnvironmentCube>> cube;
-    std::optional<Handle<EquirectTexture>> equirect;
+    EnvironmentInputs environment;
     std::optional<Handle<FresnelSet>> luts, parameters;
 
     void declare(Builder& b, Handle<const Scene*> camera) const {
         b.read(camera);
-        if (cube) b.read(*cube);
-        if (equirect) b.read(*equirect);
+        environment.declare(b);
         if (luts) b.read(*luts);
         if (parameters) b.read(*parameters);
     }
     GpuRenderer& bind(PreviewRun& run, Resources& r) const {
         GpuRenderer& gpu = run.renderer();
-        if (cube) gpu.use_environment(r.get(*cube));
-        if (equirect) gpu.use_equirect(r.get(*equirect));
+        environment.bind(gpu, r);
         return gpu;
     }
 };
@@ -162,6 +157,34 @@ std::pair<Handle<EquirectTexture>, Handle<Image>> add_load_equirect_pass(PassGra
     return {d.texture, d.image};
 }
 
+void EnvironmentInputs::declare(Builder& b) const {
+    if (cube) b.read(*cube);
+    if (equirect_texture) b.read(*equirect_texture);
+}
+
+void EnvironmentInputs::bind(GpuRenderer& gpu, Resources& r) const {
+    if (cube) gpu.use_environment(r.get(*cube));
+    if (equirect_texture) gpu.use_equirect(r.get(*equirect_texture));
+}
+
+EnvironmentInputs add_environment_passes(PassGraph& graph, const Scene& scene, const Features& f, const SceneInputs& in,
+                                         PreviewRun* run) {
+    EnvironmentInputs environment;
+    if (f.environment_capture) {
+        environment.cube = add_capture_environment_pass(graph, scene, f, in, run);
+        if (!f.distance_channel)
+            graph.skip("distance channel", "no sphere uses the distance impostor: the cube map stores radiance only (RGBA16F)");
+    } else {
+        graph.skip("capture-environment", "the environment is an image at infinity: nothing to capture");
+    }
+    if (f.equirect_image) {
+        const auto [texture, image] = add_load_equirect_pass(graph, scene);
+        environment.equirect_texture = texture;
+        environment.equirect_image = image;
+    }
+    return environment;
+}
+
 Handle<FresnelSet> add_reference_luts_pass(PassGraph& graph, const Scene& scene, const SceneInputs& in, PreviewRun* run) {
     return graph
         .add_pass<Out<FresnelSet>>(
@@ -221,18 +244,7 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
     PreviewHandles h;
     const SceneInputs in = import_scene(graph, scene);
     FrameInputs frame;
-    if (f.environment_capture) {
-        h.cube = frame.cube = add_capture_environment_pass(graph, scene, f, in, run);
-        if (!f.distance_channel)
-            graph.skip("distance channel", "no sphere uses the distance impostor: the cube map stores radiance only (RGBA16F)");
-    } else {
-        graph.skip("capture-environment", "the environment is an image at infinity: nothing to capture");
-    }
-    if (f.equirect_image) {
-        const auto [texture, image] = add_load_equirect_pass(graph, scene);
-        h.equirect_texture = frame.equirect = texture;
-        h.equirect_image = image;
-    }
+    h.environment = frame.environment = add_environment_passes(graph, scene, f, in, run);
     if (f.reference_lut) h.luts = frame.luts = add_reference_luts_pass(graph, scene, in, run);
     else graph.skip("reference-luts", "no sphere uses fresnel 'reference'");
     if (f.model_fits) h.parameters = frame.parameters = add_model_parameters_pass(graph, f, in, run);
@@ -257,12 +269,12 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
                            Processor::cpu},
                           [&](Builder& b, Out<ReferenceRender>& d) {
                               b.read(in.camera);
-                              if (h.equirect_image) b.read(*h.equirect_image);
+                              if (h.environment.equirect_image) b.read(*h.environment.equirect_image);
                               if (h.luts) b.read(*h.luts);
                               if (h.parameters) b.read(*h.parameters);
                               d.out = b.produce<ReferenceRender>("reference-image");
                           },
-                          [run, equirect = h.equirect_image](const Out<ReferenceRender>& d, Resources& r) {
+                          [run, equirect = h.environment.equirect_image](const Out<ReferenceRender>& d, Resources& r) {
                               const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr);
                               r.emplace(d.out, render_reference(run->scene, run->fresnel, tracer, run->threads));
                           })

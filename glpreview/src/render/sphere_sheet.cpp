@@ -9,6 +9,7 @@
 #include "glpreview/render/sphere_fresnel.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/text.hpp"
 
 namespace metalfit::glpreview {
 namespace {
@@ -20,44 +21,44 @@ void paste(Image& sheet, const Image& cell, int column, int row) {
 
 }  // namespace
 
-SphereSheet render_sphere_sheet(const Scene& base, const std::vector<std::string>& materials, const PreviewOptions& options,
-                                GlContext* context) {
-    using namespace graph;
-    if (base.spheres.size() != 1) throw InputError(InputLocation(base.file, 0, "spheres"), "a sheet scene holds exactly one sphere");
-    FresnelLibrary library(options.data_dir, options.ocio, base.file);
-    Scene scene = base;  // the renderer's scene: only the sphere's Fresnel kind changes between cells
-    PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, false, {}};
-    const Features features = plan_features(scene);
+namespace {
 
-    struct Row {
-        const SphereFresnel* reference;
-        const SphereFresnel* model;
-    };
-    using Rows = std::vector<Row>;
-    PassGraph graph;
+struct SheetRow {
+    const SphereFresnel* reference;
+    const SphereFresnel* model;
+};
+using SheetRows = std::vector<SheetRow>;
+
+// The sheet's passes. `library` and `run` are null when the graph is only planned (--explain): nothing executes.
+// `scene` is the renderer's copy of `base`: only its sphere's Fresnel kind changes between cells.
+graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base, Scene& scene,
+                                     const std::vector<std::string>& materials, FresnelLibrary* library, PreviewRun* run) {
+    using namespace graph;
+    const Features features = plan_features(scene);
     const SceneInputs in = import_scene(graph, scene);
-    const Handle<Rows> rows =
+    const Handle<SheetRows> rows =
         graph
-            .add_pass<Handle<Rows>>(
-                {"sheet-fresnel", "per material: the reference LUT and the best fitted libfit model", Processor::cpu},
-                [&](Builder& b, Handle<Rows>& out) {
+            .add_pass<Out<SheetRows>>(
+                {"sheet-fresnel",
+                 "per material (" + join(materials) + "): the reference LUT and the best fitted libfit model", Processor::cpu},
+                [&](Builder& b, Out<SheetRows>& d) {
                     b.read(in.materials);
-                    out = b.produce<Rows>("sheet-fresnel");
+                    d.out = b.produce<SheetRows>("sheet-fresnel");
                 },
-                [&](const Handle<Rows>& out, Resources& r) {
-                    Rows& result = r.emplace(out);
+                [&base, &materials, library, run](const Out<SheetRows>& d, Resources& r) {
+                    SheetRows& result = r.emplace(d.out);
                     for (const std::string& name : materials) {
                         Sphere sphere = base.spheres[0];
                         sphere.material = name;
                         sphere.fresnel = ReferenceFresnel{};
-                        const SphereFresnel& reference = library.get(sphere, "sheet material " + name);
-                        sphere.fresnel = ModelFresnel{library.best_model(name), ParameterSource::fit};
-                        result.push_back({&reference, &library.get(sphere, "sheet material " + name)});
+                        const SphereFresnel& reference = library->get(sphere, "sheet material " + name);
+                        sphere.fresnel = ModelFresnel{library->best_model(name), ParameterSource::fit};
+                        result.push_back({&reference, &library->get(sphere, "sheet material " + name)});
                     }
-                    if (!result.empty()) run.fresnel = {result.front().reference};
+                    if (!result.empty()) run->fresnel = {result.front().reference};
                 })
-            ;
-    const Handle<EnvironmentCube> cube = add_capture_environment_pass(graph, scene, features, in, &run);
+            .out;
+    const EnvironmentInputs environment = add_environment_passes(graph, scene, features, in, run);
     struct Cells {
         Handle<Image> image;
         Handle<Json> record;
@@ -66,14 +67,14 @@ SphereSheet render_sphere_sheet(const Scene& base, const std::vector<std::string
         {"sheet-cells", "per material: reference | model | |difference| x 10, one GPU frame each", Processor::gpu},
         [&](Builder& b, Cells& d) {
             b.read(rows);
-            b.read(cube);
+            environment.declare(b);
             d.image = b.produce<Image>("sheet-image");
             d.record = b.produce<Json>("sheet-record");
         },
-        [&](const Cells& d, Resources& r) {
-            GpuRenderer& gpu = run.renderer();
-            gpu.use_environment(r.get(cube));
-            const Rows& all = r.get(rows);
+        [&scene, rows, environment, run](const Cells& d, Resources& r) {
+            GpuRenderer& gpu = run->renderer();
+            environment.bind(gpu, r);
+            const SheetRows& all = r.get(rows);
             Image& sheet = r.emplace(d.image, 3 * scene.width, static_cast<int>(all.size()) * scene.height);
             Json& record = r.emplace(d.record, Json::array());
             for (std::size_t row = 0; row < all.size(); ++row) {
@@ -101,14 +102,40 @@ SphereSheet render_sphere_sheet(const Scene& base, const std::vector<std::string
                                   {"image_rmse_model_vs_reference", std::sqrt(squared / double(model_image.rgb.size()))}});
             }
         });
-    add_image_file_pass(graph, "sheet.exr", cells.image, &run);
-    add_image_file_pass(graph, "sheet.png", cells.image, &run);
-    add_json_file_pass(graph, "sheet.json", "the rows' record", cells.record, &run);
+    add_image_file_pass(graph, "sheet.exr", cells.image, run);
+    add_image_file_pass(graph, "sheet.png", cells.image, run);
+    add_json_file_pass(graph, "sheet.json", "the rows' record", cells.record, run);
     graph.retain(cells.record);
+    return cells.record;
+}
+
+void check_sheet_scene(const Scene& scene) {
+    if (scene.spheres.size() != 1) throw InputError(InputLocation(scene.file, 0, "spheres"), "a sheet scene holds exactly one sphere");
+}
+
+}  // namespace
+
+Plan build_sheet_plan(const Scene& base, const std::vector<std::string>& materials) {
+    check_sheet_scene(base);
+    Scene scene = base;
+    graph::PassGraph graph;
+    add_sheet_passes(graph, base, scene, materials, nullptr, nullptr);
+    graph.compile();
+    return plan_of(graph, plan_features(scene));
+}
+
+SphereSheet render_sphere_sheet(const Scene& base, const std::vector<std::string>& materials, const PreviewOptions& options,
+                                GlContext* context) {
+    check_sheet_scene(base);
+    FresnelLibrary library(options.data_dir, options.ocio, base.file);
+    Scene scene = base;
+    PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, false, {}};
+    graph::PassGraph graph;
+    const graph::Handle<Json> record = add_sheet_passes(graph, base, scene, materials, &library, &run);
     graph.before_first_gpu_pass([&run] { run.open_gl(); });
     graph.compile();
     graph.execute();
-    return {*graph.result(cells.record), run.written};
+    return {*graph.result(record), run.written};
 }
 
 }  // namespace metalfit::glpreview

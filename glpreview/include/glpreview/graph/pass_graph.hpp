@@ -33,6 +33,12 @@ struct Handle {
     std::size_t index = static_cast<std::size_t>(-1);
 };
 
+// The data of a pass with a single output.
+template <typename T>
+struct Out {
+    Handle<T> out;
+};
+
 // The sink of an output file: its writer pass is bound to it by declaring it (Builder::write_file).
 struct OutputFile {
     std::string name;  // "beauty.exr"

@@ -58,11 +58,23 @@ struct SceneInputs {
 };
 SceneInputs import_scene(graph::PassGraph& graph, const Scene& scene);
 
-// The CPU images and values a preview produces (handles into the graph; a culled writer leaves them empty).
-struct PreviewHandles {
+// The environment a GPU frame reads: the cube captured from a procedural room, or the equirect texture of an image
+// at infinity (with its CPU image for the reference tracer).
+struct EnvironmentInputs {
     std::optional<graph::Handle<EnvironmentCube>> cube;
     std::optional<graph::Handle<EquirectTexture>> equirect_texture;
     std::optional<graph::Handle<Image>> equirect_image;
+
+    void declare(graph::Builder& b) const;                 // the frame pass reads what exists
+    void bind(GpuRenderer& gpu, graph::Resources& r) const;  // and hands it to the renderer
+};
+// The environment passes the features call for (capture-environment or load-equirect) and the skips --explain lists.
+EnvironmentInputs add_environment_passes(graph::PassGraph& graph, const Scene& scene, const Features& features,
+                                         const SceneInputs& in, PreviewRun* run);
+
+// The CPU images and values a preview produces (handles into the graph; a culled writer leaves them empty).
+struct PreviewHandles {
+    EnvironmentInputs environment;
     std::optional<graph::Handle<FresnelSet>> luts, parameters;
     graph::Handle<Image> beauty;
     graph::Handle<ReferenceRender> reference;

@@ -21,9 +21,13 @@ struct SphereSheet {
     std::vector<std::filesystem::path> written;  // sheet.exr, sheet.png, sheet.json in options.output_dir
 };
 
-// The sheet as a pass graph: sheet-fresnel (reference LUT and best fitted model per material) → capture-environment
+// The sheet as a pass graph: sheet-fresnel (reference LUT and best fitted model per material) → the environment
+// (capture-environment for rooms, load-equirect for an image at infinity)
 // → sheet-cells (every cell on the GPU) → the three files. `scene` must hold exactly one sphere (its position,
 // reflection mode and iterations are used for every cell). `context` may be null: one is made for the GPU passes.
+// The sheet's graph compiled without running it (no GL, no fits): what --explain --sheet prints.
+Plan build_sheet_plan(const Scene& scene, const std::vector<std::string>& materials);
+
 SphereSheet render_sphere_sheet(const Scene& scene, const std::vector<std::string>& materials, const PreviewOptions& options,
                                 GlContext* context = nullptr);
 
