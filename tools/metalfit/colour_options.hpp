@@ -14,7 +14,8 @@
 namespace metalfit::cli {
 
 struct ColourOptions {
-    std::string space;  // empty: role scene_linear
+    std::string space;      // empty: role scene_linear
+    std::string xyz_space;  // empty: role cie_xyz_d65_interchange
     std::string cmf = "1931";
     std::string illuminant = "D65";
     std::string interpolation = "linear";

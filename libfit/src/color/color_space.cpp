@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/color/ocio_config_contents.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -37,7 +38,8 @@ ColorSpaceConverter& ColorSpaceConverter::operator=(const ColorSpaceConverter&) 
 ColorSpaceConverter::ColorSpaceConverter(ColorSpaceConverter&&) noexcept = default;
 ColorSpaceConverter& ColorSpaceConverter::operator=(ColorSpaceConverter&&) noexcept = default;
 
-ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, const std::string& target) {
+ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, const std::string& target,
+                                                const std::string& xyz_space_name) {
     auto impl = std::make_shared<Impl>();
     try {
         impl->config = OCIO::Config::CreateFromFile(choice.path.c_str());
@@ -45,16 +47,31 @@ ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, 
         throw ColorConfigError(describe(choice) + ": cannot be loaded: " + e.what());
     }
     const auto& config = impl->config;
-    const auto xyz = config->hasRole(kXyzRole) ? config->getColorSpace(kXyzRole) : nullptr;
-    if (!xyz) throw ColorConfigError(describe(choice) + " has no role '" + kXyzRole + "' (needed to find CIE XYZ D65)");
+    const auto what_exists = [&choice] {
+        const OcioConfigContents contents = read_ocio_config_contents(choice);
+        return " (colour spaces: " + contents.space_names() + "; roles: " + contents.role_names() + ")";
+    };
+    const auto xyz = xyz_space_name.empty() ? (config->hasRole(kXyzRole) ? config->getColorSpace(kXyzRole) : nullptr)
+                                            : config->getColorSpace(xyz_space_name.c_str());
+    if (!xyz) {
+        if (xyz_space_name.empty())
+            throw ColorConfigError(describe(choice) + " has no role '" + kXyzRole +
+                                   "' (needed to find CIE XYZ D65; name the XYZ colour space with --xyz-space)" + what_exists());
+        throw ColorConfigError(describe(choice) + " has no colour space or role '" + xyz_space_name + "' for CIE XYZ" +
+                               what_exists());
+    }
     const std::string xyz_space = xyz->getName();
     const std::string wanted = target.empty() ? kSceneLinearRole : target;
     const auto target_space = target.empty() && !config->hasRole(kSceneLinearRole) ? nullptr : config->getColorSpace(wanted.c_str());
     if (!target_space) {
         if (target.empty())
-            throw ColorConfigError(describe(choice) + " has no role '" + kSceneLinearRole + "' (name the target colour space)");
-        throw ColorConfigError(describe(choice) + " has no colour space or role '" + wanted + "'");
+            throw ColorConfigError(describe(choice) + " has no role '" + kSceneLinearRole + "' (name the target colour space)" +
+                                   what_exists());
+        throw ColorConfigError(describe(choice) + " has no colour space or role '" + wanted + "'" + what_exists());
     }
+    if (target_space->isData())
+        throw ColorConfigError(describe(choice) + ": colour space '" + target_space->getName() +
+                               "' holds data, not colour (isdata): name a scene-linear colour space");
     try {
         impl->cpu = config->getProcessor(xyz_space.c_str(), target_space->getName())->getDefaultCPUProcessor();
         impl->inverse = config->getProcessor(target_space->getName(), xyz_space.c_str())->getDefaultCPUProcessor();
@@ -65,6 +82,7 @@ ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, 
     ColorSpaceConverter converter(impl);
     converter.config_ = choice;
     converter.space_ = target_space->getName();
+    converter.xyz_space_ = xyz_space;
 
     // Reflectance ratios need a linear space: check additivity and scaling on a few XYZ values.
     const XYZ probes[] = {{0.9, 1.0, 1.1}, {0.2, 0.1, 0.05}, {0.05, 0.1, 0.4}};

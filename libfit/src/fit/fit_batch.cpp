@@ -9,15 +9,17 @@
 
 namespace metalfit {
 
-std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, bool all, const std::string& material,
-                                                        const std::string& source) {
+std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, bool all,
+                                                        const std::vector<std::string>& materials, const std::string& source) {
     std::vector<std::function<Material()>> loaders;
     if (all) {
         for (const CatalogEntry& entry : catalog.entries())
             loaders.push_back([&catalog, id = entry.id] { return load_material(catalog, id, ""); });
     } else {
-        const Material loaded = load_material(catalog, material, source);  // errors before any work
-        loaders.push_back([loaded] { return loaded; });
+        for (const std::string& material : materials) {
+            const Material loaded = load_material(catalog, material, source);  // errors before any work
+            loaders.push_back([loaded] { return loaded; });
+        }
     }
     return loaders;
 }
@@ -48,7 +50,7 @@ std::vector<MaterialFit> fit_materials(const std::vector<std::function<Material(
     // One OCIO processor per thread: the calling thread uses the caller's; the others' are made here, before any thread
     // starts, so that a failure is an ordinary error and not an exception inside a thread.
     std::vector<ColorSpaceConverter> converters;
-    for (int t = 1; t < threads; ++t) converters.push_back(ColorSpaceConverter::create(colour.config, colour.converter.space()));
+    for (int t = 1; t < threads; ++t) converters.push_back(ColorSpaceConverter::create(colour.config, colour.converter.space(), colour.converter.xyz_space()));
     {
         std::vector<std::jthread> pool;
         for (const ColorSpaceConverter& converter : converters) pool.emplace_back(worker, std::cref(converter));

@@ -30,16 +30,20 @@ inline constexpr const char* kSceneLinearRole = "scene_linear";
 // OCIO evaluates in float32: expect about 1e-7 relative error.
 class ColorSpaceConverter {
 public:
-    // target: a colour space name, alias or role; empty means the role scene_linear.
-    // Throws ColorConfigError naming the config when it cannot be read, lacks the XYZ role or the
-    // target, or the target is not linear (reflectance curves need a linear space).
-    static ColorSpaceConverter create(const OcioConfigChoice& config, const std::string& target = {});
+    // target: a colour space name, alias or role; empty means the role scene_linear. xyz_space: the colour space that
+    // holds CIE XYZ (D65); empty means the role cie_xyz_d65_interchange (OCIO v1 and ACES 1.2 configs lack it).
+    // Throws ColorConfigError naming the config when it cannot be read, lacks the XYZ space or the target (listing
+    // the spaces and roles it has), or the target holds data (Raw) or is not linear (reflectance curves need a
+    // scene-linear space).
+    static ColorSpaceConverter create(const OcioConfigChoice& config, const std::string& target = {},
+                                      const std::string& xyz_space = {});
 
     RGB operator()(const XYZ& xyz) const;
     // The inverse, RGB of the target space → XYZ (for colour differences of model colours).
     XYZ to_xyz(const RGB& rgb) const;
 
-    const std::string& space() const { return space_; }  // resolved colour space name
+    const std::string& space() const { return space_; }          // resolved colour space name
+    const std::string& xyz_space() const { return xyz_space_; }  // the colour space XYZ is read from
     const OcioConfigChoice& config() const { return config_; }
     std::vector<std::string> available_spaces() const;
 
@@ -55,6 +59,7 @@ private:
     std::shared_ptr<const Impl> impl_;
     OcioConfigChoice config_;
     std::string space_;
+    std::string xyz_space_;
 };
 
 }  // namespace metalfit
