@@ -2,6 +2,8 @@
 // of files as one unit. The formats live in export_<format>.cpp.
 #include "libfit/export/export.hpp"
 
+#include "libfit/color/ocio_config_contents.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -15,6 +17,7 @@
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/version.hpp"
+#include "libfit/color/ocio_config_contents.hpp"
 #include "libfit/models/registry.hpp"
 
 namespace metalfit {
@@ -198,6 +201,7 @@ std::string comment_header(const MaterialExport& material, const WrittenParamete
     line("metalfit " METALFIT_VERSION " export: " + m.name + " (" + m.id + ")");
     line("data source: " + m.source + " (" + m.provenance.format + ", " + m.provenance.file.filename().string() +
          ", sha256 " + m.provenance.sha256 + ")");
+    for (const std::string& warning : m.warnings) line("DATA WARNING: " + warning);
     line("colour space: " + r.space + " (OCIO " + r.config.origin + "); " + to_string(r.illuminant) + ", " +
          to_string(r.observer) + ", R_c(mu) white balanced to the perfect reflector");
     line("model: " + std::string(written.model->id()) + " - " + std::string(written.model->title()));
@@ -240,13 +244,55 @@ std::optional<WrittenParameters> as_f82_tint(const WrittenParameters& written, c
     return w;
 }
 
-std::string materialx_colorspace(const std::string& ocio_space) {
-    static const std::map<std::string, std::string> names{
-        {"Linear Rec.709 (sRGB)", "lin_rec709"}, {"ACEScg", "acescg"}, {"Linear P3-D65", "lin_displayp3"}};
-    const auto it = names.find(ocio_space);
-    return it == names.end() ? std::string{} : it->second;
+std::string untagged_materialx_warning(const std::string& ocio_space) {
+    return "WARNING: colours are in " + ocio_space +
+           ", for which MaterialX has no colour-space name: the document carries no colorspace and consumers read its "
+           "colours as their working space (export in Linear Rec.709, ACEScg, Linear P3-D65 or Linear AdobeRGB for a "
+           "tagged document)";
 }
 
+}  // namespace detail
+
+std::string materialx_colorspace(const OcioConfigChoice& config, const std::string& ocio_space) {
+    // MaterialX 1.39's linear colour spaces, each with the names OCIO configs (the builtin studio and CG configs,
+    // ACES 1.x, metalfit's own) give the same space or list as aliases.
+    static const std::vector<std::pair<std::string, std::vector<std::string>>> known{
+        {"lin_rec709", {"lin_rec709", "Linear Rec.709 (sRGB)", "Linear Rec.709", "lin_srgb", "lin_rec709_srgb",
+                        "Utility - Linear - sRGB", "Utility - Linear - Rec.709", "scene-linear Rec.709-sRGB"}},
+        {"acescg", {"acescg", "lin_ap1", "ACES - ACEScg", "lin_ap1_scene"}},
+        {"lin_displayp3", {"lin_displayp3", "Linear P3-D65", "lin_p3d65", "Utility - Linear - P3-D65"}},
+        {"lin_adobergb", {"lin_adobergb", "Linear AdobeRGB", "Linear Adobe RGB (1998)"}},
+    };
+    std::vector<std::string> names{ocio_space};
+    try {
+        for (const OcioColorSpaceEntry& s : read_ocio_config_contents(config).spaces)
+            if (s.name == ocio_space) names.insert(names.end(), s.aliases.begin(), s.aliases.end());
+    } catch (const ColorConfigError&) {
+        // The config was read to fit; if it cannot be read now, match by the space's name alone.
+    }
+    const auto same = [](const std::string& a, const std::string& b) {
+        return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+                   return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+               });
+    };
+    for (const auto& [materialx_name, spellings] : known)
+        for (const std::string& name : names)
+            for (const std::string& spelling : spellings)
+                if (same(name, spelling)) return materialx_name;
+    return {};
+}
+
+std::vector<std::string> export_warnings(const FitRecordContext& context, const ExportRequest& request) {
+    std::vector<std::string> warnings;
+    const bool materialx = std::any_of(request.formats.begin(), request.formats.end(), [](ExportFormat f) {
+        return f == ExportFormat::mtlx || f == ExportFormat::openpbr;
+    });
+    if (materialx && materialx_colorspace(context.config, context.space).empty())
+        warnings.push_back(detail::untagged_materialx_warning(context.space));
+    return warnings;
+}
+
+namespace detail {
 }  // namespace detail
 
 std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
@@ -276,7 +322,7 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
         }
         materials.push_back(std::move(m));
     }
-    const detail::ExportContext ctx{context, request};
+    const detail::ExportContext ctx{context, request, materialx_colorspace(context.config, context.space)};
     std::vector<ExportFile> files;
     for (ExportFormat format : request.formats) {
         std::vector<ExportFile> more;

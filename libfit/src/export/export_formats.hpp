@@ -27,6 +27,7 @@ struct MaterialExport {
 struct ExportContext {
     FitRecordContext record;
     ExportRequest request;
+    std::string materialx_colorspace;  // MaterialX's name of record.space, empty when it has none
 };
 
 // "Au", "f82-tint" → "AU_F82_TINT" (upper case, every other character '_'): constant names.
@@ -62,15 +63,15 @@ std::vector<ExportFile> export_mtlx(const std::vector<MaterialExport>& materials
 std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materials, const ExportContext& context);
 
 // MaterialX documents (export_mtlx.cpp, used by export_openpbr.cpp too): <materialx version="1.39"> after a comment
-// (the header), with colorspace when MaterialX has a name for the curves' space.
-pugi::xml_node begin_materialx(pugi::xml_document& doc, const std::string& comment, const std::string& ocio_space);
+// (the header), with colorspace when MaterialX has a name for the curves' space (context.materialx_colorspace).
+pugi::xml_node begin_materialx(pugi::xml_document& doc, const std::string& comment, const ExportContext& context);
 void add_input(pugi::xml_node node, const char* name, const char* type, const std::string& value);
 // <surface> around the BSDF node `bsdf` (unless it already is a surfaceshader) and <surfacematerial> around that.
 void add_surface_material(pugi::xml_node root, const std::string& stem, const std::string& shader, bool is_bsdf);
 std::string xml_text(const pugi::xml_document& doc);
 
-// MaterialX's name of an OCIO colour space ("lin_rec709"), or empty when MaterialX has none.
-std::string materialx_colorspace(const std::string& ocio_space);
+// The header line of a MaterialX document whose space MaterialX cannot name (export_warnings says the same on stderr).
+std::string untagged_materialx_warning(const std::string& ocio_space);
 
 // F0 and tint of the F82-tint form that evaluates the same curve as `written` (schlick: tint 1; lazanyi: F0 of n, k,
 // tint 1; f82-tint: itself), or nothing when the model has no F82-tint form (then the stand-in is used).

@@ -69,10 +69,10 @@ std::string document(const MaterialExport& m, const ModelExport& e, const Export
     const std::string stem = file_stem(m.fit->material.id, e.written.model->id());
     std::string extra;
     const WrittenParameters w = materialx_parameters(m, e, extra);
-    if (ocio_space.empty() || materialx_colorspace(ocio_space).empty())
-        extra += std::string(extra.empty() ? "" : "\n") + "colours are in " + ocio_space + ", which has no MaterialX colorspace name: none is set";
+    if (context.materialx_colorspace.empty())
+        extra += std::string(extra.empty() ? "" : "\n") + untagged_materialx_warning(ocio_space);
     pugi::xml_document doc;
-    pugi::xml_node root = begin_materialx(doc, comment_header(m, w, context, "  ", extra), ocio_space);
+    pugi::xml_node root = begin_materialx(doc, comment_header(m, w, context, "  ", extra), context);
     const std::string bsdf = stem + "_bsdf";
     switch (w.model->materialx_form()) {
         case MaterialxForm::generalized_schlick:
@@ -114,13 +114,13 @@ std::string document(const MaterialExport& m, const ModelExport& e, const Export
 
 }  // namespace
 
-pugi::xml_node begin_materialx(pugi::xml_document& doc, const std::string& comment, const std::string& ocio_space) {
+pugi::xml_node begin_materialx(pugi::xml_document& doc, const std::string& comment, const ExportContext& context) {
     pugi::xml_node decl = doc.append_child(pugi::node_declaration);
     decl.append_attribute("version") = "1.0";
     doc.append_child(pugi::node_comment).set_value(("\n" + no_double_hyphen(comment)).c_str());
     pugi::xml_node root = doc.append_child("materialx");
     root.append_attribute("version") = "1.39";
-    if (const std::string cs = materialx_colorspace(ocio_space); !cs.empty()) root.append_attribute("colorspace") = cs.c_str();
+    if (!context.materialx_colorspace.empty()) root.append_attribute("colorspace") = context.materialx_colorspace.c_str();
     return root;
 }
 

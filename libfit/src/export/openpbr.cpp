@@ -63,7 +63,9 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
             files.push_back({"openpbr/" + stem + ".json", j.dump(2) + "\n"});
 
             pugi::xml_document doc;
-            pugi::xml_node root = begin_materialx(doc, comment_header(m, w, context, "  ", note), context.record.space);
+            if (context.materialx_colorspace.empty())
+                note += std::string(note.empty() ? "" : "\n") + untagged_materialx_warning(context.record.space);
+            pugi::xml_node root = begin_materialx(doc, comment_header(m, w, context, "  ", note), context);
             const std::string shader = stem + "_open_pbr_surface";
             pugi::xml_node s = root.append_child("open_pbr_surface");
             s.append_attribute("name") = shader.c_str();

@@ -68,6 +68,15 @@ struct ExportFile {
 std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
                                      const ExportRequest& request);
 
+// MaterialX's name of the OCIO colour space `space` of `config` ("lin_rec709", "acescg", "lin_displayp3",
+// "lin_adobergb"), matched by its name and its aliases in the config, case-insensitively; empty when MaterialX has
+// none (Linear Rec.2020, ACES2065-1: the .mtlx then carries no colorspace and says so in its header).
+std::string materialx_colorspace(const OcioConfigChoice& config, const std::string& space);
+
+// What a consumer must be told about an export before using it (one line each; `metalfit export` prints them on
+// stderr): today, MaterialX documents in a space MaterialX cannot name.
+std::vector<std::string> export_warnings(const FitRecordContext& context, const ExportRequest& request);
+
 // Writes all files below `dir` (created if missing) as one unit: every file goes to a temporary name first and is
 // renamed into place only when all were written; on failure nothing new is left behind. Throws InputError.
 void write_export(const std::filesystem::path& dir, const std::vector<ExportFile>& files);
