@@ -157,10 +157,21 @@ TEST_F(ReferenceCurveTest, DataNotCoveringTheVisibleRangeIsAnErrorNamingTheFile)
         EXPECT_NE(what.find("DATA"), std::string::npos) << what;
         EXPECT_NE(what.find("400"), std::string::npos) << what;
         EXPECT_NE(what.find("360"), std::string::npos) << what;
+        EXPECT_NE(what.find("n covers"), std::string::npos) << what;  // the quantity that fails
+        EXPECT_NE(what.find("--extrapolate"), std::string::npos) << what;
     }
-    // Asked for explicitly, end values are held outside the data.
-    const RGB held = curve(m, {}, Observer::cie1931_2deg, Illuminant::D65, {Interpolation::linear, OutOfRange::clamp})(1.0);
-    EXPECT_GT(held.r, 0.9);
+    // Asked for explicitly, end values are held outside the data, and the curve says where.
+    const ReferenceCurve extrapolated = curve(m, {}, Observer::cie1931_2deg, Illuminant::D65, {Interpolation::linear, OutOfRange::clamp});
+    EXPECT_GT(extrapolated(1.0).r, 0.9);
+    EXPECT_EQ(extrapolated.held_constant(),
+              (std::vector<std::string>{"n held at its 400 nm value over 360–400 nm (--extrapolate; measured 400–700 nm)",
+                                        "n held at its 700 nm value over 700–830 nm (--extrapolate; measured 400–700 nm)",
+                                        "k held at its 400 nm value over 360–400 nm (--extrapolate; measured 400–700 nm)",
+                                        "k held at its 700 nm value over 700–830 nm (--extrapolate; measured 400–700 nm)"}));
+    // Data that cover the grid hold nothing, with or without --extrapolate.
+    EXPECT_TRUE(curve(material("Au"), {}, Observer::cie1931_2deg, Illuminant::D65, {Interpolation::linear, OutOfRange::clamp})
+                    .held_constant()
+                    .empty());
 }
 
 TEST_F(ReferenceCurveTest, PchipIsCloseToLinearButNotIdentical) {

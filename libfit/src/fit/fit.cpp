@@ -118,6 +118,8 @@ MaterialFit fit_material(const Material& material, const Colorimetry& colorimetr
                          "relative error undefined for " + material.id + ": " + *reference.rel_undefined() +
                              " (use the abs error metric)");
     MaterialFit result{material, curve.raw_white(), curve(1.0), {}, {}, shared_reference};
+    // What --extrapolate did travels with the material's own warnings: the record, the CLI and the exports say it.
+    result.material.warnings.insert(result.material.warnings.end(), curve.held_constant().begin(), curve.held_constant().end());
     const ClosedFormInput input = closed_form_input(curve, material, request.spectral);
     for (const Model* model : request.models) result.models.push_back(fit_model(*model, reference, input, &timings));
     result.timings = timings;

@@ -59,7 +59,9 @@ nlohmann::json reflectance_record(const Material& material, const ReferenceCurve
                        {"ocio_config_origin", config.origin},
                        {"white_raw_rgb", rgb_json(curve.raw_white())},
                        {"metalfit_version", METALFIT_VERSION}};
-    j["warnings"] = material.warnings;
+    std::vector<std::string> warnings = material.warnings;
+    warnings.insert(warnings.end(), curve.held_constant().begin(), curve.held_constant().end());
+    j["warnings"] = warnings;
     return j;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <complex>
+#include <string>
 #include <vector>
 
 #include "libfit/color/color.hpp"
@@ -36,12 +37,21 @@ public:
     // 0.99976) for D65 in Linear Rec.709).
     RGB raw_white() const { return raw_white_; }
     const ColorSpaceConverter& converter() const { return converter_; }
+    // With --extrapolate (OutOfRange::clamp): which quantity was held constant over which nanometres of the
+    // colorimetry's grid, one line each (held_constant_ranges); empty when the data cover the grid.
+    const std::vector<std::string>& held_constant() const { return held_constant_; }
 
 private:
     DenseSpectrum<std::complex<double>> eta_;  // on the colorimetry's grid
     Colorimetry colorimetry_;
     ColorSpaceConverter converter_;
     RGB raw_white_;
+    std::vector<std::string> held_constant_;
 };
+
+// "k held at its 400 nm value over 360–400 nm (--extrapolate; measured 400–900 nm)" for each end of n and k that
+// does not reach `needed`, when `options` extrapolate; empty otherwise.
+std::vector<std::string> held_constant_ranges(const Material& material, const WavelengthRange& needed,
+                                              const SpectralOptions& options);
 
 }  // namespace metalfit
