@@ -8,6 +8,7 @@
 #include <fstream>
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <sstream>
 
 namespace {
@@ -339,6 +340,144 @@ TEST_F(Cli, FitOutputIsWrittenWholeOrNotAtAll) {
     EXPECT_EQ(run("fit Ag --model schlick --json -o '" + (dir_ / "no" / "fit.json").string() + "'").exit_code, 3);
     EXPECT_EQ(read_file(target), before);
     EXPECT_FALSE(fs::exists(dir_ / "no"));
+}
+
+
+TEST_F(Cli, DashAsOutputMeansStdout) {
+    const Result dash = run("show gold --json -o -");
+    ASSERT_EQ(dash.exit_code, 0) << dash.err;
+    EXPECT_EQ(dash.out, run("show gold --json").out);
+    EXPECT_FALSE(fs::exists(dir_ / "-"));
+    EXPECT_FALSE(fs::exists(fs::path("-")));
+}
+
+TEST_F(Cli, ModelsGlslAndJsonAreExclusive) {
+    const Result r = run("models --glsl --json");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("excludes"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, DataSpacesAreRefusedAsTargets) {
+    const Result r = run("show gold --space Raw");
+    EXPECT_EQ(r.exit_code, 4);
+    expect_one_line_error(r, "'Raw' holds data, not colour");
+}
+
+TEST_F(Cli, AMissingSpaceListsTheSpacesAndRolesThatExist) {
+    const Result r = run("show gold --space 'Linear Rec.709'");
+    EXPECT_EQ(r.exit_code, 4);
+    expect_one_line_error(r, "no colour space or role 'Linear Rec.709'");
+    EXPECT_NE(r.err.find("ACEScg"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("scene_linear → Linear Rec.709 (sRGB)"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, SpacesListsTheConfigsSpacesAndRoles) {
+    const Result r = run("spaces --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["origin"], "metalfit default");
+    EXPECT_EQ(j["roles"]["scene_linear"], "Linear Rec.709 (sRGB)");
+    std::map<std::string, bool> target;
+    for (const auto& s : j["spaces"]) target[s["name"].get<std::string>()] = s["fit_target"].get<bool>();
+    EXPECT_TRUE(target.at("ACEScg"));
+    EXPECT_TRUE(target.at("Linear Rec.2020"));
+    EXPECT_FALSE(target.at("Raw"));            // data
+    EXPECT_FALSE(target.at("sRGB - Texture"));  // not linear
+    const Result text = run("spaces");
+    EXPECT_NE(text.out.find("  * ACEScg"), std::string::npos) << text.out;
+}
+
+TEST_F(Cli, XyzSpaceStandsInForAMissingInterchangeRole) {
+    // An OCIO v1 / ACES 1.2-style config: the same spaces, no cie_xyz_d65_interchange role.
+    std::string config = read_file(std::string(METALFIT_TEST_DATA) + "/ocio/config.ocio");
+    const std::size_t role = config.find("  cie_xyz_d65_interchange:");
+    ASSERT_NE(role, std::string::npos);
+    config.erase(role, config.find('\n', role) + 1 - role);
+    std::ofstream(dir_ / "no-xyz-role.ocio") << config;
+    const std::string ocio = "--ocio-config '" + (dir_ / "no-xyz-role.ocio").string() + "' ";
+    const Result missing = run(ocio + "show gold --json");
+    EXPECT_EQ(missing.exit_code, 4);
+    expect_one_line_error(missing, "--xyz-space");
+    const Result named = run(ocio + "show gold --json --xyz-space CIE-XYZ-D65");
+    ASSERT_EQ(named.exit_code, 0) << named.err;
+    EXPECT_EQ(nlohmann::json::parse(named.out)["F0"], nlohmann::json::parse(run("show gold --json").out)["F0"]);
+}
+
+TEST_F(Cli, SeveralMaterialsPerCall) {
+    const Result listed = run("fit Au,Cu --model schlick --json");
+    ASSERT_EQ(listed.exit_code, 0) << listed.err;
+    const auto fits = nlohmann::ordered_json::parse(listed.out)["materials"];
+    ASSERT_EQ(fits.size(), 2u);
+    EXPECT_EQ(fits.begin().key(), "Au");  // in the order given
+    EXPECT_EQ(std::next(fits.begin()).key(), "Cu");
+    const Result separate = run("fit Au Cu --model schlick --json");
+    EXPECT_EQ(separate.out, listed.out);
+
+    const Result shown = run("show Au Ag,Cu --json");
+    ASSERT_EQ(shown.exit_code, 0) << shown.err;
+    const auto records = nlohmann::json::parse(shown.out);
+    ASSERT_TRUE(records.is_array());
+    ASSERT_EQ(records.size(), 3u);
+    EXPECT_EQ(records[1]["material"], "Ag");
+
+    const Result exported = run("export Au,Cu --model schlick --format json -o '" + (dir_ / "e").string() + "'");
+    ASSERT_EQ(exported.exit_code, 0) << exported.err;
+    const auto index = nlohmann::json::parse(read_file(dir_ / "e" / "metalfit_export.json"));
+    EXPECT_NE(index.dump().find("\"Au\""), std::string::npos) << index.dump();
+    EXPECT_NE(index.dump().find("\"Cu\""), std::string::npos) << index.dump();
+
+    const Result source = run("show Au,Cu --source McPeak");
+    EXPECT_EQ(source.exit_code, 2);
+    expect_one_line_error(source, "--source needs a single material");
+    const Result unknown = run("fit Au,unobtainium --model schlick");
+    EXPECT_EQ(unknown.exit_code, 2);  // an unknown catalog name is a usage error, as for one material
+    EXPECT_NE(unknown.err.find("unobtainium"), std::string::npos) << unknown.err;
+}
+
+TEST_F(Cli, HelpShowsEveryDefaultAndTheModelIds) {
+    const Result r = run("fit --help");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* shown : {"=1931", "=D65", "=rel", "=uniform", "=128", "f82-tint", "lazanyi-comp", "conductor-rgb"})
+        EXPECT_NE(r.out.find(shown), std::string::npos) << shown << "\n" << r.out;
+    const Result e = run("export --help");
+    EXPECT_EQ(r.out.find("TEXT=[]"), std::string::npos) << r.out;  // no empty default for the materials
+    for (const char* shown : {"=fit", "=keep", "schlick"}) EXPECT_NE(e.out.find(shown), std::string::npos) << shown << "\n" << e.out;
+}
+
+TEST_F(Cli, MaterialxExportsInASpaceMaterialxCannotNameSayIt) {
+    const Result r = run("export Au --model f82-tint --format mtlx,openpbr --space 'Linear Rec.2020' -o '" + (dir_ / "x").string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("warning: WARNING: colours are in Linear Rec.2020"), std::string::npos) << r.err;
+    for (const fs::path& file : {dir_ / "x" / "mtlx" / "metalfit_au_f82_tint.mtlx", dir_ / "x" / "openpbr" / "metalfit_au_f82_tint.mtlx"}) {
+        const std::string text = read_file(file);
+        EXPECT_NE(text.find("WARNING: colours are in Linear Rec.2020"), std::string::npos) << file;
+        EXPECT_EQ(text.find("colorspace="), std::string::npos) << file;
+    }
+    const Result tagged = run("export Au --model f82-tint --format mtlx --space lin_ap1 -o '" + (dir_ / "y").string() + "'");
+    ASSERT_EQ(tagged.exit_code, 0) << tagged.err;
+    EXPECT_TRUE(tagged.err.empty()) << tagged.err;
+    EXPECT_NE(read_file(dir_ / "y" / "mtlx" / "metalfit_au_f82_tint.mtlx").find("colorspace=\"acescg\""), std::string::npos);
+}
+
+
+TEST_F(Cli, ExtrapolationIsNamedInTheRecordShowAndExports) {
+    const std::string file = "'" + kFixtures + "/bad-short-range.yml' ";
+    const Result fit = run("fit " + file + "--extrapolate --model schlick --json");
+    ASSERT_EQ(fit.exit_code, 0) << fit.err;
+    const auto warnings = nlohmann::json::parse(fit.out)["materials"].begin().value()["warnings"];
+    ASSERT_EQ(warnings.size(), 4u) << warnings;
+    EXPECT_EQ(warnings[0], "n held at its 400 nm value over 360–400 nm (--extrapolate; measured 400–700 nm)");
+    EXPECT_NE(fit.err.find("k held at its 700 nm value over 700–830 nm"), std::string::npos) << fit.err;
+    const Result show = run("show " + file + "--extrapolate");
+    ASSERT_EQ(show.exit_code, 0) << show.err;
+    EXPECT_NE(show.out.find("held        k held at its 400 nm value"), std::string::npos) << show.out;
+    EXPECT_EQ(nlohmann::json::parse(run("show " + file + "--extrapolate --json").out)["warnings"].size(), 4u);
+    const Result exported = run("export " + file + "--extrapolate --model schlick --format glsl -o '" + (dir_ / "x").string() + "'");
+    ASSERT_EQ(exported.exit_code, 0) << exported.err;
+    std::string glsl;
+    for (const auto& f : fs::recursive_directory_iterator(dir_ / "x"))
+        if (f.path().extension() == ".glsl" && f.path().filename() != "metalfit_models.glsl") glsl += read_file(f.path());
+    EXPECT_NE(glsl.find("DATA WARNING: n held at its 700 nm value over 700–830 nm"), std::string::npos) << glsl;
 }
 
 }  // namespace

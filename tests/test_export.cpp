@@ -400,4 +400,28 @@ TEST(ExportErrors, ClosedParametersThatDoNotExistAreAnErrorNamingTheReason) {
     EXPECT_FALSE(fs::exists(tmp.path() / "out"));
 }
 
+
+TEST(MaterialxColorspace, MatchesTheSpacesNameOrAliasesCaseInsensitively) {
+    using metalfit::materialx_colorspace;
+    const metalfit::OcioConfigChoice ours{metalfit::test::kData / "ocio" / "config.ocio", "test"};
+    EXPECT_EQ(materialx_colorspace(ours, "Linear Rec.709 (sRGB)"), "lin_rec709");
+    EXPECT_EQ(materialx_colorspace(ours, "ACEScg"), "acescg");
+    EXPECT_EQ(materialx_colorspace(ours, "Linear P3-D65"), "lin_displayp3");
+    EXPECT_EQ(materialx_colorspace(ours, "Linear Rec.2020"), "");  // MaterialX has no name for these
+    EXPECT_EQ(materialx_colorspace(ours, "ACES2065-1"), "");
+    // A studio's config that names the space its own way and lists a MaterialX name among its aliases.
+    TempDir dir;
+    std::string config = read_file(ours.path);
+    const auto replace_all = [&config](const std::string& from, const std::string& to) {
+        ASSERT_NE(config.find(from), std::string::npos) << from;
+        for (std::size_t at = config.find(from); at != std::string::npos; at = config.find(from, at + to.size()))
+            config.replace(at, from.size(), to);
+    };
+    replace_all("Linear Rec.709 (sRGB)", "studio linear");  // the space and the roles naming it
+    replace_all("[lin_rec709_srgb, lin_rec709, lin_srgb, Utility - Linear - sRGB]", "[Lin_Rec709]");
+    const fs::path studio = dir.write("studio.ocio", config);
+    EXPECT_EQ(materialx_colorspace({studio, "test"}, "studio linear"), "lin_rec709");
+    EXPECT_EQ(materialx_colorspace({studio, "test"}, "Linear Rec.709"), "lin_rec709");  // a name configs use
+}
+
 }  // namespace

@@ -57,7 +57,7 @@ std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions& glob
     app.add_option("--markdown", o->markdown, "Also write the report as a Markdown page (keeps its hand-written reading)");
     app.add_option("--material", o->material, "Material whose fitted parameters the evaluation timings use (default: Au)");
     app.add_option("--glpreview", o->glpreview, "The glpreview executable for the GPU sections (default: next to metalfit)");
-    app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
+    app.add_option("-o,--output", o->output, "Write to this file instead of stdout (- for stdout)");
     return [o, &global] { run_bench_command(*o, global); };
 }
 

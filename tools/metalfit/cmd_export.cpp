@@ -5,6 +5,7 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "material_selection.hpp"
 #include "progress.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/base/errors.hpp"
@@ -14,9 +15,7 @@ namespace metalfit::cli {
 namespace {
 
 struct ExportOptions {
-    std::string material;
-    bool all = false;
-    std::string source;
+    MaterialSelection selection;
     std::string models;
     std::string params = "fit";
     std::string formats;
@@ -27,14 +26,11 @@ struct ExportOptions {
 };
 
 void run_export(const ExportOptions& o, const GlobalOptions& global) {
-    if (!o.all && o.material.empty()) throw UsageError("export: give a material (catalog name or file), or --all");
-    if (o.all && !o.material.empty()) throw UsageError("export: give a material or --all, not both");
-    if (o.all && !o.source.empty()) throw UsageError("export: --source needs a single material");
     // Every argument is checked before any work, so that a usage error costs nothing and writes nothing.
     const ExportRequest request{parse_export_formats(o.formats), parse_model_list(o.models), parse_parameter_source(o.params),
                                 parse_gamut_policy(o.gamut)};
     const Catalog catalog = Catalog::load(global.data_dir);
-    const auto loaders = material_loaders(catalog, o.all, o.material, o.source);
+    const auto loaders = o.selection.loaders(catalog, "export");
     const ColourSetup setup = resolve_colour_options(o.colour, global);
     const ErrorSettings error{};  // the defaults of `metalfit fit`: rel metric, uniform weight, 128 nodes
     const MaterialFitRequest fit_request{setup.spectral, error, models_to_fit(request)};
@@ -45,6 +41,7 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
     const FitRecordContext context{setup.config, setup.converter.space(), setup.colorimetry.observer(),
                                    setup.colorimetry.illuminant(), setup.spectral, error};
+    for (const std::string& w : export_warnings(context, request)) warn(w);
     write_export(o.output, export_files(fits, context, request));
 }
 
@@ -52,10 +49,8 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
 
 std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<ExportOptions>();
-    app.add_option("material", o->material, "Catalog material (id, name or alias) or a .yml/.csv file");
-    app.add_flag("--all", o->all, "Every material of the built-in catalog, in parallel");
-    app.add_option("--source", o->source, "Alternate source of a catalog material (default: its primary)");
-    app.add_option("--model", o->models, "Models, comma-separated, or all")->required();
+    o->selection.add_options(app, true);
+    app.add_option("--model", o->models, "Models, comma-separated, or all: " + model_ids())->required();
     // --params and --gamut are checked by libfit's parsers: one line naming the value, like every other error.
     app.add_option("--params", o->params, "Parameters written: fit (Ceres) or closed (best closed form)");
     app.add_option("--format", o->formats, "Formats, comma-separated, or all: json, glsl, hlsl, mtlx, openpbr, cpp")->required();

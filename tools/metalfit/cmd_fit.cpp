@@ -10,6 +10,7 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "material_selection.hpp"
 #include "progress.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/base/errors.hpp"
@@ -21,9 +22,7 @@ namespace metalfit::cli {
 namespace {
 
 struct FitOptions {
-    std::string material;
-    bool all = false;
-    std::string source;
+    MaterialSelection selection;
     std::string models = "all";
     ColourOptions colour;
     std::string metric = "rel";
@@ -114,11 +113,8 @@ void print_timings(const std::vector<MaterialFit>& fits, double wall_seconds, in
 }
 
 void run_fit(const FitOptions& o, const GlobalOptions& global) {
-    if (!o.all && o.material.empty()) throw UsageError("fit: give a material (catalog name or file), or --all");
-    if (o.all && !o.material.empty()) throw UsageError("fit: give a material or --all, not both");
-    if (o.all && !o.source.empty()) throw UsageError("fit: --source needs a single material");
     const Catalog catalog = Catalog::load(global.data_dir);
-    const auto loaders = material_loaders(catalog, o.all, o.material, o.source);
+    const auto loaders = o.selection.loaders(catalog, "fit");
 
     const ColourSetup setup = resolve_colour_options(o.colour, global);
     const ErrorSettings error{o.nodes, parse_error_metric(o.metric), parse_angular_weight(o.weight)};
@@ -147,10 +143,8 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
 
 std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<FitOptions>();
-    app.add_option("material", o->material, "Catalog material (id, name or alias) or a .yml/.csv file");
-    app.add_flag("--all", o->all, "Every material of the built-in catalog, in parallel");
-    app.add_option("--source", o->source, "Alternate source of a catalog material (default: its primary)");
-    app.add_option("--model", o->models, "Models, comma-separated, or all (default: all)");
+    o->selection.add_options(app, true);
+    app.add_option("--model", o->models, "Models, comma-separated, or all: " + model_ids());
     add_colour_options(app, o->colour);
     app.add_option("--metric", o->metric, "Error the fit minimises: rel or abs")->check(CLI::IsMember({"rel", "abs"}));
     app.add_option("--weight", o->weight, "Angular weight: uniform (in mu) or cosine (2 mu)")
@@ -159,7 +153,7 @@ std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global
     app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
     app.add_flag("--json", o->json, "Print the fit record (JSON, docs/fit-record.md)");
     app.add_flag("--timings", o->timings, "Print where the time goes (reference curves, closed forms, Ceres, metrics) on stderr");
-    app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
+    app.add_option("-o,--output", o->output, "Write to this file instead of stdout (- for stdout)");
     app.add_option("--summary", o->summary,
                    "Also write the catalog summary (Markdown: worst-channel rel_rms per material and model, median, worst) to this file");
     return [o, &global] { run_fit(*o, global); };

@@ -53,7 +53,7 @@ std::string table(const nlohmann::json& rows) {
 std::function<void()> add_list_command(CLI::App& app, const GlobalOptions& global) {
     auto options = std::make_shared<ListOptions>();
     app.add_flag("--json", options->json, "Print JSON");
-    app.add_option("-o,--output", options->output, "Write to this file instead of stdout");
+    app.add_option("-o,--output", options->output, "Write to this file instead of stdout (- for stdout)");
     return [options, &global] {
         const Catalog catalog = Catalog::load(global.data_dir);
         nlohmann::json rows = nlohmann::json::array();

@@ -62,10 +62,10 @@ void run_models(const ModelsOptions& o) {
 
 std::function<void()> add_models_command(CLI::App& app, const GlobalOptions&) {
     auto o = std::make_shared<ModelsOptions>();
-    app.add_option("--model", o->models, "Models, comma-separated, or all (default: all)");
-    app.add_flag("--json", o->json, "Print a JSON array");
-    app.add_flag("--glsl", o->glsl, "Print the GLSL functions of the models (each shared function once)");
-    app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
+    app.add_option("--model", o->models, "Models, comma-separated, or all: " + model_ids());
+    CLI::Option* json = app.add_flag("--json", o->json, "Print a JSON array");
+    app.add_flag("--glsl", o->glsl, "Print the GLSL functions of the models (each shared function once)")->excludes(json);
+    app.add_option("-o,--output", o->output, "Write to this file instead of stdout (- for stdout)");
     return [o] { run_models(*o); };
 }
 

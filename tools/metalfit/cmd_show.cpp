@@ -4,6 +4,7 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "material_selection.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/reference/reference_curve.hpp"
 #include "libfit/reference/reflectance_summary.hpp"
@@ -12,8 +13,7 @@ namespace metalfit::cli {
 namespace {
 
 struct ShowOptions {
-    std::string material;
-    std::string source;
+    MaterialSelection selection;
     ColourOptions colour;
     bool json = false;
     std::filesystem::path output;
@@ -36,21 +36,17 @@ std::string one_line(const std::string& text) {
     return out;
 }
 
-void run_show(const ShowOptions& o, const GlobalOptions& global) {
-    const Catalog catalog = Catalog::load(global.data_dir);
-    const Material material = load_material(catalog, o.material, o.source);
-    for (const auto& w : material.warnings) warn(w);
+std::string held_constant_lines(const ReferenceCurve& curve) {
+    std::string lines;
+    for (const std::string& note : curve.held_constant()) lines += "  held        " + note + "\n";
+    return lines;
+}
 
-    const ColourSetup setup = resolve_colour_options(o.colour, global);
+// The human-readable summary of one material.
+std::string show_text(const Material& material, const ReferenceCurve& curve, const ReflectanceSummary& summary,
+                      const ColourSetup& setup, const ShowOptions& o) {
     const auto& config = setup.config;
     const auto& colorimetry = setup.colorimetry;
-    const ReferenceCurve curve(material, colorimetry, setup.converter, setup.spectral);
-
-    const ReflectanceSummary summary = summarize_reflectance(curve);
-    if (o.json) {
-        emit(reflectance_record(material, curve, summary, colorimetry, config, setup.spectral).dump(2) + "\n", o.output);
-        return;
-    }
     const std::vector<ReflectanceSample>& samples = summary.samples;
     const WavelengthRange range = material.index.range();
     const RGB white = curve.raw_white();
@@ -67,6 +63,7 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
       << "\n"
       << "  colour      " << to_string(colorimetry.observer()) << ", " << to_string(colorimetry.illuminant()) << ", "
       << curve.converter().space() << " (" << config.path.string() << ", " << config.origin << ")\n"
+      << held_constant_lines(curve)
       << "  white       raw perfect reflector (" << fixed(white.r, 6) << ", " << fixed(white.g, 6) << ", "
       << fixed(white.b, 6) << "); curves are divided by it\n\n"
       << "              mu         R         G         B\n";
@@ -77,18 +74,39 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
     }
     for (const OutOfGamutValue& g : summary.out_of_gamut)
         s << "  out of gamut: " << g.quantity << " " << "RGB"[g.channel] << " = " << fixed(g.value) << " (kept, not clipped)\n";
-    emit(s.str(), o.output);
+    return s.str();
+}
+
+void run_show(const ShowOptions& o, const GlobalOptions& global) {
+    const Catalog catalog = Catalog::load(global.data_dir);
+    const auto loaders = o.selection.loaders(catalog, "show");
+    const ColourSetup setup = resolve_colour_options(o.colour, global);
+    std::string text;
+    nlohmann::json records = nlohmann::json::array();
+    for (const auto& load : loaders) {
+        const Material material = load();
+        for (const auto& w : material.warnings) warn(loaders.size() > 1 ? material.id + ": " + w : w);
+        const ReferenceCurve curve(material, setup.colorimetry, setup.converter, setup.spectral);
+        for (const auto& w : curve.held_constant()) warn(loaders.size() > 1 ? material.id + ": " + w : w);
+        const ReflectanceSummary summary = summarize_reflectance(curve);
+        if (o.json)
+            records.push_back(reflectance_record(material, curve, summary, setup.colorimetry, setup.config, setup.spectral));
+        else
+            text += (text.empty() ? "" : "\n") + show_text(material, curve, summary, setup, o);
+    }
+    // One material: its record; several (or --all): an array of records.
+    if (o.json) emit((loaders.size() == 1 && !o.selection.all ? records.front() : records).dump(2) + "\n", o.output);
+    else emit(text, o.output);
 }
 
 }  // namespace
 
 std::function<void()> add_show_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<ShowOptions>();
-    app.add_option("material", o->material, "Catalog material (id, name or alias) or a .yml/.csv file")->required();
-    app.add_option("--source", o->source, "Alternate source of a catalog material (default: its primary)");
+    o->selection.add_options(app, true);
     add_colour_options(app, o->colour);
-    app.add_flag("--json", o->json, "Print one JSON object");
-    app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
+    app.add_flag("--json", o->json, "Print one JSON object (an array of them for several materials or --all)");
+    app.add_option("-o,--output", o->output, "Write to this file instead of stdout (- for stdout)");
     return [o, &global] { run_show(*o, global); };
 }
 

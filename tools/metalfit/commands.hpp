@@ -25,9 +25,13 @@ std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global
 std::function<void()> add_models_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& global);
+std::function<void()> add_spaces_command(CLI::App& app, const GlobalOptions& global);
 
-// Prints to stdout, or writes atomically to `output` when it is not empty.
+// Prints to stdout (`output` empty or "-"), else writes atomically to the file `output`.
 void emit(const std::string& text, const std::filesystem::path& output);
+
+// The registered model ids, comma-separated (for --model's help).
+std::string model_ids();
 
 // "metalfit: warning: ..." on stderr.
 void warn(const std::string& message);

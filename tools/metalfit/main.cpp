@@ -12,12 +12,19 @@
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/version.hpp"
+#include "libfit/models/model.hpp"
 
 namespace metalfit::cli {
 
 void emit(const std::string& text, const std::filesystem::path& output) {
-    if (output.empty()) std::cout << text << std::flush;
+    if (output.empty() || output == "-") std::cout << text << std::flush;
     else write_file_atomically(output, text);
+}
+
+std::string model_ids() {
+    std::string ids;
+    for (const Model* m : all_models()) ids += (ids.empty() ? "" : ", ") + std::string(m->id());
+    return ids;
 }
 
 void warn(const std::string& message) { std::cerr << "metalfit: warning: " << message << "\n"; }
@@ -48,6 +55,7 @@ int main(int argc, char** argv) {
     CLI::App app{"metalfit: fit shader Fresnel models to measured spectral n,k of metals"};
     app.set_version_flag("--version", std::string("metalfit ") + METALFIT_VERSION);
     app.require_subcommand(1);
+    app.option_defaults()->always_capture_default();  // --help shows every default (subcommands inherit this)
     app.fallthrough();
     cli::GlobalOptions global{default_data_dir(), std::nullopt};
     app.add_option("--data-dir", global.data_dir, "Built-in database folder (default: $METALFIT_DATA, else ../share/metalfit beside the executable, else the source tree's data/)")
@@ -74,6 +82,8 @@ int main(int argc, char** argv) {
 #endif
     auto& export_ = *app.add_subcommand("export", "Write shader-ready constants: JSON, GLSL, HLSL, MaterialX, OpenPBR, C++");
     auto run_export = cli::add_export_command(export_, global);
+    auto& spaces = *app.add_subcommand("spaces", "The OCIO config in use: its colour spaces (which can be --space) and roles");
+    auto run_spaces = cli::add_spaces_command(spaces, global);
 
     try {
         app.parse(argc, argv);
@@ -97,6 +107,7 @@ int main(int argc, char** argv) {
         if (models.parsed()) run_models();
         if (bench.parsed()) run_bench();
         if (export_.parsed()) run_export();
+        if (spaces.parsed()) run_spaces();
         return ok;
     } catch (...) {
         return report_current_exception("metalfit");
