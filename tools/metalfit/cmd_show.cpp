@@ -48,7 +48,7 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
 
     const ReflectanceSummary summary = summarize_reflectance(curve);
     if (o.json) {
-        emit(reflectance_record(material, curve, summary, colorimetry, config, setup.spectral).dump(2) + "\n", o.output);
+        emit(reflectance_record(material, curve, summary, colorimetry, config, setup.spectral, setup.convention).dump(2) + "\n", o.output);
         return;
     }
     const std::vector<ReflectanceSample>& samples = summary.samples;
@@ -67,6 +67,8 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
       << "\n"
       << "  colour      " << to_string(colorimetry.observer()) << ", " << to_string(colorimetry.illuminant()) << ", "
       << curve.converter().space() << " (" << config.path.string() << ", " << config.origin << ")\n"
+      << "  adaptation  " << describe_adaptation(colorimetry.adaptation(), colorimetry.adapted(), colorimetry.illuminant())
+      << "; convention " << to_string(setup.convention) << "\n"
       << "  white       raw perfect reflector (" << fixed(white.r, 6) << ", " << fixed(white.g, 6) << ", "
       << fixed(white.b, 6) << "); curves are divided by it\n\n"
       << "              mu         R         G         B\n";
