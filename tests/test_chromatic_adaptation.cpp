@@ -6,9 +6,13 @@
 
 #include <Eigen/Dense>
 
+#include <cstdio>
+
 #include "libfit/base/errors.hpp"
 #include "libfit/color/chromatic_adaptation.hpp"
 #include "libfit/color/colorimetry.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit {
 namespace {
@@ -124,6 +128,32 @@ TEST(ColorimetryAdaptation, D65IsNotAdaptedAndKeepsItsWeightsBitForBit) {
             EXPECT_EQ(c.white(), none.white());
         }
     }
+}
+
+TEST(ColorimetryAdaptation, GoldUnderAAgreesWithBradfordToTheNominalD65White) {
+    // An independent route: XYZ under A unadapted, Bradford (Eigen) to the RGB spaces' nominal white (0.3127, 0.3290),
+    // OCIO, divided by the same route's white. metalfit adapts to D65's computed white and white-balances; the two
+    // differ only by what the white balance leaves.
+    const OcioConfigChoice shipped{kData / "ocio" / "config.ocio", "test"};
+    const ColorSpaceConverter rec709 = ColorSpaceConverter::create(shipped);
+    const Material gold = load_material(Catalog::load(kData), "Au");
+    const RGB metalfit = ReferenceCurve(gold, Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::A), rec709)(1.0);
+    const Colorimetry plain = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::A, Adaptation::none);
+    const XYZ f0 = ReferenceCurve(gold, plain, rec709).xyz(1.0);
+    Eigen::Matrix3d bradford;
+    bradford << 0.8951, 0.2664, -0.1614, -0.7502, 1.7135, 0.0367, 0.0389, -0.0685, 1.0296;
+    const Eigen::Matrix3d m = independent(bradford, plain.white(), xyz_from_chromaticity(0.3127, 0.3290));
+    const auto adapt = [&](const XYZ& v) {
+        const Eigen::Vector3d e = m * Eigen::Vector3d(v.X, v.Y, v.Z);
+        return XYZ{e(0), e(1), e(2)};
+    };
+    const RGB nominal = rec709(adapt(f0)) / rec709(adapt(plain.white()));
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(metalfit[c] - nominal[c]));
+    std::printf("gold under A: metalfit F0 (%.6f, %.6f, %.6f), Bradford to (0.3127, 0.3290): (%.6f, %.6f, %.6f), worst %.2g\n",
+                metalfit.r, metalfit.g, metalfit.b, nominal.r, nominal.g, nominal.b, worst);
+    EXPECT_LT(worst, 1e-4);
+    EXPECT_NEAR(metalfit.b, 0.357, 5e-4);  // the figure; 0.200 without adaptation
 }
 
 }  // namespace
