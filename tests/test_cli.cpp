@@ -437,7 +437,8 @@ TEST_F(Cli, SeveralMaterialsPerCall) {
 TEST_F(Cli, HelpShowsEveryDefaultAndTheModelIds) {
     const Result r = run("fit --help");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    for (const char* shown : {"=1931", "=D65", "=rel", "=uniform", "=128", "f82-tint", "lazanyi-comp", "conductor-rgb"})
+    for (const char* shown : {"=metalfit", "the convention's, 1931", "the convention's, D65", "=rel", "=uniform", "=128", "f82-tint",
+                              "lazanyi-comp", "conductor-rgb"})
         EXPECT_NE(r.out.find(shown), std::string::npos) << shown << "\n" << r.out;
     const Result e = run("export --help");
     EXPECT_EQ(r.out.find("TEXT=[]"), std::string::npos) << r.out;  // no empty default for the materials
@@ -478,6 +479,86 @@ TEST_F(Cli, ExtrapolationIsNamedInTheRecordShowAndExports) {
     for (const auto& f : fs::recursive_directory_iterator(dir_ / "x"))
         if (f.path().extension() == ".glsl" && f.path().filename() != "metalfit_models.glsl") glsl += read_file(f.path());
     EXPECT_NE(glsl.find("DATA WARNING: n held at its 700 nm value over 700–830 nm"), std::string::npos) << glsl;
+}
+
+}  // namespace
+
+// --- colour conventions, observers, illuminants, adaptation (docs/colour.md) ------------------------------------
+
+namespace {
+
+class CliColour : public ::testing::Test {
+protected:
+    Result run(const std::string& args) const {
+        return metalfit::test::run_command(METALFIT_EXE, args, fs::temp_directory_path(), "OCIO=");
+    }
+};
+
+TEST_F(CliColour, ConventionSetsObserverIlluminantAndAdaptationAndOptionsOverrideIt) {
+    auto provenance = [&](const std::string& args) {
+        const Result r = run("show Au --json " + args);
+        EXPECT_EQ(r.exit_code, 0) << args << ": " << r.err;
+        return nlohmann::json::parse(r.out)["provenance"];
+    };
+    const auto metalfit = provenance("");
+    EXPECT_EQ(metalfit["convention"], "metalfit");
+    EXPECT_EQ(metalfit["adaptation"], "bradford");
+    EXPECT_EQ(metalfit["adapted"], false);  // D65: nothing to adapt
+    const auto adobe = provenance("--convention adobe");
+    EXPECT_EQ(adobe["cmf"], "CIE 2015 2°");
+    EXPECT_EQ(adobe["illuminant"], "D65");
+    EXPECT_EQ(adobe["adaptation"], "none");
+    const auto pb = provenance("--convention physicallybased --space ACEScg");
+    EXPECT_EQ(pb["illuminant"], "D60");
+    EXPECT_EQ(pb["adapted"], true);
+    const auto overridden = provenance("--convention adobe --cmf 1931 --illuminant A --adaptation cat02");
+    EXPECT_EQ(overridden["cmf"], "CIE 1931 2°");
+    EXPECT_EQ(overridden["illuminant"], "A");
+    EXPECT_EQ(overridden["adaptation"], "cat02");
+    EXPECT_EQ(overridden["convention"], "adobe");
+}
+
+TEST_F(CliColour, IlluminantAIsBradfordAdaptedByDefaultAndNoneKeepsTheOldVonKriesInDisplayPrimaries) {
+    const auto f0 = [&](const std::string& args) {
+        const Result r = run("show Au --json --illuminant A " + args);
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return nlohmann::json::parse(r.out)["F0"];
+    };
+    // Gold's blue F0 under A: 0.357 with Bradford (the default), 0.200 with the white balance alone.
+    EXPECT_NEAR(f0("")[2].get<double>(), 0.357, 5e-4);
+    EXPECT_NEAR(f0("--adaptation none")[2].get<double>(), 0.200, 5e-4);
+}
+
+TEST_F(CliColour, HeadersAndTextNameAdaptationAndConvention) {
+    const Result show = run("show Cu --illuminant D50");
+    ASSERT_EQ(show.exit_code, 0) << show.err;
+    EXPECT_TRUE(metalfit::test::Contains(show.out, "adaptation  bradford, D50 white → D65 white; convention metalfit"));
+    const Result fit = run("fit Cu --model schlick --convention adobe");
+    ASSERT_EQ(fit.exit_code, 0) << fit.err;
+    EXPECT_TRUE(metalfit::test::Contains(fit.out, "CIE 2015 2°, D65, adaptation none, convention adobe"));
+    const Result json = run("fit Cu --model schlick --illuminant D5500 --json");
+    const auto p = nlohmann::json::parse(json.out)["provenance"];
+    EXPECT_EQ(p["illuminant"], "D5500");
+    EXPECT_EQ(p["adapted"], true);
+    EXPECT_EQ(p["convention"], "metalfit");
+}
+
+TEST_F(CliColour, HelpShowsEveryDefaultAndBadValuesAreUsageErrors) {
+    const Result help = run("show --help");
+    for (const char* text : {"--convention", "(default: metalfit)", "--cmf", "2015-2", "(default: the convention's, 1931)",
+                             "--illuminant", "(default: the convention's, D65)", "--adaptation", "(default: the convention's, bradford)",
+                             "(default: linear)"})
+        EXPECT_TRUE(metalfit::test::Contains(help.out, text)) << text;
+    for (const char* args : {"show Au --illuminant D3000", "show Au --illuminant F2", "show Au --cmf 2012",
+                             "show Au --adaptation vonkries", "show Au --convention aces"}) {
+        const Result r = run(args);
+        EXPECT_EQ(r.exit_code, 2) << args;
+        EXPECT_FALSE(r.err.empty()) << args;
+    }
+    // An illuminant is checked by libfit: one line naming what is accepted.
+    const Result bad = run("show Au --illuminant F2");
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_TRUE(metalfit::test::Contains(bad.err, "D<T>"));
 }
 
 }  // namespace

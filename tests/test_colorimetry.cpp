@@ -37,14 +37,14 @@ TEST(Colorimetry, WhitePointsMatchPublishedChromaticities) {
     const auto d65_10 = chromaticity(Colorimetry::load(kData, Observer::cie1964_10deg, Illuminant::D65).white());
     EXPECT_NEAR(d65_10.x, 0.31382, 5e-5);
     EXPECT_NEAR(d65_10.y, 0.33100, 5e-5);
-    const auto a = chromaticity(Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::A).white());
+    const auto a = chromaticity(Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::A).illuminant_white());
     EXPECT_NEAR(a.x, 0.44757, 5e-5);
     EXPECT_NEAR(a.y, 0.40745, 5e-5);
 }
 
 TEST(Colorimetry, EqualEnergyWhiteIsTheRatioOfTheTableSums) {
     // data/cie/SOURCES.md: Σx̄, Σȳ, Σz̄ over 360–830 nm at 1 nm = 106.8655, 106.8569, 106.8923.
-    const XYZ w = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::E).white();
+    const XYZ w = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::E).illuminant_white();
     EXPECT_NEAR(w.X, 106.8655 / 106.8569, 2e-6);
     EXPECT_NEAR(w.Z, 106.8923 / 106.8569, 2e-6);
 }
@@ -86,7 +86,7 @@ TEST(DenseSpectrum, GridIndexingAndMapping) {
 TEST(Colorimetry, BadInputsAreNamedErrors) {
     EXPECT_THROW(Colorimetry::load("/nonexistent-metalfit-data", Observer::cie1931_2deg, Illuminant::D65), InputError);
     EXPECT_THROW(parse_observer("1976"), UsageError);
-    EXPECT_THROW(parse_illuminant("D50"), UsageError);
+    EXPECT_THROW(parse_illuminant("F2"), UsageError);
     EXPECT_EQ(parse_observer("1964"), Observer::cie1964_10deg);
     EXPECT_EQ(parse_illuminant("A"), Illuminant::A);
 }

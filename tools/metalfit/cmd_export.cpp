@@ -39,8 +39,7 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     const std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), fit_request, jobs, progress.callback());
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
-    const FitRecordContext context{setup.config, setup.converter.space(), setup.colorimetry.observer(),
-                                   setup.colorimetry.illuminant(), setup.spectral, error};
+    const FitRecordContext context = setup.record_context(error);
     for (const std::string& w : export_warnings(context, request)) warn(w);
     write_export(o.output, export_files(fits, context, request));
 }

@@ -60,7 +60,9 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
     const ErrorSettings& e = context.error;
     std::ostringstream s;
     s << fit.material.name << " (" << fit.material.id << ", " << fit.material.source << ") in " << context.space << ", "
-      << to_string(context.observer) << ", " << to_string(context.illuminant) << "; " << to_string(e.metric)
+      << to_string(context.observer) << ", " << to_string(context.illuminant) << ", adaptation "
+      << describe_adaptation(context.adaptation, context.adapted, context.illuminant) << ", convention "
+      << to_string(context.convention) << "; " << to_string(e.metric)
       << " metric, " << to_string(e.weight) << " weight, " << e.nodes << " nodes\n";
     s << "  F0 = (" << fixed(fit.F0.r, 5) << ", " << fixed(fit.F0.g, 5) << ", " << fixed(fit.F0.b, 5) << ")";
     if (fit.F0.max() > 1.0 || fit.F0.min() < 0.0) s << "  out of gamut, kept";
@@ -127,8 +129,7 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
 
-    const FitRecordContext context{setup.config, setup.converter.space(), setup.colorimetry.observer(),
-                                   setup.colorimetry.illuminant(), setup.spectral, error};
+    const FitRecordContext context = setup.record_context(error);
     if (!o.summary.empty()) emit(catalog_summary_markdown(summarize_catalog(fits), context), o.summary);
     if (o.json) {
         emit(fit_record(fits, context).dump(2) + "\n", o.output);

@@ -63,6 +63,8 @@ std::string show_text(const Material& material, const ReferenceCurve& curve, con
       << "\n"
       << "  colour      " << to_string(colorimetry.observer()) << ", " << to_string(colorimetry.illuminant()) << ", "
       << curve.converter().space() << " (" << config.path.string() << ", " << config.origin << ")\n"
+      << "  adaptation  " << describe_adaptation(colorimetry.adaptation(), colorimetry.adapted(), colorimetry.illuminant())
+      << "; convention " << to_string(setup.convention) << "\n"
       << held_constant_lines(curve)
       << "  white       raw perfect reflector (" << fixed(white.r, 6) << ", " << fixed(white.g, 6) << ", "
       << fixed(white.b, 6) << "); curves are divided by it\n\n"
@@ -90,7 +92,7 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
         for (const auto& w : curve.held_constant()) warn(loaders.size() > 1 ? material.id + ": " + w : w);
         const ReflectanceSummary summary = summarize_reflectance(curve);
         if (o.json)
-            records.push_back(reflectance_record(material, curve, summary, setup.colorimetry, setup.config, setup.spectral));
+            records.push_back(reflectance_record(material, curve, summary, setup.colorimetry, setup.config, setup.spectral, setup.convention));
         else
             text += (text.empty() ? "" : "\n") + show_text(material, curve, summary, setup, o);
     }

@@ -4,11 +4,23 @@ namespace metalfit::cli {
 
 void add_colour_options(CLI::App& app, ColourOptions& o) {
     app.add_option("--space", o.space, "Target colour space or role of the OCIO config (default: role scene_linear)");
+    app.add_option("--convention", o.convention,
+                   "Preset of --cmf, --illuminant and --adaptation that reproduces a published table: metalfit "
+                   "(1931, D65, bradford), adobe (2015-2, D65, none), physicallybased (1931; D60 for ACES spaces, "
+                   "else D65; bradford) (default: metalfit)")
+        ->check(CLI::IsMember({"metalfit", "adobe", "physicallybased"}));
     app.add_option("--xyz-space", o.xyz_space,
                    "Colour space of the OCIO config holding CIE XYZ D65 (default: role cie_xyz_d65_interchange; for OCIO v1 / ACES 1.2 configs)");
-    app.add_option("--cmf", o.cmf, "Colour matching functions")->check(CLI::IsMember({"1931", "1964"}));
-    app.add_option("--illuminant", o.illuminant, "Illuminant")->check(CLI::IsMember({"D65", "A", "E"}));
-    app.add_option("--interp", o.interpolation, "Interpolation of n and k")->check(CLI::IsMember({"linear", "pchip"}));
+    app.add_option("--cmf", o.cmf, "Colour matching functions: CIE 1931 2°, 1964 10°, 2015 2° or 10° (default: the convention's, 1931)")
+        ->check(CLI::IsMember({"1931", "1964", "2015-2", "2015-10"}));
+    app.add_option("--illuminant", o.illuminant,
+                   "Illuminant: D65, D50, A (CIE tables), E, D55, D60, D75 or D<kelvin> (daylight from S0, S1, S2) "
+                   "(default: the convention's, D65)");
+    app.add_option("--adaptation", o.adaptation,
+                   "Chromatic adaptation from the illuminant's white to D65's (not needed for D65) "
+                   "(default: the convention's, bradford)")
+        ->check(CLI::IsMember({"bradford", "cat02", "von-kries-xyz", "none"}));
+    app.add_option("--interp", o.interpolation, "Interpolation of n and k (default: linear)")->check(CLI::IsMember({"linear", "pchip"}));
     app.add_flag("--extrapolate", o.extrapolate, "Hold end values outside the measured range (default: error)");
 }
 
@@ -18,9 +30,15 @@ ColourSetup resolve_colour_options(const ColourOptions& o, const GlobalOptions& 
         warn("--ocio-config is ignored because $OCIO is set (" + config.path.string() + ")");
     const SpectralOptions spectral{o.interpolation == "pchip" ? Interpolation::pchip : Interpolation::linear,
                                    o.extrapolate ? OutOfRange::clamp : OutOfRange::error};
-    auto colorimetry = Colorimetry::load(global.data_dir, parse_observer(o.cmf), parse_illuminant(o.illuminant));
+    const Convention convention = parse_convention(o.convention);
+    // Usage errors first: a wrong illuminant costs nothing.
+    const std::optional<Illuminant> illuminant = o.illuminant ? std::optional(parse_illuminant(*o.illuminant)) : std::nullopt;
     auto converter = ColorSpaceConverter::create(config, o.space, o.xyz_space);
-    return {std::move(config), std::move(colorimetry), std::move(converter), spectral};
+    const ColourConvention preset = convention_preset(convention, converter.space());
+    auto colorimetry = Colorimetry::load(global.data_dir, o.cmf ? parse_observer(*o.cmf) : preset.observer,
+                                         illuminant.value_or(preset.illuminant),
+                                         o.adaptation ? parse_adaptation(*o.adaptation) : preset.adaptation);
+    return {std::move(config), std::move(colorimetry), std::move(converter), spectral, convention};
 }
 
 }  // namespace metalfit::cli

@@ -3,21 +3,27 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 
 #include "commands.hpp"
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
+#include "libfit/color/convention.hpp"
 #include "libfit/fit/fit_batch.hpp"
+#include "libfit/fit/fit_record.hpp"
 #include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit::cli {
 
+// --cmf, --illuminant and --adaptation override the convention's preset; unset, they come from --convention.
 struct ColourOptions {
     std::string space;      // empty: role scene_linear
     std::string xyz_space;  // empty: role cie_xyz_d65_interchange
-    std::string cmf = "1931";
-    std::string illuminant = "D65";
+    std::string convention = "metalfit";
+    std::optional<std::string> cmf;
+    std::optional<std::string> illuminant;
+    std::optional<std::string> adaptation;
     std::string interpolation = "linear";
     bool extrapolate = false;
 };
@@ -30,9 +36,15 @@ struct ColourSetup {
     Colorimetry colorimetry;
     ColorSpaceConverter converter;
     SpectralOptions spectral;
+    Convention convention;
 
     // The colour pipeline of a batch fit (fit_materials), referring to this setup.
     BatchColour batch() const { return {config, colorimetry, converter}; }
+    // The provenance of records and exports made with this setup.
+    FitRecordContext record_context(const ErrorSettings& error) const {
+        return {config,        converter.space(),          colorimetry.observer(), colorimetry.illuminant(), spectral, error,
+                colorimetry.adaptation(), colorimetry.adapted(), convention};
+    }
 };
 
 // Warns when --ocio-config is overridden by $OCIO.

@@ -1,92 +1,109 @@
 #include "libfit/color/colorimetry.hpp"
 
-#include <cmath>
-#include <fstream>
-#include <map>
-
 #include "libfit/base/errors.hpp"
 #include "libfit/spectral/spectrum.hpp"
-#include "base/parse_number.hpp"
+#include "color/cie_table.hpp"
 
 namespace metalfit {
 namespace {
 
-// A CIE table "wavelength_nm,c1[,c2,c3]" at integer wavelengths: wavelength → values.
-std::map<int, std::vector<double>> read_cie_table(const std::filesystem::path& file, std::size_t columns) {
-    std::ifstream in(file);
-    if (!in) throw InputError({file}, "cannot open CIE table");
-    std::map<int, std::vector<double>> rows;
-    int line_number = 0;
-    for (std::string raw; std::getline(in, raw);) {
-        ++line_number;
-        const auto line = detail::trim(raw);
-        if (line.empty() || line_number == 1) continue;  // header
-        const auto fields = detail::split_commas(line);
-        if (fields.size() != columns + 1) throw InputError({file, line_number}, "expected " + std::to_string(columns + 1) + " fields");
-        const std::vector<double> v = detail::parse_row(fields, {file, line_number});
-        rows[static_cast<int>(std::lround(v[0]))] = std::vector<double>(v.begin() + 1, v.end());
+constexpr int kFirstNm = static_cast<int>(kVisibleRange.min_nm), kLastNm = static_cast<int>(kVisibleRange.max_nm);
+
+const char* cmf_file_name(Observer o) {
+    switch (o) {
+        case Observer::cie1931_2deg: return "cie1931_2deg_cmf.csv";
+        case Observer::cie1964_10deg: return "cie1964_10deg_cmf.csv";
+        case Observer::cie2015_2deg: return "cie2015_2deg_cmf.csv";
+        case Observer::cie2015_10deg: return "cie2015_10deg_cmf.csv";
     }
-    return rows;
+    return "";
 }
 
-const std::vector<double>& at(const std::map<int, std::vector<double>>& table, int nm,
-                              const std::filesystem::path& file) {
-    const auto it = table.find(nm);
-    if (it == table.end()) throw InputError({file}, "no row for " + std::to_string(nm) + " nm (360–830 nm at 1 nm steps needed)");
-    return it->second;
+// The first wavelength of the observer's table; below it the functions are zero (CIE 2015: 390 nm).
+int first_tabulated_nm(Observer o) {
+    return o == Observer::cie2015_2deg || o == Observer::cie2015_10deg ? 390 : kFirstNm;
 }
+
+// S·x̄, S·ȳ, S·z̄ normalised to Y = 1 for the perfect reflector.
+DenseSpectrum<XYZ> normalised_weights(const DenseSpectrum<XYZ>& cmf, const DenseSpectrum<double>& spd,
+                                      const std::filesystem::path& data_dir, const Illuminant& illuminant) {
+    if (spd.first_nm() > kFirstNm || spd.last_nm() < kLastNm)
+        throw InputError({data_dir / "cie"}, "illuminant " + illuminant.name() + " covers " + std::to_string(spd.first_nm()) + "–" +
+                                                 std::to_string(spd.last_nm()) + " nm (360–830 nm needed)");
+    const DenseSpectrum<XYZ> weighted = DenseSpectrum<XYZ>::sampled(kFirstNm, kLastNm, [&](int nm) {
+        const XYZ& xyz = cmf.at_nm(nm);
+        const double s = spd.at_nm(nm);
+        return XYZ{s * xyz.X, s * xyz.Y, s * xyz.Z};
+    });
+    double y_sum = 0.0;
+    for (const XYZ& w : weighted.values()) y_sum += w.Y;
+    return weighted.map([y_sum](const XYZ& w) { return w / y_sum; });
+}
+
+XYZ sum(const DenseSpectrum<XYZ>& w) { return sum_of_products(DenseSpectrum<double>(w.first_nm(), w.last_nm(), 1.0), w); }
 
 }  // namespace
 
 Observer parse_observer(std::string_view s) {
     if (s == "1931") return Observer::cie1931_2deg;
     if (s == "1964") return Observer::cie1964_10deg;
-    throw UsageError("unknown observer '" + std::string(s) + "' (expected 1931 or 1964)");
+    if (s == "2015-2") return Observer::cie2015_2deg;
+    if (s == "2015-10") return Observer::cie2015_10deg;
+    throw UsageError("unknown observer '" + std::string(s) + "' (expected 1931, 1964, 2015-2 or 2015-10)");
 }
 
-Illuminant parse_illuminant(std::string_view s) {
-    if (s == "D65") return Illuminant::D65;
-    if (s == "A") return Illuminant::A;
-    if (s == "E") return Illuminant::E;
-    throw UsageError("unknown illuminant '" + std::string(s) + "' (expected D65, A or E)");
-}
-
-std::string to_string(Observer o) { return o == Observer::cie1931_2deg ? "CIE 1931 2°" : "CIE 1964 10°"; }
-
-std::string to_string(Illuminant i) {
-    switch (i) {
-        case Illuminant::D65: return "D65";
-        case Illuminant::A: return "A";
-        case Illuminant::E: return "E";
+std::string to_string(Observer o) {
+    switch (o) {
+        case Observer::cie1931_2deg: return "CIE 1931 2°";
+        case Observer::cie1964_10deg: return "CIE 1964 10°";
+        case Observer::cie2015_2deg: return "CIE 2015 2°";
+        case Observer::cie2015_10deg: return "CIE 2015 10°";
     }
     return "?";
 }
 
-Colorimetry Colorimetry::load(const std::filesystem::path& data_dir, Observer observer, Illuminant illuminant) {
-    const auto cie = data_dir / "cie";
-    const auto cmf_file = cie / (observer == Observer::cie1931_2deg ? "cie1931_2deg_cmf.csv" : "cie1964_10deg_cmf.csv");
-    const auto cmf = read_cie_table(cmf_file, 3);
-    std::filesystem::path spd_file;
-    std::map<int, std::vector<double>> spd;
-    if (illuminant != Illuminant::E) {
-        spd_file = cie / (illuminant == Illuminant::D65 ? "cie_illuminant_D65.csv" : "cie_illuminant_A.csv");
-        spd = read_cie_table(spd_file, 1);
+std::string option_name(Observer o) {
+    switch (o) {
+        case Observer::cie1931_2deg: return "1931";
+        case Observer::cie1964_10deg: return "1964";
+        case Observer::cie2015_2deg: return "2015-2";
+        case Observer::cie2015_10deg: return "2015-10";
     }
+    return "?";
+}
 
-    Colorimetry c;
-    c.observer_ = observer;
-    c.illuminant_ = illuminant;
-    const int first = static_cast<int>(kVisibleRange.min_nm), last = static_cast<int>(kVisibleRange.max_nm);
-    const DenseSpectrum<XYZ> weighted = DenseSpectrum<XYZ>::sampled(first, last, [&](int nm) {
-        const auto& xyz = at(cmf, nm, cmf_file);
-        const double s = illuminant == Illuminant::E ? 1.0 : at(spd, nm, spd_file)[0];
-        return XYZ{s * xyz[0], s * xyz[1], s * xyz[2]};
+DenseSpectrum<XYZ> colour_matching_functions(const std::filesystem::path& data_dir, Observer observer) {
+    const auto file = data_dir / "cie" / cmf_file_name(observer);
+    const detail::CieTable cmf = detail::read_cie_table(file, 3);
+    const int first = first_tabulated_nm(observer);
+    const std::string needed = std::to_string(first) + "–830 nm at 1 nm steps";
+    return DenseSpectrum<XYZ>::sampled(kFirstNm, kLastNm, [&](int nm) {
+        if (nm < first) return XYZ{};  // not tabulated by the CIE: zero
+        const auto& v = detail::cie_row(cmf, nm, file, needed);
+        return XYZ{v[0], v[1], v[2]};
     });
-    double y_sum = 0.0;
-    for (const XYZ& w : weighted.values()) y_sum += w.Y;
-    c.weights_ = weighted.map([y_sum](const XYZ& w) { return w / y_sum; });
-    c.white_ = c.integrate(DenseSpectrum<double>(first, last, 1.0));
+}
+
+Colorimetry Colorimetry::load(const std::filesystem::path& data_dir, Observer observer, const Illuminant& illuminant,
+                              Adaptation adaptation) {
+    Colorimetry c(observer, illuminant, adaptation);
+    const DenseSpectrum<XYZ> cmf = colour_matching_functions(data_dir, observer);
+    c.weights_ = normalised_weights(cmf, illuminant.spectrum(data_dir), data_dir, illuminant);
+    c.illuminant_white_ = sum(c.weights_);
+    if (adaptation != Adaptation::none && !(illuminant == connection_illuminant())) {
+        const XYZ target = sum(normalised_weights(cmf, connection_illuminant().spectrum(data_dir), data_dir, connection_illuminant()));
+        c.matrix_ = metalfit::adaptation_matrix(adaptation, c.illuminant_white_, target);
+        c.adapted_ = !(c.matrix_ == Matrix3::identity());
+        if (c.adapted_) c.weights_ = c.weights_.map([&](const XYZ& w) { return c.matrix_ * w; });
+    }
+    c.white_ = c.integrate(DenseSpectrum<double>(kFirstNm, kLastNm, 1.0));
     return c;
+}
+
+std::string describe_adaptation(Adaptation adaptation, bool adapted, const Illuminant& illuminant) {
+    if (adaptation == Adaptation::none) return "none";
+    if (adapted) return to_string(adaptation) + ", " + illuminant.name() + " white → " + connection_illuminant().name() + " white";
+    return to_string(adaptation) + " (not needed: " + illuminant.name() + ")";
 }
 
 XYZ Colorimetry::integrate(const DenseSpectrum<double>& reflectance) const { return sum_of_products(reflectance, weights_); }

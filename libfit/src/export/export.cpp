@@ -204,6 +204,8 @@ std::string comment_header(const MaterialExport& material, const WrittenParamete
     for (const std::string& warning : m.warnings) line("DATA WARNING: " + warning);
     line("colour space: " + r.space + " (OCIO " + r.config.origin + "); " + to_string(r.illuminant) + ", " +
          to_string(r.observer) + ", R_c(mu) white balanced to the perfect reflector");
+    line("colour convention: " + to_string(r.convention) + "; chromatic adaptation: " +
+         describe_adaptation(r.adaptation, r.adapted, r.illuminant));
     line("model: " + std::string(written.model->id()) + " - " + std::string(written.model->title()));
     if (!extra.empty()) {
         std::string_view rest = extra;

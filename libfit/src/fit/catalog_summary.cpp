@@ -56,8 +56,9 @@ std::string catalog_summary_markdown(const CatalogSummary& summary, const FitRec
     std::ostringstream s;
     const ErrorSettings& e = context.error;
     s << "Worst-channel `rel_rms` in %, fit / best closed form; " << context.space << ", " << to_string(context.illuminant)
-      << ", " << to_string(context.observer) << ", "
-      << to_string(context.spectral.interpolation) << " interpolation, "
+      << ", " << to_string(context.observer) << ", adaptation "
+      << describe_adaptation(context.adaptation, context.adapted, context.illuminant) << ", convention "
+      << to_string(context.convention) << ", " << to_string(context.spectral.interpolation) << " interpolation, "
       << to_string(e.metric) << " metric, " << to_string(e.weight) << " weight, " << e.nodes << " nodes (metalfit "
       << METALFIT_VERSION << ").\n\n";
     s << "| material |";

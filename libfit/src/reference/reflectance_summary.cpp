@@ -27,7 +27,7 @@ ReflectanceSummary summarize_reflectance(const ReferenceCurve& curve) {
 
 nlohmann::json reflectance_record(const Material& material, const ReferenceCurve& curve, const ReflectanceSummary& summary,
                                   const Colorimetry& colorimetry,
-                                  const OcioConfigChoice& config, const SpectralOptions& spectral) {
+                                  const OcioConfigChoice& config, const SpectralOptions& spectral, Convention convention) {
     const std::vector<ReflectanceSample>& samples = summary.samples;
     nlohmann::json out_of_gamut = nlohmann::json::array();
     for (const OutOfGamutValue& g : summary.out_of_gamut)
@@ -53,6 +53,9 @@ nlohmann::json reflectance_record(const Material& material, const ReferenceCurve
                        {"points_360_830", material.index.n.tabulated_points_in(kVisibleRange)},
                        {"cmf", to_string(colorimetry.observer())},
                        {"illuminant", to_string(colorimetry.illuminant())},
+                       {"adaptation", to_string(colorimetry.adaptation())},
+                       {"adapted", colorimetry.adapted()},
+                       {"convention", to_string(convention)},
                        {"interpolation", to_string(spectral.interpolation)},
                        {"extrapolate", spectral.out_of_range == OutOfRange::clamp},
                        {"ocio_config", config.path.string()},

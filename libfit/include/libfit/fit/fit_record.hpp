@@ -9,6 +9,7 @@
 
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
+#include "libfit/color/convention.hpp"
 #include "libfit/fit/fit.hpp"
 
 namespace metalfit {
@@ -23,6 +24,9 @@ struct FitRecordContext {
     Illuminant illuminant = Illuminant::D65;
     SpectralOptions spectral;
     ErrorSettings error;
+    Adaptation adaptation = Adaptation::bradford;  // as asked (docs/colour.md)
+    bool adapted = false;                          // whether it changed anything (false for D65)
+    Convention convention = Convention::metalfit;
 };
 
 nlohmann::ordered_json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContext& context);

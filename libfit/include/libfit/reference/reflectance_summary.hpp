@@ -11,6 +11,7 @@
 #include "libfit/color/color.hpp"
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
+#include "libfit/color/convention.hpp"
 #include "libfit/io/material.hpp"
 #include "libfit/reference/reference_curve.hpp"
 
@@ -39,6 +40,7 @@ ReflectanceSummary summarize_reflectance(const ReferenceCurve& curve);
 // pipeline, the raw white), the material's warnings.
 nlohmann::json reflectance_record(const Material& material, const ReferenceCurve& curve, const ReflectanceSummary& summary,
                                   const Colorimetry& colorimetry,
-                                  const OcioConfigChoice& config, const SpectralOptions& spectral);
+                                  const OcioConfigChoice& config, const SpectralOptions& spectral,
+                                  Convention convention = Convention::metalfit);
 
 }  // namespace metalfit
