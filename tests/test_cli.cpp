@@ -489,9 +489,9 @@ namespace {
 
 class CliColour : public ::testing::Test {
 protected:
-    Result run(const std::string& args) const {
-        return metalfit::test::run_command(METALFIT_EXE, args, fs::temp_directory_path(), "OCIO=");
-    }
+    // Each test its own scratch folder: ctest runs tests in parallel processes.
+    Result run(const std::string& args) const { return metalfit::test::run_command(METALFIT_EXE, args, scratch_.path(), "OCIO="); }
+    metalfit::test::TempDir scratch_;
 };
 
 TEST_F(CliColour, ConventionSetsObserverIlluminantAndAdaptationAndOptionsOverrideIt) {
