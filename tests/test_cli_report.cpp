@@ -112,6 +112,23 @@ TEST_F(Report, CurvesAgreeWithIndependentForms) {
     EXPECT_EQ(sources[0]["F0"], show["F0"]);
 }
 
+// A user file is reported with its own provenance, even when its name is a catalog id: no catalog licence, DOI or
+// alternate sources are borrowed for it.
+TEST_F(Report, AUserFileNamedLikeACatalogMaterialIsNotTheCatalogs) {
+    const fs::path file = tmp_.path() / "Au.yml";
+    fs::copy_file(metalfit::test::kFixtures / "valid-unsorted-duplicates.yml", file);
+    const fs::path dir = tmp_.path() / "r";
+    const auto r = run("report '" + file.string() + "' --renders off -o '" + dir.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Json m = report_json(dir)["materials"][0];
+    EXPECT_EQ(m["id"], "Au");
+    EXPECT_EQ(m["provenance"]["file"], "Au.yml");
+    EXPECT_TRUE(m["provenance"]["licence"].is_null());
+    EXPECT_TRUE(m["provenance"]["kind"].is_null());
+    EXPECT_TRUE(m["data_sources"].is_null());
+    EXPECT_TRUE(fs::exists(dir / "materials" / "Au.html"));
+}
+
 TEST_F(Report, RerunsAreByteIdenticalAndNameNoPathOfThisMachine) {
     const fs::path a = tmp_.path() / "a", b = tmp_.path() / "b";
     ASSERT_EQ(run("report Au,Cu --renders off -o '" + a.string() + "'").exit_code, 0);

@@ -68,7 +68,7 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     SphereRenderRequest render_request{glpreview_beside_this_program(), global.data_dir / "scenes" / "sheet.json", {},
                                        global.data_dir, setup.config};
     for (const MaterialFit& f : fits)
-        if (const CatalogEntry* e = catalog.find(f.material.id); e && e->id == f.material.id && e->primary.source == f.material.source)
+        if (const CatalogEntry* e = catalog.find(f.material.id); e && e->id == f.material.id && e->primary.file == f.material.provenance.file)
             render_request.materials.push_back(f.material.id);
     const SphereRenders renders = render_spheres(render_request, render_mode);
     if (!renders.sheet && render_mode == RenderMode::auto_) std::cerr << "metalfit: renders skipped: " << renders.skipped << "\n";

@@ -121,7 +121,7 @@ Json catalog_charts(bool with_costs) {
          {{{"mark", {{"type", "rect"}, {"tooltip", true}}},
            {"encoding",
             {{"color", {{"field", "worst"}, {"type", "quantitative"}, {"scale", {{"type", "log"}, {"scheme", "viridis"}}},
-                        {"title", "rel_rms"}, {"legend", {{"format", ".1%"}}}}},
+                        {"title", "rel_rms"}, {"legend", {{"format", ".2~%"}}}}},
              {"tooltip", tooltip({{"material", "nominal"}, {"model", "nominal"}, {"label", "nominal"}})}}}},
           {{"mark", {{"type", "text"}, {"fontSize", 10}}},
            {"encoding",

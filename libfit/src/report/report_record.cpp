@@ -69,6 +69,16 @@ private:
     bool same_space_;
 };
 
+// The catalog entry and source a material was loaded from (its data file is that source's), if it is one.
+std::pair<const CatalogEntry*, const CatalogSource*> catalog_source(const Material& material, const Catalog& catalog) {
+    const CatalogEntry* entry = catalog.find(material.id);
+    if (!entry || entry->id != material.id) return {nullptr, nullptr};
+    if (entry->primary.file == material.provenance.file) return {entry, &entry->primary};
+    for (const CatalogSource& s : entry->alternates)
+        if (s.file == material.provenance.file) return {entry, &s};
+    return {nullptr, nullptr};
+}
+
 Json nk_json(const Material& material, const SpectralOptions& spectral) {
     const WavelengthRange range = material.index.range();
     std::vector<double> nm;
@@ -115,8 +125,8 @@ Json channels_json(const std::vector<RGB>& values) {
 // F0 and F82 of every source of a catalog material with several, their spread (max − min per channel) and each
 // model's error at the same two angles: how much the data disagree next to how much the model errs.
 Json sources_json(const MaterialFit& fit, const ReportInputs& in) {
-    const CatalogEntry* entry = in.catalog.find(fit.material.id);
-    if (!entry || entry->id != fit.material.id || entry->alternates.empty()) return nullptr;
+    const CatalogEntry* entry = catalog_source(fit.material, in.catalog).first;
+    if (!entry || entry->alternates.empty()) return nullptr;
     std::vector<const CatalogSource*> all{&entry->primary};
     for (const CatalogSource& s : entry->alternates) all.push_back(&s);
     Json sources = Json::array();
@@ -151,11 +161,10 @@ Json provenance_json(const MaterialFit& fit, const ReportInputs& in) {
     Json j = {{"file", p.file.filename().string()}, {"sha256", p.sha256}, {"format", p.format},
               {"data_type", p.data_type}, {"reference", p.references}, {"doi", nullptr}, {"licence", nullptr},
               {"database_path", nullptr}, {"kind", nullptr}};
-    if (const CatalogEntry* entry = in.catalog.find(fit.material.id); entry && entry->id == fit.material.id) {
-        const CatalogSource& s = entry->find_source(fit.material.source);
-        j["doi"] = s.doi.empty() ? Json(nullptr) : Json(s.doi);
-        j["licence"] = s.licence;
-        j["database_path"] = s.database_path;
+    if (const auto [entry, source] = catalog_source(fit.material, in.catalog); entry) {
+        j["doi"] = source->doi.empty() ? Json(nullptr) : Json(source->doi);
+        j["licence"] = source->licence;
+        j["database_path"] = source->database_path;
         j["kind"] = entry->kind;
     }
     return j;
