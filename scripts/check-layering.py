@@ -11,7 +11,7 @@ import sys
 # The stage order of each library, as docs/development.md draws it.
 LIBRARIES = {
     "libfit": (["libfit/include/libfit", "libfit/src"], "libfit",
-               ["base", "spectral", "io", "optics", "color", "reference", "models", "fit", "export"]),
+               ["base", "spectral", "io", "optics", "color", "reference", "models", "fit", "export", "report"]),
     "glpreview": (["glpreview/include/glpreview", "glpreview/src"], "glpreview",
                   ["scene", "graph", "gl", "io", "render"]),
 }

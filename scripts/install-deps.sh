@@ -18,20 +18,31 @@ PACKAGES=(
   libbenchmark-dev                     # Google Benchmark: bench/ (metalfit_benchmarks)
   libopengl-dev libegl-dev             # glpreview: GL 4.5 core through libglvnd, headless EGL
   libegl-mesa0 libgl1-mesa-dri         # Mesa's EGL and llvmpipe: the preview runs without a GPU
+  chromium                             # metalfit report: the browser test opens the pages headless
 )
+# npm (from Debian's nodejs + npm unless a node with its own npm is already on PATH): installs the report's chart
+# libraries (vega, vega-lite, vega-embed) and playwright-core, pinned in package.json + package-lock.json.
+command -v npm >/dev/null 2>&1 || PACKAGES+=(nodejs npm)
 
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 
-if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps: all ${#PACKAGES[@]} packages present"
-  exit 0
-fi
-
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-echo "install-deps: installing ${missing[*]}"
-$SUDO apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PACKAGES[@]} packages present"
+else
+  echo "install-deps: installing ${missing[*]}"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# The npm packages, exactly as package-lock.json pins them, into node_modules/ (again only when it differs).
+cd "$(dirname "$0")/.."
+if ! cmp -s package-lock.json node_modules/.metalfit-installed-lock 2>/dev/null; then
+  echo "install-deps: npm ci (package-lock.json)"
+  npm ci --no-audit --no-fund --loglevel=error
+  cp package-lock.json node_modules/.metalfit-installed-lock
+fi

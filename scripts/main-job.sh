@@ -12,7 +12,8 @@
 #   preview/                        glpreview (docs/preview.md): the difficult room (beauty | CPU reference | difference,
 #                                   EXR + PNG, metrics.json) and the sphere sheet sheet.png: per metal, reference |
 #                                   best fitted model | |difference| x 10, distance impostor in the difficult room
-# Later stages (report) are added here as they land.
+#   report/                         `metalfit report --all --model all`: open report/index.html in a browser (the catalog,
+#                                   a page per material, report.json; docs/report.md); renders through glpreview
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out="${1:-out}"
@@ -32,4 +33,6 @@ done
 python3 scripts/export-summary.py "$out/export" > "$out/export-summary.md"
 build/bin/glpreview data/scenes/difficult-room.json -o "$out/preview" > "$out/preview-metrics.txt"
 build/bin/glpreview data/scenes/sheet.json --sheet Au,Cu,Al,Ag,TiN,Cu-Zn -o "$out/preview" > "$out/preview-sheet.txt"
+"$metalfit" report --all --model all -o "$out/report" > /dev/null
+echo "main job: open $out/report/index.html in a browser (the catalog report)"
 echo "main job: wrote $(ls "$out" | wc -l) files into $out/"

@@ -26,6 +26,14 @@ std::function<void()> add_models_command(CLI::App& app, const GlobalOptions& glo
 std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_spaces_command(CLI::App& app, const GlobalOptions& global);
+std::function<void()> add_report_command(CLI::App& app, const GlobalOptions& global);
+
+// `metalfit report --fail-above`: the report was written, and `count` channels are above the limit (each already
+// printed on stderr). main() exits with exit_fail_above (docs/cli.md).
+inline constexpr int exit_fail_above = 6;
+struct FailAbove {
+    std::size_t count = 0;
+};
 
 // Prints to stdout (`output` empty or "-"), else writes atomically to the file `output`.
 void emit(const std::string& text, const std::filesystem::path& output);

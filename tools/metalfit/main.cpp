@@ -1,5 +1,6 @@
 // metalfit: measured metal n,k → shader-ready Fresnel constants. A thin layer over libfit.
-// Exit codes (docs/cli.md): 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 colour configuration.
+// Exit codes (docs/cli.md): 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 colour configuration,
+// 6 `report --fail-above` found channels above the limit (the report is written).
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -84,6 +85,8 @@ int main(int argc, char** argv) {
     auto run_export = cli::add_export_command(export_, global);
     auto& spaces = *app.add_subcommand("spaces", "The OCIO config in use: its colour spaces (which can be --space) and roles");
     auto run_spaces = cli::add_spaces_command(spaces, global);
+    auto& report = *app.add_subcommand("report", "HTML report (catalog and material pages, report.json, charts, renders) of the fits");
+    auto run_report = cli::add_report_command(report, global);
 
     try {
         app.parse(argc, argv);
@@ -108,7 +111,10 @@ int main(int argc, char** argv) {
         if (bench.parsed()) run_bench();
         if (export_.parsed()) run_export();
         if (spaces.parsed()) run_spaces();
+        if (report.parsed()) run_report();
         return ok;
+    } catch (const cli::FailAbove&) {
+        return cli::exit_fail_above;
     } catch (...) {
         return report_current_exception("metalfit");
     }

@@ -1,0 +1,40 @@
+// What the report shows about cost and budget, and nothing more: the cost of each model (when a cost table is
+// given) and, per material, the model chosen for a budget (when one is asked). The report does not compute
+// either: the cost table and the "cheapest model meeting a budget" choice belong to the fit stage's model
+// selection; the report only shows what it is handed here.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace metalfit {
+
+// One cost per model id, in one unit, and where the numbers come from ("metalfit bench --json FILE", "SPIR-V
+// operation counts"): what the report's cost column and the Pareto chart show.
+struct ModelCosts {
+    std::string source;
+    std::string unit;
+    std::map<std::string, double, std::less<>> per_model;
+
+    std::optional<double> of(std::string_view model) const {
+        const auto it = per_model.find(model);
+        return it == per_model.end() ? std::nullopt : std::optional<double>(it->second);
+    }
+};
+
+// A budget's choice for one material: the model marked as recommended, or none (with why).
+struct BudgetChoice {
+    std::optional<std::string> model;
+    std::string note;  // "cheapest model whose worst channel meets 0.5 %", "no model meets 0.5 %"
+};
+
+// The inputs the report shows for cost and budget; every field may be empty (then the pages say so).
+struct CostAndBudget {
+    std::optional<ModelCosts> costs;
+    std::optional<double> budget;                 // worst-channel rel_rms the choice had to meet
+    std::map<std::string, BudgetChoice> choices;  // material id → choice
+};
+
+}  // namespace metalfit

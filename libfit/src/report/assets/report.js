@@ -1,0 +1,292 @@
+// metalfit report: builds each page from report.json (loaded through report-data.js, which calls metalfitReport
+// with it) — the tables from its numbers, the charts by embedding its Vega-Lite specs with datasets made from its
+// numbers. No number is written into the pages themselves; nothing is fetched.
+(function () {
+  'use strict';
+
+  const CHANNELS = ['red', 'green', 'blue'];
+  const pct = (v, digits = 3) => (v == null || Number.isNaN(v) ? '—' : (100 * v).toFixed(digits) + ' %');
+  const num = (v, digits = 4) => (v == null || Number.isNaN(v) ? '—' : Number(v).toFixed(digits));
+  const rgbText = (v, f = num) => (v == null ? '—' : v.map((x) => f(x)).join(' / '));
+
+  function el(tag, attrs, ...children) {
+    const e = document.createElement(tag);
+    for (const [k, v] of Object.entries(attrs || {})) {
+      if (v == null) continue;
+      if (k === 'text') e.textContent = v;
+      else if (k === 'style') e.style.cssText = v;
+      else e.setAttribute(k, v);
+    }
+    for (const c of children) if (c != null) e.append(c);
+    return e;
+  }
+
+  // A table whose header cells sort it (numbers by their data-sort value, text otherwise; click again to reverse).
+  function sortableTable(id, headers, rows) {
+    const thead = el('thead', {}, el('tr', {}, ...headers.map((h, i) => el('th', { 'data-column': i, title: 'sort' }, h))));
+    const tbody = el('tbody', {}, ...rows);
+    const table = el('table', { id, class: 'sortable' }, thead, tbody);
+    thead.addEventListener('click', (event) => {
+      const th = event.target.closest('th');
+      if (!th) return;
+      const column = Number(th.dataset.column);
+      const descending = th.dataset.order === 'ascending';
+      thead.querySelectorAll('th').forEach((h) => delete h.dataset.order);
+      th.dataset.order = descending ? 'descending' : 'ascending';
+      const key = (tr) => {
+        const cell = tr.children[column];
+        const v = cell.dataset.sort;
+        return v === undefined ? cell.textContent : v === '' ? Infinity : Number(v);
+      };
+      const sorted = [...tbody.children].sort((a, b) => {
+        const x = key(a), y = key(b);
+        const order = typeof x === 'number' && typeof y === 'number' ? x - y : String(x).localeCompare(String(y));
+        return descending ? -order : order;
+      });
+      tbody.append(...sorted);
+    });
+    return table;
+  }
+
+  const cell = (content, sortValue) => el('td', sortValue === undefined ? {} : { 'data-sort': sortValue == null ? '' : sortValue }, content);
+
+  // Embeds a Vega-Lite spec of report.json with the given datasets into a new chart container.
+  function chart(id, spec, datasets, into) {
+    const container = el('div', { id, class: 'chart' });
+    into.append(container);
+    const s = JSON.parse(JSON.stringify(spec));
+    s.datasets = datasets;
+    return vegaEmbed(container, s, { mode: 'vega-lite', renderer: 'svg', actions: false });
+  }
+
+  function section(title, ...children) {
+    return el('section', {}, el('h2', { text: title }), ...children);
+  }
+
+  function provenanceLine(report) {
+    const p = report.provenance;
+    return `${p.color_space}, ${p.cmf}, illuminant ${p.illuminant}; ${p.metric} metric, ${p.weight} weight, ` +
+      `${p.nodes} nodes; OCIO config ${p.ocio_config.file} (${p.ocio_config.origin}); display: ${p.display}; metalfit ${p.metalfit_version}`;
+  }
+
+  function costLine(report) {
+    return report.costs
+      ? `cost: ${report.costs.source} (${report.costs.unit})`
+      : 'cost: no cost table given (metalfit report does not take --costs yet), so the cost column is empty and there is no error-vs-cost chart';
+  }
+
+  function rendersSkipped(report) {
+    return report.renders.skipped === undefined ? null : el('p', { class: 'renders-skipped', text: 'renders skipped: ' + report.renders.skipped });
+  }
+
+  // ---------------------------------------------------------------------------------------------- catalog page
+  function catalogPage(report, main) {
+    const models = report.models;
+    const materials = report.materials;
+    main.append(el('h1', { text: `metalfit report: ${materials.length} material${materials.length === 1 ? '' : 's'} × ${models.length} model${models.length === 1 ? '' : 's'}` }));
+    main.append(el('p', { class: 'provenance', text: provenanceLine(report) }));
+    main.append(el('p', { class: 'cost', text: costLine(report) }));
+    const charts = report.charts.catalog;
+    const done = [];
+
+    const values = [];
+    models.forEach((m) => m.fit_worst_rel_rms.per_material.forEach((v) => { if (v != null && v > 0) values.push(v); }));
+    const lo = Math.log(Math.min(...values)), hi = Math.log(Math.max(...values));
+    const heatmap = [];
+    materials.forEach((mat, i) => models.forEach((m) => {
+      const v = m.fit_worst_rel_rms.per_material[i];
+      heatmap.push({ material: mat.id, model: m.id, worst: v, label: pct(v, 2),
+                     dark: v != null && hi > lo && (Math.log(v) - lo) / (hi - lo) < 0.55 });
+    }));
+    const overview = section('Where the cheap models fail');
+    main.append(overview);
+    done.push(chart('heatmap', charts.heatmap, { heatmap }, overview));
+
+    const headers = ['material', 'name', 'source', 'kind', ...models.map((m) => m.id), 'best fit'];
+    if (report.budget != null) headers.push(`budget ${pct(report.budget, 2)}`);
+    const rows = materials.map((mat, i) => {
+      let best = null;
+      models.forEach((m) => { const v = m.fit_worst_rel_rms.per_material[i]; if (v != null && (best == null || v < best.v)) best = { id: m.id, v }; });
+      const tr = el('tr', {},
+        cell(el('a', { href: mat.page, text: mat.id })), cell(mat.name), cell(mat.source), cell(mat.provenance.kind || 'file'),
+        ...models.map((m) => cell(pct(m.fit_worst_rel_rms.per_material[i], 2), m.fit_worst_rel_rms.per_material[i])),
+        cell(best ? best.id : '—'));
+      if (report.budget != null) tr.append(cell(mat.budget_choice ? (mat.budget_choice.model || 'none') : '—'));
+      return tr;
+    });
+    const summaryRows = ['median', 'worst'].map((which) => el('tr', { class: 'summary' },
+      cell(which), cell(''), cell(''), cell(''), ...models.map((m) => cell(pct(m.fit_worst_rel_rms[which], 2))), cell('')));
+    const table = sortableTable('catalog-table', headers, rows);
+    table.append(el('tfoot', {}, ...summaryRows));
+    const tableSection = section('Worst-channel rel_rms of every fit (click a column to sort)', table,
+      el('p', { class: 'note', text: 'cost per model: ' + models.map((m) => `${m.id} ${m.cost == null ? '—' : m.cost}`).join(', ') }));
+    main.append(tableSection);
+
+    if (charts.pareto) {
+      const pareto = models.filter((m) => m.cost != null).map((m) => ({ model: m.id, cost: m.cost, median: m.fit_worst_rel_rms.median, on_front: m.pareto_front ? 'on the front' : 'dominated' }));
+      const front = pareto.filter((p) => p.on_front === 'on the front').sort((a, b) => a.cost - b.cost);
+      const s = section('Error vs cost');
+      main.append(s);
+      done.push(chart('pareto', charts.pareto, { pareto, pareto_front: front }, s));
+    }
+
+    const swatches = [];
+    materials.forEach((mat) => ['F0', 'F82'].forEach((which) => swatches.push({ material: mat.id, which, color: mat.swatch[which] })));
+    const sw = section('Colours');
+    main.append(sw);
+    done.push(chart('swatches', charts.swatches, { swatches }, sw));
+    return done;
+  }
+
+  // --------------------------------------------------------------------------------------------- material page
+  function provenanceTable(report, mat) {
+    const p = report.provenance, d = mat.provenance;
+    const rows = [
+      ['material', `${mat.name} (${mat.id})`], ['kind', d.kind || 'user file'], ['source', mat.source], ['reference', d.reference],
+      ['DOI', d.doi || '—'], ['licence', d.licence || '—'], ['data file', d.file], ['database path', d.database_path || '—'],
+      ['file sha256', d.sha256], ['format', `${d.format}, ${d.data_type}`],
+      ['colour space', p.color_space], ['CMF', p.cmf], ['illuminant', p.illuminant], ['white balance', p.white_balance],
+      ['interpolation', `${p.interpolation}, out of range: ${p.out_of_range}`],
+      ['nodes', `${p.nodes} (${p.quadrature})`], ['metric', p.metric], ['weight', p.weight],
+      ['OCIO config', `${p.ocio_config.file} (${p.ocio_config.origin}, sha256 ${p.ocio_config.sha256})`], ['display transform', p.display],
+      ['metalfit version', p.metalfit_version]];
+    return el('table', { id: 'provenance', class: 'provenance' }, ...rows.map(([k, v]) => el('tr', {}, el('th', { text: k }), el('td', { text: v }))));
+  }
+
+  function paramsText(params) {
+    return Object.entries(params).map(([name, v]) => `${name} = ${rgbText(v)}`).join('; ');
+  }
+
+  function modelsTable(report, mat) {
+    const headers = ['model', 'parameters', 'parameter values (R / G / B)', 'rel_rms', 'abs_rms', 'max_rel', 'max_abs', 'ΔE2000 mean', 'ΔE2000 max', 'albedo error', 'cost', 'budget'];
+    const rows = [];
+    const chosen = mat.budget_choice && mat.budget_choice.model;
+    for (const m of report.models) {
+      const r = mat.models[m.id];
+      const kinds = [['fit', r.fit]];
+      if (r.closed.form) kinds.push([`closed ${r.closed.form}`, r.closed]);
+      for (const [which, e] of kinds) {
+        const x = e.metrics;
+        rows.push(el('tr', { class: which === 'fit' ? 'fit' : 'closed' },
+          cell(`${m.id}`, m.id), cell(which),
+          cell(paramsText(e.params)),
+          cell(rgbText(x.rel_rms, pct), Math.max(...x.rel_rms.map((v) => (v == null ? Infinity : v)))),
+          cell(rgbText(x.abs_rms, pct), Math.max(...x.abs_rms)),
+          cell(rgbText(x.max_rel, pct), Math.max(...x.max_rel.map((v) => (v == null ? Infinity : v)))),
+          cell(rgbText(x.max_abs, pct), Math.max(...x.max_abs)),
+          cell(num(x.de2000_mean, 3), x.de2000_mean), cell(num(x.de2000_max, 3), x.de2000_max),
+          cell(rgbText(x.albedo_err, pct), Math.max(...x.albedo_err.map(Math.abs))),
+          cell(m.cost == null ? '—' : String(m.cost), m.cost),
+          cell(which === 'fit' && chosen === m.id ? 'recommended' : '')));
+      }
+      if (!r.closed.form) rows.push(el('tr', { class: 'closed' }, cell(m.id, m.id), cell('closed'), cell('undefined: ' + r.closed.undefined),
+        ...Array.from({ length: 9 }, () => cell('—', null))));
+    }
+    return sortableTable('models-table', headers, rows);
+  }
+
+  function sourcesTable(mat) {
+    const ds = mat.data_sources;
+    const headers = ['source', 'F0 (R / G / B)', 'F82 (R / G / B)'];
+    const rows = ds.sources.map((s) => el('tr', {}, cell(s.source + (s.primary ? ' (primary, fitted)' : '')),
+      cell(s.F0 ? rgbText(s.F0) : 'undefined: ' + s.undefined), cell(s.F82 ? rgbText(s.F82) : '—')));
+    const spread = ds.spread;
+    const compare = el('table', { id: 'spread-table' },
+      el('thead', {}, el('tr', {}, el('th', { text: '' }), el('th', { text: 'at F0 (R / G / B)' }), el('th', { text: 'at F82 (R / G / B)' }))),
+      el('tbody', {},
+        el('tr', { class: 'spread' }, cell('spread between the sources (max − min)'), cell(spread ? rgbText(spread.F0) : '—'), cell(spread ? rgbText(spread.F82) : '—')),
+        ...Object.entries(mat.models).map(([id, r]) => el('tr', {}, cell(`|error| of ${id} (fit)`), cell(rgbText(r.error_at.F0)), cell(rgbText(r.error_at.F82))))));
+    return [sortableTable('sources-table', headers, rows), compare];
+  }
+
+  function materialPage(report, id, main) {
+    const mat = report.materials.find((m) => m.id === id);
+    if (!mat) throw new Error('report.json has no material ' + id);
+    const charts = report.charts.material;
+    const done = [];
+    main.append(el('p', {}, el('a', { href: '../index.html', text: '← catalog' })));
+    main.append(el('h1', { text: `${mat.name} (${mat.id}, ${mat.source})` }));
+    main.append(el('p', { class: 'cost', text: costLine(report) }));
+    if (mat.budget_choice) main.append(el('p', { class: 'budget', text: `budget ${pct(report.budget, 2)}: ${mat.budget_choice.model || 'no model'} — ${mat.budget_choice.note}` }));
+    main.append(section('Provenance', provenanceTable(report, mat), ...mat.warnings.map((w) => el('p', { class: 'warning', text: 'warning: ' + w }))));
+
+    const colours = section('Colour',
+      el('p', {}, 'F0 ', el('span', { class: 'swatch', style: `background:${mat.swatch.F0}`, title: mat.swatch.F0 }), ` = ${rgbText(mat.F0)}`,
+        mat.out_of_gamut_F0.length ? ` (out of gamut in ${mat.out_of_gamut_F0.join(', ')}, kept)` : '',
+        ';  F82 ', el('span', { class: 'swatch', style: `background:${mat.swatch.F82}`, title: mat.swatch.F82 }), ` = ${rgbText(mat.F82)}`));
+    main.append(colours);
+
+    const data = section('The data');
+    main.append(data);
+    const nk = [];
+    mat.nk.nm.forEach((nm, i) => { nk.push({ nm, quantity: 'n', value: mat.nk.n[i] }); nk.push({ nm, quantity: 'k', value: mat.nk.k[i] }); });
+    done.push(chart('nk', charts.nk, { nk, visible: [{ from: mat.nk.visible[0], to: mat.nk.visible[1] }] }, data));
+    const spectral = [];
+    mat.spectral_reflectance.theta_deg.forEach((t, a) => mat.spectral_reflectance.nm.forEach((nm, i) => spectral.push({ nm, angle: t + '°', R: mat.spectral_reflectance.R[a][i] })));
+    done.push(chart('spectral', charts.spectral, { spectral }, data));
+
+    main.append(section('Every model (fitted parameters and the best closed form; click a column to sort)', modelsTable(report, mat)));
+
+    const curves = section('Against the angle');
+    main.append(curves);
+    const c = mat.curves;
+    const reflectance = [], relError = [], de2000 = [], stripes = [];
+    const step = c.theta_deg.length > 1 ? c.theta_deg[1] - c.theta_deg[0] : 1;
+    c.theta_deg.forEach((theta, i) => {
+      const mu = c.mu[i];
+      CHANNELS.forEach((channel, k) => reflectance.push({ theta, mu, channel, series: 'exact', R: c.exact[k][i] }));
+      stripes.push({ row: 'exact', theta0: theta, theta1: theta + step, color: c.stripe[i] });
+    });
+    for (const m of report.models) {
+      const r = mat.models[m.id];
+      c.theta_deg.forEach((theta, i) => {
+        const mu = c.mu[i];
+        CHANNELS.forEach((channel, k) => {
+          const R = r.curve[k][i], exact = c.exact[k][i];
+          reflectance.push({ theta, mu, channel, series: m.id, R });
+          relError.push({ theta, mu, channel, series: m.id, rel_percent: 100 * (R - exact) / exact });
+        });
+        de2000.push({ theta, mu, series: m.id, de: r.de2000[i] });
+        stripes.push({ row: m.id, theta0: theta, theta1: theta + step, color: r.stripe[i] });
+      });
+    }
+    done.push(chart('reflectance', charts.reflectance, { reflectance }, curves));
+    done.push(chart('rel_error', charts.rel_error, { rel_error: relError }, curves));
+    done.push(chart('de2000', charts.de2000, { de2000 }, curves));
+    done.push(chart('stripes', charts.stripes, { stripes }, curves));
+
+    const renders = section('Renders');
+    main.append(renders);
+    const skipped = rendersSkipped(report);
+    if (skipped) renders.append(skipped);
+    else if (mat.render_row == null) renders.append(el('p', { class: 'renders-skipped', text: 'renders skipped: glpreview rendered no row for ' + mat.id }));
+    else {
+      const r = report.renders, row = r.rows[mat.render_row];
+      const [w, h] = r.cell;
+      const labels = [r.columns[0], `${row.model} (${r.columns[1]})`, r.columns[2]];
+      renders.append(el('div', { class: 'sheet' },
+        el('div', { class: 'sheet-columns', style: `width:${3 * w}px` }, ...labels.map((l) => el('span', { style: `width:${w}px`, text: l }))),
+        el('div', { class: 'sheet-row-label', text: `${row.material}` }),
+        el('div', { class: 'sheet-crop', style: `width:${3 * w}px;height:${h}px` },
+          el('img', { id: 'render', src: '../' + r.image, alt: `sphere sheet row of ${row.material}`, style: `margin-top:${-mat.render_row * h}px` }))),
+        el('p', { class: 'note', text: r.by }));
+    }
+
+    if (mat.data_sources) main.append(section('Data sources: how much the measurements disagree vs how much each model errs', ...sourcesTable(mat)));
+    return done;
+  }
+
+  window.metalfitReport = function (report) {
+    const body = document.body;
+    const main = document.getElementById('content');
+    let done;
+    try {
+      done = body.dataset.page === 'catalog' ? catalogPage(report, main) : materialPage(report, body.dataset.material, main);
+    } catch (error) {
+      body.dataset.rendered = 'error';
+      throw error;
+    }
+    Promise.all(done).then(() => { body.dataset.rendered = 'true'; },
+      (error) => { body.dataset.rendered = 'error'; console.error(error); });
+  };
+})();

@@ -1,0 +1,31 @@
+// The files of the report folder (layout in docs/report.md).
+#include "libfit/report/report.hpp"
+
+#include "libfit/base/errors.hpp"
+#include "report/report_pages.hpp"
+#include "report_assets.hpp"
+
+namespace metalfit {
+
+std::vector<ReportFile> report_files(const std::vector<MaterialFit>& fits, const ReportInputs& inputs) {
+    if (!report_detail::kHasChartLibraries)
+        throw UsageError("report: this metalfit was built without the chart libraries (node_modules/ was missing when "
+                         "it was configured): run scripts/install-deps.sh, then reconfigure and rebuild");
+    for (std::size_t i = 0; i < fits.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (fits[i].material.id == fits[j].material.id)
+                throw UsageError("report: material " + fits[i].material.id + " is named twice (one page each)");
+    const std::string record = report_record(fits, inputs).dump(1) + "\n";
+    std::vector<ReportFile> files;
+    files.push_back({"index.html", report_detail::catalog_page()});
+    for (const MaterialFit& fit : fits)
+        files.push_back({"materials/" + fit.material.id + ".html", report_detail::material_page(fit.material)});
+    files.push_back({"report.json", record});
+    // The same bytes as report.json, as a script: pages opened from file:// cannot fetch a JSON file.
+    files.push_back({"assets/report-data.js", "metalfitReport(" + record + ");\n"});
+    for (const auto& [name, text] : report_detail::kReportAssets) files.push_back({"assets/" + std::string(name), std::string(text)});
+    if (inputs.renders.sheet) files.push_back({"assets/renders/sheet.png", inputs.renders.sheet->png});
+    return files;
+}
+
+}  // namespace metalfit

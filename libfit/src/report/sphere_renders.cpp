@@ -1,0 +1,123 @@
+// The report's sphere renders: glpreview --sheet run as a program (posix_spawn), its sheet.png and sheet.json read
+// back from a temporary folder.
+#include "libfit/report/sphere_renders.hpp"
+
+#include <spawn.h>
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "libfit/base/errors.hpp"
+
+extern char** environ;
+
+namespace metalfit {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_bytes(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string last_line(const std::string& text) {
+    std::istringstream lines(text);
+    std::string line, last;
+    while (std::getline(lines, line))
+        if (!line.empty()) last = line;
+    return last;
+}
+
+struct TemporaryFolder {
+    fs::path path;
+    TemporaryFolder() {
+        std::random_device random;
+        path = fs::temp_directory_path() / ("metalfit-renders-" + std::to_string(::getpid()) + "-" + std::to_string(random()));
+        fs::create_directories(path);
+    }
+    ~TemporaryFolder() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
+
+// The sheet, or throws std::runtime_error with the reason.
+SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
+    if (r.glpreview.empty() || !fs::exists(r.glpreview)) throw std::runtime_error("glpreview was not built beside metalfit");
+    if (r.materials.empty()) throw std::runtime_error("no catalog material to render");
+    const TemporaryFolder folder;
+    std::string materials;
+    for (const std::string& m : r.materials) materials += (materials.empty() ? "" : ",") + m;
+    const std::string size = std::to_string(r.cell_size) + "x" + std::to_string(r.cell_size);
+    std::vector<std::string> args{r.glpreview.string(), r.scene.string(), "--sheet", materials, "--size", size,
+                                  "-o", folder.path.string(), "--data-dir", r.data_dir.string(),
+                                  "--ocio-config", r.ocio.path.string()};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const std::string log = (folder.path / "glpreview.log").string();
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    pid_t pid = 0;
+    const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (spawned != 0) throw std::runtime_error("glpreview could not be started");
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) throw std::runtime_error("glpreview: lost its process");
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        const std::string why = last_line(read_bytes(log));
+        throw std::runtime_error(why.empty() ? "glpreview failed" : why);
+    }
+    SphereSheetImage sheet;
+    sheet.png = read_bytes(folder.path / "sheet.png");
+    const auto record = nlohmann::json::parse(read_bytes(folder.path / "sheet.json"));
+    // Row r is the r-th material asked for (glpreview names it by its catalog name).
+    sheet.materials = r.materials;
+    for (const auto& row : record) sheet.models.push_back(row.at("model").get<std::string>());
+    if (sheet.png.empty() || sheet.models.size() != r.materials.size()) throw std::runtime_error("glpreview wrote no complete sheet");
+    sheet.cell_width = sheet.cell_height = r.cell_size;
+    return sheet;
+}
+
+}  // namespace
+
+RenderMode parse_render_mode(const std::string& text) {
+    if (text == "auto") return RenderMode::auto_;
+    if (text == "on") return RenderMode::on;
+    if (text == "off") return RenderMode::off;
+    throw UsageError("unknown --renders mode '" + text + "' (auto, on or off)");
+}
+
+fs::path glpreview_beside_this_program() {
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) return {};
+    const fs::path glpreview = self.parent_path() / "glpreview";
+    return fs::exists(glpreview, ec) ? glpreview : fs::path{};
+}
+
+SphereRenders render_spheres(const SphereRenderRequest& request, RenderMode mode) {
+    if (mode == RenderMode::off) return {std::nullopt, "--renders off"};
+    try {
+        return {run_glpreview(request), {}};
+    } catch (const std::exception& e) {
+        if (mode == RenderMode::on) throw InputError(InputLocation(request.glpreview.empty() ? "glpreview" : request.glpreview),
+                                                     std::string("--renders on: ") + e.what());
+        std::string reason = e.what();
+        if (reason.rfind("glpreview: ", 0) == 0) reason = reason.substr(11);
+        return {std::nullopt, reason};
+    }
+}
+
+}  // namespace metalfit

@@ -1,0 +1,106 @@
+// The report in a real browser (docs/report.md): Debian's chromium, headless, driven by playwright-core, opens the
+// pages of a report folder from file:// with a new empty profile and no network. Every page must load with no
+// console error, no page error and no request other than file://; every chart container must hold an SVG with marks;
+// the heat map must have one cell per material × model; the render (or the "renders skipped" line) must be there.
+// A screenshot of each page type goes into the output folder.
+//
+// Usage: node tests/report_browser.mjs REPORT_DIR SCREENSHOT_DIR [CHROMIUM]
+import { chromium } from 'playwright-core';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const [reportDir, shotDir, executable = '/usr/bin/chromium'] = process.argv.slice(2);
+if (!reportDir || !shotDir) {
+  console.error('usage: node tests/report_browser.mjs REPORT_DIR SCREENSHOT_DIR [CHROMIUM]');
+  process.exit(2);
+}
+fs.mkdirSync(shotDir, { recursive: true });
+const report = JSON.parse(fs.readFileSync(path.join(reportDir, 'report.json'), 'utf8'));
+const failures = [];
+let checks = 0;
+const check = (ok, what) => { checks += 1; if (!ok) failures.push(what); };
+
+// report-data.js is report.json's bytes, wrapped: one source of numbers.
+const data = fs.readFileSync(path.join(reportDir, 'assets', 'report-data.js'), 'utf8');
+const json = fs.readFileSync(path.join(reportDir, 'report.json'), 'utf8');
+check(data === 'metalfitReport(' + json + ');\n', 'assets/report-data.js is not report.json wrapped in metalfitReport(...)');
+
+const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'metalfit-chromium-'));
+const context = await chromium.launchPersistentContext(profile, {
+  executablePath: executable,
+  headless: true,
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
+         '--disable-sync', '--no-first-run'],
+  viewport: { width: 1400, height: 1000 },
+  offline: true,
+});
+
+async function openPage(relative, label) {
+  const page = await context.newPage();
+  const errors = [];
+  const network = [];
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+  page.on('pageerror', (e) => errors.push(String(e)));
+  page.on('request', (r) => { if (!r.url().startsWith('file://')) network.push(r.url()); });
+  await page.route((url) => url.protocol !== 'file:', (route) => route.abort());
+  const url = pathToFileURL(path.join(reportDir, relative)).href;
+  await page.goto(url, { waitUntil: 'load' });
+  await page.waitForFunction(() => document.body.dataset.rendered !== undefined, null, { timeout: 60000 });
+  check(await page.evaluate(() => document.body.dataset.rendered) === 'true', `${label}: the page script did not finish`);
+  check(errors.length === 0, `${label}: console errors: ${errors.join(' | ')}`);
+  check(network.length === 0, `${label}: network requests: ${network.join(' ')}`);
+  const charts = await page.evaluate(() => [...document.querySelectorAll('.chart')].map((c) => ({
+    id: c.id,
+    svg: c.querySelectorAll('svg').length,
+    marks: c.querySelectorAll('svg g.role-mark > *').length,
+  })));
+  check(charts.length > 0, `${label}: no chart container`);
+  for (const c of charts) check(c.svg > 0 && c.marks > 0, `${label}: chart ${c.id} has ${c.svg} SVG, ${c.marks} marks`);
+  return { page, charts };
+}
+
+// The catalog page.
+{
+  const { page, charts } = await openPage('index.html', 'index.html');
+  const ids = charts.map((c) => c.id);
+  for (const id of ['heatmap', 'swatches']) check(ids.includes(id), `index.html: no ${id} chart`);
+  const cells = await page.evaluate(() => document.querySelectorAll('#heatmap svg g.mark-rect.role-mark > path').length);
+  check(cells === report.materials.length * report.models.length,
+        `index.html: heat map has ${cells} cells, expected ${report.materials.length} × ${report.models.length}`);
+  const rows = await page.evaluate(() => document.querySelectorAll('#catalog-table tbody tr').length);
+  check(rows === report.materials.length, `index.html: table has ${rows} rows`);
+  // Sorting by a model column puts its values in ascending order.
+  await page.click('#catalog-table thead th[data-column="4"]');
+  const sorted = await page.evaluate(() => [...document.querySelectorAll('#catalog-table tbody tr')].map((tr) => Number(tr.children[4].dataset.sort)));
+  check(sorted.every((v, i) => i === 0 || sorted[i - 1] <= v), 'index.html: sorting the first model column does not sort it');
+  const links = await page.evaluate(() => [...document.querySelectorAll('#catalog-table tbody a')].map((a) => a.getAttribute('href')));
+  for (const m of report.materials) check(links.includes(m.page), `index.html: no link to ${m.page}`);
+  await page.screenshot({ path: path.join(shotDir, 'index.png'), fullPage: true });
+  await page.close();
+}
+
+// Every material page.
+for (const m of report.materials) {
+  const { page, charts } = await openPage(m.page, m.page);
+  const ids = charts.map((c) => c.id);
+  for (const id of ['nk', 'spectral', 'reflectance', 'rel_error', 'de2000', 'stripes']) check(ids.includes(id), `${m.page}: no ${id} chart`);
+  const modelRows = await page.evaluate(() => document.querySelectorAll('#models-table tbody tr.fit').length);
+  check(modelRows === report.models.length, `${m.page}: ${modelRows} fitted rows in the model table`);
+  if (report.renders.skipped === undefined && m.render_row != null) {
+    const loaded = await page.evaluate(() => { const img = document.getElementById('render'); return img && img.complete && img.naturalWidth > 0; });
+    check(loaded, `${m.page}: the render did not load`);
+  } else {
+    const text = await page.evaluate(() => document.body.innerText);
+    check(/renders skipped: /.test(text), `${m.page}: neither a render nor "renders skipped: <reason>"`);
+  }
+  await page.screenshot({ path: path.join(shotDir, `material-${m.id}.png`), fullPage: true });
+  await page.close();
+}
+
+await context.close();
+fs.rmSync(profile, { recursive: true, force: true });
+for (const f of failures) console.error('FAIL: ' + f);
+console.log(`report in chromium: ${checks - failures.length} passed, ${failures.length} failed`);
+process.exit(failures.length ? 1 : 0);

@@ -1,0 +1,204 @@
+// metalfit report end to end: report.json against the fit record and independent forms, byte-identical reruns,
+// no absolute paths, the --fail-above gate, and failures that leave nothing behind. (The pages themselves are
+// checked in a real browser: report.browser, tests/report_browser.mjs.)
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include "test_support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using metalfit::test::read_file;
+using Json = nlohmann::json;
+
+class Report : public ::testing::Test {
+protected:
+    metalfit::test::CommandResult run(const std::string& args) const {
+        return metalfit::test::run_command(METALFIT_EXE, args, tmp_.path());
+    }
+    Json report_json(const fs::path& dir) const { return Json::parse(read_file(dir / "report.json")); }
+    std::size_t entries() const { return std::distance(fs::directory_iterator(tmp_.path()), fs::directory_iterator()); }
+    metalfit::test::TempDir tmp_;
+};
+
+std::vector<fs::path> files_below(const fs::path& dir) {
+    std::vector<fs::path> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) files.push_back(fs::relative(e.path(), dir));
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// Every model's closed forms, best closed form and fit (params, all seven metrics per channel, where the maxima
+// are, the solver) are those of `metalfit fit --json` with the same options.
+void expect_same_numbers_as_the_fit_record(const Json& report, const Json& record) {
+    ASSERT_EQ(report["materials"].size(), record["materials"].size());
+    for (const Json& m : report["materials"]) {
+        const Json& fitted = record["materials"].at(m["id"].get<std::string>());
+        ASSERT_EQ(m["models"].size(), fitted["models"].size());
+        for (const auto& [id, model] : fitted["models"].items())
+            for (const char* key : {"fit", "closed", "closed_forms"}) {
+                EXPECT_EQ(m["models"].at(id).at(key), model.at(key)) << m["id"] << " " << id << " " << key;
+                if (std::string(key) == "fit") {
+                    for (const char* metric : {"rel_rms", "abs_rms", "max_rel", "max_abs", "albedo_err"})
+                        EXPECT_EQ(m["models"][id]["fit"]["metrics"][metric].size(), 3u) << metric;
+                }
+            }
+        EXPECT_EQ(m["F0"], fitted["F0"]) << m["id"];
+    }
+}
+
+TEST_F(Report, NumbersAreTheFitRecordsForTheSameOptions) {
+    const fs::path dir = tmp_.path() / "r";
+    for (const std::string& options : {std::string(""), std::string(" --space ACEScg --weight cosine --metric abs --nodes 64")}) {
+        const auto r = run("report Au,Zn --renders off -o '" + dir.string() + "'" + options);
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const Json report = report_json(dir);
+        Json record = Json::parse(run("fit Au --json" + options).out);
+        record["materials"].update(Json::parse(run("fit Zn --json" + options).out)["materials"]);
+        expect_same_numbers_as_the_fit_record(report, record);
+        EXPECT_EQ(report["schema"], "metalfit.report/1");
+        EXPECT_EQ(report["provenance"]["color_space"], record["provenance"]["color_space"]);
+        EXPECT_EQ(report["provenance"]["metric"], record["provenance"]["metric"]);
+    }
+}
+
+// The plotted curves against forms computed here: R at θ = 0 is `show`'s F0, Schlick's curve is
+// F0 + (1 − F0)(1 − μ)^5 of its fitted F0, μ = cos θ, and the relative rms of every model is its worst channel.
+TEST_F(Report, CurvesAgreeWithIndependentForms) {
+    const fs::path dir = tmp_.path() / "r";
+    ASSERT_EQ(run("report Cu --renders off -o '" + dir.string() + "'").exit_code, 0);
+    const Json m = report_json(dir)["materials"][0];
+    const Json show = Json::parse(run("show Cu --json").out);
+    const Json& c = m["curves"];
+    ASSERT_EQ(c["theta_deg"].size(), 91u);
+    for (int ch = 0; ch < 3; ++ch) {
+        EXPECT_NEAR(c["exact"][ch][0].get<double>(), show["F0"][ch].get<double>(), 1e-5);
+        EXPECT_NEAR(c["exact"][ch][90].get<double>(), 1.0, 1e-5);  // grazing: every metal reflects everything
+    }
+    const Json& schlick = m["models"]["schlick"];
+    for (std::size_t i = 0; i < c["theta_deg"].size(); ++i) {
+        const double theta = c["theta_deg"][i].get<double>();
+        const double mu = std::cos(theta * std::numbers::pi / 180);
+        EXPECT_NEAR(c["mu"][i].get<double>(), mu, 1e-6);
+        for (int ch = 0; ch < 3; ++ch) {
+            const double f0 = schlick["fit"]["params"]["F0"][ch].get<double>();
+            EXPECT_NEAR(schlick["curve"][ch][i].get<double>(), f0 + (1 - f0) * std::pow(1 - mu, 5), 2e-6) << theta;
+        }
+        EXPECT_GE(schlick["de2000"][i].get<double>(), 0.0);
+        EXPECT_EQ(schlick["stripe"][i].get<std::string>().size(), 7u);
+    }
+    for (const auto& [id, model] : m["models"].items()) {
+        double worst = 0;
+        for (const auto& v : model["fit"]["metrics"]["rel_rms"]) worst = std::max(worst, v.get<double>());
+        EXPECT_EQ(model["worst_rel_rms"].get<double>(), worst) << id;
+    }
+    // Copper has alternate measurements: each source's F0 and their spread.
+    ASSERT_FALSE(m["data_sources"].is_null());
+    const Json& sources = m["data_sources"]["sources"];
+    ASSERT_GE(sources.size(), 2u);
+    for (int ch = 0; ch < 3; ++ch) {
+        double lo = 1e9, hi = -1e9;
+        for (const Json& s : sources)
+            if (s.contains("F0")) lo = std::min(lo, s["F0"][ch].get<double>()), hi = std::max(hi, s["F0"][ch].get<double>());
+        EXPECT_DOUBLE_EQ(m["data_sources"]["spread"]["F0"][ch].get<double>(), hi - lo);
+    }
+    EXPECT_EQ(sources[0]["F0"], show["F0"]);
+}
+
+// A user file is reported with its own provenance, even when its name is a catalog id: no catalog licence, DOI or
+// alternate sources are borrowed for it.
+TEST_F(Report, AUserFileNamedLikeACatalogMaterialIsNotTheCatalogs) {
+    const fs::path file = tmp_.path() / "Au.yml";
+    fs::copy_file(metalfit::test::kFixtures / "valid-unsorted-duplicates.yml", file);
+    const fs::path dir = tmp_.path() / "r";
+    const auto r = run("report '" + file.string() + "' --renders off -o '" + dir.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Json m = report_json(dir)["materials"][0];
+    EXPECT_EQ(m["id"], "Au");
+    EXPECT_EQ(m["provenance"]["file"], "Au.yml");
+    EXPECT_TRUE(m["provenance"]["licence"].is_null());
+    EXPECT_TRUE(m["provenance"]["kind"].is_null());
+    EXPECT_TRUE(m["data_sources"].is_null());
+    EXPECT_TRUE(fs::exists(dir / "materials" / "Au.html"));
+}
+
+TEST_F(Report, RerunsAreByteIdenticalAndNameNoPathOfThisMachine) {
+    const fs::path a = tmp_.path() / "a", b = tmp_.path() / "b";
+    ASSERT_EQ(run("report Au,Cu --renders off -o '" + a.string() + "'").exit_code, 0);
+    ASSERT_EQ(run("report Au,Cu --renders off -o '" + b.string() + "'").exit_code, 0);
+    const auto files = files_below(a);
+    ASSERT_EQ(files, files_below(b));
+    for (const char* expected : {"index.html", "materials/Au.html", "materials/Cu.html", "report.json", "assets/report-data.js",
+                                 "assets/vega.min.js", "assets/vega-lite.min.js", "assets/vega-embed.min.js", "assets/report.js"})
+        EXPECT_TRUE(std::find(files.begin(), files.end(), fs::path(expected)) != files.end()) << expected;
+    for (const fs::path& f : files) EXPECT_EQ(read_file(a / f), read_file(b / f)) << f;
+    const std::string json = read_file(a / "report.json");
+    EXPECT_EQ(json.find(metalfit::test::kData.string()), std::string::npos);
+    EXPECT_EQ(json.find(tmp_.path().string()), std::string::npos);
+    EXPECT_EQ(read_file(a / "assets/report-data.js"), "metalfitReport(" + json + ");\n");
+    EXPECT_EQ(report_json(a)["renders"]["skipped"], "--renders off");
+}
+
+TEST_F(Report, FailAboveListsEveryChannelAboveTheLimitAndExitsWith6) {
+    const fs::path dir = tmp_.path() / "r";
+    const auto r = run("report Zn,Au --renders off --fail-above 1% -o '" + dir.string() + "'");
+    EXPECT_EQ(r.exit_code, 6) << r.err;
+    // The lines, counted independently from the fit record.
+    std::set<std::string> expected;
+    for (const char* material : {"Zn", "Au"}) {
+        const Json record = Json::parse(run(std::string("fit ") + material + " --json").out);
+        for (const auto& [model, result] : record["materials"][material]["models"].items())
+            for (int c = 0; c < 3; ++c)
+                if (result["fit"]["metrics"]["rel_rms"][c].get<double>() > 0.01)
+                    expected.insert(std::string(material) + ": " + model + ": " + std::array{"red", "green", "blue"}[c]);
+    }
+    ASSERT_FALSE(expected.empty());
+    std::set<std::string> listed;
+    std::istringstream lines(r.err);
+    for (std::string line; std::getline(lines, line);) {
+        const std::string prefix = "metalfit: above --fail-above: ";
+        if (line.rfind(prefix, 0) != 0) continue;
+        EXPECT_TRUE(metalfit::test::Contains(line, "> 1 %"));
+        listed.insert(line.substr(prefix.size(), line.find(": fitted") - prefix.size()));
+    }
+    EXPECT_EQ(listed, expected);
+    EXPECT_TRUE(fs::exists(dir / "index.html")) << "the report is written before the gate fails";
+
+    const auto passing = run("report Zn --model gulbrandsen --renders off --fail-above 0.5% -o '" + dir.string() + "'");
+    EXPECT_EQ(passing.exit_code, 0) << passing.err;
+    EXPECT_EQ(run("report Zn --renders off --fail-above 5 -o '" + dir.string() + "'").exit_code, 0) << "a fraction, not %";
+    const auto bad = run("report Zn --fail-above lots -o '" + dir.string() + "'");
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_TRUE(metalfit::test::Contains(bad.err, "--fail-above"));
+}
+
+TEST_F(Report, FailuresAreOneLineWithTheirExitCodeAndLeaveNothing) {
+    const auto expect_one_line = [](const metalfit::test::CommandResult& r, int code, const std::string& text) {
+        EXPECT_EQ(r.exit_code, code) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_TRUE(metalfit::test::Contains(r.err, text));
+    };
+    const fs::path dir = tmp_.path() / "r";
+    expect_one_line(run("report unobtainium -o '" + dir.string() + "'"), 2, "unknown material 'unobtainium'");
+    expect_one_line(run("report Au,unobtainium --renders off -o '" + dir.string() + "'"), 2, "unobtainium");
+    expect_one_line(run("report Au,gold --renders off -o '" + dir.string() + "'"), 2, "named twice");
+    expect_one_line(run("report Au --renders sometimes -o '" + dir.string() + "'"), 2, "--renders");
+    EXPECT_EQ(entries(), 0u);
+    // Unwritable: under a missing folder, under a file, a file in its place, where no folder can be made (/proc).
+    std::ofstream(tmp_.path() / "file") << "x";
+    expect_one_line(run("report Au --renders off -o '" + (tmp_.path() / "missing" / "r").string() + "'"), 3, "missing");
+    expect_one_line(run("report Au --renders off -o '" + (tmp_.path() / "file" / "r").string() + "'"), 3, "file");
+    expect_one_line(run("report Au --renders off -o '" + (tmp_.path() / "file").string() + "'"), 3, "not a folder");
+    expect_one_line(run("report Au --renders off -o /proc/metalfit-report"), 3, "/proc/metalfit-report");
+    EXPECT_EQ(entries(), 1u) << "only the file made above";
+    EXPECT_EQ(read_file(tmp_.path() / "file"), "x");
+}
+
+}  // namespace

@@ -1,0 +1,113 @@
+// metalfit report: the fits of one material or the catalog as a folder of pages, report.json and images
+// (docs/report.md); --fail-above turns it into a gate for material libraries.
+
+#include <algorithm>
+#include <iostream>
+#include <thread>
+
+#include "colour_options.hpp"
+#include "commands.hpp"
+#include "progress.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/color/display_transform.hpp"
+#include "libfit/fit/fit_batch.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/report/fail_above.hpp"
+#include "libfit/report/report.hpp"
+
+namespace metalfit::cli {
+namespace {
+
+struct ReportOptions {
+    std::string material;
+    bool all = false;
+    std::string source;
+    std::string models = "all";
+    ColourOptions colour;
+    std::string metric = "rel";
+    std::string weight = "uniform";
+    int nodes = 128;
+    int jobs = 0;
+    std::string renders = "auto";
+    std::string fail_above;
+    std::filesystem::path output;
+};
+
+void run_report(const ReportOptions& o, const GlobalOptions& global) {
+    if (!o.all && o.material.empty()) throw UsageError("report: give a material (catalog name or file), or --all");
+    if (o.all && !o.material.empty()) throw UsageError("report: give a material or --all, not both");
+    if (o.all && !o.source.empty()) throw UsageError("report: --source needs a single material");
+    const RenderMode render_mode = parse_render_mode(o.renders);
+    const double fail_above = o.fail_above.empty() ? 0.0 : parse_relative_limit(o.fail_above, "--fail-above");  // 0: no gate
+    check_report_folder(o.output);  // before the fits, which take a while for --all
+    const Catalog catalog = Catalog::load(global.data_dir);
+    // One material, several (comma-separated) or the catalog.
+    std::vector<std::function<Material()>> loaders;
+    if (o.all) loaders = material_loaders(catalog, true, {}, {});
+    std::string rest = o.material;
+    while (!o.all) {
+        const auto comma = rest.find(',');
+        const std::string one = rest.substr(0, comma);
+        if (one.empty()) throw UsageError("report: empty material name in '" + o.material + "'");
+        for (auto& loader : material_loaders(catalog, false, one, o.source)) loaders.push_back(std::move(loader));
+        if (comma == std::string::npos) break;
+        rest = rest.substr(comma + 1);
+    }
+
+    const ColourSetup setup = resolve_colour_options(o.colour, global);
+    const DisplayTransform display = DisplayTransform::create(setup.config);
+    const ErrorSettings error{o.nodes, parse_error_metric(o.metric), parse_angular_weight(o.weight)};
+    const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models)};
+    const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    TerminalProgress progress;
+    const std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), request, jobs, progress.callback());
+    for (const MaterialFit& f : fits)
+        for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
+
+    // glpreview renders catalog materials from their primary source.
+    SphereRenderRequest render_request{glpreview_beside_this_program(), global.data_dir / "scenes" / "sheet.json", {},
+                                       global.data_dir, setup.config};
+    for (const MaterialFit& f : fits)
+        if (const CatalogEntry* e = catalog.find(f.material.id); e && e->id == f.material.id && e->primary.file == f.material.provenance.file)
+            render_request.materials.push_back(f.material.id);
+    const SphereRenders renders = render_spheres(render_request, render_mode);
+    if (!renders.sheet && render_mode == RenderMode::auto_) std::cerr << "metalfit: renders skipped: " << renders.skipped << "\n";
+
+    const FitRecordContext context{setup.config, setup.converter.space(), setup.colorimetry.observer(),
+                                   setup.colorimetry.illuminant(), setup.spectral, error};
+    const CostAndBudget cost;  // no cost table or budget yet (docs/report.md)
+    const ReportInputs inputs{context, setup.colorimetry, setup.converter, display, catalog, cost, renders};
+    write_report_folder(o.output, report_files(fits, inputs));
+    std::cout << (o.output / "index.html").string() << "\n";
+
+    if (fail_above > 0) {
+        const std::vector<std::string> above = channels_above(fits, fail_above);
+        for (const std::string& line : above) std::cerr << "metalfit: above --fail-above: " << line << "\n";
+        if (!above.empty()) throw FailAbove{above.size()};
+    }
+}
+
+}  // namespace
+
+std::function<void()> add_report_command(CLI::App& app, const GlobalOptions& global) {
+    auto o = std::make_shared<ReportOptions>();
+    app.add_option("material", o->material, "Catalog material (id, name or alias), several comma-separated, or a .yml/.csv file");
+    app.add_flag("--all", o->all, "Every material of the built-in catalog, in parallel");
+    app.add_option("--source", o->source, "Alternate source of a catalog material (default: its primary)");
+    app.add_option("--model", o->models, "Models, comma-separated, or all (default: all)");
+    add_colour_options(app, o->colour);
+    app.add_option("--metric", o->metric, "Error the fit minimises: rel or abs")->check(CLI::IsMember({"rel", "abs"}));
+    app.add_option("--weight", o->weight, "Angular weight: uniform (in mu) or cosine (2 mu)")
+        ->check(CLI::IsMember({"uniform", "cosine"}));
+    app.add_option("--nodes", o->nodes, "Gauss-Legendre nodes on [0, 1]")->check(CLI::Range(2, 4096));
+    app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
+    app.add_option("--renders", o->renders,
+                   "Sphere renders through glpreview: auto (skip, saying why, when they cannot be made), on (fail then), off");
+    app.add_option("--fail-above", o->fail_above,
+                   "After writing the report, exit with code 6 and one line per material/model/channel whose fitted "
+                   "rel_rms is above REL (0.005 or 0.5%)");
+    app.add_option("-o,--output", o->output, "Report folder (written as a whole; replaced if it exists)")->required();
+    return [o, &global] { run_report(*o, global); };
+}
+
+}  // namespace metalfit::cli
