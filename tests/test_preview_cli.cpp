@@ -110,9 +110,16 @@ TEST(PreviewCli, BenchmarkModesPrintTheirJson) {
     ASSERT_EQ(localization["rooms"].size(), 2u);
     for (const auto& room : localization["rooms"]) {
         const auto& rows = room["rows"];
-        ASSERT_EQ(rows.size(), 20u);  // classic, box-parallax, 3 strategies × {0, 1, 2, 4, 8, 16}
+        ASSERT_EQ(rows.size(), 32u);  // classic, box-parallax, 5 strategies × {0, 1, 2, 4, 8, 16}
         EXPECT_EQ(rows[0]["mode"], "classic");
         EXPECT_DOUBLE_EQ(rows[0]["ratio_to_classic"].get<double>(), 1.0);
+        for (const auto& r : rows) {
+            EXPECT_GE(r["ratio_noise"].get<double>(), 0.0);
+            EXPECT_LE(r["mean_iterations"].get<double>(), r["iterations"].get<double>() + 1e-9) << r["strategy"];
+            if (r["mode"] == "distance-impostor" && r["iterations"].get<int>() > 0) {
+                EXPECT_GT(r["mean_iterations"].get<double>(), 0.0) << r["strategy"];
+            }
+        }
         for (const auto& r : rows)
             if (r["mode"] == "distance-impostor" && r["iterations"] == 4) {
                 EXPECT_LT(r["rmse"].get<double>(), rows[0]["rmse"].get<double>()) << room["room"] << " " << r["strategy"];

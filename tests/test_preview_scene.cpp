@@ -50,7 +50,7 @@ TEST(PreviewScene, MalformedScenesAreOneLineErrorsNamingTheField) {
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1]}]})"),
                                "spheres[0].center: expected an array of 3 numbers"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "strategy": "bisection"}]})"),
-                               "spheres[0].strategy: unknown value 'bisection' (known: secant, false-position, mixed)"));
+                               "spheres[0].strategy: unknown value 'bisection' (known: secant, false-position, mixed, illinois, safe-secant)"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "iterations": 2.5}]})"),
                                "spheres[0].iterations: expected an integer"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": []})"), "spheres: at least one sphere"));
