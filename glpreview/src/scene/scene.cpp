@@ -285,7 +285,7 @@ std::vector<std::string> placement_warnings(const Scene& scene) {
         for (int i = 0; i < 3; ++i)
             through = through || sphere.center[i] - sphere.radius < room.min[i] || sphere.center[i] + sphere.radius > room.max[i];
         if (through)
-            warnings.push_back(file + "spheres[" + std::to_string(s) + "]: reaches through a wall of the room (its reflection there is meaningless)");
+            warnings.push_back(file + "spheres[" + std::to_string(s) + "]: not inside the room (it reaches through or lies beyond a wall; its reflection there is meaningless)");
     }
     return warnings;
 }
