@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <ostream>
 #include <random>
 #include <array>
 #include <limits>
@@ -227,6 +228,7 @@ struct RoomCase {
     Scene (*make)();
     bool empty;
 };
+void PrintTo(const RoomCase& room, std::ostream* os) { *os << room.name; }
 Scene difficult_room() { return shipped("difficult-room.json"); }
 Scene shipped_empty_room() { return shipped("empty-room.json"); }
 const std::vector<RoomCase>& rooms() {

@@ -80,6 +80,19 @@ TEST(PreviewScene, ANumberBeyondDoubleRangeNamesTheFileLineAndField) {
                                "bad.json:1: image.width: number beyond"));
 }
 
+TEST(PreviewScene, MessagesQuoteAtMostAShortSanitisedExcerpt) {
+    const std::string long_value(5000, 'x');
+    const std::string e = parse_error(R"({"spheres": [{"center": [0, 1, 0], "strategy": ")" + long_value + "\\u0001\"}]}");
+    EXPECT_LT(e.size(), 200u) << e;
+    EXPECT_TRUE(test::Contains(e, "unknown value 'xxxx")) << e;
+    const std::string key = parse_error("{\"spheres\": [{\"center\": [0, 1, 0], \"\\u001b[31mred\": 1}]}");
+    EXPECT_TRUE(test::Contains(key, "spheres[0].\\x1B[31mred: unknown key")) << key;
+    const std::string junk = parse_error("{\"spheres\": " + std::string(3000, 'q') + "}");
+    EXPECT_LT(junk.size(), 250u) << junk;
+    test::TempDir dir;
+    EXPECT_THROW(load_scene(dir.path()), InputError);  // a folder, not a regular file
+}
+
 TEST(PreviewScene, LimitsOnImageSizeSpheresAndRoomObjects) {
     EXPECT_TRUE(test::Contains(parse_error(R"({"image": {"width": 8193}, "spheres": [{"center": [0, 1, 0]}]})"),
                                "image.width: must be in [1, 8192]"));
@@ -175,9 +188,18 @@ TEST(PreviewPlan, PassesNobodyReadsAreCulled) {
     EXPECT_TRUE(plan.runs("capture-environment"));
     EXPECT_FALSE(plan.runs("cpu-reference"));
     EXPECT_FALSE(plan.runs("timing"));
+    EXPECT_FALSE(plan.runs("localization"));
+    // The localization diagnostics alone: one GPU frame and its file, no CPU reference.
+    plan = build_plan(scene_with(R"([{"center": [0,1,0]}])",
+                                 R"({"beauty": false, "reference": false, "difference": false, "metrics": false, "localization": true})"));
+    EXPECT_TRUE(plan.runs("localization"));
+    EXPECT_FALSE(plan.runs("beauty"));
+    EXPECT_FALSE(plan.runs("cpu-reference"));
+    EXPECT_EQ(plan.outputs, (std::vector<std::string>{"localization.exr"}));
     // Metrics need the reference, the beauty and the frame times, even when no image is written.
     plan = build_plan(scene_with(R"([{"center": [0,1,0]}])", R"({"beauty": false, "reference": false, "difference": false})"));
-    for (const char* pass : {"beauty", "cpu-reference", "timing", "metrics", "capture-environment"}) EXPECT_TRUE(plan.runs(pass)) << pass;
+    for (const char* pass : {"beauty", "cpu-reference", "timing", "metrics", "capture-environment", "localization"})
+        EXPECT_TRUE(plan.runs(pass)) << pass;
     EXPECT_FALSE(plan.runs("difference"));
     const std::string text = explain(plan, scene_with(R"([{"center": [0,1,0]}])"));
     EXPECT_TRUE(test::Contains(text, "difference: culled"));

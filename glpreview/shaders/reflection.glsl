@@ -40,20 +40,21 @@ float refine(float d_a, float rho_a, float d_b, float rho_b) {
 // The safeguarded root finders work on f(d) = ρ(x + R d) − 1 and keep a bracket: the latest undershoot a (f < 0)
 // and overshoot b (f > 0) with a < b. Every new guess lies strictly inside it (b = ∞ until an overshoot is known:
 // then the guess moves outwards by the sphere proxy, never by pairing with infinity), so d stays ≥ 0 and no two
-// guesses collapse onto one point. The bracket starts at the
-// shaded point d = 0 (an undershoot inside the room); the first guess is the perpendicular one (eq. 4.2).
+// guesses collapse onto one point. The bracket starts at the shaded point d = 0 (an undershoot inside the room);
+// the first guess is the perpendicular one (eq. 4.2).
 // illinois: false position between a and b; when the same end is replaced twice in a row, the other end's f is
 //   halved (the Illinois modification: superlinear, where plain regula falsi keeps one end fixed and crawls).
 // safe-secant: the secant through the last two guesses (the first pair: the shaded point and the first guess); a step
 //   that leaves the bracket or has a vanishing denominator is replaced by the bracket's midpoint (or by the
 //   outward step while no overshoot is known).
+
 // No overshoot known yet: from the undershoot a (f_a < 0) to where the ray leaves the sphere around o through the
 // environment seen in a's direction, |x + R d| = D = |p_a| / ρ_a (the sphere proxy's closed form, exact in a
-// sphere room). D > |p_a|, so the new guess lies strictly beyond a.
-float outwards(vec3 x, vec3 R, float a, float fa) {
-    float D = length(x + R * a) / (1.0 + fa);
+// sphere room). D > |p_a|, so the new guess lies beyond a (by at least 1e-4 D(R), should a sit on o itself).
+float outwards(vec3 x, vec3 R, float a, float fa, float DR) {
+    float D = length(x + R * a) / max(1.0 + fa, 1e-6);
     float xr = dot(x, R);
-    return max(-xr + sqrt(max(xr * xr - dot(x, x) + D * D, 0.0)), a + 1e-4 * D);
+    return max(-xr + sqrt(max(xr * xr - dot(x, x) + D * D, 0.0)), a + 1e-4 * DR);
 }
 
 float impostor_distance(vec3 x, vec3 R) {
@@ -66,7 +67,7 @@ float impostor_distance(vec3 x, vec3 R) {
     int last_side = 0;     // -1: a was replaced last, +1: b
     // The first guess: the perpendicular one (eq. 4.2) when it lies beyond the shaded point, else outwards.
     float perpendicular = DR - dot(x, R);
-    float d = perpendicular > 0.0 ? perpendicular : (has_a ? outwards(x, R, a, fa) : DR);
+    float d = perpendicular > 0.0 ? perpendicular : (has_a ? outwards(x, R, a, fa, DR) : DR);
 #if defined(STRATEGY_SAFE_SECANT)
     float d_prev = 0.0, f_prev = fa;
     bool has_prev = has_a;
@@ -95,12 +96,12 @@ float impostor_distance(vec3 x, vec3 R) {
         has_prev = true;
         if (!(next > a && next < b)) {
             if (b < infinity) next = has_a ? 0.5 * (a + b) : 0.5 * b;
-            else next = outwards(x, R, a, fa);
+            else next = outwards(x, R, a, fa, DR);
         }
         d = next;
 #else
         if (has_a && b < infinity) d = a - fa * (b - a) / (fb - fa);  // fa < 0 < fb: strictly inside (a, b)
-        else if (has_a) d = outwards(x, R, a, fa);  // no overshoot yet
+        else if (has_a) d = outwards(x, R, a, fa, DR);  // no overshoot yet
         else d = 0.5 * b;  // only overshoots so far: towards the shaded point
 #endif
     }

@@ -3,6 +3,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <string_view>
 #include <fstream>
 #include <initializer_list>
 #include <sstream>
@@ -14,6 +17,26 @@ namespace metalfit::glpreview {
 namespace {
 
 using nlohmann::json;
+
+// Scene text quoted in a message: at most `max` characters, control and non-ASCII bytes written as \xNN, so that a
+// message stays one short line whatever the file holds.
+std::string excerpt(std::string_view text, std::size_t max = 40) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (out.size() >= max) return out + "...";
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x20 && c < 0x7f) {
+            out += static_cast<char>(c);
+        } else {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02X", c);
+            out += hex;
+        }
+    }
+    return out;
+}
+
+constexpr std::uintmax_t kMaxSceneBytes = 16u << 20;  // 16 MiB
 
 // Reads one JSON object strictly: every key must be known, every value of the expected type. Errors name the file
 // and the dotted field path.
@@ -28,7 +51,7 @@ public:
             if (!known) {
                 std::string list;
                 for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
-                fail(field(key), "unknown key (known: " + list + ")");
+                fail(field(excerpt(key)), "unknown key (known: " + list + ")");
             }
         }
     }
@@ -95,7 +118,7 @@ public:
             }
             list += (list.empty() ? "" : ", ") + std::string(name);
         }
-        fail(field(key), "unknown value '" + text + "' (known: " + list + ")");
+        fail(field(key), "unknown value '" + excerpt(text) + "' (known: " + list + ")");
     }
     // Calls f(element, "key[i]") for each element of an array-valued key.
     template <typename F>
@@ -134,7 +157,7 @@ struct FieldTracker : nlohmann::json_sax<json> {
         std::string path;
         for (const Level& l : levels) {
             if (l.array) path += "[" + std::to_string(l.index) + "]";
-            else if (!l.key.empty()) path += (path.empty() ? "" : ".") + l.key;
+            else if (!l.key.empty()) path += (path.empty() ? "" : ".") + excerpt(l.key);
         }
         return path;
     }
@@ -366,7 +389,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         const int line = 1 + static_cast<int>(std::count(json_text.begin(), json_text.begin() + static_cast<long>(offset), '\n'));
         std::string what = e.what();
         const auto colon = what.rfind(": ");
-        throw InputError(InputLocation(file, line), "invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon + 2)));
+        throw InputError(InputLocation(file, line), "invalid JSON: " + excerpt(colon == std::string::npos ? what : what.substr(colon + 2), 120));
     }
     Scene scene;
     scene.file = file;
@@ -435,7 +458,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
                                                                         : file.parent_path() / path;
             r.read("intensity", e.equirect.intensity, 0, kBig);
         } else {
-            top.fail("environment.type", "unknown value '" + type + "' (known: room, sphere-room, equirect)");
+            top.fail("environment.type", "unknown value '" + excerpt(type) + "' (known: room, sphere-room, equirect)");
         }
     }
     if (!top.has("spheres")) top.fail("spheres", "missing (at least one sphere)");
@@ -451,7 +474,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         std::string fresnel = "reference", params = "fit";
         r.read("fresnel", fresnel);
         r.read("params", params);
-        if (params != "fit" && params != "closed") r.fail(r.field("params"), "unknown value '" + params + "' (known: fit, closed)");
+        if (params != "fit" && params != "closed") r.fail(r.field("params"), "unknown value '" + excerpt(params) + "' (known: fit, closed)");
         if (fresnel != "reference")  // "params" is checked on a reference sphere too, and means nothing there
             s.fresnel = ModelFresnel{fresnel, params == "closed" ? ParameterSource::closed : ParameterSource::fit};
         r.read_enum("reflection", s.reflection,
@@ -498,6 +521,11 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
 }
 
 Scene load_scene(const std::filesystem::path& file) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(file, error))  // a FIFO or a device would hang or never end
+        throw InputError(InputLocation(file), std::filesystem::exists(file, error) ? "not a regular file" : "cannot read the scene file");
+    if (std::filesystem::file_size(file, error) > kMaxSceneBytes)
+        throw InputError(InputLocation(file), "larger than 16 MiB: not a scene");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw InputError(InputLocation(file), "cannot read the scene file");
     std::stringstream text;
