@@ -72,9 +72,11 @@ float impostor_distance(vec3 x, vec3 R) {
     float d_prev = 0.0, f_prev = fa;
     bool has_prev = has_a;
 #endif
+    float last = d;  // the latest evaluated guess
     for (int i = 0; i < NITER; ++i) {
         float f = impostor_rho(x + R * d) - 1.0;
         g_iterations_taken = i + 1;
+        last = d;
         if (abs(f) < float(TOLERANCE)) return d;
         if (f < 0.0) {
             if (last_side == -1 && b < infinity) fb *= 0.5;
@@ -105,7 +107,9 @@ float impostor_distance(vec3 x, vec3 R) {
         else d = 0.5 * b;  // only overshoots so far: towards the shaded point
 #endif
     }
-    return d;
+    // With the limit reached and no overshoot known, the outward step would be a guess never checked: keep the last
+    // evaluated point instead (an undershoot; measured, this makes 1 step less often worse than 0).
+    return b < infinity || NITER == 0 ? d : last;
 }
 #else
 // The thesis's three strategies, as described (Lazányi, ch. 4; FORMULAS.md §5).
