@@ -73,6 +73,41 @@ TEST(PreviewCli, WritesTheRequestedFilesAndMetrics) {
     }
 }
 
+// Issue 18 item 5, issue 13 items 7–9 end to end: the exit codes and one-line messages.
+TEST(PreviewCli, SceneValidationGaps) {
+    TempDir dir;
+    const fs::path scene = dir.write("s.json", R"({"image": {"width": 24, "height": 16}, "spheres": [{"center": [0, 1, 0]}],
+                                                  "outputs": {"png": false}})");
+    CommandRun run = glpreview(scene.string() + " --size 8193x10 --explain", dir);
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_TRUE(Contains(run.err, "--size: expected WxH with each side in [1, 8192]")) << run.err;
+    EXPECT_EQ(glpreview(scene.string() + " --size 8192x2048 --explain", dir).exit_code, 0);
+    EXPECT_EQ(glpreview(scene.string() + " --size 4096x4097 --explain", dir).exit_code, 2);
+
+    const fs::path overflow = dir.write("overflow.json", R"({"spheres": [{"center": [0, 1, 1e999]}]})");
+    run = glpreview(overflow.string() + " --explain", dir);
+    EXPECT_EQ(run.exit_code, 3);
+    EXPECT_TRUE(Contains(run.err, "overflow.json:1: spheres[0].center[2]: number beyond the range of a double")) << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+
+    const fs::path outside = dir.write("outside.json", R"({"spheres": [{"center": [0, 1, 0], "material": "/etc/hostname.csv"}]})");
+    run = glpreview(outside.string() + " --explain", dir);
+    EXPECT_EQ(run.exit_code, 3);
+    EXPECT_TRUE(Contains(run.err, "spheres[0].material: a path outside the scene's folder and the database")) << run.err;
+    EXPECT_EQ(glpreview(outside.string() + " --explain --allow-paths-outside", dir).exit_code, 0);
+
+    // A sphere behind the camera: "not visible", not "nan"; warnings for what the scene asks that means nothing.
+    const fs::path hidden = dir.write("hidden.json", R"({"image": {"width": 24, "height": 16}, "camera": {"position": [0, 1.2, 2.5]},
+        "spheres": [{"center": [0, 1, 0], "radius": 0.4, "reflection": "classic", "iterations": 3}, {"center": [0, 1, 2.9], "radius": 0.05}],
+        "outputs": {"png": false, "localization": true}})");
+    run = glpreview(hidden.string() + " -o " + (dir.path() / "out").string(), dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_TRUE(Contains(run.out, "sphere 1 gold         reference     distance-impostor  not visible (no pixel shows it)")) << run.out;
+    EXPECT_FALSE(Contains(run.out, "nan"));
+    EXPECT_TRUE(Contains(run.err, "warning: " + hidden.string() + ": spheres[0].iterations: ignored")) << run.err;
+    EXPECT_TRUE(fs::exists(dir.path() / "out" / "localization.exr"));
+}
+
 // An output that cannot be replaced (a folder where beauty.exr should go, which root cannot overwrite either):
 // a one-line error naming the file, exit 3, and no temporary file left behind.
 TEST(PreviewCli, AnOutputThatCannotBeWrittenIsAnErrorAndLeavesNoPartialFile) {
@@ -110,9 +145,16 @@ TEST(PreviewCli, BenchmarkModesPrintTheirJson) {
     ASSERT_EQ(localization["rooms"].size(), 2u);
     for (const auto& room : localization["rooms"]) {
         const auto& rows = room["rows"];
-        ASSERT_EQ(rows.size(), 20u);  // classic, box-parallax, 3 strategies × {0, 1, 2, 4, 8, 16}
+        ASSERT_EQ(rows.size(), 32u);  // classic, box-parallax, 5 strategies × {0, 1, 2, 4, 8, 16}
         EXPECT_EQ(rows[0]["mode"], "classic");
         EXPECT_DOUBLE_EQ(rows[0]["ratio_to_classic"].get<double>(), 1.0);
+        for (const auto& r : rows) {
+            EXPECT_GE(r["ratio_noise"].get<double>(), 0.0);
+            EXPECT_LE(r["mean_iterations"].get<double>(), r["iterations"].get<double>() + 1e-9) << r["strategy"];
+            if (r["mode"] == "distance-impostor" && r["iterations"].get<int>() > 0) {
+                EXPECT_GT(r["mean_iterations"].get<double>(), 0.0) << r["strategy"];
+            }
+        }
         for (const auto& r : rows)
             if (r["mode"] == "distance-impostor" && r["iterations"] == 4) {
                 EXPECT_LT(r["rmse"].get<double>(), rows[0]["rmse"].get<double>()) << room["room"] << " " << r["strategy"];

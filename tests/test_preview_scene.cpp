@@ -50,7 +50,7 @@ TEST(PreviewScene, MalformedScenesAreOneLineErrorsNamingTheField) {
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1]}]})"),
                                "spheres[0].center: expected an array of 3 numbers"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "strategy": "bisection"}]})"),
-                               "spheres[0].strategy: unknown value 'bisection' (known: secant, false-position, mixed)"));
+                               "spheres[0].strategy: unknown value 'bisection' (known: secant, false-position, mixed, illinois, safe-secant)"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "iterations": 2.5}]})"),
                                "spheres[0].iterations: expected an integer"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": []})"), "spheres: at least one sphere"));
@@ -70,6 +70,90 @@ TEST(PreviewScene, MalformedScenesAreOneLineErrorsNamingTheField) {
 Scene scene_with(const std::string& spheres, const std::string& outputs = "{}", const std::string& environment = "{}") {
     return parse_scene(R"({"environment": )" + environment + R"(, "spheres": )" + spheres + R"(, "outputs": )" + outputs + "}",
                        "s.json");
+}
+
+// Issue 18 item 5 and issue 13 items 7–9: numbers beyond double range, limits, warnings, confined paths.
+TEST(PreviewScene, ANumberBeyondDoubleRangeNamesTheFileLineAndField) {
+    const std::string e = parse_error("{\"spheres\": [{\"center\": [0, 1,\n 1e999]}]}");
+    EXPECT_TRUE(test::Contains(e, "bad.json:2: spheres[0].center[2]: number beyond the range of a double")) << e;
+    EXPECT_TRUE(test::Contains(parse_error(R"({"image": {"width": 1e309}, "spheres": [{"center": [0, 1, 0]}]})"),
+                               "bad.json:1: image.width: number beyond"));
+}
+
+TEST(PreviewScene, MessagesQuoteAtMostAShortSanitisedExcerpt) {
+    const std::string long_value(5000, 'x');
+    const std::string e = parse_error(R"({"spheres": [{"center": [0, 1, 0], "strategy": ")" + long_value + "\\u0001\"}]}");
+    EXPECT_LT(e.size(), 200u) << e;
+    EXPECT_TRUE(test::Contains(e, "unknown value 'xxxx")) << e;
+    const std::string key = parse_error("{\"spheres\": [{\"center\": [0, 1, 0], \"\\u001b[31mred\": 1}]}");
+    EXPECT_TRUE(test::Contains(key, "spheres[0].\\x1B[31mred: unknown key")) << key;
+    const std::string junk = parse_error("{\"spheres\": " + std::string(3000, 'q') + "}");
+    EXPECT_LT(junk.size(), 250u) << junk;
+    test::TempDir dir;
+    EXPECT_THROW(load_scene(dir.path()), InputError);  // a folder, not a regular file
+}
+
+TEST(PreviewScene, LimitsOnImageSizeSpheresAndRoomObjects) {
+    EXPECT_TRUE(test::Contains(parse_error(R"({"image": {"width": 8193}, "spheres": [{"center": [0, 1, 0]}]})"),
+                               "image.width: must be in [1, 8192]"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"image": {"width": 8192, "height": 4096}, "spheres": [{"center": [0, 1, 0]}]})"),
+                               "image: 8192 x 4096 is more than 16777216 pixels"));
+    EXPECT_NO_THROW(parse_scene(R"({"image": {"width": 8192, "height": 2048}, "spheres": [{"center": [0, 1, 0]}]})", "s.json"));
+    std::string many = R"({"spheres": [)";
+    for (std::size_t i = 0; i <= kMaxSpheres; ++i) many += std::string(i ? "," : "") + R"({"center": [0, 1, 0], "radius": 0.01})";
+    EXPECT_TRUE(test::Contains(parse_error(many + "]}"), "spheres: at most 256 spheres"));
+    std::string columns = R"({"environment": {"columns": [)";
+    for (std::size_t i = 0; i <= kMaxRoomBoxes; ++i) columns += std::string(i ? "," : "") + R"({"center": [0, 0]})";
+    EXPECT_TRUE(test::Contains(parse_error(columns + R"(]}, "spheres": [{"center": [0, 1, 0]}]})"),
+                               "environment.columns[32]: at most 32 boxes and columns together"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"type": "sphere-room"}, "spheres": [{"center": [0, 1, 0], "reflection": "box-parallax"}]})"),
+                               "spheres[0].reflection: box-parallax needs a room environment"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "tolerance": 2}]})"), "spheres[0].tolerance: must be in [0, 1]"));
+}
+
+TEST(PreviewScene, SettingsThatMeanNothingOrLookWrongAreWarnings) {
+    const Scene quiet = parse_scene(kMinimal, "s.json");  // the default camera and room: no warning
+    EXPECT_TRUE(quiet.warnings.empty());
+    const Scene scene = parse_scene(R"({"camera": {"position": [0, 1, 5]},
+        "spheres": [{"center": [0, 1, 0], "reflection": "classic", "iterations": 3, "strategy": "secant"},
+                    {"center": [2.8, 1, 0]}, {"center": [0, 1, 0], "tolerance": 0.001}]})", "s.json");
+    ASSERT_EQ(scene.warnings.size(), 4u);
+    EXPECT_EQ(scene.warnings[0], "s.json: spheres[0].strategy: ignored: only the distance impostor refines (reflection 'classic')");
+    EXPECT_EQ(scene.warnings[1], "s.json: spheres[0].iterations: ignored: only the distance impostor refines (reflection 'classic')");
+    EXPECT_EQ(scene.warnings[2], "s.json: camera.position: outside the room (the view shows the walls from behind)");
+    EXPECT_TRUE(test::Contains(scene.warnings[3], "s.json: spheres[1]: not inside the room"));
+    EXPECT_EQ(scene.spheres[2].tolerance, 0.001);
+    EXPECT_EQ(scene.spheres[1].strategy, Strategy::illinois);
+    EXPECT_EQ(scene.spheres[1].iterations, 8);
+}
+
+TEST(PreviewScene, ScenePathsStayInTheScenesFolderOrTheDatabase) {
+    test::TempDir dir;
+    std::filesystem::create_directories(dir.path() / "scenes");
+    const auto scene_file = dir.write("scenes/s.json", "{}");
+    dir.write("outside.csv", "wl,n,k\n500,1,2\n");
+    auto scene_with = [&](const std::string& material) {
+        return parse_scene(R"({"spheres": [{"center": [0, 1, 0], "material": ")" + material + R"("}]})", scene_file);
+    };
+    const PathPolicy policy{test::kData, false};
+    EXPECT_NO_THROW(confine_scene_paths(scene_with("Au"), policy));               // a catalog name
+    EXPECT_NO_THROW(confine_scene_paths(scene_with("mine.csv"), policy));         // beside the scene
+    EXPECT_NO_THROW(confine_scene_paths(scene_with((test::kData / "x.yml").string()), policy));  // in the database
+    for (const std::string& outside : {std::string("../outside.csv"), (dir.path() / "outside.csv").string(), std::string("/etc/passwd.csv")}) {
+        try {
+            confine_scene_paths(scene_with(outside), policy);
+            ADD_FAILURE() << outside << " accepted";
+        } catch (const InputError& e) {
+            EXPECT_TRUE(test::Contains(e.what(), "spheres[0].material: a path outside the scene's folder and the database")) << e.what();
+        }
+        EXPECT_NO_THROW(confine_scene_paths(scene_with(outside), PathPolicy{test::kData, true}));
+    }
+    // A link beside the scene that leads outside is outside.
+    std::filesystem::create_symlink(dir.path() / "outside.csv", dir.path() / "scenes" / "link.csv");
+    EXPECT_THROW(confine_scene_paths(scene_with("link.csv"), policy), InputError);
+    const Scene sky = parse_scene(R"({"environment": {"type": "equirect", "file": "../sky.hdr"},
+                                      "spheres": [{"center": [0, 1, 0], "reflection": "classic"}]})", scene_file);
+    EXPECT_THROW(confine_scene_paths(sky, policy), InputError);
 }
 
 TEST(PreviewPlan, FeaturesFollowTheScene) {
@@ -104,9 +188,18 @@ TEST(PreviewPlan, PassesNobodyReadsAreCulled) {
     EXPECT_TRUE(plan.runs("capture-environment"));
     EXPECT_FALSE(plan.runs("cpu-reference"));
     EXPECT_FALSE(plan.runs("timing"));
+    EXPECT_FALSE(plan.runs("localization"));
+    // The localization diagnostics alone: one GPU frame and its file, no CPU reference.
+    plan = build_plan(scene_with(R"([{"center": [0,1,0]}])",
+                                 R"({"beauty": false, "reference": false, "difference": false, "metrics": false, "localization": true})"));
+    EXPECT_TRUE(plan.runs("localization"));
+    EXPECT_FALSE(plan.runs("beauty"));
+    EXPECT_FALSE(plan.runs("cpu-reference"));
+    EXPECT_EQ(plan.outputs, (std::vector<std::string>{"localization.exr"}));
     // Metrics need the reference, the beauty and the frame times, even when no image is written.
     plan = build_plan(scene_with(R"([{"center": [0,1,0]}])", R"({"beauty": false, "reference": false, "difference": false})"));
-    for (const char* pass : {"beauty", "cpu-reference", "timing", "metrics", "capture-environment"}) EXPECT_TRUE(plan.runs(pass)) << pass;
+    for (const char* pass : {"beauty", "cpu-reference", "timing", "metrics", "capture-environment", "localization"})
+        EXPECT_TRUE(plan.runs(pass)) << pass;
     EXPECT_FALSE(plan.runs("difference"));
     const std::string text = explain(plan, scene_with(R"([{"center": [0,1,0]}])"));
     EXPECT_TRUE(test::Contains(text, "difference: culled"));

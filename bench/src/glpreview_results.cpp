@@ -117,8 +117,13 @@ LocalizationBench parse_localization_bench(const json& j) {
             if (strategy.is_string()) row.strategy = strategy.get<std::string>();
             else if (!strategy.is_null()) throw std::runtime_error(path + ".strategy: expected a string or null");
             row.iterations = int_field(rows[i], path, "iterations");
+            const json& tolerance = field(rows[i], path, "tolerance");
+            if (tolerance.is_number()) row.tolerance = tolerance.get<double>();
+            else if (!tolerance.is_null()) throw std::runtime_error(path + ".tolerance: expected a number or null");
+            row.mean_iterations = number_field(rows[i], path, "mean_iterations");
             row.ms_per_frame = number_field(rows[i], path, "ms_per_frame");
             row.ratio_to_classic = number_field(rows[i], path, "ratio_to_classic");
+            row.ratio_noise = number_field(rows[i], path, "ratio_noise");
             row.rmse = number_field(rows[i], path, "rmse");
             row.mean_abs = number_field(rows[i], path, "mean_abs");
             room.rows.push_back(std::move(row));
@@ -142,8 +147,10 @@ json to_json(const LocalizationBench& b) {
         json rows = json::array();
         for (const LocalizationRow& r : room.rows)
             rows.push_back({{"mode", r.mode}, {"strategy", r.strategy ? json(*r.strategy) : json(nullptr)},
-                            {"iterations", r.iterations}, {"ms_per_frame", r.ms_per_frame},
-                            {"ratio_to_classic", r.ratio_to_classic}, {"rmse", r.rmse}, {"mean_abs", r.mean_abs}});
+                            {"iterations", r.iterations}, {"tolerance", r.tolerance ? json(*r.tolerance) : json(nullptr)},
+                            {"mean_iterations", r.mean_iterations}, {"ms_per_frame", r.ms_per_frame},
+                            {"ratio_to_classic", r.ratio_to_classic}, {"ratio_noise", r.ratio_noise}, {"rmse", r.rmse},
+                            {"mean_abs", r.mean_abs}});
         rooms.push_back({{"room", room.room}, {"rows", rows}});
     }
     return {{"renderer", b.renderer}, {"size", {b.width, b.height}}, {"rooms", rooms}};

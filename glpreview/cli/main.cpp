@@ -47,7 +47,10 @@ int main(int argc, char** argv) {
     app.add_flag("--quick", quick, "Benchmarks: fewer frames, smaller images");
     app.add_flag("--json", json, "Benchmarks: print JSON");
     app.add_option("-o,--output", output_dir, "Output folder (default: preview/)");
-    app.add_option("--size", size, "Image size WxH (overrides the scene's image)");
+    app.add_option("--size", size, "Image size WxH (overrides the scene's image; each side 1-8192, at most 4096² pixels)");
+    bool allow_paths_outside = false;
+    app.add_flag("--allow-paths-outside", allow_paths_outside,
+                 "Let the scene read files outside its own folder and the database (absolute paths, ../)");
     std::string sheet;
     app.add_option("--sheet", sheet,
                    "Sphere sheet instead of the scene's outputs: comma-separated materials, one row each "
@@ -79,22 +82,27 @@ int main(int argc, char** argv) {
             else
                 for (const auto& room : result["rooms"])
                     for (const auto& r : room["rows"])
-                        std::printf("%-10s %-18s %-15s %2d  %7.2f ms  x%.2f  rmse %.5f\n", room["room"].get<std::string>().c_str(),
-                                    r["mode"].get<std::string>().c_str(),
+                        std::printf("%-10s %-18s %-15s %2d (mean %5.2f)  %7.2f ms  x%.2f ± %.2f  rmse %.5f\n",
+                                    room["room"].get<std::string>().c_str(), r["mode"].get<std::string>().c_str(),
                                     r["strategy"].is_null() ? "-" : r["strategy"].get<std::string>().c_str(),
-                                    r["iterations"].get<int>(), r["ms_per_frame"].get<double>(),
-                                    r["ratio_to_classic"].get<double>(), r["rmse"].get<double>());
+                                    r["iterations"].get<int>(), r["mean_iterations"].get<double>(), r["ms_per_frame"].get<double>(),
+                                    r["ratio_to_classic"].get<double>(), r["ratio_noise"].get<double>(), r["rmse"].get<double>());
             return ok;
         }
         if (scene_file.empty()) throw UsageError("a scene file is required (or --bench-shaders / --bench-localization)");
         Scene scene = load_scene(scene_file);
+        confine_scene_paths(scene, {data_dir, allow_paths_outside});
         if (!size.empty()) {
             std::smatch m;
-            if (!std::regex_match(size, m, std::regex(R"((\d{1,4})x(\d{1,4}))")) || std::stoi(m[1]) < 1 || std::stoi(m[2]) < 1)
-                throw UsageError("--size: expected WxH, e.g. 512x512 (got '" + size + "')");
+            if (!std::regex_match(size, m, std::regex(R"((\d{1,4})x(\d{1,4}))")) || std::stoi(m[1]) < 1 || std::stoi(m[2]) < 1 ||
+                std::stoi(m[1]) > kMaxImageEdge || std::stoi(m[2]) > kMaxImageEdge ||
+                static_cast<long long>(std::stoi(m[1])) * std::stoi(m[2]) > kMaxImagePixels)
+                throw UsageError("--size: expected WxH with each side in [1, " + std::to_string(kMaxImageEdge) + "] and at most " +
+                                 std::to_string(kMaxImagePixels) + " pixels, e.g. 512x512 (got '" + size.substr(0, 40) + "')");
             scene.width = std::stoi(m[1]);
             scene.height = std::stoi(m[2]);
         }
+        for (const std::string& warning : scene.warnings) std::cerr << "glpreview: warning: " << warning << "\n";
         // --sheet materials given as files are the user's paths: relative to the current folder, not to the scene's.
         std::vector<std::string> sheet_materials;
         std::stringstream list(sheet);
@@ -120,10 +128,16 @@ int main(int argc, char** argv) {
         for (const auto& file : result.written) std::cout << file.string() << "\n";
         if (!result.metrics.is_null()) {
             std::printf("ms per frame (median of %zu): %.2f\n", result.frame_ms.size(), result.metrics["ms_per_frame"].get<double>());
-            for (const auto& s : result.metrics["spheres"])
-                std::printf("sphere %d %-12s %-13s %-18s rmse %.5f mean_abs %.5f\n", s["sphere"].get<int>(),
-                            s["material"].get<std::string>().c_str(), s["fresnel"].get<std::string>().c_str(),
-                            s["mode"].get<std::string>().c_str(), s["rmse"].get<double>(), s["mean_abs"].get<double>());
+            for (const auto& s : result.metrics["spheres"]) {
+                std::printf("sphere %d %-12s %-13s %-18s ", s["sphere"].get<int>(), s["material"].get<std::string>().c_str(),
+                            s["fresnel"].get<std::string>().c_str(), s["mode"].get<std::string>().c_str());
+                if (s["pixels"].get<std::size_t>() == 0) std::printf("not visible (no pixel shows it)\n");
+                else if (s["mean_iterations"].is_null())
+                    std::printf("rmse %.5f mean_abs %.5f\n", s["rmse"].get<double>(), s["mean_abs"].get<double>());
+                else
+                    std::printf("rmse %.5f mean_abs %.5f mean steps %.2f\n", s["rmse"].get<double>(), s["mean_abs"].get<double>(),
+                                s["mean_iterations"].get<double>());
+            }
         }
         return ok;
     } catch (const GlError& e) {

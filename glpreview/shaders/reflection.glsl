@@ -2,7 +2,8 @@
 // in unit direction R hit the environment stored in the cube map u_env (rgb radiance, a distance from o)?
 // Returns the cube-map lookup direction (not normalised). Thesis ch. 4 (FORMULAS.md §5); Lagarde & Zanuttini 2012.
 // REFLECTION_CLASSIC | REFLECTION_BOX_PARALLAX | REFLECTION_DISTANCE_IMPOSTOR; with the impostor one of
-// STRATEGY_SECANT | STRATEGY_FALSE_POSITION | STRATEGY_MIXED and NITER (refinement steps, each one cube lookup).
+// STRATEGY_SECANT | STRATEGY_FALSE_POSITION | STRATEGY_MIXED (the thesis's three) | STRATEGY_ILLINOIS |
+// STRATEGY_SAFE_SECANT (safeguarded), NITER (at most this many refinement steps, each one cube lookup) and TOLERANCE.
 uniform samplerCube u_env;
 
 #if defined(REFLECTION_CLASSIC)
@@ -19,9 +20,13 @@ vec3 reflection_lookup(vec3 x, vec3 R) {
 }
 
 #elif defined(REFLECTION_DISTANCE_IMPOSTOR)
+// TOLERANCE: a pixel stops refining once |ρ − 1| < TOLERANCE at its latest guess (0: always NITER steps).
+// g_iterations_taken: refinement steps this pixel took (read by the LOCALIZATION_DIAGNOSTICS output).
+int g_iterations_taken = 0;
 float env_distance(vec3 direction) { return textureLod(u_env, direction, 0.0).a; }
 // ρ(p) = |p| / D(p/|p|): < 1 undershoot (in front of the environment), > 1 overshoot.
 float impostor_rho(vec3 p) { return length(p) / env_distance(p); }
+bool converged(float rho) { return abs(rho - 1.0) < float(TOLERANCE); }
 // eq. 4.4: pair guess d (with ρ) with the point at infinity.
 float pair_with_infinity(float d, float rho, float DR) { return max(d + DR * (1.0 - rho), 0.0); }
 // eq. 4.6: the ray parameter where the line through (d_a, ρ_a), (d_b, ρ_b) reaches ρ = 1.
@@ -31,7 +36,84 @@ float refine(float d_a, float rho_a, float d_b, float rho_b) {
     return max(d_b + (d_b - d_a) * (1.0 - rho_b) / denominator, 0.0);
 }
 
-vec3 reflection_lookup(vec3 x, vec3 R) {
+#if defined(STRATEGY_ILLINOIS) || defined(STRATEGY_SAFE_SECANT)
+// The safeguarded root finders work on f(d) = ρ(x + R d) − 1 and keep a bracket: the latest undershoot a (f < 0)
+// and overshoot b (f > 0) with a < b. Every new guess lies strictly inside it (b = ∞ until an overshoot is known:
+// then the guess moves outwards by the sphere proxy, never by pairing with infinity), so d stays ≥ 0 and no two
+// guesses collapse onto one point. The bracket starts at the shaded point d = 0 (an undershoot inside the room);
+// the first guess is the perpendicular one (eq. 4.2).
+// illinois: false position between a and b; when the same end is replaced twice in a row, the other end's f is
+//   halved (the Illinois modification: superlinear, where plain regula falsi keeps one end fixed and crawls).
+// safe-secant: the secant through the last two guesses (the first pair: the shaded point and the first guess); a step
+//   that leaves the bracket or has a vanishing denominator is replaced by the bracket's midpoint (or by the
+//   outward step while no overshoot is known).
+
+// No overshoot known yet: from the undershoot a (f_a < 0) to where the ray leaves the sphere around o through the
+// environment seen in a's direction, |x + R d| = D = |p_a| / ρ_a (the sphere proxy's closed form, exact in a
+// sphere room). D > |p_a|, so the new guess lies beyond a (by at least 1e-4 D(R), should a sit on o itself).
+float outwards(vec3 x, vec3 R, float a, float fa, float DR) {
+    float D = length(x + R * a) / max(1.0 + fa, 1e-6);
+    float xr = dot(x, R);
+    return max(-xr + sqrt(max(xr * xr - dot(x, x) + D * D, 0.0)), a + 1e-4 * DR);
+}
+
+float impostor_distance(vec3 x, vec3 R) {
+    float DR = env_distance(R);
+    const float infinity = 3.0e38;
+    float a = 0.0, fa = impostor_rho(x) - 1.0;
+    float b = infinity, fb = 0.0;
+    bool has_a = fa < 0.0;
+    if (!has_a) fa = 0.0;  // the shaded point lies behind the environment seen from o: no undershoot known yet
+    int last_side = 0;     // -1: a was replaced last, +1: b
+    // The first guess: the perpendicular one (eq. 4.2) when it lies beyond the shaded point, else outwards.
+    float perpendicular = DR - dot(x, R);
+    float d = perpendicular > 0.0 ? perpendicular : (has_a ? outwards(x, R, a, fa, DR) : DR);
+#if defined(STRATEGY_SAFE_SECANT)
+    float d_prev = 0.0, f_prev = fa;
+    bool has_prev = has_a;
+#endif
+    float last = d;  // the latest evaluated guess
+    for (int i = 0; i < NITER; ++i) {
+        float f = impostor_rho(x + R * d) - 1.0;
+        g_iterations_taken = i + 1;
+        last = d;
+        if (abs(f) < float(TOLERANCE)) return d;
+        if (f < 0.0) {
+            if (last_side == -1 && b < infinity) fb *= 0.5;
+            a = d;
+            fa = f;
+            has_a = true;
+            last_side = -1;
+        } else {
+            if (last_side == 1 && has_a) fa *= 0.5;
+            b = d;
+            fb = f;
+            last_side = 1;
+        }
+#if defined(STRATEGY_SAFE_SECANT)
+        float next = -1.0;
+        if (has_prev && abs(f - f_prev) > 1e-12 * max(abs(f), abs(f_prev))) next = d - f * (d - d_prev) / (f - f_prev);
+        d_prev = d;
+        f_prev = f;
+        has_prev = true;
+        if (!(next > a && next < b)) {
+            if (b < infinity) next = has_a ? 0.5 * (a + b) : 0.5 * b;
+            else next = outwards(x, R, a, fa, DR);
+        }
+        d = next;
+#else
+        if (has_a && b < infinity) d = a - fa * (b - a) / (fb - fa);  // fa < 0 < fb: strictly inside (a, b)
+        else if (has_a) d = outwards(x, R, a, fa, DR);  // no overshoot yet
+        else d = 0.5 * b;  // only overshoots so far: towards the shaded point
+#endif
+    }
+    // With the limit reached and no overshoot known, the outward step would be a guess never checked: keep the last
+    // evaluated point instead (an undershoot; measured, this makes 1 step less often worse than 0).
+    return b < infinity || NITER == 0 ? d : last;
+}
+#else
+// The thesis's three strategies, as described (Lazányi, ch. 4; FORMULAS.md §5).
+float impostor_distance(vec3 x, vec3 R) {
     float DR = env_distance(R);
 #if defined(STRATEGY_SECANT)
     // Start: the perpendicular-surface guess (eq. 4.2), then its pairing with infinity (eq. 4.4); each step pairs
@@ -41,6 +123,8 @@ vec3 reflection_lookup(vec3 x, vec3 R) {
     float d = pair_with_infinity(d_prev, rho_prev, DR);
     for (int i = 0; i < NITER; ++i) {
         float rho = impostor_rho(x + R * d);
+        g_iterations_taken = i + 1;
+        if (converged(rho)) break;
         float d_next = refine(d_prev, rho_prev, d, rho);
         d_prev = d;
         rho_prev = rho;
@@ -60,6 +144,8 @@ vec3 reflection_lookup(vec3 x, vec3 R) {
     float d = d0;
     for (int i = 0; i <= NITER; ++i) {
         float rho = impostor_rho(x + R * d);
+        g_iterations_taken = i;
+        if (i > 0 && converged(rho)) break;
         if (rho < 1.0) {
             d_under = d;
             rho_under = rho;
@@ -73,6 +159,9 @@ vec3 reflection_lookup(vec3 x, vec3 R) {
         else d = pair_with_infinity(d, rho, DR);
     }
 #endif
-    return x + R * d;
+    return d;
 }
+#endif
+
+vec3 reflection_lookup(vec3 x, vec3 R) { return x + R * impostor_distance(x, R); }
 #endif

@@ -1,7 +1,8 @@
 // One mirror sphere: ray-cast against the sphere, reflect, find the reflected radiance (reflection_lookup into the
 // captured cube map, or the image at infinity), multiply by the Fresnel of μ = cos θ.
 // FRESNEL_REFERENCE: the exact curve R_c(μ) from libfit as a 1D RGB texture; otherwise FRESNEL_CALL is a libfit model
-// function (its GLSL is libfit's single definition, prepended).
+// function (its GLSL is libfit's single definition, prepended). LOCALIZATION_DIAGNOSTICS writes the impostor's
+// steps and final |ρ − 1| instead of radiance.
 uniform vec3 u_sphere_center;
 uniform float u_sphere_radius;
 layout(location = 0) out vec4 out_color;
@@ -29,6 +30,18 @@ void main() {
     vec3 N = (p - u_sphere_center) / u_sphere_radius;
     float mu = clamp(-dot(d, N), 0.0, 1.0);
     vec3 R = reflect(d, N);
+#if defined(LOCALIZATION_DIAGNOSTICS)
+    // Why the localization is where it is: the refinement steps taken and |ρ − 1| at the lookup point; b = 1 marks
+    // the impostor's pixels.
+#if defined(REFLECTION_DISTANCE_IMPOSTOR)
+    vec3 lookup = reflection_lookup(p - u_reference, R);
+    out_color = vec4(float(g_iterations_taken), abs(impostor_rho(lookup) - 1.0), 1.0, 1.0);
+#else
+    out_color = vec4(0.0, 0.0, 0.0, 1.0);
+#endif
+    gl_FragDepth = t / (t + 1.0);
+    return;
+#endif
 #if defined(ENV_EQUIRECT)
     vec3 L = environment_trace(p, R).rgb;  // at infinity: the direction alone
 #else

@@ -1,6 +1,7 @@
 #include "glpreview/graph/features.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "libfit/base/text.hpp"
 
@@ -14,6 +15,25 @@ const char* environment_define(EnvironmentType type) {
     return "";
 }
 
+const char* strategy_define(Strategy strategy) {
+    switch (strategy) {
+        case Strategy::secant: return "STRATEGY_SECANT";
+        case Strategy::false_position: return "STRATEGY_FALSE_POSITION";
+        case Strategy::mixed: return "STRATEGY_MIXED";
+        case Strategy::illinois: return "STRATEGY_ILLINOIS";
+        case Strategy::safe_secant: return "STRATEGY_SAFE_SECANT";
+    }
+    return "";
+}
+
+std::string glsl_float(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    std::string s = text;
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s;
+}
+
 std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere) {
     std::vector<std::string> defines{environment_define(scene.environment.type)};
     switch (sphere.reflection) {
@@ -21,10 +41,9 @@ std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere
         case ReflectionMode::box_parallax: defines.push_back("REFLECTION_BOX_PARALLAX"); break;
         case ReflectionMode::distance_impostor:
             defines.push_back("REFLECTION_DISTANCE_IMPOSTOR");
-            defines.push_back(sphere.strategy == Strategy::secant           ? "STRATEGY_SECANT"
-                              : sphere.strategy == Strategy::false_position ? "STRATEGY_FALSE_POSITION"
-                                                                            : "STRATEGY_MIXED");
+            defines.push_back(strategy_define(sphere.strategy));
             defines.push_back("NITER " + std::to_string(sphere.iterations));
+            defines.push_back("TOLERANCE " + glsl_float(sphere.tolerance));
             break;
     }
     defines.push_back(shows_reference(sphere) ? "FRESNEL_REFERENCE" : "FRESNEL_MODEL " + fresnel_name(sphere.fresnel));
@@ -50,6 +69,7 @@ Features plan_features(const Scene& scene) {
     const Outputs& o = scene.outputs;
     f.difference_image = o.difference;
     f.metrics = o.metrics;
+    f.localization_image = o.localization;
     f.cpu_reference = o.reference || o.difference || o.metrics;
     return f;
 }

@@ -207,7 +207,7 @@ void GpuRenderer::capture_environment(const EnvironmentCube& cube) {
     cube_ = &cube;
 }
 
-void GpuRenderer::draw_frame() {
+void GpuRenderer::draw_frame(bool diagnostics) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
     glViewport(0, 0, scene_.width, scene_.height);
     glBindVertexArray(vao_.id());
@@ -221,8 +221,13 @@ void GpuRenderer::draw_frame() {
 
     glDisable(GL_DEPTH_TEST);
     glDepthMask(GL_FALSE);
-    glUseProgram(program("background", {environment_define(scene_.environment.type)}));
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (diagnostics) {
+        const float zero[4] = {0, 0, 0, 0};
+        glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, zero);
+    } else {
+        glUseProgram(program("background", {environment_define(scene_.environment.type)}));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -230,7 +235,9 @@ void GpuRenderer::draw_frame() {
     for (std::size_t i = 0; i < scene_.spheres.size(); ++i) {
         const Sphere& sphere = scene_.spheres[i];
         const SphereFresnel& fresnel = *fresnel_[i];
-        const GLuint p = program("sphere", sphere_defines(scene_, sphere), fresnel.model ? model_call(*fresnel.model) : "");
+        std::vector<std::string> defines = sphere_defines(scene_, sphere);
+        if (diagnostics) defines.push_back("LOCALIZATION_DIAGNOSTICS");
+        const GLuint p = program("sphere", defines, fresnel.model ? model_call(*fresnel.model) : "");
         set(p, "u_sphere_center", sphere.center);
         set(p, "u_sphere_radius", static_cast<float>(sphere.radius));
         if (fresnel.model) {
@@ -247,9 +254,18 @@ void GpuRenderer::draw_frame() {
 
 Image GpuRenderer::render() {
     draw_frame();
+    return read_frame();
+}
+
+Image GpuRenderer::render_localization() {
+    draw_frame(true);
+    return read_frame();
+}
+
+Image GpuRenderer::read_frame() const {
     std::vector<float> rgba(static_cast<std::size_t>(scene_.width) * scene_.height * 4);
     glGetTextureImage(color_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
-    check_gl("rendering the beauty frame");
+    check_gl("reading a frame back");
     Image image(scene_.width, scene_.height);
     for (int y = 0; y < scene_.height; ++y)
         for (int x = 0; x < scene_.width; ++x) {

@@ -29,12 +29,13 @@ struct Row {
 
 std::vector<Row> localization_rows() {
     std::vector<Row> rows{{ReflectionMode::classic, Strategy::secant, 0}, {ReflectionMode::box_parallax, Strategy::secant, 0}};
-    for (Strategy s : {Strategy::secant, Strategy::false_position, Strategy::mixed})
+    for (Strategy s : {Strategy::secant, Strategy::false_position, Strategy::mixed, Strategy::illinois, Strategy::safe_secant})
         for (int n : {0, 1, 2, 4, 8, 16}) rows.push_back({ReflectionMode::distance_impostor, s, n});
     return rows;
 }
 
 void apply(Sphere& sphere, const Row& row) {
+    sphere.tolerance = kDefaultTolerance;
     sphere.reflection = row.mode;
     sphere.strategy = row.strategy;
     sphere.iterations = row.iterations;
@@ -48,9 +49,11 @@ Json time_rows(Scene& scene, GpuRenderer& gpu, const ReferenceRender& reference,
     const std::vector<Row> rows = localization_rows();
     std::vector<std::function<void()>> variants;
     std::vector<SphereError> errors;
+    std::vector<SphereLocalization> effort;
     for (const Row& row : rows) {
         apply(sphere, row);
         errors.push_back(sphere_errors(gpu.render(), reference, 1).front());
+        effort.push_back(sphere_localization(gpu.render_localization(), reference, 1).front());
         variants.push_back([&, row] {
             apply(sphere, row);
             gpu.draw_frame_for_timing();
@@ -60,11 +63,15 @@ Json time_rows(Scene& scene, GpuRenderer& gpu, const ReferenceRender& reference,
     Json out = Json::array();
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const bool impostor = rows[i].mode == ReflectionMode::distance_impostor;
+        const Ratio ratio = paired_ratio(ms[i], ms[0]);
         out.push_back({{"mode", to_string(rows[i].mode)},
                        {"strategy", impostor ? Json(to_string(rows[i].strategy)) : Json()},
                        {"iterations", impostor ? rows[i].iterations : 0},
+                       {"tolerance", impostor ? Json(sphere.tolerance) : Json()},
+                       {"mean_iterations", impostor ? effort[i].mean_iterations : 0.0},
                        {"ms_per_frame", median(ms[i])},
-                       {"ratio_to_classic", paired_ratio(ms[i], ms[0]).median},
+                       {"ratio_to_classic", ratio.median},
+                       {"ratio_noise", ratio.noise},
                        {"rmse", errors[i].rmse},
                        {"mean_abs", errors[i].mean_abs}});
     }
@@ -179,7 +186,7 @@ Handle<Json> add_localization_cost_passes(PassGraph& graph, GpuBenchRun& run) {
     };
     return graph
         .add_pass<Record>(
-            {"localization-record", "per room and variant: median ms per frame, paired ratio to classic, RMSE", Processor::cpu},
+            {"localization-record", "per room and variant: median ms per frame, paired ratio to classic with its noise, RMSE, mean steps taken", Processor::cpu},
             [&](Builder& b, Record& d) {
                 for (const Handle<Json>& rows : room_rows) b.read(rows);
                 d.out = b.produce<Json>("localization-bench");

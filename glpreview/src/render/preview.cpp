@@ -20,6 +20,7 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     graph.retain(h.beauty);
     graph.retain(h.reference);
     graph.retain(h.difference);
+    graph.retain(h.localization);
     graph.retain(h.frame_times);
     graph.retain(h.metrics);
     graph.before_first_gpu_pass([&run] { run.open_gl(); });
@@ -32,6 +33,7 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     if (const Image* beauty = graph.result(h.beauty)) result.beauty = *beauty;
     if (const ReferenceRender* reference = graph.result(h.reference)) result.reference = *reference;
     if (const Image* difference = graph.result(h.difference)) result.difference = *difference;
+    if (const Image* localization = graph.result(h.localization)) result.localization = *localization;
     if (const FrameTimes* frame_ms = graph.result(h.frame_times)) result.frame_ms = *frame_ms;
     if (const Json* metrics = graph.result(h.metrics)) result.metrics = *metrics;
     result.written = run.written;

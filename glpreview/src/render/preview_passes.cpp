@@ -41,7 +41,8 @@ void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, 
         });
 }
 
-Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRender& reference, const FrameTimes& frame_ms) {
+Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRender& reference, const Image& localization,
+                  const FrameTimes& frame_ms) {
     const Scene& scene = run.scene;
     Json j;
     j["schema"] = "metalfit.preview-metrics/1";
@@ -51,6 +52,7 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
     j["ms_per_frame"] = frame_ms.empty() ? 0.0 : median(frame_ms);
     j["frame_ms"] = frame_ms;
     const auto errors = sphere_errors(beauty, reference, scene.spheres.size());
+    const auto effort = sphere_localization(localization, reference, scene.spheres.size());
     j["spheres"] = Json::array();
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
@@ -65,9 +67,12 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
         e["mode"] = to_string(s.reflection);
         e["strategy"] = impostor ? Json(to_string(s.strategy)) : Json(nullptr);
         e["iterations"] = impostor ? s.iterations : 0;
-        e["rmse"] = errors[i].rmse;
+        e["tolerance"] = impostor ? Json(s.tolerance) : Json(nullptr);
+        e["rmse"] = errors[i].rmse;  // NaN (null) when no pixel shows the sphere
         e["mean_abs"] = errors[i].mean_abs;
         e["pixels"] = errors[i].pixels;
+        e["mean_iterations"] = impostor ? Json(effort[i].mean_iterations) : Json(nullptr);
+        e["mean_rho_error"] = impostor ? Json(effort[i].mean_rho_error) : Json(nullptr);
         j["spheres"].push_back(e);
     }
     return j;
@@ -279,6 +284,19 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
                               r.emplace(d.out, render_reference(run->scene, run->fresnel, tracer, run->threads));
                           })
                       .out;
+    // localization: the impostor's steps taken and final |ρ − 1| per pixel, one diagnostics frame.
+    h.localization = graph
+                         .add_pass<Out<Image>>(
+                             {"localization", "per pixel: the impostor's refinement steps taken and |ρ − 1| at its lookup point",
+                              Processor::gpu},
+                             [&](Builder& b, Out<Image>& d) {
+                                 frame.declare(b, in.camera);
+                                 d.out = b.produce<Image>("localization-image");
+                             },
+                             [run, frame](const Out<Image>& d, Resources& r) {
+                                 r.emplace(d.out, frame.bind(*run, r).render_localization());
+                             })
+                         .out;
     h.difference = graph
                        .add_pass<Out<Image>>(
                            {"difference", "|beauty − reference| per pixel", Processor::cpu},
@@ -310,11 +328,12 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
                         [&](Builder& b, Out<Json>& d) {
                             b.read(h.beauty);
                             b.read(h.reference);
+                            b.read(h.localization);
                             b.read(h.frame_times);
                             d.out = b.produce<Json>("metrics");
                         },
                         [run, h](const Out<Json>& d, Resources& r) {
-                            r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.frame_times)));
+                            r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.localization), r.get(h.frame_times)));
                         })
                     .out;
 
@@ -329,6 +348,7 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
         if (o.reference) add_image_file_pass(graph, "reference." + format, h.reference, run);
     for (const auto& format : formats)
         if (o.difference) add_image_file_pass(graph, "difference." + format, h.difference, run);
+    if (o.localization) add_image_file_pass(graph, "localization.exr", h.localization, run);
     if (o.metrics) add_json_file_pass(graph, "metrics.json", "asked for", h.metrics, run);
     return h;
 }

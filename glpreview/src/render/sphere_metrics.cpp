@@ -1,5 +1,6 @@
 #include "glpreview/render/sphere_metrics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -27,6 +28,30 @@ std::vector<SphereError> sphere_errors(const Image& beauty, const ReferenceRende
         errors[s].mean_abs = n > 0 ? absolute[s] / n : std::nan("");
     }
     return errors;
+}
+
+std::vector<SphereLocalization> sphere_localization(const Image& diagnostics, const ReferenceRender& reference,
+                                                    std::size_t spheres) {
+    if (diagnostics.width != reference.image.width || diagnostics.height != reference.image.height)
+        throw std::invalid_argument("sphere_localization: images of different sizes");
+    std::vector<SphereLocalization> out(spheres);
+    std::vector<std::size_t> pixels(spheres, 0);
+    for (std::size_t p = 0; p < reference.sphere_id.size(); ++p) {
+        const int id = reference.sphere_id[p];
+        if (id < 0) continue;
+        SphereLocalization& s = out[static_cast<std::size_t>(id)];
+        s.mean_iterations += diagnostics.rgb[3 * p];
+        s.mean_rho_error += diagnostics.rgb[3 * p + 1];
+        s.max_rho_error = std::max(s.max_rho_error, double(diagnostics.rgb[3 * p + 1]));
+        ++pixels[static_cast<std::size_t>(id)];
+    }
+    for (std::size_t s = 0; s < spheres; ++s) {
+        const double n = static_cast<double>(pixels[s]);
+        out[s].mean_iterations = n > 0 ? out[s].mean_iterations / n : std::nan("");
+        out[s].mean_rho_error = n > 0 ? out[s].mean_rho_error / n : std::nan("");
+        if (n == 0) out[s].max_rho_error = std::nan("");
+    }
+    return out;
 }
 
 Image absolute_difference(const Image& a, const Image& b, double scale) {

@@ -3,16 +3,40 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <string_view>
 #include <fstream>
 #include <initializer_list>
 #include <sstream>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/io/catalog.hpp"
 
 namespace metalfit::glpreview {
 namespace {
 
 using nlohmann::json;
+
+// Scene text quoted in a message: at most `max` characters, control and non-ASCII bytes written as \xNN, so that a
+// message stays one short line whatever the file holds.
+std::string excerpt(std::string_view text, std::size_t max = 40) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (out.size() >= max) return out + "...";
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x20 && c < 0x7f) {
+            out += static_cast<char>(c);
+        } else {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02X", c);
+            out += hex;
+        }
+    }
+    return out;
+}
+
+constexpr std::uintmax_t kMaxSceneBytes = 16u << 20;  // 16 MiB
 
 // Reads one JSON object strictly: every key must be known, every value of the expected type. Errors name the file
 // and the dotted field path.
@@ -27,7 +51,7 @@ public:
             if (!known) {
                 std::string list;
                 for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
-                fail(field(key), "unknown key (known: " + list + ")");
+                fail(field(excerpt(key)), "unknown key (known: " + list + ")");
             }
         }
     }
@@ -94,7 +118,7 @@ public:
             }
             list += (list.empty() ? "" : ", ") + std::string(name);
         }
-        fail(field(key), "unknown value '" + text + "' (known: " + list + ")");
+        fail(field(key), "unknown value '" + excerpt(text) + "' (known: " + list + ")");
     }
     // Calls f(element, "key[i]") for each element of an array-valued key.
     template <typename F>
@@ -116,6 +140,74 @@ private:
 };
 
 constexpr double kBig = 1e6;
+
+// A SAX pass that only follows where it is (the dotted field path, as the Reader names fields), to name the field of
+// an error nlohmann reports without one (a number overflow).
+struct FieldTracker : nlohmann::json_sax<json> {
+    struct Level {
+        bool array = false;
+        std::size_t index = 0;
+        std::string key;
+    };
+    std::vector<Level> levels;
+    std::string error_field;
+    std::size_t error_byte = 0;
+
+    std::string here() const {
+        std::string path;
+        for (const Level& l : levels) {
+            if (l.array) path += "[" + std::to_string(l.index) + "]";
+            else if (!l.key.empty()) path += (path.empty() ? "" : ".") + excerpt(l.key);
+        }
+        return path;
+    }
+    bool value() {
+        if (!levels.empty() && levels.back().array) ++levels.back().index;
+        return true;
+    }
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t&) override { return value(); }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override {
+        levels.push_back({false, 0, ""});
+        return true;
+    }
+    bool key(string_t& k) override {
+        levels.back().key = k;
+        return true;
+    }
+    bool end_object() override {
+        levels.pop_back();
+        return value();
+    }
+    bool start_array(std::size_t) override {
+        levels.push_back({true, 0, ""});
+        return true;
+    }
+    bool end_array() override {
+        levels.pop_back();
+        return value();
+    }
+    bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception&) override {
+        error_field = here();
+        error_byte = position;
+        return false;
+    }
+};
+
+bool inside(const std::filesystem::path& p, const std::filesystem::path& folder) {
+    if (folder.empty()) return false;
+    auto f = folder.begin(), q = p.begin();
+    for (; f != folder.end(); ++f, ++q) {
+        if (f->empty()) continue;  // a trailing separator
+        if (q == p.end() || *f != *q) return false;
+    }
+    return true;
+}
 
 void check_box(const Reader& r, const char* what, const Vec3& min, const Vec3& max) {
     if (!(min.x < max.x && min.y < max.y && min.z < max.z)) r.fail(r.field(what), "min must be below max on every axis");
@@ -151,6 +243,7 @@ Room read_room(const Reader& r) {
         read2("max", panel.max_x, panel.max_z);
         if (!(panel.min_x < panel.max_x && panel.min_z < panel.max_z)) p.fail(p.field("max"), "min must be below max");
         p.read_color("radiance", panel.radiance);
+        if (room.panels.size() >= kMaxPanels) r.fail(r.field("panels"), "at most " + std::to_string(kMaxPanels) + " panels");
         room.panels.push_back(panel);
     });
     if (!panels_given) {  // default: a 2 × 2 grid of panels over the room's middle
@@ -169,6 +262,7 @@ Room read_room(const Reader& r) {
         b.read("max", box.max);
         check_box(b, "max", box.min, box.max);
         b.read_color("color", box.color);
+        if (room.boxes.size() >= kMaxRoomBoxes) b.fail(path, "at most " + std::to_string(kMaxRoomBoxes) + " boxes and columns together");
         room.boxes.push_back(box);
     });
     r.each("columns", [&](const json& v, const std::string& path) {
@@ -183,12 +277,59 @@ Room read_room(const Reader& r) {
         box.min = {e[0].get<double>() - half, room.min.y, e[1].get<double>() - half};
         box.max = {e[0].get<double>() + half, room.max.y, e[1].get<double>() + half};
         c.read_color("color", box.color);
+        if (room.boxes.size() >= kMaxRoomBoxes) c.fail(path, "at most " + std::to_string(kMaxRoomBoxes) + " boxes and columns together");
         room.boxes.push_back(box);
     });
     return room;
 }
 
 }  // namespace
+
+void check_image_size(const std::filesystem::path& file, const std::string& what, int width, int height) {
+    if (width < 1 || height < 1 || width > kMaxImageEdge || height > kMaxImageEdge)
+        throw InputError(InputLocation(file, 0, what), "width and height must be in [1, " + std::to_string(kMaxImageEdge) + "]");
+    if (static_cast<long long>(width) * height > kMaxImagePixels)
+        throw InputError(InputLocation(file, 0, what), std::to_string(width) + " x " + std::to_string(height) + " is more than " +
+                                                         std::to_string(kMaxImagePixels) + " pixels");
+}
+
+std::vector<std::string> placement_warnings(const Scene& scene) {
+    std::vector<std::string> warnings;
+    if (scene.environment.type != EnvironmentType::room) return warnings;
+    const Room& room = scene.environment.room;
+    const std::string file = scene.file.string() + ": ";
+    const Vec3 c = scene.camera.position;
+    bool camera_inside = true;
+    for (int i = 0; i < 3; ++i) camera_inside = camera_inside && c[i] > room.min[i] && c[i] < room.max[i];
+    if (!camera_inside && scene.camera_position_given) warnings.push_back(file + "camera.position: outside the room (the view shows the walls from behind)");
+    for (std::size_t s = 0; s < scene.spheres.size(); ++s) {
+        const Sphere& sphere = scene.spheres[s];
+        bool through = false;
+        for (int i = 0; i < 3; ++i)
+            through = through || sphere.center[i] - sphere.radius < room.min[i] || sphere.center[i] + sphere.radius > room.max[i];
+        if (through)
+            warnings.push_back(file + "spheres[" + std::to_string(s) + "]: not inside the room (it reaches through or lies beyond a wall; its reflection there is meaningless)");
+    }
+    return warnings;
+}
+
+void confine_scene_paths(const Scene& scene, const PathPolicy& policy) {
+    if (policy.allow_outside) return;
+    namespace fs = std::filesystem;
+    std::error_code error;
+    const fs::path folder = fs::weakly_canonical(fs::absolute(scene.file).parent_path(), error);
+    const fs::path data = policy.data_dir.empty() ? fs::path() : fs::weakly_canonical(fs::absolute(policy.data_dir), error);
+    auto check = [&](const fs::path& path, const std::string& field) {
+        const fs::path resolved = fs::weakly_canonical(fs::absolute(path), error);
+        if (!inside(resolved, folder) && !inside(resolved, data))
+            throw InputError(InputLocation(scene.file, 0, field),
+                             "a path outside the scene's folder and the database (glpreview --allow-paths-outside to allow it)");
+    };
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        if (const fs::path written = scene.spheres[i].material; looks_like_path(scene.spheres[i].material))
+            check(written.is_absolute() ? written : scene.file.parent_path() / written, "spheres[" + std::to_string(i) + "].material");
+    if (scene.environment.type == EnvironmentType::equirect) check(scene.environment.equirect.file, "environment.file");
+}
 
 Vec3 Environment::reference() const {
     if (reference_point) return *reference_point;
@@ -210,6 +351,8 @@ const char* to_string(Strategy strategy) {
         case Strategy::secant: return "secant";
         case Strategy::false_position: return "false-position";
         case Strategy::mixed: return "mixed";
+        case Strategy::illinois: return "illinois";
+        case Strategy::safe_secant: return "safe-secant";
     }
     return "?";
 }
@@ -234,13 +377,19 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
     json root;
     try {
         root = json::parse(json_text);
+    } catch (const json::out_of_range& e) {  // a number beyond double range (1e309): name where it is
+        FieldTracker tracker;
+        json::sax_parse(json_text, &tracker);
+        const auto offset = std::min<std::size_t>(tracker.error_byte, json_text.size());
+        const int line = 1 + static_cast<int>(std::count(json_text.begin(), json_text.begin() + static_cast<long>(offset), '\n'));
+        throw InputError(InputLocation(file, line, tracker.error_field), "number beyond the range of a double");
     } catch (const json::parse_error& e) {
         // nlohmann reports the byte offset; turn it into a line number.
         const auto offset = std::min<std::size_t>(e.byte, json_text.size());
         const int line = 1 + static_cast<int>(std::count(json_text.begin(), json_text.begin() + static_cast<long>(offset), '\n'));
         std::string what = e.what();
         const auto colon = what.rfind(": ");
-        throw InputError(InputLocation(file, line), "invalid JSON: " + (colon == std::string::npos ? what : what.substr(colon + 2)));
+        throw InputError(InputLocation(file, line), "invalid JSON: " + excerpt(colon == std::string::npos ? what : what.substr(colon + 2), 120));
     }
     Scene scene;
     scene.file = file;
@@ -248,12 +397,14 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
 
     if (top.has("image")) {
         Reader r(top.at("image"), "image", file, {"width", "height"});
-        r.read("width", scene.width, 1, 8192);
-        r.read("height", scene.height, 1, 8192);
+        r.read("width", scene.width, 1, kMaxImageEdge);
+        r.read("height", scene.height, 1, kMaxImageEdge);
+        check_image_size(file, "image", scene.width, scene.height);
     }
     if (top.has("camera")) {
         Reader r(top.at("camera"), "camera", file, {"position", "look_at", "up", "fov_y_deg"});
         r.read("position", scene.camera.position);
+        scene.camera_position_given = r.has("position");
         r.read("look_at", scene.camera.look_at);
         r.read("up", scene.camera.up);
         r.read("fov_y_deg", scene.camera.fov_y_deg, 1, 170);
@@ -307,12 +458,13 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
                                                                         : file.parent_path() / path;
             r.read("intensity", e.equirect.intensity, 0, kBig);
         } else {
-            top.fail("environment.type", "unknown value '" + type + "' (known: room, sphere-room, equirect)");
+            top.fail("environment.type", "unknown value '" + excerpt(type) + "' (known: room, sphere-room, equirect)");
         }
     }
     if (!top.has("spheres")) top.fail("spheres", "missing (at least one sphere)");
     top.each("spheres", [&](const json& v, const std::string& path) {
-        Reader r(v, path, file, {"center", "radius", "material", "source", "fresnel", "params", "reflection", "strategy", "iterations"});
+        Reader r(v, path, file, {"center", "radius", "material", "source", "fresnel", "params", "reflection", "strategy", "iterations",
+                                  "tolerance"});
         Sphere s;
         if (!r.has("center")) r.fail(r.field("center"), "missing");
         r.read("center", s.center);
@@ -322,7 +474,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         std::string fresnel = "reference", params = "fit";
         r.read("fresnel", fresnel);
         r.read("params", params);
-        if (params != "fit" && params != "closed") r.fail(r.field("params"), "unknown value '" + params + "' (known: fit, closed)");
+        if (params != "fit" && params != "closed") r.fail(r.field("params"), "unknown value '" + excerpt(params) + "' (known: fit, closed)");
         if (fresnel != "reference")  // "params" is checked on a reference sphere too, and means nothing there
             s.fresnel = ModelFresnel{fresnel, params == "closed" ? ParameterSource::closed : ParameterSource::fit};
         r.read_enum("reflection", s.reflection,
@@ -330,17 +482,29 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
                      {"distance-impostor", ReflectionMode::distance_impostor},
                      {"box-parallax", ReflectionMode::box_parallax}});
         r.read_enum("strategy", s.strategy,
-                    {{"secant", Strategy::secant}, {"false-position", Strategy::false_position}, {"mixed", Strategy::mixed}});
+                    {{"secant", Strategy::secant},
+                     {"false-position", Strategy::false_position},
+                     {"mixed", Strategy::mixed},
+                     {"illinois", Strategy::illinois},
+                     {"safe-secant", Strategy::safe_secant}});
         r.read("iterations", s.iterations, 0, 64);
+        r.read("tolerance", s.tolerance, 0, 1);
+        if (s.reflection != ReflectionMode::distance_impostor)
+            for (const char* key : {"strategy", "iterations", "tolerance"})
+                if (r.has(key))
+                    scene.warnings.push_back(file.string() + ": " + r.field(key) + ": ignored: only the distance impostor refines (reflection '" +
+                                             to_string(s.reflection) + "')");
         if (s.reflection != ReflectionMode::classic && scene.environment.type == EnvironmentType::equirect)
             r.fail(r.field("reflection"), "an equirect environment is at infinity: only 'classic' reflections");
         if (s.reflection == ReflectionMode::box_parallax && scene.environment.type != EnvironmentType::room)
             r.fail(r.field("reflection"), "box-parallax needs a room environment");
+        if (scene.spheres.size() >= kMaxSpheres) top.fail("spheres", "at most " + std::to_string(kMaxSpheres) + " spheres");
         scene.spheres.push_back(s);
     });
     if (scene.spheres.empty()) top.fail("spheres", "at least one sphere");
     if (top.has("outputs")) {
-        Reader r(top.at("outputs"), "outputs", file, {"beauty", "reference", "difference", "metrics", "exr", "png", "timing_frames"});
+        Reader r(top.at("outputs"), "outputs", file, {"beauty", "reference", "difference", "metrics", "exr", "png", "localization",
+                                                             "timing_frames"});
         Outputs& o = scene.outputs;
         r.read("beauty", o.beauty);
         r.read("reference", o.reference);
@@ -348,13 +512,20 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         r.read("metrics", o.metrics);
         r.read("exr", o.exr);
         r.read("png", o.png);
+        r.read("localization", o.localization);
         r.read("timing_frames", o.timing_frames, 5, 1000);
         if (!o.exr && !o.png && (o.beauty || o.reference || o.difference)) r.fail("outputs.exr", "images asked for but neither exr nor png");
     }
+    for (std::string& w : placement_warnings(scene)) scene.warnings.push_back(std::move(w));
     return scene;
 }
 
 Scene load_scene(const std::filesystem::path& file) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(file, error))  // a FIFO or a device would hang or never end
+        throw InputError(InputLocation(file), std::filesystem::exists(file, error) ? "not a regular file" : "cannot read the scene file");
+    if (std::filesystem::file_size(file, error) > kMaxSceneBytes)
+        throw InputError(InputLocation(file), "larger than 16 MiB: not a scene");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw InputError(InputLocation(file), "cannot read the scene file");
     std::stringstream text;

@@ -20,6 +20,7 @@ struct Features {
     bool cpu_reference = false;        // the ray-traced reference image (asked for, or needed by difference/metrics)
     bool difference_image = false;     // |beauty − reference| (asked for)
     bool metrics = false;              // metrics.json: per-sphere error and ms per frame
+    bool localization_image = false;   // localization.exr: steps taken and final |ρ − 1| per pixel (asked for)
     bool prefiltered_map = false;      // glossy reflections: no sphere is rough (pure mirrors), never needed yet
     bool irradiance_sh = false;        // diffuse lobe: metals have none, never needed yet
     std::set<std::string> models;      // libfit model ids used
@@ -31,8 +32,13 @@ Features plan_features(const Scene& scene);
 // The shader #define of an environment type: "ENV_ROOM", "ENV_SPHERE_ROOM" or "ENV_EQUIRECT".
 const char* environment_define(EnvironmentType type);
 
+// "STRATEGY_SECANT", ... "STRATEGY_SAFE_SECANT".
+const char* strategy_define(Strategy strategy);
+// A GLSL float literal of `value` ("0.0001", "0.0", "1e-05").
+std::string glsl_float(double value);
+
 // The sphere shader's #defines for one sphere (sorted, one per line), e.g. "REFLECTION_DISTANCE_IMPOSTOR",
-// "STRATEGY_FALSE_POSITION", "NITER 4", "FRESNEL_MODEL f82-tint", "ENV_ROOM".
+// "STRATEGY_FALSE_POSITION", "NITER 4", "TOLERANCE 0.0001", "FRESNEL_MODEL f82-tint", "ENV_ROOM".
 std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere);
 
 }  // namespace metalfit::glpreview

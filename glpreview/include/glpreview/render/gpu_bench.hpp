@@ -2,7 +2,7 @@
 // - shader cost: a full-screen pass evaluating each libfit model (its single GLSL definition), and the reference
 //   LUT, as a ratio to the exact conductor-rgb pass;
 // - localization cost: ms per frame and error against the CPU reference for classic, box-parallax and the
-//   distance impostor (secant, false position, mixed) at 0 … 16 iterations, in the empty and the difficult room.
+//   distance impostor (secant, false position, mixed, illinois, safe-secant) at 0 … 16 iterations, in the empty and the difficult room.
 // Frames are interleaved across the variants (round-robin) and the median per variant is kept, so that drifts of
 // a shared machine hit every variant alike. Both benchmarks are passes of one pass graph (add_gpu_bench_passes):
 // the record asked for decides which passes run, the graph creates and frees their GL resources. Used by
@@ -55,8 +55,10 @@ GpuBenchHandles add_gpu_bench_passes(graph::PassGraph& graph, GpuBenchRun& run);
 // {"renderer", "size", "frames", "evaluations_per_pixel", "models": [{"model", "ms_per_frame", "ratio_to_conductor_rgb"}]}
 nlohmann::ordered_json bench_shaders(GlContext& context, const PreviewOptions& options, bool quick);
 
-// {"renderer", "size", "frames", "rooms": [{"room", "rows": [{"mode", "strategy", "iterations", "ms_per_frame",
-//  "ratio_to_classic", "rmse", "mean_abs"}]}]}.
+// {"renderer", "size", "frames", "rooms": [{"room", "rows": [{"mode", "strategy", "iterations", "tolerance",
+//  "mean_iterations", "ms_per_frame", "ratio_to_classic", "ratio_noise", "rmse", "mean_abs"}]}]}: iterations is the
+//  limit, mean_iterations the steps the sphere's pixels took; ratio_noise the half interquartile range of the
+//  per-round ratios.
 nlohmann::ordered_json bench_localization(GlContext& context, const PreviewOptions& options, bool quick);
 
 }  // namespace metalfit::glpreview

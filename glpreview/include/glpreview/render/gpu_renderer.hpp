@@ -55,6 +55,9 @@ public:
     void use_environment(const EnvironmentCube& cube) { cube_ = &cube; }
     void use_equirect(const EquirectTexture& texture) { equirect_ = &texture; }
     Image render();  // one beauty frame, read back
+    // The localization diagnostics of the same frame (no background, 0 outside the spheres): per pixel r = the
+    // distance impostor's refinement steps taken, g = |ρ − 1| at its lookup point, b = 1 on impostor spheres.
+    Image render_localization();
     // One beauty frame without read-back or glFinish (the caller brackets it; benchmarks).
     void draw_frame_for_timing() { draw_frame(); }
     // Milliseconds of `frames` beauty frames, each between glFinish calls (no read-back).
@@ -76,7 +79,8 @@ private:
     GLuint program(const std::string& kind, const std::vector<std::string>& defines, const std::string& fresnel_call = {});
     void set_environment_uniforms(GLuint program) const;
     void set_camera_uniforms(GLuint program) const;
-    void draw_frame();
+    void draw_frame(bool diagnostics = false);
+    Image read_frame() const;
     void upload_lut(const SphereFresnel* fresnel);
 
     const Scene& scene_;

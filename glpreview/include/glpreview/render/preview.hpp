@@ -32,6 +32,7 @@ struct PreviewResult {
     std::optional<Image> beauty;
     std::optional<ReferenceRender> reference;
     std::optional<Image> difference;
+    std::optional<Image> localization;        // GpuRenderer::render_localization(), when metrics or the file ran it
     std::vector<double> frame_ms;
     nlohmann::ordered_json metrics;           // as written to metrics.json (null when not asked for)
     std::vector<std::filesystem::path> written;

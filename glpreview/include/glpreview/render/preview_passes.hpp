@@ -79,6 +79,7 @@ struct PreviewHandles {
     graph::Handle<Image> beauty;
     graph::Handle<ReferenceRender> reference;
     graph::Handle<Image> difference;
+    graph::Handle<Image> localization;  // r: steps taken, g: |ρ − 1|, b: 1 on impostor spheres
     graph::Handle<FrameTimes> frame_times;
     graph::Handle<Json> metrics;
 };

@@ -18,6 +18,16 @@ struct SphereError {
 
 std::vector<SphereError> sphere_errors(const Image& beauty, const ReferenceRender& reference, std::size_t spheres);
 
+// The distance impostor's effort per sphere, from GpuRenderer::render_localization() over the same mask: the mean
+// refinement steps taken and the mean and the largest |ρ − 1| at the lookup point (NaN where the mask is empty).
+struct SphereLocalization {
+    double mean_iterations = 0;
+    double mean_rho_error = 0;
+    double max_rho_error = 0;
+};
+std::vector<SphereLocalization> sphere_localization(const Image& diagnostics, const ReferenceRender& reference,
+                                                    std::size_t spheres);
+
 // |a − b| per pixel and channel, times `scale`.
 Image absolute_difference(const Image& a, const Image& b, double scale = 1.0);
 

@@ -73,7 +73,10 @@ struct Environment {
 };
 
 enum class ReflectionMode { classic, distance_impostor, box_parallax };
-enum class Strategy { secant, false_position, mixed };
+// The impostor's root finder: the thesis's three as described (secant, false position, mixed), and two that keep a
+// bracket and cannot stall or run away (illinois: false position with the Illinois modification; safe-secant:
+// secant falling back to the bracket).
+enum class Strategy { secant, false_position, mixed, illinois, safe_secant };
 
 // What a sphere's Fresnel is: the exact reference curve, or a libfit model (named by its id, resolved against the
 // model registry when the sphere's Fresnel data is made, where an unknown id is reported) with its parameters
@@ -86,6 +89,17 @@ struct ModelFresnel {
 };
 using FresnelChoice = std::variant<ReferenceFresnel, ModelFresnel>;
 
+inline constexpr Strategy kDefaultStrategy = Strategy::illinois;
+inline constexpr int kDefaultIterations = 8;
+inline constexpr double kDefaultTolerance = 1e-4;
+
+// Limits on what a scene may ask for (docs/scene.md): bounded cost for any scene file.
+inline constexpr int kMaxImageEdge = 8192;
+inline constexpr long long kMaxImagePixels = 16777216;  // 4096²
+inline constexpr std::size_t kMaxSpheres = 256;
+inline constexpr std::size_t kMaxRoomBoxes = 32;   // boxes + columns (the shader's MAX_BOXES)
+inline constexpr std::size_t kMaxPanels = 16;      // the shader's MAX_PANELS
+
 struct Sphere {
     Vec3 center;
     double radius = 0.5;
@@ -93,8 +107,9 @@ struct Sphere {
     std::string source;           // catalog source ("" = primary)
     FresnelChoice fresnel = ReferenceFresnel{};  // JSON: "fresnel": "reference" or a model id, "params": "fit" | "closed"
     ReflectionMode reflection = ReflectionMode::distance_impostor;
-    Strategy strategy = Strategy::false_position;
-    int iterations = 4;
+    Strategy strategy = kDefaultStrategy;
+    int iterations = kDefaultIterations;  // the most refinement steps a pixel takes
+    double tolerance = kDefaultTolerance;  // a pixel stops once |ρ − 1| < tolerance (0: always `iterations` steps)
 };
 
 struct Outputs {
@@ -104,6 +119,7 @@ struct Outputs {
     bool metrics = true;     // metrics.json (needs the reference)
     bool exr = true;         // linear images
     bool png = true;         // through the OCIO display transform
+    bool localization = false;  // localization.exr: per pixel the refinement steps taken and the final |ρ − 1|
     int timing_frames = 5;   // frames for ms_per_frame (median)
 };
 
@@ -114,14 +130,30 @@ struct Scene {
     Environment environment;
     std::vector<Sphere> spheres;
     Outputs outputs;
+    bool camera_position_given = false;  // the default camera (z = 3.5) stands outside the default room: no warning
+    std::vector<std::string> warnings;  // settings that are accepted but mean nothing or look wrong, one line each
 };
+
+// Where a scene may read files from: its own folder and the database, unless paths outside are allowed.
+struct PathPolicy {
+    std::filesystem::path data_dir;  // empty: the scene's folder only
+    bool allow_outside = false;
+};
+// Every file the scene names (material files, the equirect image), resolved with links followed, must lie in the
+// scene's folder or the database unless policy.allow_outside; throws InputError naming the field.
+void confine_scene_paths(const Scene& scene, const PathPolicy& policy);
+// Checks the image size against the limits (kMaxImageEdge, kMaxImagePixels); throws InputError naming `what`.
+void check_image_size(const std::filesystem::path& file, const std::string& what, int width, int height);
 
 // Throws metalfit::InputError naming the file and the field.
 Scene parse_scene(const std::string& json_text, const std::filesystem::path& file);
 Scene load_scene(const std::filesystem::path& file);
+// The sphere-visibility and placement warnings that need the whole scene (camera outside the room, a sphere through
+// a wall); parse_scene adds them to Scene::warnings.
+std::vector<std::string> placement_warnings(const Scene& scene);
 
 const char* to_string(ReflectionMode mode);  // "classic", "distance-impostor", "box-parallax"
-const char* to_string(Strategy strategy);    // "secant", "false-position", "mixed"
+const char* to_string(Strategy strategy);    // "secant", "false-position", "mixed", "illinois", "safe-secant"
 const char* to_string(EnvironmentType type);  // "room", "sphere-room", "equirect"
 const char* to_string(ParameterSource source);  // "fit", "closed"
 std::string fresnel_name(const FresnelChoice& fresnel);  // "reference" or the model id, as in the scene JSON
