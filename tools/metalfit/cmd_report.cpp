@@ -7,6 +7,7 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "material_selection.hpp"
 #include "progress.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/color/display_transform.hpp"
@@ -19,9 +20,7 @@ namespace metalfit::cli {
 namespace {
 
 struct ReportOptions {
-    std::string material;
-    bool all = false;
-    std::string source;
+    MaterialSelection selection;
     std::string models = "all";
     ColourOptions colour;
     std::string metric = "rel";
@@ -34,25 +33,11 @@ struct ReportOptions {
 };
 
 void run_report(const ReportOptions& o, const GlobalOptions& global) {
-    if (!o.all && o.material.empty()) throw UsageError("report: give a material (catalog name or file), or --all");
-    if (o.all && !o.material.empty()) throw UsageError("report: give a material or --all, not both");
-    if (o.all && !o.source.empty()) throw UsageError("report: --source needs a single material");
     const RenderMode render_mode = parse_render_mode(o.renders);
     const double fail_above = o.fail_above.empty() ? 0.0 : parse_relative_limit(o.fail_above, "--fail-above");  // 0: no gate
     check_report_folder(o.output);  // before the fits, which take a while for --all
     const Catalog catalog = Catalog::load(global.data_dir);
-    // One material, several (comma-separated) or the catalog.
-    std::vector<std::function<Material()>> loaders;
-    if (o.all) loaders = material_loaders(catalog, true, {}, {});
-    std::string rest = o.material;
-    while (!o.all) {
-        const auto comma = rest.find(',');
-        const std::string one = rest.substr(0, comma);
-        if (one.empty()) throw UsageError("report: empty material name in '" + o.material + "'");
-        for (auto& loader : material_loaders(catalog, false, one, o.source)) loaders.push_back(std::move(loader));
-        if (comma == std::string::npos) break;
-        rest = rest.substr(comma + 1);
-    }
+    const auto loaders = o.selection.loaders(catalog, "report");
 
     const ColourSetup setup = resolve_colour_options(o.colour, global);
     const DisplayTransform display = DisplayTransform::create(setup.config);
@@ -73,8 +58,7 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     const SphereRenders renders = render_spheres(render_request, render_mode);
     if (!renders.sheet && render_mode == RenderMode::auto_) std::cerr << "metalfit: renders skipped: " << renders.skipped << "\n";
 
-    const FitRecordContext context{setup.config, setup.converter.space(), setup.colorimetry.observer(),
-                                   setup.colorimetry.illuminant(), setup.spectral, error};
+    const FitRecordContext context = setup.record_context(error);
     const CostAndBudget cost;  // no cost table or budget yet (docs/report.md)
     const ReportInputs inputs{context, setup.colorimetry, setup.converter, display, catalog, cost, renders};
     write_report_folder(o.output, report_files(fits, inputs));
@@ -91,10 +75,8 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
 
 std::function<void()> add_report_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<ReportOptions>();
-    app.add_option("material", o->material, "Catalog material (id, name or alias), several comma-separated, or a .yml/.csv file");
-    app.add_flag("--all", o->all, "Every material of the built-in catalog, in parallel");
-    app.add_option("--source", o->source, "Alternate source of a catalog material (default: its primary)");
-    app.add_option("--model", o->models, "Models, comma-separated, or all (default: all)");
+    o->selection.add_options(app, true);
+    app.add_option("--model", o->models, "Models, comma-separated, or all: " + model_ids());
     add_colour_options(app, o->colour);
     app.add_option("--metric", o->metric, "Error the fit minimises: rel or abs")->check(CLI::IsMember({"rel", "abs"}));
     app.add_option("--weight", o->weight, "Angular weight: uniform (in mu) or cosine (2 mu)")
