@@ -28,7 +28,7 @@ struct ModelList {
 
 // The registry, in the order of listings, records, exports and benchmark tables.
 using Registry = ModelList<models::Schlick, models::Lazanyi, models::LazanyiComp, models::F82Tint,
-                           models::ConductorRgb, models::Gulbrandsen>;
+                           models::ConductorRgb, models::Gulbrandsen, models::SchlickComp2>;
 
 // Calls f.template operator()<M>() for every model M of a list, in order.
 template <class... M, class F>
