@@ -1,7 +1,0 @@
-// Schlick with two compensation terms: F(μ) = F0 + (1 − F0) m^5 − b1 μ m^4 − b2 μ m^9, m = 1 − μ, per channel.
-vec3 metalfit_schlick_comp2(vec3 F0, vec3 b1, vec3 b2, float mu) {
-    float m = 1.0 - mu;
-    float m2 = m * m;
-    float m4 = m2 * m2;
-    return F0 + (vec3(1.0) - F0) * (m4 * m) - mu * m4 * (b1 + b2 * (m4 * m));
-}
