@@ -75,9 +75,9 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
     s << "  F0 = (" << fixed(fit.F0.r, 5) << ", " << fixed(fit.F0.g, 5) << ", " << fixed(fit.F0.b, 5) << ")";
     if (fit.F0.max() > 1.0 || fit.F0.min() < 0.0) s << "  out of gamut, kept";
     s << "\n";
+    if (context.constraints.pin_f0) s << "  F0 pinned: F(1) = R(1) in every channel (--pin F0)\n";
     s << "  " << pad("model", width) << pad("", 24) << pad("rel_rms % R/G/B", 23) << pad("abs_rms % R/G/B", 23)
       << pad("ΔE00 max", 10) << "parameters\n";
-    if (context.constraints.pin_f0) s << "  F0 pinned: F(1) = R(1) in every channel\n";
     const auto row = [&](const std::string& model, const std::string& which, const EvaluatedParameters& v,
                          const Model& m, const std::string& note) {
         s << "  " << pad(model, width) << pad(which, 24);

@@ -8,7 +8,7 @@
 namespace metalfit::models {
 
 std::vector<ChannelParameters> Rational::target_starts(const ChannelTarget& t) {
-    constexpr int kIterations = 4;
+    constexpr int kIterations = 6;
     std::vector<ChannelParameters> starts;
     std::vector<double> weight(t.mu.size(), 1.0);  // 1 / previous denominator
     for (int it = 0; it < kIterations; ++it) {
@@ -26,13 +26,11 @@ std::vector<ChannelParameters> Rational::target_starts(const ChannelTarget& t) {
         const auto x = detail::linear_least_squares(std::move(A), std::move(y));
         if (!x) break;
         ChannelParameters p = *x;
-        bool positive = true;  // the denominator must not vanish on [0, 1]
+        if (!std::all_of(p.begin(), p.end(), [](double v) { return std::isfinite(v); })) break;
         for (std::size_t i = 0; i < t.mu.size(); ++i) {
-            const double den = 1.0 + t.mu[i] * (p[2] + p[3] * t.mu[i]);
-            if (!(den > 0.0)) positive = false;
-            weight[i] = positive ? 1.0 / den : 1.0;
+            const double den = std::abs(1.0 + t.mu[i] * (p[2] + p[3] * t.mu[i]));
+            weight[i] = den > 1e-12 ? 1.0 / den : 1.0;
         }
-        if (!positive || !std::all_of(p.begin(), p.end(), [](double v) { return std::isfinite(v); })) break;
         for (std::size_t i = 0; i < p.size(); ++i) p[i] = std::clamp(p[i], kParameters[i].lower, kParameters[i].upper);
         starts.push_back(std::move(p));
     }

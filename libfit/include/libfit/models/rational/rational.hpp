@@ -19,10 +19,10 @@ struct Rational {
     static constexpr std::string_view kId = "rational";
     static constexpr std::string_view kTitle = "rational (1 + a mu + b mu^2) / (1 + c mu + d mu^2)";
     static constexpr std::array<Parameter, 4> kParameters{{
-        {"a", -100.0, 100.0, "numerator, coefficient of mu", ParameterKind::shape},
-        {"b", -100.0, 100.0, "numerator, coefficient of mu^2", ParameterKind::shape},
-        {"c", -100.0, 100.0, "denominator, coefficient of mu", ParameterKind::shape},
-        {"d", -100.0, 100.0, "denominator, coefficient of mu^2", ParameterKind::shape},
+        {"a", -1e4, 1e4, "numerator, coefficient of mu", ParameterKind::shape},
+        {"b", -1e4, 1e4, "numerator, coefficient of mu^2", ParameterKind::shape},
+        {"c", -1e4, 1e4, "denominator, coefficient of mu", ParameterKind::shape},
+        {"d", -1e4, 1e4, "denominator, coefficient of mu^2", ParameterKind::shape},
     }};
     static constexpr std::string_view kGlslFunction = "metalfit_rational";
     static constexpr std::array<std::string_view, 1> kGlslFiles{"rational"};
@@ -41,8 +41,11 @@ struct Rational {
 
     // None: no parameter is a property of the data at one angle.
     static std::vector<ClosedForm> closed_forms(const ClosedFormInput&) { return {}; }
-    // F = 1 + (R(1) − 1) μ would need the data; the neutral start is the constant 1.
-    static std::vector<ChannelParameters> neutral_starts() { return {{0.0, 0.0, 0.0, 0.0}}; }
+    // The constant 1 written with denominators of growing weight (the fits of metals range from c, d ≈ 1 to ≈ 300:
+    // copper's red of McPeak needs c ≈ 36, d ≈ 135, which LM does not reach from c = d = 0).
+    static std::vector<ChannelParameters> neutral_starts() {
+        return {{0.0, 0.0, 0.0, 0.0}, {3.0, 3.0, 3.0, 3.0}, {30.0, 30.0, 30.0, 30.0}, {30.0, 300.0, 30.0, 300.0}};
+    }
     // Linearised least squares (Levy): R (1 + c μ + d μ²) − (1 + a μ + b μ²) ≈ 0 is linear in (a, b, c, d); then
     // Sanathanan–Koerner reweighting by the previous denominator (each iterate is a start).
     static std::vector<ChannelParameters> target_starts(const ChannelTarget& target);

@@ -1,5 +1,7 @@
 #include "libfit/models/schlick_comp_general/schlick_comp_general.hpp"
 
+#include <algorithm>
+
 #include "models/compensation_projection.hpp"
 
 namespace metalfit::models {
@@ -12,15 +14,20 @@ std::vector<ClosedForm> SchlickCompGeneral::closed_forms(const ClosedFormInput& 
 }
 
 std::vector<ChannelParameters> SchlickCompGeneral::target_starts(const ChannelTarget& t) {
-    constexpr std::size_t kKept = 4;
     const auto& F0 = kParameters[0];
     const auto& a = kParameters[2];
     const auto& alpha = kParameters[3];
-    const auto candidates = detail::compensation_candidates(t, {3.0, 4.0, 5.0, 6.0, 8.0}, alpha.lower, alpha.upper, 32,
+    const auto candidates = detail::compensation_candidates(t, {1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0, 12.0, 16.0, 20.0, 24.0, 32.0, 48.0, 64.0}, alpha.lower, alpha.upper, 32,
                                                             F0.lower, F0.upper, a.lower, a.upper);
+    // The best α of each power: the (p, α) surface has several valleys (copper green of Babar: p ≈ 6, α ≈ 16 beside
+    // p ≈ 7.4, α ≈ 6.6), so one start per power rather than the few best overall.
     std::vector<ChannelParameters> starts;
-    for (std::size_t i = 0; i < std::min(kKept, candidates.size()); ++i)
-        starts.push_back({candidates[i].F0, candidates[i].power, candidates[i].a, candidates[i].alpha});
+    std::vector<double> seen;
+    for (const auto& c : candidates) {
+        if (std::find(seen.begin(), seen.end(), c.power) != seen.end()) continue;
+        seen.push_back(c.power);
+        starts.push_back({c.F0, c.power, c.a, c.alpha});
+    }
     return starts;
 }
 

@@ -18,7 +18,7 @@ struct SchlickCompGeneral {
     static constexpr std::string_view kTitle = "generalised compensated Schlick, F0 + (1 - F0) m^p - a mu m^alpha";
     static constexpr std::array<Parameter, 4> kParameters{{
         {"F0", -1.0, 2.0, "reflectance at normal incidence (may exceed 1 out of gamut)", ParameterKind::colour},
-        {"p", 1.0, 16.0, "exponent of the Schlick term (Schlick: 5)", ParameterKind::shape},
+        {"p", 1.0, 64.0, "exponent of the Schlick term (Schlick: 5)", ParameterKind::shape},
         {"a", -20.0, 20.0, "compensation amplitude", ParameterKind::shape},
         {"alpha", 0.05, 64.0, "compensation exponent", ParameterKind::shape},
     }};
@@ -42,7 +42,7 @@ struct SchlickCompGeneral {
     // "r1": F0 = R(1), p = 5, a = 0 (Schlick).
     static std::vector<ClosedForm> closed_forms(const ClosedFormInput& input);
     static std::vector<ChannelParameters> neutral_starts() { return {{0.5, 5.0, 0.0, 6.0}, {0.9, 5.0, 0.3, 2.0}}; }
-    // Variable projection: for p ∈ {3, 4, 5, 6, 8} and a log grid of α, (F0, a) solved exactly; the best few.
+    // Variable projection: for p on a grid from 1.5 to 64 (18 values) and a log grid of α, (F0, a) solved exactly; the best α of each p.
     static std::vector<ChannelParameters> target_starts(const ChannelTarget& target);
 };
 
