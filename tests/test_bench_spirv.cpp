@@ -2,8 +2,10 @@
 // the models' shaders.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstring>
 
+#include "libfit/fit/model_cost.hpp"
 #include "metalfit_bench/spirv_cost.hpp"
 #include "metalfit_bench/subprocess.hpp"
 
@@ -105,6 +107,23 @@ TEST_F(CompiledSpirv, EveryModelCompilesAndCostsMoreThanTheWrapper) {
     EXPECT_EQ(counts["reference-lut"].texture, 1);
     EXPECT_LT(counts["schlick"].compute(), counts["conductor-rgb"].compute());
     EXPECT_LT(counts["conductor-rgb"].compute(), counts["gulbrandsen"].compute());  // n, k from r, g first
+}
+
+// libfit's built-in cost table (fit/model_cost, what `metalfit fit --budget` ranks by without --costs) holds exactly
+// the counts the bench computes for every registered model, so that a model's GLSL cannot change without it.
+TEST_F(CompiledSpirv, BuiltInCostTableIsTheBenchCount) {
+    const metalfit::CostTable table = metalfit::builtin_cost_table();
+    std::string actual;
+    for (const SpirvRow& r : spirv_costs(*validator_)) {
+        ASSERT_TRUE(r.counts) << r.id << ": " << r.error;
+        if (r.id == "wrapper" || r.id == "reference-lut") continue;
+        actual += "{\"" + r.id + "\", " + std::to_string(r.counts->compute()) + "}, ";
+        const auto cost = table.cost_of(r.id);
+        ASSERT_TRUE(cost) << r.id << " is missing from builtin_cost_table()";
+        EXPECT_EQ(*cost, r.counts->compute()) << r.id;
+    }
+    EXPECT_EQ(table.costs.size(), metalfit::all_models().size()) << "bench counts: " << actual;
+    if (HasFailure()) std::printf("bench counts: %s\n", actual.c_str());
 }
 
 }  // namespace

@@ -238,6 +238,67 @@ TEST_F(Cli, UnknownCommandAndMissingMaterialSayWhatIsWrong) {
     EXPECT_FALSE(fs::exists(dir_ / "x"));
 }
 
+// --pin F0 holds F(1) = R(1) (the record says so), --budget picks the cheapest qualifying model per material with the
+// cost table named, --costs reads a bench report, and export --model best:BUDGET exports that model.
+TEST_F(Cli, PinBudgetAndBestExport) {
+    const Result pinned = run("fit copper --model schlick,f82-tint --pin F0 --json");
+    ASSERT_EQ(pinned.exit_code, 0) << pinned.err;
+    const auto p = nlohmann::json::parse(pinned.out);
+    EXPECT_EQ(p["provenance"]["constraints"]["pin_f0"], true);
+    for (const char* model : {"schlick", "f82-tint"})
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(p["materials"]["Cu"]["models"][model]["fit"]["params"]["F0"][c].get<double>(),
+                        p["materials"]["Cu"]["F0"][c].get<double>(), 1e-12) << model;
+            EXPECT_NEAR(p["materials"]["Cu"]["models"][model]["fit"]["err_f0"][c].get<double>(), 0.0, 1e-12);
+        }
+    const Result bad_pin = run("fit copper --pin tint");
+    EXPECT_EQ(bad_pin.exit_code, 2);
+    expect_one_line_error(bad_pin, "--pin");
+
+    const Result budget = run("fit gold --budget 0.5% --json");
+    ASSERT_EQ(budget.exit_code, 0) << budget.err;
+    const auto b = nlohmann::json::parse(budget.out);
+    const auto& choice = b["materials"]["Au"]["budget"];
+    ASSERT_TRUE(choice["chosen"].is_string()) << choice.dump();
+    EXPECT_TRUE(choice["cost_table"].get<std::string>().find("built-in") != std::string::npos);
+    // The chosen model is the cheapest of those whose worst channel meets 0.5 %.
+    double chosen_cost = 0, cheapest_qualifying = 1e300;
+    for (const auto& c : choice["candidates"]) {
+        const auto& rel = b["materials"]["Au"]["models"][c["model"].get<std::string>()]["fit"]["metrics"]["rel_rms"];
+        const double worst = std::max({rel[0].get<double>(), rel[1].get<double>(), rel[2].get<double>()});
+        EXPECT_EQ(c["qualifies"].get<bool>(), worst <= 0.005) << c.dump();
+        if (worst <= 0.005) cheapest_qualifying = std::min(cheapest_qualifying, c["cost"].get<double>());
+        if (c["model"] == choice["chosen"]) chosen_cost = c["cost"].get<double>();
+    }
+    EXPECT_EQ(chosen_cost, cheapest_qualifying);
+    const Result human = run("fit gold --budget 0.0001%");
+    ASSERT_EQ(human.exit_code, 0) << human.err;
+    EXPECT_NE(human.out.find("none qualifies"), std::string::npos) << human.out;
+
+    // A bench report as the cost table: f82-tint cheapest by hand, so a 5 % budget picks it for gold.
+    std::ofstream(dir_ / "bench.json") << R"({"schema": "metalfit.bench/1", "rows": [
+        {"id": "schlick", "kind": "model", "ratio_scalar": 0.5, "shader_ratio": 0.5},
+        {"id": "f82-tint", "kind": "model", "ratio_scalar": 0.1, "shader_ratio": 0.1}]})";
+    const Result costs = run("fit gold --model schlick,f82-tint --budget 5% --costs '" + (dir_ / "bench.json").string() + "' --json");
+    ASSERT_EQ(costs.exit_code, 0) << costs.err;
+    const auto cj = nlohmann::json::parse(costs.out);
+    EXPECT_EQ(cj["materials"]["Au"]["budget"]["chosen"], "f82-tint");
+    EXPECT_NE(cj["provenance"]["budget"]["cost_table"].get<std::string>().find("bench.json"), std::string::npos);
+    const Result bad_costs = run("fit gold --budget 1% --costs '" + (dir_ / "missing.json").string() + "'");
+    EXPECT_EQ(bad_costs.exit_code, 3);
+    expect_one_line_error(bad_costs, "missing.json");
+    const Result bad_budget = run("fit gold --budget 1%% ");
+    EXPECT_EQ(bad_budget.exit_code, 2);
+
+    const Result best = run("export gold --model best:0.5% --format json -o '" + (dir_ / "best").string() + "'");
+    ASSERT_EQ(best.exit_code, 0) << best.err;
+    EXPECT_NE(best.err.find("chose " + choice["chosen"].get<std::string>()), std::string::npos) << best.err;
+    const Result none = run("export gold --model best:0.0001% --format json -o '" + (dir_ / "none").string() + "'");
+    EXPECT_EQ(none.exit_code, 2);
+    expect_one_line_error(none, "no model meets");
+    EXPECT_FALSE(fs::exists(dir_ / "none"));
+}
+
 TEST_F(Cli, FitSummaryRowsAreTheRecordsWorstChannels) {
     // The Markdown summary and the JSON record are written by different code from the same fits: each cell of the
     // summary must be 100 × the largest rel_rms channel of the record, to two decimals.

@@ -3,6 +3,7 @@
 // (the GLSL text over a vec3 prelude, in float) must equal libfit's models, and its constants the JSON record's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -37,6 +38,20 @@ TEST(ExportCpp, HeaderFunctionsEvaluateLikeLibfitAtThousandsOfMu) {
         }
     }
     std::printf("export cpp: worst |header (float) - libfit (double)| = %.3g over 2001 mu, every material and model\n", worst);
+}
+
+// Issue 12 item 3: the exported functions (the GLSL text) are defined at μ a hair outside [0, 1] and give the value at
+// the end of the range (lazanyi-comp was NaN above 1; every model exceeded 1 below 0).
+TEST(ExportCpp, MuOutsideTheUnitIntervalGivesTheEndValue) {
+    const auto same = [](metalfit_shader::vec3 a, metalfit_shader::vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+    for (const metalfit_materials::Entry& e : metalfit_materials::all) {
+        SCOPED_TRACE(std::string(e.material) + " " + e.model);
+        const metalfit_shader::vec3 at0 = e.evaluate(0.0f), at1 = e.evaluate(1.0f);
+        EXPECT_TRUE(std::isfinite(at1.x) && std::isfinite(at1.y) && std::isfinite(at1.z));
+        for (float mu : {std::nextafter(0.0f, -1.0f), -0.01f}) EXPECT_TRUE(same(e.evaluate(mu), at0)) << mu;
+        for (float mu : {std::nextafter(1.0f, 2.0f), 1.0000001f, 1.01f}) EXPECT_TRUE(same(e.evaluate(mu), at1)) << mu;
+        EXPECT_LE(std::max({at0.x, at0.y, at0.z}), 1.0f + 1e-6f);  // F(0) = 1
+    }
 }
 
 TEST(ExportCpp, ConstantsAreTheRecordsWrittenParameters) {

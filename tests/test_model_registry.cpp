@@ -70,6 +70,30 @@ TYPED_TEST(EveryModel, GrazingIsOneAndFloatAgreesWithDouble) {
     }
 }
 
+// Issue 12 item 3: a cosine a hair outside [0, 1] (dot(N, V) = 1.0000001 is routine) gives the value at the end of
+// the range, in double, in float (what the shaders and exports compute) and through the runtime model: never NaN,
+// never above 1 where the curve at the ends is in [0, 1].
+TYPED_TEST(EveryModel, MuOutsideTheUnitIntervalGivesTheValueAtItsEnd) {
+    using M = TypeParam;
+    for (const ChannelParameters& p : sample_parameters<M>()) {
+        const std::vector<float> pf(p.begin(), p.end());
+        const double at0 = M::evaluate(p.data(), 0.0), at1 = M::evaluate(p.data(), 1.0);
+        const float at0f = M::evaluate(pf.data(), 0.0f), at1f = M::evaluate(pf.data(), 1.0f);
+        for (double mu : {std::nextafter(0.0, -1.0), -1e-7, -0.01, -1.0})
+            EXPECT_EQ(M::evaluate(p.data(), mu), at0) << "mu=" << mu;
+        for (double mu : {std::nextafter(1.0, 2.0), 1.0000001, 1.01, 2.0})
+            EXPECT_EQ(M::evaluate(p.data(), mu), at1) << "mu=" << mu;
+        for (float mu : {std::nextafter(0.0f, -1.0f), -0.01f}) EXPECT_EQ(M::evaluate(pf.data(), mu), at0f) << "mu=" << mu;
+        for (float mu : {std::nextafter(1.0f, 2.0f), 1.01f}) EXPECT_EQ(M::evaluate(pf.data(), mu), at1f) << "mu=" << mu;
+        EXPECT_EQ(model_of<M>().evaluate(std::span<const double>(p), 1.01), at1);
+        EXPECT_TRUE(std::isfinite(at1f) || !std::isfinite(at1));
+        // Just inside the ends the curve moves continuously from the end values (no kink hidden by the clamp).
+        EXPECT_NEAR(M::evaluate(p.data(), std::nextafter(1.0, 0.0)), at1, 1e-6 * std::max(1.0, std::abs(at1)));
+    }
+    // The GLSL function clamps too (the HLSL and C++ exports are its mechanical translations).
+    EXPECT_NE(model_of<M>().glsl_source().find("mu = mu < 0.0 ? 0.0 : (mu > 1.0 ? 1.0 : mu);"), std::string::npos);
+}
+
 TYPED_TEST(EveryModel, AppearsOnceInTheRuntimeList) {
     int found = 0;
     for (const Model* m : all_models()) found += m->id() == TypeParam::kId;

@@ -1,6 +1,8 @@
 // metalfit export: fitted (or closed-form) parameters written as JSON, GLSL, HLSL, MaterialX, OpenPBR and C++ files
 // (docs/export.md). Parses the options and calls libfit's export_files and write_export.
 #include <algorithm>
+#include <optional>
+#include <string_view>
 #include <thread>
 
 #include "colour_options.hpp"
@@ -10,6 +12,8 @@
 #include "libfit/io/catalog.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/export/export.hpp"
+#include "libfit/fit/budget.hpp"
+#include "libfit/fit/model_cost.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -23,12 +27,27 @@ struct ExportOptions {
     ColourOptions colour;
     int jobs = 0;  // 0: all cores
     std::filesystem::path output;
+    std::string budget_metric = "rel_rms";  // for --model best:BUDGET
+    std::filesystem::path costs;
 };
+
+constexpr std::string_view kBest = "best:";
 
 void run_export(const ExportOptions& o, const GlobalOptions& global) {
     // Every argument is checked before any work, so that a usage error costs nothing and writes nothing.
-    const ExportRequest request{parse_export_formats(o.formats), parse_model_list(o.models), parse_parameter_source(o.params),
-                                parse_gamut_policy(o.gamut)};
+    // --model best:BUDGET: every model is fitted, and the cheapest that meets the budget is exported (libfit/fit/budget).
+    const bool best = o.models.rfind(kBest, 0) == 0;
+    std::optional<Budget> budget;
+    if (best) {
+        if (o.selection.all || o.selection.materials().size() > 1)
+            throw UsageError("export: --model best:BUDGET chooses a model per material: give one material");
+        budget = parse_budget(o.models.substr(kBest.size()), parse_budget_metric(o.budget_metric));
+    } else if (!o.costs.empty()) {
+        throw UsageError("export: --costs needs --model best:BUDGET");
+    }
+    ExportRequest request{parse_export_formats(o.formats), best ? parse_model_list("all") : parse_model_list(o.models),
+                          parse_parameter_source(o.params), parse_gamut_policy(o.gamut)};
+    const CostTable costs = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
     const Catalog catalog = Catalog::load(global.data_dir);
     const auto loaders = o.selection.loaders(catalog, "export");
     const ColourSetup setup = resolve_colour_options(o.colour, global);
@@ -41,6 +60,15 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
     const FitRecordContext context = setup.record_context(error);
     for (const std::string& w : export_warnings(context, request)) warn(w);
+    if (budget) {
+        const BudgetChoice choice = choose_model(fits.front().models, costs, *budget);
+        if (!choice.chosen)
+            throw UsageError(fits.front().material.id + ": no model meets " + budget_text(*budget) + " in every channel (" +
+                             choice.summary() + "; cost table: " + choice.cost_source + ")");
+        warn(fits.front().material.id + ": --model best:" + o.models.substr(kBest.size()) + " chose " + choice.summary() +
+             "; cost table: " + choice.cost_source);
+        request.models = {choice.chosen};
+    }
     write_export(o.output, export_files(fits, context, request));
 }
 
@@ -49,7 +77,10 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
 std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<ExportOptions>();
     o->selection.add_options(app, true);
-    app.add_option("--model", o->models, "Models, comma-separated, or all: " + model_ids())->required();
+    app.add_option("--model", o->models, "Models, comma-separated, or all (" + model_ids() +
+                       "), or best:BUDGET (e.g. best:0.5%: the cheapest model meeting that error in every channel)")->required();
+    app.add_option("--budget-metric", o->budget_metric, "Metric of --model best:BUDGET: rel_rms, max_rel or de2000_max");
+    app.add_option("--costs", o->costs, "Cost table for --model best:BUDGET: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");
     // --params and --gamut are checked by libfit's parsers: one line naming the value, like every other error.
     app.add_option("--params", o->params, "Parameters written: fit (Ceres) or closed (best closed form)");
     app.add_option("--format", o->formats, "Formats, comma-separated, or all: json, glsl, hlsl, mtlx, openpbr, cpp")->required();

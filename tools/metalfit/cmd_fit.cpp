@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -14,7 +15,9 @@
 #include "progress.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/fit/budget.hpp"
 #include "libfit/fit/fit.hpp"
+#include "libfit/fit/model_cost.hpp"
 #include "libfit/fit/catalog_summary.hpp"
 #include "libfit/fit/fit_record.hpp"
 
@@ -33,6 +36,10 @@ struct FitOptions {
     bool timings = false;
     std::filesystem::path output;
     std::filesystem::path summary;  // --summary: the catalog summary (Markdown)
+    std::string pin;                // --pin F0
+    std::string budget;             // --budget 0.5%
+    std::string budget_metric = "rel_rms";
+    std::filesystem::path costs;    // --costs BENCH.json
 };
 
 std::string params_text(const Model& model, const ModelParameters& p) {
@@ -58,6 +65,8 @@ std::string pad(std::string s, std::size_t width) {
 // (in %), worst ΔE2000 and the parameters.
 std::string human_table(const MaterialFit& fit, const FitRecordContext& context) {
     const ErrorSettings& e = context.error;
+    std::size_t width = 14;  // the model column: 14, or wider for a longer model id
+    for (const ModelResult& r : fit.models) width = std::max(width, r.model->id().size() + 1);
     std::ostringstream s;
     s << fit.material.name << " (" << fit.material.id << ", " << fit.material.source << ") in " << context.space << ", "
       << to_string(context.observer) << ", " << to_string(context.illuminant) << ", adaptation "
@@ -67,11 +76,12 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
     s << "  F0 = (" << fixed(fit.F0.r, 5) << ", " << fixed(fit.F0.g, 5) << ", " << fixed(fit.F0.b, 5) << ")";
     if (fit.F0.max() > 1.0 || fit.F0.min() < 0.0) s << "  out of gamut, kept";
     s << "\n";
-    s << "  " << pad("model", 14) << pad("", 24) << pad("rel_rms % R/G/B", 23) << pad("abs_rms % R/G/B", 23)
+    if (context.constraints.pin_f0) s << "  F0 pinned: F(1) = R(1) in every channel (--pin F0)\n";
+    s << "  " << pad("model", width) << pad("", 24) << pad("rel_rms % R/G/B", 23) << pad("abs_rms % R/G/B", 23)
       << pad("ΔE00 max", 10) << "parameters\n";
     const auto row = [&](const std::string& model, const std::string& which, const EvaluatedParameters& v,
                          const Model& m, const std::string& note) {
-        s << "  " << pad(model, 14) << pad(which, 24);
+        s << "  " << pad(model, width) << pad(which, 24);
         std::string rel, abs;
         for (int c = 0; c < 3; ++c) {
             rel += (c ? " " : "") + fixed(100 * v.metrics.rel_rms[c], 2);
@@ -87,11 +97,14 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
             row(std::string(m.id()), "closed " + best.id, *best.value, m, "");
         }
         for (const ClosedFormResult& form : r.closed_forms)
-            if (!form.value) s << "  " << pad(r.best_closed ? "" : std::string(m.id()), 14) << "closed " << form.id
+            if (!form.value) s << "  " << pad(r.best_closed ? "" : std::string(m.id()), width) << "closed " << form.id
                                << " undefined: " << form.undefined << "\n";
         std::string note;
         for (int c = 0; c < 3; ++c)
             if (!r.fit.fallback[c].empty()) note += std::string(note.empty() ? "  (" : ", ") + "RGB"[c] + " kept closed " + r.fit.fallback[c];
+        for (int c = 0; c < 3; ++c)
+            if (!r.fit.unrepresentable[c].empty())
+                note += std::string(note.empty() ? "  (" : ", ") + "RGB"[c] + " cannot be represented within the bounds";
         if (!note.empty()) note += ")";
         row(r.best_closed ? "" : std::string(m.id()), "fit", r.fit.value, m, note);
     }
@@ -120,7 +133,16 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
 
     const ColourSetup setup = resolve_colour_options(o.colour, global);
     const ErrorSettings error{o.nodes, parse_error_metric(o.metric), parse_angular_weight(o.weight)};
-    const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models)};
+    FitConstraints constraints;
+    if (!o.pin.empty()) {
+        if (o.pin != "F0") throw UsageError("--pin: only F0 can be pinned (--pin F0)");
+        constraints.pin_f0 = true;
+    }
+    std::optional<Budget> budget;
+    if (!o.budget.empty()) budget = parse_budget(o.budget, parse_budget_metric(o.budget_metric));
+    else if (!o.costs.empty()) throw UsageError("--costs needs --budget");
+    const CostTable costs = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
+    const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models), constraints};
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     const auto start = std::chrono::steady_clock::now();
     TerminalProgress progress;
@@ -129,14 +151,23 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
 
-    const FitRecordContext context = setup.record_context(error);
+    FitRecordContext context = setup.record_context(error);
+    context.constraints = constraints;
+    std::vector<BudgetChoice> choices;
+    if (budget)
+        for (const MaterialFit& f : fits) choices.push_back(choose_model(f.models, costs, *budget));
     if (!o.summary.empty()) emit(catalog_summary_markdown(summarize_catalog(fits), context), o.summary);
     if (o.json) {
-        emit(fit_record(fits, context).dump(2) + "\n", o.output);
+        emit(fit_record(fits, context, budget ? &choices : nullptr).dump(2) + "\n", o.output);
         return;
     }
     std::string text;
-    for (const MaterialFit& f : fits) text += (text.empty() ? "" : "\n") + human_table(f, context);
+    for (std::size_t i = 0; i < fits.size(); ++i) {
+        text += (text.empty() ? "" : "\n") + human_table(fits[i], context);
+        if (budget)
+            text += "  budget " + budget_text(*budget) + " in every channel: " + choices[i].summary() + "\n  cost table: " +
+                    choices[i].cost_source + "\n";
+    }
     emit(text, o.output);
 }
 
@@ -157,6 +188,11 @@ std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout (- for stdout)");
     app.add_option("--summary", o->summary,
                    "Also write the catalog summary (Markdown: worst-channel rel_rms per material and model, median, worst) to this file");
+    app.add_option("--pin", o->pin, "Hold a value exactly: F0 (F(1) = R(1) in every channel, as physicallybased.info and Adobe tabulate)");
+    app.add_option("--budget", o->budget,
+                   "Per material, the cheapest model whose fit meets this error in every channel (0.5% or 0.005; a Delta E for de2000_max)");
+    app.add_option("--budget-metric", o->budget_metric, "Metric of --budget: rel_rms, max_rel or de2000_max (default: rel_rms)");
+    app.add_option("--costs", o->costs, "Cost table for --budget: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");
     return [o, &global] { run_fit(*o, global); };
 }
 

@@ -1,6 +1,9 @@
 #include "libfit/fit/fit.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <span>
+#include <cstdio>
 #include <limits>
 #include <memory>
 
@@ -36,7 +39,23 @@ private:
     std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+std::string number(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", x);
+    return text;
+}
+
 }  // namespace
+
+std::string outside_bounds(const Model& model, const ChannelParameters& params) {
+    const auto parameters = model.parameters();
+    std::string text;
+    for (std::size_t i = 0; i < parameters.size() && i < params.size(); ++i)
+        if (!(params[i] >= parameters[i].lower && params[i] <= parameters[i].upper))
+            text += (text.empty() ? "" : ", ") + std::string(parameters[i].name) + " = " + number(params[i]) +
+                    " outside [" + number(parameters[i].lower) + ", " + number(parameters[i].upper) + "]";
+    return text;
+}
 
 FitTimings& FitTimings::operator+=(const FitTimings& o) {
     reference += o.reference;
@@ -52,7 +71,10 @@ ClosedFormInput closed_form_input(const ReferenceCurve& curve, const Material& m
 }
 
 ModelResult fit_model(const Model& model, const SampledReference& reference, const ClosedFormInput& input,
-                      FitTimings* timings) {
+                      FitTimings* timings, const FitConstraints& constraints) {
+    if (constraints.pin_f0 && !model.can_pin_f0())
+        throw UsageError("--pin F0: model " + std::string(model.id()) + " cannot hold F(1) at a given value");
+    const RGB R1 = reference.dense().back().value;  // R(1): the dense grid ends at μ = 1
     const ErrorMetric metric = reference.settings().metric;
     FitTimings local;
     FitTimings& t = timings ? *timings : local;
@@ -64,10 +86,13 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
     const std::vector<ClosedForm> forms = model.closed_forms(input);
     clock.charge(t.closed_forms);
     for (const ClosedForm& form : forms) {
-        ClosedFormResult r{form.id, form.description, {}, {}};
+        ClosedFormResult r{form.id, form.description, {}, {}, {}};
         if (form.defined()) {
             const ModelParameters params = form.params();
             r.value = EvaluatedParameters{params, compute_metrics(model, params, reference)};
+            for (int c = 0; c < 3; ++c)
+                if (const std::string out = outside_bounds(model, params[c]); !out.empty())
+                    r.outside_bounds += (r.outside_bounds.empty() ? "" : "; ") + std::string(kChannelNames[c]) + ": " + out;
             const double worst = worst_channel(r.value->metrics.rms(metric));
             if (worst < best_worst) best_worst = worst, result.best_closed = result.closed_forms.size();
         } else {
@@ -80,20 +105,37 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
     FitResult& fit = result.fit;
     for (int c = 0; c < 3; ++c) {
         const ChannelTarget target = reference.target(c);
-        const auto starts = starts_for_channel(model, result.closed_forms, c, target);
-        ChannelFit channel = model.fit(target, starts);
+        auto starts = starts_for_channel(model, result.closed_forms, c, target);
+        ChannelConstraints channel_constraints;
+        if (constraints.pin_f0) {
+            // The unconstrained optimum is the best start of the pinned fit (from the others alone LM stops in local
+            // minima: rational on zinc, 19 % instead of 1.3 %).
+            channel_constraints.pinned_f0 = R1[c];
+            const ChannelFit free = model.fit(target, starts);
+            if (!free.params.empty()) starts.insert(starts.begin(), NamedStart{"unpinned optimum", free.params});
+        }
+        ChannelFit channel = model.fit(target, starts, channel_constraints);
         fit.value.params[c] = channel.params;
         fit.solver[c] = channel.solver;
     }
     clock.charge(t.ceres);
     fit.value.metrics = compute_metrics(model, fit.value.params, reference);
 
-    // Never worse than a closed form, channel by channel (a start clamped into the bounds can end up worse).
+    // Never worse than a closed form inside the bounds, channel by channel (a start clamped into the bounds can end up
+    // worse). A closed form outside the bounds that fits better is not kept (exports would carry parameters the model
+    // does not allow, issue 13 item 11): the record says that the model cannot represent the data.
+    // Under --pin F0 only closed forms that meet the pin compete.
+    const auto competes = [&](const ClosedFormResult& form, int c) {
+        if (!form.value) return false;
+        if (!constraints.pin_f0) return true;
+        return std::abs(model.evaluate(std::span<const double>(form.value->params[c]), 1.0) - R1[c]) <= 1e-12;
+    };
     bool replaced = false;
     for (int c = 0; c < 3; ++c) {
         double best = fit.value.metrics.rms(metric)[c];
         for (const ClosedFormResult& form : result.closed_forms)
-            if (form.value && form.value->metrics.rms(metric)[c] < best) {
+            if (competes(form, c) && form.value->metrics.rms(metric)[c] < best &&
+                outside_bounds(model, form.value->params[c]).empty()) {
                 best = form.value->metrics.rms(metric)[c];
                 fit.value.params[c] = form.value->params[c];
                 fit.fallback[c] = form.id;
@@ -101,6 +143,28 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
             }
     }
     if (replaced) fit.value.metrics = compute_metrics(model, fit.value.params, reference);
+    for (int c = 0; c < 3; ++c) {
+        const double fitted = fit.value.metrics.rms(metric)[c];
+        double best = fitted;
+        for (const ClosedFormResult& form : result.closed_forms) {
+            if (!competes(form, c) || !(form.value->metrics.rms(metric)[c] < best)) continue;
+            const std::string out = outside_bounds(model, form.value->params[c]);
+            if (out.empty()) continue;
+            best = form.value->metrics.rms(metric)[c];
+            fit.unrepresentable[c] = "closed " + form.id + " fits better (" + to_string(metric) + "_rms " +
+                                     number(best) + " against " + number(fitted) + ") but " + out +
+                                     ": the model cannot represent these data within its bounds";
+        }
+        // The pin computes a parameter, which the data may push out of its bounds (F0 ≥ 1 for n, k models).
+        if (constraints.pin_f0) {
+            const std::string out = outside_bounds(model, fit.value.params[c]);
+            const double F1 = model.evaluate(std::span<const double>(fit.value.params[c]), 1.0);
+            if (!out.empty() || !(std::abs(F1 - R1[c]) <= 1e-9))
+                fit.unrepresentable[c] = "--pin F0: F(1) = R(1) = " + number(R1[c]) + " needs " +
+                                         (out.empty() ? "a value the model cannot take (F(1) = " + number(F1) + ")" : out) +
+                                         ": the model cannot represent these data with F0 pinned";
+        }
+    }
     clock.charge(t.metrics);
     return result;
 }
@@ -121,7 +185,8 @@ MaterialFit fit_material(const Material& material, const Colorimetry& colorimetr
     // What --extrapolate did travels with the material's own warnings: the record, the CLI and the exports say it.
     result.material.warnings.insert(result.material.warnings.end(), curve.held_constant().begin(), curve.held_constant().end());
     const ClosedFormInput input = closed_form_input(curve, material, request.spectral);
-    for (const Model* model : request.models) result.models.push_back(fit_model(*model, reference, input, &timings));
+    for (const Model* model : request.models)
+        result.models.push_back(fit_model(*model, reference, input, &timings, request.constraints));
     result.timings = timings;
     return result;
 }

@@ -1,5 +1,8 @@
 #include "libfit/fit/fit_record.hpp"
 
+#include <algorithm>
+#include <stdexcept>
+
 #include "libfit/base/file_digest.hpp"
 #include "libfit/base/version.hpp"
 
@@ -62,6 +65,7 @@ Json evaluated_record(const Model& model, const EvaluatedParameters& value) {
               {"de2000_mean", m.de2000_mean},
               {"de2000_max", m.de2000_max},
               {"albedo_err", per_channel(m.albedo_err)}}},
+            {"err_f0", per_channel(m.err_f0)},
             {"metrics_at_mu",
              {{"max_rel", per_channel(m.max_rel_mu)},
               {"max_abs", per_channel(m.max_abs_mu)},
@@ -77,7 +81,10 @@ Json model_record(const ModelResult& result) {
     std::string all_undefined;
     for (const ClosedFormResult& form : result.closed_forms) {
         Json j = {{"description", form.description}};
-        if (form.value) j.update(evaluated_record(model, *form.value));
+        if (form.value) {
+            j.update(evaluated_record(model, *form.value));
+            if (!form.outside_bounds.empty()) j["outside_bounds"] = form.outside_bounds;
+        }
         else {
             j["undefined"] = form.undefined;
             all_undefined += (all_undefined.empty() ? "" : "; ") + form.id + ": " + form.undefined;
@@ -94,12 +101,40 @@ Json model_record(const ModelResult& result) {
     }
     Json fit = evaluated_record(model, result.fit.value);
     fit["solver"] = solver_json(result.fit);
+    // Only where the model cannot represent the data within its bounds (older records had no such key).
+    if (std::any_of(result.fit.unrepresentable.begin(), result.fit.unrepresentable.end(),
+                    [](const std::string& u) { return !u.empty(); })) {
+        Json unrepresentable = Json::array();
+        for (const std::string& u : result.fit.unrepresentable) unrepresentable.push_back(u.empty() ? Json(nullptr) : Json(u));
+        fit["unrepresentable"] = unrepresentable;
+    }
     return {{"title", model.title()}, {"parameters", names}, {"closed", closed}, {"closed_forms", forms}, {"fit", fit}};
 }
 
-Json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContext& context) {
+Json budget_record(const BudgetChoice& choice) {
+    Json candidates = Json::array();
+    for (const BudgetCandidate& c : choice.candidates)
+        candidates.push_back({{"model", c.model->id()},
+                              {"cost", c.cost ? Json(*c.cost) : Json(nullptr)},
+                              {"value", c.value},
+                              {"qualifies", c.qualifies},
+                              {"reason", c.reason.empty() ? Json(nullptr) : Json(c.reason)}});
+    return {{"metric", to_string(choice.budget.metric)},
+            {"limit", choice.budget.limit},
+            {"cost_table", choice.cost_source},
+            {"cost_unit", choice.cost_unit},
+            {"chosen", choice.chosen ? Json(choice.chosen->id()) : Json(nullptr)},
+            {"summary", choice.summary()},
+            {"candidates", candidates}};
+}
+
+Json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContext& context,
+                const std::vector<BudgetChoice>* budgets) {
+    if (budgets && budgets->size() != materials.size())
+        throw std::logic_error("fit_record: one budget choice per material");
     Json materials_json = Json::object();
-    for (const MaterialFit& m : materials) {
+    for (std::size_t index = 0; index < materials.size(); ++index) {
+        const MaterialFit& m = materials[index];
         Json out_of_gamut = Json::array();
         for (int c = 0; c < 3; ++c)
             if (m.F0[c] > 1.0 || m.F0[c] < 0.0) out_of_gamut.push_back(kChannelNames[c]);
@@ -113,9 +148,10 @@ Json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContex
                                          {"white_raw_rgb", rgb_json(m.raw_white)},
                                          {"warnings", m.material.warnings},
                                          {"models", models}};
+        if (budgets) materials_json[m.material.id]["budget"] = budget_record((*budgets)[index]);
     }
     const ErrorSettings& e = context.error;
-    return {{"schema", kFitRecordSchema},
+    Json record = {{"schema", kFitRecordSchema},
             {"provenance",
              {{"metalfit_version", METALFIT_VERSION},
               {"cmf", to_string(context.observer)},
@@ -136,6 +172,13 @@ Json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContex
               {"metric", to_string(e.metric)},
               {"weight", to_string(e.weight)}}},
             {"materials", materials_json}};
+    // Only when a constraint is on, so that unconstrained records keep their keys.
+    if (context.constraints.pin_f0) record["provenance"]["constraints"] = {{"pin_f0", true}};
+    if (budgets && !budgets->empty())
+        record["provenance"]["budget"] = {{"metric", to_string(budgets->front().budget.metric)},
+                                          {"limit", budgets->front().budget.limit},
+                                          {"cost_table", budgets->front().cost_source}};
+    return record;
 }
 
 }  // namespace metalfit

@@ -45,6 +45,11 @@ Metrics compute_metrics(const Model& model, const ModelParameters& params, const
         m.rel_rms[c] = rel_defined ? std::sqrt(rel_sum[c]) : nan;
         if (!rel_defined) m.max_rel[c] = m.max_rel_mu[c] = nan;
     }
+    // The dense grid ends at μ = 1 exactly (SampledReference).
+    const SampledReference::Sample& normal = reference.dense().back();
+    const RGB at_normal = model.evaluate(params, normal.mu);
+    for (int c = 0; c < 3; ++c)
+        m.err_f0[c] = normal.value[c] > 0.0 ? at_normal[c] / normal.value[c] - 1.0 : nan;
     return m;
 }
 

@@ -7,9 +7,13 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <stdexcept>
 #include <string>
+#include <array>
 
 #include "libfit/models/model.hpp"
+#include "libfit/models/registry.hpp"
+#include <vector>
 
 namespace metalfit::detail {
 
@@ -28,6 +32,25 @@ struct CurveResidual {
     }
 };
 
+// The same with F(1) pinned (--pin F0): the pinned parameter is recomputed from the others before each evaluation
+// (its own value, held constant by the solver, is ignored), so the derivatives carry the constraint.
+template <class M>
+struct PinnedCurveResidual {
+    const ChannelTarget* target;
+    double F0;
+
+    template <class T>
+    bool operator()(const T* params, T* residuals) const {
+        std::array<T, M::kParameters.size()> q;
+        for (std::size_t i = 0; i < q.size(); ++i) q[i] = params[i];
+        q[M::kPinnedParameter] = M::pinned_value(q.data(), T(F0));
+        const auto n = target->mu.size();
+        for (std::size_t i = 0; i < n; ++i)
+            residuals[i] = T(target->scale[i]) * (M::evaluate(q.data(), T(target->mu[i])) - T(target->value[i]));
+        return true;
+    }
+};
+
 template <class M>
 ChannelParameters clamp_to_bounds(ChannelParameters p) {
     for (std::size_t i = 0; i < M::kParameters.size(); ++i)
@@ -38,7 +61,8 @@ ChannelParameters clamp_to_bounds(ChannelParameters p) {
 // Fits from every start and keeps the lowest final cost (the first one on ties, so the result does not depend
 // on anything but the starts' order).
 template <class M>
-ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> starts) {
+ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> starts,
+                       const ChannelConstraints& constraints) {
     constexpr int kCount = static_cast<int>(M::kParameters.size());
     ceres::Solver::Options options;
     options.minimizer_type = ceres::TRUST_REGION;
@@ -56,10 +80,26 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
     for (std::size_t s = 0; s < starts.size(); ++s) {
         ChannelParameters x = clamp_to_bounds<M>(starts[s].params);
         ceres::Problem problem;
-        auto* cost = new ceres::AutoDiffCostFunction<CurveResidual<M>, ceres::DYNAMIC, kCount>(
-            new CurveResidual<M>{&target}, static_cast<int>(target.mu.size()));
-        problem.AddResidualBlock(cost, nullptr, x.data());
+        const int residuals = static_cast<int>(target.mu.size());
+        int pinned = -1;
+        if constexpr (PinnableF0<M>) {
+            if (constraints.pinned_f0) {
+                pinned = static_cast<int>(M::kPinnedParameter);
+                problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PinnedCurveResidual<M>, ceres::DYNAMIC, kCount>(
+                                             new PinnedCurveResidual<M>{&target, *constraints.pinned_f0}, residuals),
+                                         nullptr, x.data());
+                if (kCount > 1) problem.SetManifold(x.data(), new ceres::SubsetManifold(kCount, {pinned}));
+                else problem.SetParameterBlockConstant(x.data());
+            }
+        }
+        if (constraints.pinned_f0 && pinned < 0)
+            throw std::logic_error(std::string(M::kId) + " cannot pin F0");
+        if (pinned < 0)
+            problem.AddResidualBlock(new ceres::AutoDiffCostFunction<CurveResidual<M>, ceres::DYNAMIC, kCount>(
+                                         new CurveResidual<M>{&target}, residuals),
+                                     nullptr, x.data());
         for (int i = 0; i < kCount; ++i) {
+            if (i == pinned) continue;
             problem.SetParameterLowerBound(x.data(), i, M::kParameters[i].lower);
             problem.SetParameterUpperBound(x.data(), i, M::kParameters[i].upper);
         }
@@ -70,6 +110,8 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         double final_cost = std::numeric_limits<double>::quiet_NaN();
         problem.Evaluate(ceres::Problem::EvaluateOptions(), &final_cost, nullptr, nullptr, nullptr);
         if (!std::isfinite(final_cost)) continue;
+        if constexpr (PinnableF0<M>)
+            if (pinned >= 0) x[M::kPinnedParameter] = M::pinned_value(x.data(), *constraints.pinned_f0);
         if (final_cost < best.solver.final_cost) {
             best.params = x;
             best.solver.start = starts[s].name;

@@ -30,8 +30,19 @@ public:
         if constexpr (requires { M::target_starts(target); }) return M::target_starts(target);
         else return {};
     }
-    ChannelFit fit(const ChannelTarget& target, std::span<const NamedStart> starts) const override {
-        return detail::fit_channel<M>(target, starts);
+    ChannelFit fit(const ChannelTarget& target, std::span<const NamedStart> starts,
+                   const ChannelConstraints& constraints) const override {
+        return detail::fit_channel<M>(target, starts, constraints);
+    }
+    using Model::fit;
+    bool can_pin_f0() const override { return PinnableF0<M>; }
+    std::size_t pinned_parameter() const override {
+        if constexpr (PinnableF0<M>) return M::kPinnedParameter;
+        else throw std::logic_error(std::string(M::kId) + " cannot pin F0");
+    }
+    void pin_f0(std::span<double> params, double F0) const override {
+        if constexpr (PinnableF0<M>) params[M::kPinnedParameter] = M::pinned_value(params.data(), F0);
+        else throw std::logic_error(std::string(M::kId) + " cannot pin F0");
     }
     std::string_view glsl_function() const override { return M::kGlslFunction; }
     std::span<const std::string_view> glsl_files() const override { return M::kGlslFiles; }

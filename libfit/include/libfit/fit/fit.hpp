@@ -27,14 +27,25 @@ struct ClosedFormResult {
     std::string description;
     std::optional<EvaluatedParameters> value;  // empty when undefined
     std::string undefined;                     // why ("red: alpha undefined: ...")
+    // Where a defined closed form lies outside the model's fit bounds ("red: g = 1.03 outside [0, 1]"), else empty:
+    // such a form is reported, never taken as the fit's fallback.
+    std::string outside_bounds;
 };
 
 struct FitResult {
     EvaluatedParameters value;
     std::array<SolverSummary, 3> solver;
-    // Per channel: the closed form kept because no start of the fit beat it ("" when the fit won).
+    // Per channel: the closed form kept because no start of the fit beat it ("" when the fit won). Only a closed
+    // form inside the model's bounds is kept.
     std::array<std::string, 3> fallback;
+    // Per channel: a closed form outside the bounds that fits better than the fit, i.e. the model cannot represent the
+    // data within its bounds ("closed nk-650-550-450 fits better (rel_rms 0.0123 against 0.0150) but g = 1.03 is
+    // outside [0, 1]"); "" otherwise.
+    std::array<std::string, 3> unrepresentable;
 };
+
+// Where a channel's parameters leave the model's bounds ("g = 1.03 outside [0, 1]"), or "" when they are inside.
+std::string outside_bounds(const Model& model, const ChannelParameters& params);
 
 struct ModelResult {
     const Model* model = nullptr;
@@ -57,14 +68,23 @@ struct FitTimings {
 // The closed-form input of a material: its reference curve and its measured η(λ).
 ClosedFormInput closed_form_input(const ReferenceCurve& curve, const Material& material, SpectralOptions options);
 
+// Constraints of a fit (docs/fitting.md, "Constraints").
+struct FitConstraints {
+    // --pin F0: F(1) = R(1) exactly in every channel (the convention of physicallybased.info and Adobe's tables);
+    // closed forms that do not meet it are never kept as fallbacks.
+    bool pin_f0 = false;
+    bool operator==(const FitConstraints&) const = default;
+};
+
 // Requires the chosen metric to be defined on the reference (see SampledReference::rel_undefined).
 ModelResult fit_model(const Model& model, const SampledReference& reference, const ClosedFormInput& input,
-                      FitTimings* timings = nullptr);
+                      FitTimings* timings = nullptr, const FitConstraints& constraints = {});
 
 struct MaterialFitRequest {
     SpectralOptions spectral;
     ErrorSettings error;
     std::vector<const Model*> models;
+    FitConstraints constraints = {};
 };
 
 struct MaterialFit {

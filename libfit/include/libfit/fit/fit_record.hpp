@@ -10,6 +10,7 @@
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
 #include "libfit/color/convention.hpp"
+#include "libfit/fit/budget.hpp"
 #include "libfit/fit/fit.hpp"
 
 namespace metalfit {
@@ -27,9 +28,17 @@ struct FitRecordContext {
     Adaptation adaptation = Adaptation::bradford;  // as asked (docs/colour.md)
     bool adapted = false;                          // whether it changed anything (false for D65)
     Convention convention = Convention::metalfit;
+    FitConstraints constraints = {};
 };
 
-nlohmann::ordered_json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContext& context);
+// `budgets`, when given, holds one choice per material (in the order of `materials`): each material's record then has
+// a "budget" (budget_record) and the provenance the budget and its cost table.
+nlohmann::ordered_json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContext& context,
+                                  const std::vector<BudgetChoice>* budgets = nullptr);
+
+// {"metric", "limit", "cost_table", "cost_unit", "chosen": id or null, "summary", "candidates": [{"model", "cost",
+// "value", "qualifies", "reason"}]} (docs/fit-record.md).
+nlohmann::ordered_json budget_record(const BudgetChoice& choice);
 
 // {"params": {name: [r, g, b]}, "metrics": the seven keys of DESIGN.md, "metrics_at_mu": where the maxima are}:
 // how every set of evaluated parameters (fit, closed form, exported values) appears in records.

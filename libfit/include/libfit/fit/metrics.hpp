@@ -22,6 +22,9 @@ struct Metrics {
     double de2000_max = 0;    // over the dense grid and the nodes, and where
     double de2000_max_mu = 0;
     PerChannel albedo_err{};  // ∫ 2μ (M − R) dμ, signed (energy the model adds)
+    // The error at normal incidence, signed and relative: M(1) / R(1) − 1 (NaN where R(1) ≤ 0). Not one of the seven
+    // metrics of DESIGN.md: reported beside them (docs/fit-record.md), for the pinned-F0 convention (--pin F0).
+    PerChannel err_f0{};
 
     // The metric the fit minimises, per channel.
     const PerChannel& rms(ErrorMetric metric) const { return metric == ErrorMetric::rel ? rel_rms : abs_rms; }

@@ -109,6 +109,12 @@ struct NamedStart {
     ChannelParameters params;
 };
 
+// Constraints of one channel's fit.
+struct ChannelConstraints {
+    // --pin F0: F(1) equals this value exactly (the pinned parameter is computed from the others, Model::pin_f0).
+    std::optional<double> pinned_f0;
+};
+
 class Model {
 public:
     virtual ~Model() = default;
@@ -129,7 +135,17 @@ public:
     // of the others: variable projection). Empty for most models.
     virtual std::vector<ChannelParameters> target_starts(const ChannelTarget& target) const = 0;
     // Ceres fit of one channel from each start (clamped into the bounds); the best result wins.
-    virtual ChannelFit fit(const ChannelTarget& target, std::span<const NamedStart> starts) const = 0;
+    virtual ChannelFit fit(const ChannelTarget& target, std::span<const NamedStart> starts,
+                           const ChannelConstraints& constraints) const = 0;
+    ChannelFit fit(const ChannelTarget& target, std::span<const NamedStart> starts) const {
+        return fit(target, starts, ChannelConstraints{});
+    }
+
+    // --pin F0: whether the model can hold F(1) at a given value, which parameter it computes for it, and that value
+    // written into params (which may then lie outside the parameter's bounds: the data need another F(1)).
+    virtual bool can_pin_f0() const = 0;
+    virtual std::size_t pinned_parameter() const = 0;  // requires can_pin_f0()
+    virtual void pin_f0(std::span<double> params, double F0) const = 0;  // requires can_pin_f0()
 
     // GLSL: the name of the model's function, vec3 <name>(vec3 param..., float mu), and the source text of it and
     // of every function it calls (the .glsl files of the model folders, embedded at build time).

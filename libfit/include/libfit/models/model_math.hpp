@@ -5,6 +5,16 @@
 
 namespace metalfit::model_math {
 
+// μ clamped into [0, 1]: every model evaluates its curve at the clamped μ, so that a cosine a hair outside [0, 1]
+// (dot(N, V) = 1.0000001 is routine in shaders) gives the value at the end of the range, never NaN or F > 1 (the
+// GLSL functions clamp the same way). NaN stays NaN.
+template <class T>
+T clamp_mu(const T& mu) {
+    if (mu < T(0)) return T(0);
+    if (mu > T(1)) return T(1);
+    return mu;
+}
+
 // (1 − μ)^5, the Schlick weight, by multiplication (as the GLSL does).
 template <class T>
 T schlick_weight(const T& mu) {

@@ -28,7 +28,8 @@ struct ModelList {
 
 // The registry, in the order of listings, records, exports and benchmark tables.
 using Registry = ModelList<models::Schlick, models::Lazanyi, models::LazanyiComp, models::F82Tint,
-                           models::ConductorRgb, models::Gulbrandsen>;
+                           models::ConductorRgb, models::Gulbrandsen, models::SchlickCompLinear, models::SchlickComp,
+                           models::SchlickCompGeneral, models::Rational>;
 
 // Calls f.template operator()<M>() for every model M of a list, in order.
 template <class... M, class F>
@@ -66,6 +67,14 @@ concept ModelDefinition = requires(const double* p, double mu, const float* pf, 
     { M::closed_forms(input) } -> std::same_as<std::vector<ClosedForm>>;
     { M::neutral_starts() } -> std::same_as<std::vector<ChannelParameters>>;
     { M::kMaterialx } -> std::convertible_to<MaterialxForm>;
+};
+
+// Whether M can pin F(1) to a given F0 (--pin F0): parameter kPinnedParameter is then a function of the others and
+// F0, pinned_value (templated like evaluate), with evaluate(p, 1) = F0 wherever the value lies inside the bounds.
+template <class M>
+concept PinnableF0 = requires(const double* p, double F0) {
+    { M::kPinnedParameter } -> std::convertible_to<std::size_t>;
+    { M::pinned_value(p, F0) } -> std::same_as<double>;
 };
 
 // Whether M is an F82-tint curve: it maps its parameters to (F0, tint) of the same curve.

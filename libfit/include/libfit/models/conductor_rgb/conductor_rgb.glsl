@@ -4,6 +4,7 @@
 //   F_s = (r − 2aμ + μ²) / (r + 2aμ + μ²),  F_p = F_s (μ²r − 2as²μ + s⁴) / (μ²r + 2as²μ + s⁴).
 // Takes k² (r uses 4n²k²) and nk (only where t < 0, a = nk / b), as libfit/include/libfit/model_math.hpp does.
 vec3 metalfit_conductor_fresnel(vec3 n, vec3 k2, vec3 nk, float mu) {
+    mu = mu < 0.0 ? 0.0 : (mu > 1.0 ? 1.0 : mu);  // a cosine a hair outside [0, 1] gives the end value (model_math::clamp_mu)
     float s2 = 1.0 - mu * mu;
     vec3 t = n * n - k2 - s2;
     vec3 r = sqrt(t * t + 4.0 * n * n * k2);
@@ -18,5 +19,6 @@ vec3 metalfit_conductor_fresnel(vec3 n, vec3 k2, vec3 nk, float mu) {
 }
 
 vec3 metalfit_conductor_rgb(vec3 n, vec3 k, float mu) {
+    mu = mu < 0.0 ? 0.0 : (mu > 1.0 ? 1.0 : mu);  // a cosine a hair outside [0, 1] gives the end value (model_math::clamp_mu)
     return metalfit_conductor_fresnel(n, k * k, n * k, mu);
 }

@@ -21,9 +21,19 @@ struct ConductorRgb {
     static constexpr std::string_view kGlslFunction = "metalfit_conductor_rgb";
     static constexpr std::array<std::string_view, 1> kGlslFiles{"conductor_rgb"};
     static constexpr MaterialxForm kMaterialx = MaterialxForm::conductor_bsdf;
+    // --pin F0: F(1) = F0(n, k) = F0 with k² = (F0 (n + 1)² − (n − 1)²) / (1 − F0) for the fitted n (k = 0 below the
+    // dielectric F0 of that n; F0 ≥ 1 has no k: the bound, and the record reports the pin as not met).
+    static constexpr std::size_t kPinnedParameter = 1;
+    template <class T>
+    static T pinned_value(const T* p, const T& F0) {
+        if (!(F0 < T(1))) return T(kParameters[1].upper);
+        const T& n = p[0];
+        return model_math::sqrt_or_zero((F0 * (n + T(1)) * (n + T(1)) - (n - T(1)) * (n - T(1))) / (T(1) - F0));
+    }
 
     template <class T>
-    static T evaluate(const T* p, const T& mu) {
+    static T evaluate(const T* p, const T& mu_in) {
+        const T mu = model_math::clamp_mu(mu_in);
         return model_math::conductor_fresnel(p[0], p[1] * p[1], p[0] * p[1], mu);
     }
 

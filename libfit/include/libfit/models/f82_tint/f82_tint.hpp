@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "libfit/models/model.hpp"
+#include "libfit/models/model_math.hpp"
 #include "libfit/models/schlick/schlick.hpp"
 
 namespace metalfit::models {
@@ -22,9 +23,14 @@ struct F82Tint {
     static constexpr std::array<std::string_view, 2> kGlslFiles{"schlick", "f82_tint"};
     static constexpr MaterialxForm kMaterialx = MaterialxForm::generalized_schlick;
     static std::array<double, 2> to_f82_tint(const double* p) { return {p[0], p[1]}; }
+    // --pin F0: F(1) = F0.
+    static constexpr std::size_t kPinnedParameter = 0;
+    template <class T>
+    static T pinned_value(const T*, const T& F0) { return F0; }
 
     template <class T>
-    static T evaluate(const T* p, const T& mu) {
+    static T evaluate(const T* p, const T& mu_in) {
+        const T mu = model_math::clamp_mu(mu_in);
         constexpr double mu_bar = 1.0 / 7.0;
         constexpr double m_bar = 1.0 - mu_bar;
         constexpr double m6_bar = m_bar * m_bar * m_bar * m_bar * m_bar * m_bar;

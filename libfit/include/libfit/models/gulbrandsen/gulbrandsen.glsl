@@ -18,6 +18,7 @@ vec3 metalfit_gulbrandsen_k2(vec3 r, vec3 g) {
 }
 
 vec3 metalfit_gulbrandsen(vec3 r, vec3 g, float mu) {
+    mu = mu < 0.0 ? 0.0 : (mu > 1.0 ? 1.0 : mu);  // a cosine a hair outside [0, 1] gives the end value (model_math::clamp_mu)
     vec3 n = metalfit_gulbrandsen_n(r, g);
     vec3 k2 = metalfit_gulbrandsen_k2(r, g);
     return metalfit_conductor_fresnel(n, k2, n * sqrt(k2), mu);

@@ -22,6 +22,10 @@ struct Gulbrandsen {
     static constexpr std::string_view kGlslFunction = "metalfit_gulbrandsen";
     static constexpr std::array<std::string_view, 2> kGlslFiles{"conductor_rgb", "gulbrandsen"};
     static constexpr MaterialxForm kMaterialx = MaterialxForm::artistic_ior;
+    // --pin F0: F(1) = r.
+    static constexpr std::size_t kPinnedParameter = 0;
+    template <class T>
+    static T pinned_value(const T*, const T& F0) { return F0; }
 
     // n = g n_min + (1 − g) n_max with n_min = (1 − r)/(1 + r), n_max = (1 + √r)/(1 − √r).
     template <class T>
@@ -43,7 +47,8 @@ struct Gulbrandsen {
     }
 
     template <class T>
-    static T evaluate(const T* p, const T& mu) {
+    static T evaluate(const T* p, const T& mu_in) {
+        const T mu = model_math::clamp_mu(mu_in);
         const T n = n_of(p[0], p[1]);
         const T k2 = k2_of(p[0], p[1]);
         return model_math::conductor_fresnel(n, k2, n * model_math::sqrt_or_zero(k2), mu);

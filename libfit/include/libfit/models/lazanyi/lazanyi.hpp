@@ -22,6 +22,15 @@ struct Lazanyi {
     static constexpr std::string_view kGlslFunction = "metalfit_lazanyi";
     static constexpr std::array<std::string_view, 1> kGlslFiles{"lazanyi"};
     static constexpr MaterialxForm kMaterialx = MaterialxForm::generalized_schlick;
+    // --pin F0: F(1) = F0(n, k) = F0 with k² = (F0 (n + 1)² − (n − 1)²) / (1 − F0) for the fitted n (k = 0 below the
+    // dielectric F0 of that n; F0 ≥ 1 has no k: the bound, and the record reports the pin as not met).
+    static constexpr std::size_t kPinnedParameter = 1;
+    template <class T>
+    static T pinned_value(const T* p, const T& F0) {
+        if (!(F0 < T(1))) return T(kParameters[1].upper);
+        const T& n = p[0];
+        return model_math::sqrt_or_zero((F0 * (n + T(1)) * (n + T(1)) - (n - T(1)) * (n - T(1))) / (T(1) - F0));
+    }
     // F* is Schlick with F0 = F0(n, k): F82-tint with that F0 and tint 1.
     static std::array<double, 2> to_f82_tint(const double* p) {
         const double n = p[0], k2 = p[1] * p[1];
@@ -29,7 +38,8 @@ struct Lazanyi {
     }
 
     template <class T>
-    static T evaluate(const T* p, const T& mu) {
+    static T evaluate(const T* p, const T& mu_in) {
+        const T mu = model_math::clamp_mu(mu_in);
         const T& n = p[0];
         const T k2 = p[1] * p[1];
         return ((n - T(1)) * (n - T(1)) + k2 + T(4) * n * model_math::schlick_weight(mu)) /

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "libfit/models/model.hpp"
+#include "libfit/models/model_math.hpp"
 #include "libfit/models/lazanyi/lazanyi.hpp"
 
 namespace metalfit::models {
@@ -24,9 +25,14 @@ struct LazanyiComp {
     static constexpr std::array<std::string_view, 2> kGlslFiles{"lazanyi", "lazanyi_comp"};
     static constexpr MaterialxForm kMaterialx = MaterialxForm::stand_in;
     static constexpr std::string_view kMaterialxStandIn = "a BSDF's Fresnel cannot take mu (1 - mu)^alpha";
+    // --pin F0: as Lazányi's (the compensation vanishes at μ = 1).
+    static constexpr std::size_t kPinnedParameter = Lazanyi::kPinnedParameter;
+    template <class T>
+    static T pinned_value(const T* p, const T& F0) { return Lazanyi::pinned_value(p, F0); }
 
     template <class T>
-    static T evaluate(const T* p, const T& mu) {
+    static T evaluate(const T* p, const T& mu_in) {
+        const T mu = model_math::clamp_mu(mu_in);
         using std::pow;
         return Lazanyi::evaluate(p, mu) - p[2] * mu * pow(T(1) - mu, p[3]);
     }

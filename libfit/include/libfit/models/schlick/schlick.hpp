@@ -21,9 +21,14 @@ struct Schlick {
     static constexpr MaterialxForm kMaterialx = MaterialxForm::generalized_schlick;
     // Schlick is F82-tint with tint 1.
     static std::array<double, 2> to_f82_tint(const double* p) { return {p[0], 1.0}; }
+    // --pin F0: F(1) = F0.
+    static constexpr std::size_t kPinnedParameter = 0;
+    template <class T>
+    static T pinned_value(const T*, const T& F0) { return F0; }
 
     template <class T>
-    static T evaluate(const T* p, const T& mu) {
+    static T evaluate(const T* p, const T& mu_in) {
+        const T mu = model_math::clamp_mu(mu_in);
         return p[0] + (T(1) - p[0]) * model_math::schlick_weight(mu);
     }
 

@@ -1,0 +1,60 @@
+// The cheapest model for an error budget: given a material's fits of several models, a cost table and a budget on
+// one metric, the model of lowest cost whose fit meets the budget in every channel, or none with the reason of each
+// model. `metalfit fit --budget`, `metalfit export --model best:BUDGET` and the report call choose_model().
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "libfit/fit/fit.hpp"
+#include "libfit/fit/model_cost.hpp"
+
+namespace metalfit {
+
+// The metric a budget bounds: the worst channel's rel_rms or max_rel (fractions), or the worst ΔE2000 (units of ΔE).
+enum class BudgetMetric { rel_rms, max_rel, de2000_max };
+std::string to_string(BudgetMetric metric);
+BudgetMetric parse_budget_metric(const std::string& text);  // "rel_rms" | "max_rel" | "de2000_max", else UsageError
+
+struct Budget {
+    double limit = 0;  // a fraction for rel_rms / max_rel (0.005 = 0.5 %), ΔE units for de2000_max
+    BudgetMetric metric = BudgetMetric::rel_rms;
+};
+// "0.5%" (a percentage) or "0.005" (a fraction) for rel_rms / max_rel; a plain number ("1.0") for de2000_max (a "%"
+// is then a UsageError). Non-finite or negative limits are UsageErrors.
+Budget parse_budget(const std::string& text, BudgetMetric metric);
+// "rel_rms <= 0.5 %" or "de2000_max <= 1"
+std::string budget_text(const Budget& budget);
+
+// The value of the budget's metric for a fit: max over R, G, B for rel_rms / max_rel (NaN if any is undefined), the
+// worst ΔE2000 otherwise.
+double budget_value(const Metrics& metrics, BudgetMetric metric);
+
+struct BudgetCandidate {
+    const Model* model = nullptr;
+    std::optional<double> cost;  // empty: the table has no cost for it
+    double value = 0;            // budget_value of its fit
+    bool qualifies = false;      // cost known and value <= limit
+    std::string reason;          // why it does not qualify ("" when it does)
+};
+
+struct BudgetChoice {
+    Budget budget;
+    std::string cost_source;  // CostTable::source
+    std::string cost_unit;
+    // Every model of the input, cheapest first (ties: the lower value, then the input's order); models without a cost
+    // last, in the input's order.
+    std::vector<BudgetCandidate> candidates;
+    // The chosen model: the first qualifying candidate; nullptr when none qualifies.
+    const Model* chosen = nullptr;
+
+    // One line: "schlick-comp-linear (21 SPIR-V ops, rel_rms 0.43 %)" or "none qualifies: best rel_rms is rational's
+    // 0.78 %".
+    std::string summary() const;
+};
+
+// Chooses among `results` (one material's ModelResults, e.g. MaterialFit::models).
+BudgetChoice choose_model(const std::vector<ModelResult>& results, const CostTable& costs, const Budget& budget);
+
+}  // namespace metalfit

@@ -1,0 +1,121 @@
+#include "libfit/fit/budget.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numeric>
+
+#include "libfit/base/errors.hpp"
+
+namespace metalfit {
+
+namespace {
+
+std::string number(double x, const char* format = "%.3g") {
+    char text[32];
+    std::snprintf(text, sizeof text, format, x);
+    return text;
+}
+
+bool is_fraction(BudgetMetric metric) { return metric != BudgetMetric::de2000_max; }
+
+std::string value_text(double value, BudgetMetric metric) {
+    if (std::isnan(value)) return "undefined";
+    return is_fraction(metric) ? number(100 * value) + " %" : number(value);
+}
+
+}  // namespace
+
+std::string to_string(BudgetMetric metric) {
+    switch (metric) {
+        case BudgetMetric::rel_rms: return "rel_rms";
+        case BudgetMetric::max_rel: return "max_rel";
+        case BudgetMetric::de2000_max: return "de2000_max";
+    }
+    return "?";
+}
+
+BudgetMetric parse_budget_metric(const std::string& text) {
+    if (text == "rel_rms") return BudgetMetric::rel_rms;
+    if (text == "max_rel") return BudgetMetric::max_rel;
+    if (text == "de2000_max") return BudgetMetric::de2000_max;
+    throw UsageError("unknown budget metric '" + text + "' (known: rel_rms, max_rel, de2000_max)");
+}
+
+Budget parse_budget(const std::string& text, BudgetMetric metric) {
+    const bool percent = !text.empty() && text.back() == '%';
+    const std::string digits = percent ? text.substr(0, text.size() - 1) : text;
+    char* end = nullptr;
+    const double value = digits.empty() ? std::nan("") : std::strtod(digits.c_str(), &end);
+    if (digits.empty() || end != digits.c_str() + digits.size() || !std::isfinite(value) || value < 0)
+        throw UsageError("budget '" + text + "': give a non-negative number, e.g. 0.5% or 0.005 (or 1.0 for de2000_max)");
+    if (percent && !is_fraction(metric))
+        throw UsageError("budget '" + text + "': de2000_max is in units of Delta E, not a percentage (e.g. --budget 1.0)");
+    return {percent ? value / 100 : value, metric};
+}
+
+std::string budget_text(const Budget& budget) {
+    return to_string(budget.metric) + " <= " + value_text(budget.limit, budget.metric);
+}
+
+double budget_value(const Metrics& metrics, BudgetMetric metric) {
+    switch (metric) {
+        case BudgetMetric::rel_rms: return worst_channel(metrics.rel_rms);
+        case BudgetMetric::max_rel: return worst_channel(metrics.max_rel);
+        case BudgetMetric::de2000_max: return metrics.de2000_max;
+    }
+    return std::nan("");
+}
+
+std::string BudgetChoice::summary() const {
+    const auto cost_text = [&](const BudgetCandidate& c) {
+        return c.cost ? number(*c.cost, "%.4g") + " " + cost_unit : std::string("no cost");
+    };
+    if (chosen) {
+        for (const BudgetCandidate& c : candidates)
+            if (c.model == chosen)
+                return std::string(chosen->id()) + " (" + cost_text(c) + ", " + to_string(budget.metric) + " " +
+                       value_text(c.value, budget.metric) + ")";
+    }
+    const BudgetCandidate* best = nullptr;
+    for (const BudgetCandidate& c : candidates)
+        if (!std::isnan(c.value) && (!best || c.value < best->value)) best = &c;
+    if (!best) return "none qualifies: no model has a defined " + to_string(budget.metric);
+    return "none qualifies: the lowest " + to_string(budget.metric) + " is " + std::string(best->model->id()) + "'s " +
+           value_text(best->value, budget.metric) + (best->cost ? "" : " (and it has no cost in the table)");
+}
+
+BudgetChoice choose_model(const std::vector<ModelResult>& results, const CostTable& costs, const Budget& budget) {
+    BudgetChoice choice{budget, costs.source, costs.unit, {}, nullptr};
+    for (const ModelResult& r : results) {
+        BudgetCandidate c;
+        c.model = r.model;
+        c.cost = costs.cost_of(r.model->id());
+        c.value = budget_value(r.fit.value.metrics, budget.metric);
+        if (!c.cost) c.reason = "no cost for " + std::string(r.model->id()) + " in " + costs.source;
+        else if (std::isnan(c.value)) c.reason = to_string(budget.metric) + " undefined";
+        else if (!(c.value <= budget.limit))
+            c.reason = to_string(budget.metric) + " " + value_text(c.value, budget.metric) + " > " +
+                       value_text(budget.limit, budget.metric);
+        c.qualifies = c.reason.empty();
+        choice.candidates.push_back(std::move(c));
+    }
+    // Cheapest first; ties by the lower value, then the input order (stable); no cost last.
+    std::stable_sort(choice.candidates.begin(), choice.candidates.end(), [](const BudgetCandidate& x, const BudgetCandidate& y) {
+        if (x.cost.has_value() != y.cost.has_value()) return x.cost.has_value();
+        if (!x.cost) return false;
+        if (*x.cost != *y.cost) return *x.cost < *y.cost;
+        const bool xn = std::isnan(x.value), yn = std::isnan(y.value);
+        if (xn != yn) return yn;
+        return !xn && x.value < y.value;
+    });
+    for (const BudgetCandidate& c : choice.candidates)
+        if (c.qualifies) {
+            choice.chosen = c.model;
+            break;
+        }
+    return choice;
+}
+
+}  // namespace metalfit

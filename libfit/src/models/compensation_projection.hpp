@@ -1,0 +1,51 @@
+// Variable projection for the compensated Schlick families F0 + (1 − F0) mᵖ − a μ m^α (internal): for fixed p and α
+// the curve is linear in (F0, a), solved exactly; a grid over α (and p) ranks the candidates, the best few become
+// starts of the Ceres fit.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "models/linear_least_squares.hpp"
+#include "libfit/models/model.hpp"
+
+namespace metalfit::detail {
+
+struct CompensationCandidate {
+    double cost, F0, power, a, alpha;
+};
+
+// Every α of a log-spaced grid over [alpha_lo, alpha_hi] (steps + 1 values) for each power p, solved exactly in
+// (F0, a) and clamped into [F0_lo, F0_hi] × [a_lo, a_hi]; sorted by cost (½ Σ residual²), best first.
+inline std::vector<CompensationCandidate> compensation_candidates(const ChannelTarget& t, const std::vector<double>& powers,
+                                                                  double alpha_lo, double alpha_hi, int steps,
+                                                                  double F0_lo, double F0_hi, double a_lo, double a_hi) {
+    std::vector<CompensationCandidate> candidates;
+    for (double power : powers)
+        for (int j = 0; j <= steps; ++j) {
+            const double alpha = alpha_lo * std::pow(alpha_hi / alpha_lo, double(j) / steps);
+            std::vector<std::vector<double>> A(2);
+            std::vector<double> y;
+            for (std::size_t i = 0; i < t.mu.size(); ++i) {
+                const double mu = t.mu[i], m = 1.0 - mu, w = std::pow(m, power), s = t.scale[i];
+                A[0].push_back(s * (1.0 - w));
+                A[1].push_back(-s * mu * std::pow(m, alpha));
+                y.push_back(s * (t.value[i] - w));
+            }
+            const auto x = linear_least_squares(A, y);
+            if (!x) continue;
+            const double F0 = std::clamp((*x)[0], F0_lo, F0_hi), a = std::clamp((*x)[1], a_lo, a_hi);
+            double cost = 0.0;
+            for (std::size_t i = 0; i < y.size(); ++i) {
+                const double r = A[0][i] * F0 + A[1][i] * a - y[i];
+                cost += 0.5 * r * r;
+            }
+            candidates.push_back({cost, F0, power, a, alpha});
+        }
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const CompensationCandidate& x, const CompensationCandidate& y) { return x.cost < y.cost; });
+    return candidates;
+}
+
+}  // namespace metalfit::detail
