@@ -13,7 +13,10 @@
 #include "libfit/color/display_transform.hpp"
 #include "libfit/fit/fit_batch.hpp"
 #include "libfit/io/catalog.hpp"
+#include "libfit/fit/budget.hpp"
+#include "libfit/fit/model_cost.hpp"
 #include "libfit/report/fail_above.hpp"
+#include "libfit/report/model_costs.hpp"
 #include "libfit/report/report.hpp"
 
 namespace metalfit::cli {
@@ -29,12 +32,18 @@ struct ReportOptions {
     int jobs = 0;
     std::string renders = "auto";
     std::string fail_above;
+    std::string budget;
+    std::string budget_metric = "rel_rms";
+    std::filesystem::path costs;
     std::filesystem::path output;
 };
 
 void run_report(const ReportOptions& o, const GlobalOptions& global) {
     const RenderMode render_mode = parse_render_mode(o.renders);
     const double fail_above = o.fail_above.empty() ? 0.0 : parse_relative_limit(o.fail_above, "--fail-above");  // 0: no gate
+    std::optional<Budget> budget;
+    if (!o.budget.empty()) budget = parse_budget(o.budget, parse_budget_metric(o.budget_metric));
+    const CostTable cost_table = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
     check_report_folder(o.output);  // before the fits, which take a while for --all
     const Catalog catalog = Catalog::load(global.data_dir);
     const auto loaders = o.selection.loaders(catalog, "report");
@@ -59,7 +68,7 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     if (!renders.sheet && render_mode == RenderMode::auto_) std::cerr << "metalfit: renders skipped: " << renders.skipped << "\n";
 
     const FitRecordContext context = setup.record_context(error);
-    const CostAndBudget cost;  // no cost table or budget yet (docs/report.md)
+    const CostAndBudget cost = report_costs(fits, cost_table, budget);
     const ReportInputs inputs{context, setup.colorimetry, setup.converter, display, catalog, cost, renders};
     write_report_folder(o.output, report_files(fits, inputs));
     std::cout << (o.output / "index.html").string() << "\n";
@@ -88,6 +97,11 @@ std::function<void()> add_report_command(CLI::App& app, const GlobalOptions& glo
     app.add_option("--fail-above", o->fail_above,
                    "After writing the report, exit with code 6 and one line per material/model/channel whose fitted "
                    "rel_rms is above REL (0.005 or 0.5%)");
+    app.add_option("--budget", o->budget,
+                   "Mark per material the cheapest model whose fit meets this error in every channel (0.5% or 0.005)");
+    app.add_option("--budget-metric", o->budget_metric, "Metric of --budget: rel_rms, max_rel or de2000_max");
+    app.add_option("--costs", o->costs,
+                   "Cost table: a `metalfit bench --json` report (default: the built-in SPIR-V op counts)");
     app.add_option("-o,--output", o->output, "Report folder (written as a whole; replaced if it exists)")->required();
     return [o, &global] { run_report(*o, global); };
 }

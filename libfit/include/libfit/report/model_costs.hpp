@@ -8,6 +8,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "libfit/fit/budget.hpp"
+#include "libfit/fit/model_cost.hpp"
 
 namespace metalfit {
 
@@ -24,8 +28,9 @@ struct ModelCosts {
     }
 };
 
-// A budget's choice for one material: the model marked as recommended, or none (with why).
-struct BudgetChoice {
+// A budget's mark on one material's page: the model recommended, or none (with why). Made from the fit stage's
+// BudgetChoice (libfit/fit/budget.hpp, choose_model) by report_costs().
+struct BudgetMark {
     std::optional<std::string> model;
     std::string note;  // "cheapest model whose worst channel meets 0.5 %", "no model meets 0.5 %"
 };
@@ -34,7 +39,11 @@ struct BudgetChoice {
 struct CostAndBudget {
     std::optional<ModelCosts> costs;
     std::optional<double> budget;                 // worst-channel rel_rms the choice had to meet
-    std::map<std::string, BudgetChoice> choices;  // material id → choice
+    std::map<std::string, BudgetMark> choices;  // material id → choice
 };
+
+// What the report shows for a cost table (the built-in SPIR-V op counts or a `metalfit bench --json` file) and, when
+// a budget is given, each material's choose_model() result.
+CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable& table, const std::optional<Budget>& budget);
 
 }  // namespace metalfit

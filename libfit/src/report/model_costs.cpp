@@ -1,0 +1,23 @@
+#include "libfit/report/model_costs.hpp"
+
+namespace metalfit {
+
+CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable& table, const std::optional<Budget>& budget) {
+    CostAndBudget out;
+    ModelCosts costs{table.source, table.unit, {}};
+    for (const ModelCost& c : table.costs) costs.per_model.emplace(c.model, c.cost);
+    out.costs = std::move(costs);
+    if (!budget) return out;
+    out.budget = budget->limit;
+    for (const MaterialFit& fit : fits) {
+        const BudgetChoice choice = choose_model(fit.models, table, *budget);
+        BudgetMark mark;
+        if (choice.chosen) mark.model = std::string(choice.chosen->id());
+        mark.note = (choice.chosen ? "cheapest model meeting " + budget_text(*budget) + ": " : budget_text(*budget) + ": ") +
+                    choice.summary();
+        out.choices[fit.material.id] = std::move(mark);
+    }
+    return out;
+}
+
+}  // namespace metalfit
