@@ -342,3 +342,67 @@ TEST_F(Cli, FitOutputIsWrittenWholeOrNotAtAll) {
 }
 
 }  // namespace
+
+namespace {
+
+// Every file under `dir`, recursively, with its text.
+std::vector<std::pair<fs::path, std::string>> files_under(const fs::path& dir) {
+    std::vector<std::pair<fs::path, std::string>> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) files.emplace_back(e.path(), read_file(e.path()));
+    return files;
+}
+
+}  // namespace
+
+// Tantalum's only visible data set is a DFT calculation: list, show, fit (human and JSON) and every export file must
+// say so, and every export must carry the literature reference next to the file name and hash.
+TEST_F(Cli, CatalogCaveatAndReferenceReachEveryOutput) {
+    const std::string caveat = "DFT calculation, not a measurement";
+    const std::string reference = "W. S. M. Werner, K. Glantschnig, C. Ambrosch-Draxl";
+
+    const Result list = run("list");
+    ASSERT_EQ(list.exit_code, 0) << list.err;
+    EXPECT_NE(list.out.find(caveat), std::string::npos) << list.out;
+    const Result list_json = run("list --json");
+    ASSERT_EQ(list_json.exit_code, 0) << list_json.err;
+    for (const auto& row : nlohmann::json::parse(list_json.out)) {
+        if (row["id"] == "Ta") {
+            EXPECT_EQ(row["note"], caveat);
+        }
+        if (row["id"] == "Au") {
+            EXPECT_EQ(row["note"], "");
+        }
+    }
+
+    const Result show = run("show Ta");
+    EXPECT_NE(show.out.find("caveat      " + caveat), std::string::npos) << show.out;
+    const Result show_json = run("show Ta --json");
+    EXPECT_EQ(nlohmann::json::parse(show_json.out)["provenance"]["note"], caveat);
+
+    const Result fit = run("fit Ta --model schlick");
+    EXPECT_NE(fit.out.find("caveat: " + caveat), std::string::npos) << fit.out;
+    const Result fit_json = run("fit Ta --model schlick --json");
+    EXPECT_EQ(nlohmann::json::parse(fit_json.out)["materials"]["Ta"]["data"]["note"], caveat);
+    const Result gold = run("fit Au --model schlick");
+    EXPECT_EQ(gold.out.find("caveat"), std::string::npos) << gold.out;  // no note, no line
+
+    const fs::path out = dir_ / "ta";
+    const Result e = run("export Ta --model f82-tint,schlick --format all -o '" + out.string() + "'");
+    ASSERT_EQ(e.exit_code, 0) << e.err;
+    int headers = 0;
+    for (const auto& [path, text] : files_under(out)) {
+        if (path.filename().string().find("metalfit_ta_") != 0 && path.filename() != "metalfit_export.json") continue;
+        ++headers;
+        if (path.filename() == "metalfit_export.json") {
+            const auto data = nlohmann::json::parse(text)["materials"]["Ta"]["data"];
+            EXPECT_EQ(data["note"], caveat);
+            EXPECT_NE(data["reference"].get<std::string>().find(reference), std::string::npos);
+            continue;
+        }
+        EXPECT_NE(text.find("caveat: " + caveat), std::string::npos) << path;
+        EXPECT_NE(text.find("reference: " + reference), std::string::npos) << path;
+        EXPECT_NE(text.find("sha256 "), std::string::npos) << path;
+    }
+    EXPECT_GE(headers, 1 + 2 * 6) << "json + (glsl, hlsl, mtlx, openpbr .mtlx and .json, cpp) per model";
+}

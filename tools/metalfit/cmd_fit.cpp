@@ -63,6 +63,7 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
     s << fit.material.name << " (" << fit.material.id << ", " << fit.material.source << ") in " << context.space << ", "
       << to_string(context.observer) << ", " << to_string(context.illuminant) << "; " << to_string(e.metric)
       << " metric, " << to_string(e.weight) << " weight, " << e.nodes << " nodes\n";
+    if (!fit.material.provenance.note.empty()) s << "  caveat: " << fit.material.provenance.note << "\n";
     s << "  F0 = (" << fixed(fit.F0.r, 5) << ", " << fixed(fit.F0.g, 5) << ", " << fixed(fit.F0.b, 5) << ")";
     if (fit.F0.max() > 1.0 || fit.F0.min() < 0.0) s << "  out of gamut, kept";
     s << "\n";

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "export/export_formats.hpp"
+#include "export/header_provenance.hpp"
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/version.hpp"
@@ -196,10 +197,7 @@ std::string comment_header(const MaterialExport& material, const WrittenParamete
     std::ostringstream s;
     const auto line = [&](const std::string& text) { s << prefix << text << "\n"; };
     line("metalfit " METALFIT_VERSION " export: " + m.name + " (" + m.id + ")");
-    line("data source: " + m.source + " (" + m.provenance.format + ", " + m.provenance.file.filename().string() +
-         ", sha256 " + m.provenance.sha256 + ")");
-    line("colour space: " + r.space + " (OCIO " + r.config.origin + "); " + to_string(r.illuminant) + ", " +
-         to_string(r.observer) + ", R_c(mu) white balanced to the perfect reflector");
+    for (const std::string& provenance : header_provenance_lines(m, r)) line(provenance);
     line("model: " + std::string(written.model->id()) + " - " + std::string(written.model->title()));
     if (!extra.empty()) {
         std::string_view rest = extra;

@@ -121,6 +121,7 @@ Material load_material(const Catalog& catalog, std::string_view material_or_path
         m.name = entry->name;
         m.source = s.source;
         m.provenance.references = s.reference + (s.doi.empty() ? "" : ", doi:" + s.doi);
+        m.provenance.note = s.note;
         return m;
     }
     if (looks_like_path(material_or_path)) {
