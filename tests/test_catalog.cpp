@@ -161,7 +161,10 @@ TEST(CatalogPaths, LooksLikePath) {
     EXPECT_TRUE(looks_like_path("dir/gold"));
     EXPECT_TRUE(looks_like_path("./gold"));
     EXPECT_TRUE(looks_like_path("/abs/path/file.txt"));
-    EXPECT_FALSE(looks_like_path("gold.txt"));  // not existing, no separator, other extension
+    EXPECT_TRUE(looks_like_path("gold.txt"));   // instrument tables: .txt, .tsv, .dat
+    EXPECT_TRUE(looks_like_path("gold.tsv"));
+    EXPECT_TRUE(looks_like_path("gold.DAT"));
+    EXPECT_FALSE(looks_like_path("gold.xlsx"));  // not existing, no separator, other extension
 }
 
 TEST(CatalogPaths, AnExistingFileLooksLikeAPath) {

@@ -406,3 +406,34 @@ TEST_F(Cli, CatalogCaveatAndReferenceReachEveryOutput) {
     }
     EXPECT_GE(headers, 1 + 2 * 6) << "json + (glsl, hlsl, mtlx, openpbr .mtlx and .json, cpp) per model";
 }
+
+// A user's instrument file: --name and --reference replace the file stem and the (absent) reference in show, fit
+// and the export headers; on a catalog material they are a usage error; a refused file is one line naming file and line.
+TEST_F(Cli, InstrumentFilesTakeANameAndAReference) {
+    const std::string file = kFixtures + "/instrument-tab.tsv";
+    const std::string labels = " --name 'evaporated gold' --reference 'A. Author, J. Test. 1, 2 (2026)'";
+    const Result show = run("show '" + file + "'" + labels + " --json");
+    ASSERT_EQ(show.exit_code, 0) << show.err;
+    const auto j = nlohmann::json::parse(show.out);
+    EXPECT_EQ(j["name"], "evaporated gold");
+    EXPECT_EQ(j["provenance"]["reference"], "A. Author, J. Test. 1, 2 (2026)");
+    EXPECT_EQ(j["provenance"]["format"], "table (tab-separated)");
+
+    const fs::path out = dir_ / "mine";
+    const Result e = run("export '" + file + "'" + labels + " --model schlick --format glsl -o '" + out.string() + "'");
+    ASSERT_EQ(e.exit_code, 0) << e.err;
+    bool found = false;
+    for (const auto& [path, text] : files_under(out))
+        if (text.find("reference: A. Author, J. Test. 1, 2 (2026)") != std::string::npos &&
+            text.find("export: evaporated gold") != std::string::npos)
+            found = true;
+    EXPECT_TRUE(found);
+
+    const Result catalog = run("show gold --name mine");
+    EXPECT_EQ(catalog.exit_code, 2);
+    expect_one_line_error(catalog, "--name and --reference label a file of your own");
+
+    const Result bad = run("fit '" + kFixtures + "/bad-missing-field.tsv'");
+    EXPECT_EQ(bad.exit_code, 3);
+    expect_one_line_error(bad, "bad-missing-field.tsv:9: ");
+}

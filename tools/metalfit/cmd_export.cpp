@@ -17,6 +17,7 @@ struct ExportOptions {
     std::string material;
     bool all = false;
     std::string source;
+    UserFileLabels labels;
     std::string models;
     std::string params = "fit";
     std::string formats;
@@ -34,7 +35,7 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     const ExportRequest request{parse_export_formats(o.formats), parse_model_list(o.models), parse_parameter_source(o.params),
                                 parse_gamut_policy(o.gamut)};
     const Catalog catalog = Catalog::load(global.data_dir);
-    const auto loaders = material_loaders(catalog, o.all, o.material, o.source);
+    const auto loaders = material_loaders(catalog, o.all, o.material, o.source, o.labels);
     const ColourSetup setup = resolve_colour_options(o.colour, global);
     const ErrorSettings error{};  // the defaults of `metalfit fit`: rel metric, uniform weight, 128 nodes
     const MaterialFitRequest fit_request{setup.spectral, error, models_to_fit(request)};
@@ -52,9 +53,12 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
 
 std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<ExportOptions>();
-    app.add_option("material", o->material, "Catalog material (id, name or alias) or a .yml/.csv file");
+    app.add_option("material", o->material, "Catalog material (id, name or alias) or a .yml/.csv/.tsv/.txt/.dat file");
     app.add_flag("--all", o->all, "Every material of the built-in catalog, in parallel");
     app.add_option("--source", o->source, "Alternate source of a catalog material (default: its primary)");
+    app.add_option("--name", o->labels.name, "Name of the material in a file of your own (default: the file stem)");
+    app.add_option("--reference", o->labels.reference,
+                   "Literature reference of a file of your own, shown and exported (default: the file's REFERENCES)");
     app.add_option("--model", o->models, "Models, comma-separated, or all")->required();
     // --params and --gamut are checked by libfit's parsers: one line naming the value, like every other error.
     app.add_option("--params", o->params, "Parameters written: fit (Ceres) or closed (best closed form)");

@@ -24,6 +24,7 @@ struct FitOptions {
     std::string material;
     bool all = false;
     std::string source;
+    UserFileLabels labels;
     std::string models = "all";
     ColourOptions colour;
     std::string metric = "rel";
@@ -119,7 +120,7 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
     if (o.all && !o.material.empty()) throw UsageError("fit: give a material or --all, not both");
     if (o.all && !o.source.empty()) throw UsageError("fit: --source needs a single material");
     const Catalog catalog = Catalog::load(global.data_dir);
-    const auto loaders = material_loaders(catalog, o.all, o.material, o.source);
+    const auto loaders = material_loaders(catalog, o.all, o.material, o.source, o.labels);
 
     const ColourSetup setup = resolve_colour_options(o.colour, global);
     const ErrorSettings error{o.nodes, parse_error_metric(o.metric), parse_angular_weight(o.weight)};
@@ -148,9 +149,12 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
 
 std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<FitOptions>();
-    app.add_option("material", o->material, "Catalog material (id, name or alias) or a .yml/.csv file");
+    app.add_option("material", o->material, "Catalog material (id, name or alias) or a .yml/.csv/.tsv/.txt/.dat file");
     app.add_flag("--all", o->all, "Every material of the built-in catalog, in parallel");
     app.add_option("--source", o->source, "Alternate source of a catalog material (default: its primary)");
+    app.add_option("--name", o->labels.name, "Name of the material in a file of your own (default: the file stem)");
+    app.add_option("--reference", o->labels.reference,
+                   "Literature reference of a file of your own, shown and exported (default: the file's REFERENCES)");
     app.add_option("--model", o->models, "Models, comma-separated, or all (default: all)");
     add_colour_options(app, o->colour);
     app.add_option("--metric", o->metric, "Error the fit minimises: rel or abs")->check(CLI::IsMember({"rel", "abs"}));

@@ -15,6 +15,7 @@ namespace {
 struct ShowOptions {
     std::string material;
     std::string source;
+    UserFileLabels labels;
     ColourOptions colour;
     bool json = false;
     std::filesystem::path output;
@@ -22,7 +23,7 @@ struct ShowOptions {
 
 void run_show(const ShowOptions& o, const GlobalOptions& global) {
     const Catalog catalog = Catalog::load(global.data_dir);
-    const Material material = load_material(catalog, o.material, o.source);
+    const Material material = load_material(catalog, o.material, o.source, o.labels);
     for (const auto& w : material.warnings) warn(w);
 
     const ColourSetup setup = resolve_colour_options(o.colour, global);
@@ -69,8 +70,11 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
 
 std::function<void()> add_show_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<ShowOptions>();
-    app.add_option("material", o->material, "Catalog material (id, name or alias) or a .yml/.csv file")->required();
+    app.add_option("material", o->material, "Catalog material (id, name or alias) or a .yml/.csv/.tsv/.txt/.dat file")->required();
     app.add_option("--source", o->source, "Alternate source of a catalog material (default: its primary)");
+    app.add_option("--name", o->labels.name, "Name of the material in a file of your own (default: the file stem)");
+    app.add_option("--reference", o->labels.reference,
+                   "Literature reference of a file of your own, shown and exported (default: the file's REFERENCES)");
     add_colour_options(app, o->colour);
     app.add_flag("--json", o->json, "Print one JSON object");
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
