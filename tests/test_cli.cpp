@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -436,4 +437,49 @@ TEST_F(Cli, InstrumentFilesTakeANameAndAReference) {
     const Result bad = run("fit '" + kFixtures + "/bad-missing-field.tsv'");
     EXPECT_EQ(bad.exit_code, 3);
     expect_one_line_error(bad, "bad-missing-field.tsv:9: ");
+}
+
+// `metalfit table`: one row per catalog material; F0 and F82 as `show` gives them, tint = F82 / Schlick(F0, 1/7);
+// the hex is the sRGB encoding (IEC 61966-2-1, written out here) of the clamped linear Rec.709 value, within one
+// 8-bit step of OCIO's display transform; CSV and Markdown carry the same rows and the caveats.
+TEST_F(Cli, TableGivesF0AndTintOfEveryMetalWithHexAndCaveat) {
+    const Result r = run("table --format json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto table = nlohmann::json::parse(r.out);
+    ASSERT_EQ(table["materials"].size(), metalfit::test::catalog_material_count());
+    const auto encode = [](double linear) {
+        const double v = std::clamp(linear, 0.0, 1.0);
+        const double e = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
+        return static_cast<int>(std::lround(255 * e));
+    };
+    for (const auto& row : table["materials"]) {
+        const std::string id = row["id"];
+        if (id != "Au" && id != "Cu" && id != "Ta" && id != "TiN") continue;
+        const auto show = nlohmann::json::parse(run("show " + id + " --json").out);
+        char hex[8];
+        int channel_bytes[3];
+        for (int c = 0; c < 3; ++c) {
+            const double f0 = show["F0"][c], f82 = show["F82"][c];
+            EXPECT_NEAR(row["F0"]["linear"][c].get<double>(), f0, 1e-12) << id;
+            const double schlick = f0 + (1 - f0) * std::pow(1 - 1.0 / 7, 5);
+            EXPECT_NEAR(row["F82_tint"]["linear"][c].get<double>(), f82 / schlick, 1e-12) << id;
+            channel_bytes[c] = row["F0"]["display8"][c].get<int>();
+            EXPECT_NEAR(channel_bytes[c], encode(f0), 1) << id << " channel " << c;
+        }
+        std::snprintf(hex, sizeof hex, "#%02x%02x%02x", channel_bytes[0], channel_bytes[1], channel_bytes[2]);
+        EXPECT_EQ(row["F0"]["hex"], hex) << id;
+        if (id == "Ta") {
+            EXPECT_EQ(row["note"], "DFT calculation, not a measurement");
+        }
+    }
+    const Result csv = run("table --format csv");
+    ASSERT_EQ(csv.exit_code, 0) << csv.err;
+    EXPECT_EQ(static_cast<std::size_t>(std::count(csv.out.begin(), csv.out.end(), '\n')),
+              metalfit::test::catalog_material_count() + 1);
+    EXPECT_NE(csv.out.find("DFT calculation, not a measurement"), std::string::npos);
+    const Result md = run("table --space ACEScg");
+    ASSERT_EQ(md.exit_code, 0) << md.err;
+    EXPECT_NE(md.out.find("linear ACEScg"), std::string::npos);
+    EXPECT_NE(md.out.find("| Ta | tantalum |"), std::string::npos);
+    EXPECT_EQ(run("table --format xml").exit_code, 2);
 }

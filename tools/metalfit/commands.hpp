@@ -25,6 +25,7 @@ std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global
 std::function<void()> add_models_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& global);
+std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& global);
 
 // Prints to stdout, or writes atomically to `output` when it is not empty.
 void emit(const std::string& text, const std::filesystem::path& output);

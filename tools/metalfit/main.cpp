@@ -74,6 +74,8 @@ int main(int argc, char** argv) {
 #endif
     auto& export_ = *app.add_subcommand("export", "Write shader-ready constants: JSON, GLSL, HLSL, MaterialX, OpenPBR, C++");
     auto run_export = cli::add_export_command(export_, global);
+    auto& table = *app.add_subcommand("table", "F0 and F82 tint of every catalog metal: linear, 8-bit and hex, with source and caveat");
+    auto run_table = cli::add_table_command(table, global);
 
     try {
         app.parse(argc, argv);
@@ -97,6 +99,7 @@ int main(int argc, char** argv) {
         if (models.parsed()) run_models();
         if (bench.parsed()) run_bench();
         if (export_.parsed()) run_export();
+        if (table.parsed()) run_table();
         return ok;
     } catch (...) {
         return report_current_exception("metalfit");
