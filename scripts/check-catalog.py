@@ -16,7 +16,7 @@ import json
 import os
 import sys
 
-KINDS = {"metal", "alloy", "intermetallic", "nitride"}
+KINDS = {"metal", "alloy", "intermetallic", "nitride", "carbide"}
 SOURCE_KEYS = ["source", "file", "reference", "doi", "licence", "database_path", "note"]
 MATERIAL_KEYS = ["id", "name", "aliases", "kind", "primary", "alternates"]
 DATABASE_KEYS = ["name", "repository", "commit", "licence", "citation"]

@@ -50,7 +50,7 @@ Catalog* CatalogTest::catalog_ = nullptr;
 
 TEST_F(CatalogTest, LoadsAllMaterials) {
     EXPECT_EQ(catalog().entries().size(), catalog_material_count());
-    EXPECT_GE(catalog().entries().size(), 29u);  // the shipped database: no material lost
+    EXPECT_GE(catalog().entries().size(), 39u);  // the shipped database: no material lost
     EXPECT_EQ(catalog().data_dir(), kData);
     for (const auto& e : catalog().entries()) {
         SCOPED_TRACE(e.id);
@@ -161,7 +161,10 @@ TEST(CatalogPaths, LooksLikePath) {
     EXPECT_TRUE(looks_like_path("dir/gold"));
     EXPECT_TRUE(looks_like_path("./gold"));
     EXPECT_TRUE(looks_like_path("/abs/path/file.txt"));
-    EXPECT_FALSE(looks_like_path("gold.txt"));  // not existing, no separator, other extension
+    EXPECT_TRUE(looks_like_path("gold.txt"));   // instrument tables: .txt, .tsv, .dat
+    EXPECT_TRUE(looks_like_path("gold.tsv"));
+    EXPECT_TRUE(looks_like_path("gold.DAT"));
+    EXPECT_FALSE(looks_like_path("gold.xlsx"));  // not existing, no separator, other extension
 }
 
 TEST(CatalogPaths, AnExistingFileLooksLikeAPath) {

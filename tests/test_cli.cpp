@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <sstream>
@@ -623,3 +624,143 @@ TEST_F(CliColour, HelpShowsEveryDefaultAndBadValuesAreUsageErrors) {
 }
 
 }  // namespace
+
+namespace {
+
+// Every file under `dir`, recursively, with its text.
+std::vector<std::pair<fs::path, std::string>> files_under(const fs::path& dir) {
+    std::vector<std::pair<fs::path, std::string>> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) files.emplace_back(e.path(), read_file(e.path()));
+    return files;
+}
+
+}  // namespace
+
+// Tantalum's only visible data set is a DFT calculation: list, show, fit (human and JSON) and every export file must
+// say so, and every export must carry the literature reference next to the file name and hash.
+TEST_F(Cli, CatalogCaveatAndReferenceReachEveryOutput) {
+    const std::string caveat = "DFT calculation, not a measurement";
+    const std::string reference = "W. S. M. Werner, K. Glantschnig, C. Ambrosch-Draxl";
+
+    const Result list = run("list");
+    ASSERT_EQ(list.exit_code, 0) << list.err;
+    EXPECT_NE(list.out.find(caveat), std::string::npos) << list.out;
+    const Result list_json = run("list --json");
+    ASSERT_EQ(list_json.exit_code, 0) << list_json.err;
+    for (const auto& row : nlohmann::json::parse(list_json.out)) {
+        if (row["id"] == "Ta") {
+            EXPECT_EQ(row["note"], caveat);
+        }
+        if (row["id"] == "Au") {
+            EXPECT_EQ(row["note"], "");
+        }
+    }
+
+    const Result show = run("show Ta");
+    EXPECT_NE(show.out.find("caveat      " + caveat), std::string::npos) << show.out;
+    const Result show_json = run("show Ta --json");
+    EXPECT_EQ(nlohmann::json::parse(show_json.out)["provenance"]["note"], caveat);
+
+    const Result fit = run("fit Ta --model schlick");
+    EXPECT_NE(fit.out.find("caveat: " + caveat), std::string::npos) << fit.out;
+    const Result fit_json = run("fit Ta --model schlick --json");
+    EXPECT_EQ(nlohmann::json::parse(fit_json.out)["materials"]["Ta"]["data"]["note"], caveat);
+    const Result gold = run("fit Au --model schlick");
+    EXPECT_EQ(gold.out.find("caveat"), std::string::npos) << gold.out;  // no note, no line
+
+    const fs::path out = dir_ / "ta";
+    const Result e = run("export Ta --model f82-tint,schlick --format all -o '" + out.string() + "'");
+    ASSERT_EQ(e.exit_code, 0) << e.err;
+    int headers = 0;
+    for (const auto& [path, text] : files_under(out)) {
+        if (path.filename().string().find("metalfit_ta_") != 0 && path.filename() != "metalfit_export.json") continue;
+        ++headers;
+        if (path.filename() == "metalfit_export.json") {
+            const auto data = nlohmann::json::parse(text)["materials"]["Ta"]["data"];
+            EXPECT_EQ(data["note"], caveat);
+            EXPECT_NE(data["reference"].get<std::string>().find(reference), std::string::npos);
+            continue;
+        }
+        EXPECT_NE(text.find("caveat: " + caveat), std::string::npos) << path;
+        EXPECT_NE(text.find("reference: " + reference), std::string::npos) << path;
+        EXPECT_NE(text.find("sha256 "), std::string::npos) << path;
+    }
+    EXPECT_GE(headers, 1 + 2 * 6) << "json + (glsl, hlsl, mtlx, openpbr .mtlx and .json, cpp) per model";
+}
+
+// A user's instrument file: --name and --reference replace the file stem and the (absent) reference in show, fit
+// and the export headers; on a catalog material they are a usage error; a refused file is one line naming file and line.
+TEST_F(Cli, InstrumentFilesTakeANameAndAReference) {
+    const std::string file = kFixtures + "/instrument-tab.tsv";
+    const std::string labels = " --name 'evaporated gold' --reference 'A. Author, J. Test. 1, 2 (2026)'";
+    const Result show = run("show '" + file + "'" + labels + " --json");
+    ASSERT_EQ(show.exit_code, 0) << show.err;
+    const auto j = nlohmann::json::parse(show.out);
+    EXPECT_EQ(j["name"], "evaporated gold");
+    EXPECT_EQ(j["provenance"]["reference"], "A. Author, J. Test. 1, 2 (2026)");
+    EXPECT_EQ(j["provenance"]["format"], "table (tab-separated)");
+
+    const fs::path out = dir_ / "mine";
+    const Result e = run("export '" + file + "'" + labels + " --model schlick --format glsl -o '" + out.string() + "'");
+    ASSERT_EQ(e.exit_code, 0) << e.err;
+    bool found = false;
+    for (const auto& [path, text] : files_under(out))
+        if (text.find("reference: A. Author, J. Test. 1, 2 (2026)") != std::string::npos &&
+            text.find("export: evaporated gold") != std::string::npos)
+            found = true;
+    EXPECT_TRUE(found);
+
+    const Result catalog = run("show gold --name mine");
+    EXPECT_EQ(catalog.exit_code, 2);
+    expect_one_line_error(catalog, "--name and --reference label a file of your own");
+
+    const Result bad = run("fit '" + kFixtures + "/bad-missing-field.tsv'");
+    EXPECT_EQ(bad.exit_code, 3);
+    expect_one_line_error(bad, "bad-missing-field.tsv:9: ");
+}
+
+// `metalfit table`: one row per catalog material; F0 and F82 as `show` gives them, tint = F82 / Schlick(F0, 1/7);
+// the hex is the sRGB encoding (IEC 61966-2-1, written out here) of the clamped linear Rec.709 value, within one
+// 8-bit step of OCIO's display transform; CSV and Markdown carry the same rows and the caveats.
+TEST_F(Cli, TableGivesF0AndTintOfEveryMetalWithHexAndCaveat) {
+    const Result r = run("table --format json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto table = nlohmann::json::parse(r.out);
+    ASSERT_EQ(table["materials"].size(), metalfit::test::catalog_material_count());
+    const auto encode = [](double linear) {
+        const double v = std::clamp(linear, 0.0, 1.0);
+        const double e = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1 / 2.4) - 0.055;
+        return static_cast<int>(std::lround(255 * e));
+    };
+    for (const auto& row : table["materials"]) {
+        const std::string id = row["id"];
+        if (id != "Au" && id != "Cu" && id != "Ta" && id != "TiN") continue;
+        const auto show = nlohmann::json::parse(run("show " + id + " --json").out);
+        char hex[8];
+        int channel_bytes[3];
+        for (int c = 0; c < 3; ++c) {
+            const double f0 = show["F0"][c], f82 = show["F82"][c];
+            EXPECT_NEAR(row["F0"]["linear"][c].get<double>(), f0, 1e-12) << id;
+            const double schlick = f0 + (1 - f0) * std::pow(1 - 1.0 / 7, 5);
+            EXPECT_NEAR(row["F82_tint"]["linear"][c].get<double>(), f82 / schlick, 1e-12) << id;
+            channel_bytes[c] = row["F0"]["display8"][c].get<int>();
+            EXPECT_NEAR(channel_bytes[c], encode(f0), 1) << id << " channel " << c;
+        }
+        std::snprintf(hex, sizeof hex, "#%02x%02x%02x", channel_bytes[0], channel_bytes[1], channel_bytes[2]);
+        EXPECT_EQ(row["F0"]["hex"], hex) << id;
+        if (id == "Ta") {
+            EXPECT_EQ(row["note"], "DFT calculation, not a measurement");
+        }
+    }
+    const Result csv = run("table --format csv");
+    ASSERT_EQ(csv.exit_code, 0) << csv.err;
+    EXPECT_EQ(static_cast<std::size_t>(std::count(csv.out.begin(), csv.out.end(), '\n')),
+              metalfit::test::catalog_material_count() + 1);
+    EXPECT_NE(csv.out.find("DFT calculation, not a measurement"), std::string::npos);
+    const Result md = run("table --space ACEScg");
+    ASSERT_EQ(md.exit_code, 0) << md.err;
+    EXPECT_NE(md.out.find("linear ACEScg"), std::string::npos);
+    EXPECT_NE(md.out.find("| Ta | tantalum |"), std::string::npos);
+    EXPECT_EQ(run("table --format xml").exit_code, 2);
+}

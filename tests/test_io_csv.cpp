@@ -151,14 +151,14 @@ TEST(IoCsv, LoadNkFileDispatchesOnExtension) {
 
 TEST(IoCsv, LoadNkFileRejectsUnknownExtension) {
     TempDir dir;
-    const fs::path txt = dir.write("table.txt", read_file(kFixtures / "valid-nk.csv"));
+    const fs::path sheet = dir.write("table.xlsx", read_file(kFixtures / "valid-nk.csv"));
     try {
-        (void)load_nk_file(txt);
-        FAIL() << "a .txt file must be refused";
+        (void)load_nk_file(sheet);
+        FAIL() << "a .xlsx file must be refused";
     } catch (const InputError& e) {
         const std::string what = e.what();
-        EXPECT_TRUE(StartsWith(what, txt.string()));
-        EXPECT_TRUE(Contains(what, ".txt"));
+        EXPECT_TRUE(StartsWith(what, sheet.string()));
+        EXPECT_TRUE(Contains(what, ".xlsx"));
         EXPECT_EQ(what.find('\n'), std::string::npos);
     }
     EXPECT_THROW((void)load_nk_file(dir.path() / "no-extension"), InputError);
@@ -183,6 +183,124 @@ TEST(IoCsv, HeaderOnlyFileIsAnInputError) {
     } catch (const InputError& e) {
         EXPECT_TRUE(StartsWith(e.what(), file.string()));
     }
+}
+
+// Instrument-style files (tests/fixtures/README.md): each holds the rows of valid-nk.csv (Johnson & Christy's Au,
+// 300.9–892 nm) in another layout, so each must load to the same n and k.
+void expect_same_rows_as_valid_nk(const Material& m, double tolerance, bool k_without_first_row = false) {
+    const Material reference = load_nk_csv(kFixtures / "valid-nk.csv");
+    const Spectrum& rn = tabulated(reference.index.n);
+    const Spectrum& rk = tabulated(reference.index.k);
+    const Spectrum& n = tabulated(m.index.n);
+    const Spectrum& k = tabulated(m.index.k);
+    ASSERT_EQ(n.size(), rn.size());
+    ASSERT_EQ(k.size(), rk.size() - (k_without_first_row ? 1 : 0));
+    for (std::size_t i = 0; i < n.size(); ++i) {
+        EXPECT_NEAR(n.wavelengths()[i], rn.wavelengths()[i], 1e-5 * rn.wavelengths()[i]) << i;
+        EXPECT_NEAR(n.values()[i], rn.values()[i], tolerance) << i;
+    }
+    const std::size_t offset = k_without_first_row ? 1 : 0;
+    for (std::size_t i = 0; i < k.size(); ++i) {
+        EXPECT_NEAR(k.wavelengths()[i], rk.wavelengths()[i + offset], 1e-5 * rk.wavelengths()[i + offset]) << i;
+        EXPECT_NEAR(k.values()[i], rk.values()[i + offset], tolerance) << i;
+    }
+}
+
+TEST(IoTable, ByteOrderMarkAndCrlfLineEndsAreAccepted) {
+    const Material m = load_nk_file(kFixtures / "instrument-bom-crlf.csv");
+    expect_same_rows_as_valid_nk(m, 0.0);
+    EXPECT_EQ(m.provenance.format, "CSV");
+    EXPECT_TRUE(m.warnings.empty());
+}
+
+TEST(IoTable, TabSeparatedWithUnitInBracketsAndAnExtraColumn) {
+    const Material m = load_nk_file(kFixtures / "instrument-tab.tsv");
+    expect_same_rows_as_valid_nk(m, 0.0);
+    EXPECT_EQ(m.provenance.format, "table (tab-separated)");
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_TRUE(Contains(m.warnings[0], "instrument-tab.tsv:2: column 'MSE' ignored")) << m.warnings[0];
+}
+
+TEST(IoTable, SemicolonsWithDecimalCommasInMicrometres) {
+    const Material m = load_nk_file(kFixtures / "instrument-semicolon.txt");
+    expect_same_rows_as_valid_nk(m, 0.0);
+    EXPECT_EQ(m.provenance.format, "table (semicolon-separated)");
+}
+
+TEST(IoTable, PhotonEnergyAndDielectricFunctionAreConvertedToWavelengthAndNk) {
+    // E = hc/λ with hc = 1239.84198 eV nm, ε₁ = n² − k², ε₂ = 2nk, written with 9 significant digits: n and k
+    // come back to 1e-7 (the inverse map n = √((|ε| + ε₁)/2), k = √((|ε| − ε₁)/2)).
+    const Material m = load_nk_file(kFixtures / "instrument-energy-eps.dat");
+    expect_same_rows_as_valid_nk(m, 1e-7);
+    EXPECT_EQ(m.provenance.data_type, "tabulated e1 e2 (converted to n, k)");
+}
+
+TEST(IoTable, RefractiveIndexInfoDownloadHasAnNBlockThenAKBlock) {
+    const Material m = load_nk_file(kFixtures / "refractiveindex-download.csv");
+    expect_same_rows_as_valid_nk(m, 0.0, /*k_without_first_row=*/true);
+    EXPECT_EQ(m.provenance.data_type, "tabulated n + tabulated k");
+}
+
+TEST(IoTable, AFileWithoutKAssumesZeroAndSaysSo) {
+    TempDir dir;
+    const Material m = load_nk_file(dir.write("n-only.csv", "wl,n\n0.3,1.5\n0.9,1.5\n"));
+    EXPECT_EQ(m.index(500.0).imag(), 0.0);
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_TRUE(Contains(m.warnings[0], "k = 0 assumed"));
+}
+
+struct BadTable {
+    const char* file;
+    int line;
+    const char* message;
+};
+
+void PrintTo(const BadTable& b, std::ostream* os) { *os << b.file; }
+
+class IoTableMalformed : public ::testing::TestWithParam<BadTable> {};
+
+TEST_P(IoTableMalformed, ThrowsOneLineNamingFileAndLine) {
+    const BadTable& c = GetParam();
+    const fs::path file = kFixtures / c.file;
+    ASSERT_TRUE(fs::exists(file)) << file;
+    try {
+        (void)load_nk_file(file);
+        FAIL() << "expected InputError for " << file;
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_TRUE(StartsWith(what, file.string() + ":" + std::to_string(c.line) + ": ")) << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        EXPECT_TRUE(Contains(what, c.message)) << what;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(IoTable, IoTableMalformed,
+                         ::testing::Values(BadTable{"bad-unit.tsv", 1, "unknown unit 'furlong'"},
+                                           BadTable{"bad-missing-field.tsv", 9, "expected 3 fields"},
+                                           BadTable{"bad-negative-eps2.txt", 6, "negative"}),
+                         [](const ::testing::TestParamInfo<BadTable>& info) {
+                             std::string name = info.param.file;
+                             name = name.substr(0, name.find('.'));
+                             for (char& ch : name)
+                                 if (ch == '-') ch = '_';
+                             return name;
+                         });
+
+TEST(IoTable, HeadersThatCannotBeReadSayWhatIsExpected) {
+    TempDir dir;
+    const auto message = [&](const std::string& name, const std::string& text) {
+        try {
+            (void)load_nk_file(dir.write(name, text));
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_TRUE(Contains(message("no-unit.csv", "wavelength,n,k\n500,1,2\n"), "does not say its unit"));
+    EXPECT_TRUE(Contains(message("energy.csv", "energy,e1,e2\n2,1,2\n"), "does not say its unit"));
+    EXPECT_TRUE(Contains(message("mixed.csv", "wavelength_nm,n,e2\n500,1,2\n"), "one pair"));
+    EXPECT_TRUE(Contains(message("no-header.dat", "500 1 2\n"), ":1: a data row before any header line"));
+    EXPECT_TRUE(Contains(message("two-x.csv", "wavelength_nm,energy (eV),n,k\n500,2.4,1,2\n"), "more than one"));
 }
 
 }  // namespace

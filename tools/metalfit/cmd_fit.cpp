@@ -73,6 +73,7 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
       << describe_adaptation(context.adaptation, context.adapted, context.illuminant) << ", convention "
       << to_string(context.convention) << "; " << to_string(e.metric)
       << " metric, " << to_string(e.weight) << " weight, " << e.nodes << " nodes\n";
+    if (!fit.material.provenance.note.empty()) s << "  caveat: " << fit.material.provenance.note << "\n";
     s << "  F0 = (" << fixed(fit.F0.r, 5) << ", " << fixed(fit.F0.g, 5) << ", " << fixed(fit.F0.b, 5) << ")";
     if (fit.F0.max() > 1.0 || fit.F0.min() < 0.0) s << "  out of gamut, kept";
     s << "\n";

@@ -27,7 +27,8 @@ nlohmann::json describe(const CatalogEntry& entry, const Material& m) {
             {"range_nm", {r.min_nm, r.max_nm}},
             {"points_360_830", m.index.n.tabulated_points_in(kVisibleRange)},
             {"covers_360_830", r.covers(kVisibleRange)},
-            {"reference", entry.primary.reference}};
+            {"reference", entry.primary.reference},
+            {"note", entry.primary.note}};
 }
 
 std::string table(const nlohmann::json& rows) {
@@ -45,6 +46,14 @@ std::string table(const nlohmann::json& rows) {
             << row["points_360_830"].get<std::size_t>() << alternates << "\n";
     }
     out << "points: samples inside 360–830 nm\n";
+    bool heading = false;
+    for (const auto& row : rows) {
+        const std::string note = row["note"].get<std::string>();
+        if (note.empty()) continue;
+        if (!heading) out << "\ncaveats (the primary source's catalog note):\n";
+        heading = true;
+        out << "  " << std::setw(26) << row["id"].get<std::string>() << note << "\n";
+    }
     return out.str();
 }
 

@@ -5,6 +5,7 @@
 #include "colour_options.hpp"
 #include "commands.hpp"
 #include "material_selection.hpp"
+#include "libfit/base/text.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/reference/reference_curve.hpp"
 #include "libfit/reference/reflectance_summary.hpp"
@@ -18,23 +19,6 @@ struct ShowOptions {
     bool json = false;
     std::filesystem::path output;
 };
-
-// REFERENCES as one line of plain text: refractiveindex.info writes HTML over several lines.
-std::string one_line(const std::string& text) {
-    std::string out;
-    bool in_tag = false, space = false;
-    for (char c : text) {
-        if (c == '<') in_tag = true;
-        else if (c == '>') in_tag = false;
-        else if (!in_tag && (c == '\n' || c == ' ' || c == '\t')) space = !out.empty();
-        else if (!in_tag) {
-            if (space) out += ' ';
-            out += c;
-            space = false;
-        }
-    }
-    return out;
-}
 
 std::string held_constant_lines(const ReferenceCurve& curve) {
     std::string lines;
@@ -55,6 +39,7 @@ std::string show_text(const Material& material, const ReferenceCurve& curve, con
       << "  file        " << material.provenance.file.string() << "\n"
       << "  sha256      " << material.provenance.sha256 << "\n"
       << "  reference   " << one_line(material.provenance.references) << "\n"
+      << (material.provenance.note.empty() ? "" : "  caveat      " + material.provenance.note + "\n")
       << "  data        " << material.provenance.data_type << ", " << fixed(range.min_nm, 1) << "–"
       << fixed(range.max_nm, 1) << " nm, "
       << (material.index.n.tabulated() ? std::to_string(material.index.n.tabulated_points_in(kVisibleRange)) +

@@ -27,6 +27,7 @@ std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions& glob
 std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_spaces_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_report_command(CLI::App& app, const GlobalOptions& global);
+std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& global);
 
 // `metalfit report --fail-above`: the report was written, and `count` channels are above the limit (each already
 // printed on stderr). main() exits with exit_fail_above (docs/cli.md).

@@ -87,6 +87,8 @@ int main(int argc, char** argv) {
     auto run_spaces = cli::add_spaces_command(spaces, global);
     auto& report = *app.add_subcommand("report", "HTML report (catalog and material pages, report.json, charts, renders) of the fits");
     auto run_report = cli::add_report_command(report, global);
+    auto& table = *app.add_subcommand("table", "F0 and F82 tint of every catalog metal: linear, 8-bit and hex, with source and caveat");
+    auto run_table = cli::add_table_command(table, global);
 
     try {
         app.parse(argc, argv);
@@ -112,6 +114,7 @@ int main(int argc, char** argv) {
         if (export_.parsed()) run_export();
         if (spaces.parsed()) run_spaces();
         if (report.parsed()) run_report();
+        if (table.parsed()) run_table();
         return ok;
     } catch (const cli::FailAbove&) {
         return cli::exit_fail_above;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "libfit/io/catalog.hpp"
+#include "libfit/io/material.hpp"
 
 namespace metalfit::cli {
 
@@ -16,8 +17,9 @@ struct MaterialSelection {
     std::vector<std::string> arguments;  // as typed; split at commas by materials()
     bool all = false;
     std::string source;
+    UserFileLabels labels;  // --name, --reference: for one file of your own
 
-    // Registers the positional materials (and --all when `with_all`) and --source.
+    // Registers the positional materials (and --all when `with_all`), --source, --name and --reference.
     void add_options(CLI::App& app, bool with_all);
     // The materials named, in order: each argument split at commas unless it names an existing file.
     std::vector<std::string> materials() const;

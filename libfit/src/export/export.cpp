@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "export/export_formats.hpp"
+#include "export/header_provenance.hpp"
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/version.hpp"
@@ -199,13 +200,7 @@ std::string comment_header(const MaterialExport& material, const WrittenParamete
     std::ostringstream s;
     const auto line = [&](const std::string& text) { s << prefix << text << "\n"; };
     line("metalfit " METALFIT_VERSION " export: " + m.name + " (" + m.id + ")");
-    line("data source: " + m.source + " (" + m.provenance.format + ", " + m.provenance.file.filename().string() +
-         ", sha256 " + m.provenance.sha256 + ")");
-    for (const std::string& warning : m.warnings) line("DATA WARNING: " + warning);
-    line("colour space: " + r.space + " (OCIO " + r.config.origin + "); " + to_string(r.illuminant) + ", " +
-         to_string(r.observer) + ", R_c(mu) white balanced to the perfect reflector");
-    line("colour convention: " + to_string(r.convention) + "; chromatic adaptation: " +
-         describe_adaptation(r.adaptation, r.adapted, r.illuminant));
+    for (const std::string& provenance : header_provenance_lines(m, r)) line(provenance);
     line("model: " + std::string(written.model->id()) + " - " + std::string(written.model->title()));
     if (!extra.empty()) {
         std::string_view rest = extra;

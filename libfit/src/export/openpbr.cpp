@@ -2,6 +2,7 @@
 // F82-tint metal Fresnel), as JSON and as a MaterialX document with open_pbr_surface. Models that are not an F82-tint
 // curve (lazanyi-comp, conductor-rgb, gulbrandsen) are written as the material's f82-tint parameters, said so.
 #include "export/export_formats.hpp"
+#include "export/header_provenance.hpp"
 #include "libfit/base/version.hpp"
 
 namespace metalfit::detail {
@@ -39,6 +40,7 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
                       {"material", m.fit->material.id},
                       {"name", m.fit->material.name},
                       {"source", m.fit->material.source},
+                      {"provenance", header_provenance_lines(m.fit->material, context.record)},
                       {"color_space", context.record.space},
                       {"model", e.written.model->id()},
                       {"written_as", "f82-tint"},

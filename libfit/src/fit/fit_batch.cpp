@@ -7,17 +7,23 @@
 #include <optional>
 #include <thread>
 
+#include "libfit/base/errors.hpp"
+
 namespace metalfit {
 
 std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, bool all,
-                                                        const std::vector<std::string>& materials, const std::string& source) {
+                                                        const std::vector<std::string>& materials, const std::string& source,
+                                                        const UserFileLabels& labels) {
     std::vector<std::function<Material()>> loaders;
+    if (all && !labels.empty()) throw UsageError("--name and --reference label one file of your own, not --all");
     if (all) {
         for (const CatalogEntry& entry : catalog.entries())
             loaders.push_back([&catalog, id = entry.id] { return load_material(catalog, id, ""); });
     } else {
+        if (!labels.empty() && materials.size() > 1)
+            throw UsageError("--name and --reference label one file of your own, not several materials");
         for (const std::string& material : materials) {
-            const Material loaded = load_material(catalog, material, source);  // errors before any work
+            const Material loaded = load_material(catalog, material, source, labels);  // errors before any work
             loaders.push_back([loaded] { return loaded; });
         }
     }

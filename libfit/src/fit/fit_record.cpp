@@ -48,7 +48,7 @@ Json solver_json(const FitResult& fit) {
 Json data_provenance(const Material& material) {
     const Provenance& p = material.provenance;
     return {{"file", p.file.string()},  {"sha256", p.sha256},       {"format", p.format},
-            {"data_type", p.data_type}, {"reference", p.references}};
+            {"data_type", p.data_type}, {"reference", p.references}, {"note", p.note}};
 }
 
 }  // namespace

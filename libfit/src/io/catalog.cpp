@@ -108,24 +108,32 @@ bool looks_like_path(std::string_view argument) {
     const std::filesystem::path p(argument);
     std::string ext = p.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext == ".yml" || ext == ".yaml" || ext == ".csv") return true;
+    if (ext == ".yml" || ext == ".yaml" || ext == ".csv" || ext == ".tsv" || ext == ".txt" || ext == ".dat") return true;
     std::error_code ec;
     return std::filesystem::is_regular_file(p, ec);
 }
 
-Material load_material(const Catalog& catalog, std::string_view material_or_path, std::string_view source) {
+Material load_material(const Catalog& catalog, std::string_view material_or_path, std::string_view source,
+                       const UserFileLabels& labels) {
     if (const CatalogEntry* entry = catalog.find(material_or_path); entry != nullptr && !looks_like_path(material_or_path)) {
+        if (!labels.empty())
+            throw UsageError("--name and --reference label a file of your own, not the catalog material '" + entry->id +
+                             "' (its reference is in the catalog)");
         const CatalogSource& s = entry->find_source(source);
         Material m = load_nk_file(s.file);
         m.id = entry->id;
         m.name = entry->name;
         m.source = s.source;
         m.provenance.references = s.reference + (s.doi.empty() ? "" : ", doi:" + s.doi);
+        m.provenance.note = s.note;
         return m;
     }
     if (looks_like_path(material_or_path)) {
         if (!source.empty()) throw UsageError("an alternate source applies to catalog materials, not to a file");
-        return load_nk_file(std::filesystem::path(material_or_path));
+        Material m = load_nk_file(std::filesystem::path(material_or_path));
+        if (!labels.name.empty()) m.id = m.name = labels.name;
+        if (!labels.reference.empty()) m.provenance.references = labels.reference;
+        return m;
     }
     throw UsageError("unknown material '" + std::string(material_or_path) + "' (see `metalfit list`, or give a .yml/.csv path)");
 }

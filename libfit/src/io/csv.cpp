@@ -2,57 +2,71 @@
 
 #include <algorithm>
 #include <fstream>
+#include <optional>
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
 #include "libfit/io/refractiveindex.hpp"
 #include "base/parse_number.hpp"
+#include "io/table_columns.hpp"
 
 namespace metalfit {
 
 Material load_nk_csv(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw InputError({file}, "cannot open file");
-    double to_nm = 0.0;  // 0 until the header is read
-    std::vector<SpectrumSample> n, k;
-    int line_number = 0;
+    std::optional<detail::TableLayout> layout;  // none until the first header line
+    detail::TableSamples samples;
+    std::vector<std::string> notes;
+    int line_number = 0, blocks = 0;
     for (std::string raw; std::getline(in, raw);) {
         ++line_number;
-        const std::string_view line = detail::trim(raw);
+        const std::string_view line =
+            detail::trim(line_number == 1 ? detail::without_byte_order_mark(raw) : std::string_view(raw));
         if (line.empty() || line.front() == '#') continue;
-        const auto fields = detail::split_commas(line);
         const InputLocation here{file, line_number};
-        if (to_nm == 0.0) {
-            if (fields.size() == 3 && fields[1] == "n" && fields[2] == "k") {
-                if (fields[0] == "wavelength_nm") to_nm = 1.0;
-                if (fields[0] == "wavelength_um") to_nm = 1000.0;
-            }
-            if (to_nm == 0.0)
-                throw InputError(here, "expected the header 'wavelength_nm,n,k' or 'wavelength_um,n,k', found '" +
-                                           std::string(line) + "'");
+        // A header line starts a block; a later one starts the next (refractiveindex.info: `wl,n` rows, `wl,k` rows).
+        if (auto header = detail::parse_table_header(line, here)) {
+            for (const auto& c : header->columns)
+                if (c.quantity == detail::ColumnQuantity::ignored)
+                    notes.push_back(file.string() + ":" + std::to_string(line_number) + ": column '" + c.header +
+                                    "' ignored");
+            layout = std::move(header);
+            ++blocks;
             continue;
         }
-        if (fields.size() != 3)
-            throw InputError(here, "expected 3 fields (wavelength, n, k), found " + std::to_string(fields.size()));
-        const std::vector<double> v = detail::parse_row(fields, here);
-        detail::check_optical_row(v, fields, "nk", here);
-        n.push_back({v[0] * to_nm, v[1]});
-        k.push_back({v[0] * to_nm, v[2]});
+        if (!layout)
+            throw InputError(here, "a data row before any header line (expected the header 'wavelength_nm,n,k' or "
+                                   "'wavelength_um,n,k', found '" + std::string(line) + "')");
+        detail::add_table_row(line, *layout, here, samples);
     }
-    if (to_nm == 0.0) throw InputError({file, 1}, "empty file (expected the header 'wavelength_nm,n,k')");
-    if (n.empty()) throw InputError({file, line_number}, "no data rows");
+    if (!layout) throw InputError({file, 1}, "empty file (expected the header 'wavelength_nm,n,k')");
+    if (samples.n.empty() && samples.k.empty()) throw InputError({file, line_number}, "no data rows");
+    if (samples.n.empty()) throw InputError({file, line_number}, "no n data (only k)");
 
     Material m;
-    Spectrum ns(std::move(n)), ks(std::move(k));
-    if (const auto conflicts = std::max(ns.conflicting_duplicates(), ks.conflicting_duplicates()); conflicts > 0)
+    m.warnings = notes;
+    Spectrum ns(std::move(samples.n));
+    std::size_t conflicts = ns.conflicting_duplicates();
+    SpectralCurve ks = ConstantSpectrum{0.0};
+    if (samples.k.empty()) {
+        m.warnings.push_back(file.string() + ": no k column: k = 0 assumed");
+    } else {
+        Spectrum tabulated_k(std::move(samples.k));
+        conflicts = std::max(conflicts, tabulated_k.conflicting_duplicates());
+        ks = std::move(tabulated_k);
+    }
+    if (conflicts > 0)
         m.warnings.push_back(file.string() + ": " + std::to_string(conflicts) +
                              " repeated wavelength(s) with different values: their mean is used");
     m.index = ComplexIndex{std::move(ns), std::move(ks)};
     m.id = m.name = file.stem().string();
     m.source = file.filename().string();
     m.provenance.file = file;
-    m.provenance.format = "CSV";
-    m.provenance.data_type = "tabulated nk";
+    m.provenance.format = detail::table_format_name(layout->separator);
+    m.provenance.data_type = blocks > 1                                   ? "tabulated n + tabulated k"
+                             : layout->has(detail::ColumnQuantity::eps1) ? "tabulated e1 e2 (converted to n, k)"
+                                                                         : "tabulated nk";
     m.provenance.sha256 = sha256_file(file);
     return m;
 }
@@ -60,9 +74,9 @@ Material load_nk_csv(const std::filesystem::path& file) {
 Material load_nk_file(const std::filesystem::path& file) {
     std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext == ".csv") return load_nk_csv(file);
+    if (detail::is_table_extension(ext)) return load_nk_csv(file);
     if (ext == ".yml" || ext == ".yaml") return load_refractiveindex_yaml(file);
-    throw InputError({file}, "unknown file type '" + ext + "' (expected .yml, .yaml or .csv)");
+    throw InputError({file}, "unknown file type '" + ext + "' (expected .yml, .yaml, .csv, .tsv, .txt or .dat)");
 }
 
 }  // namespace metalfit

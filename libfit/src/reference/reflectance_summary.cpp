@@ -48,6 +48,7 @@ nlohmann::json reflectance_record(const Material& material, const ReferenceCurve
                        {"format", material.provenance.format},
                        {"data_type", material.provenance.data_type},
                        {"reference", material.provenance.references},
+                       {"note", material.provenance.note},
                        {"conditions", material.provenance.conditions},
                        {"range_nm", {range.min_nm, range.max_nm}},
                        {"points_360_830", material.index.n.tabulated_points_in(kVisibleRange)},

@@ -15,8 +15,10 @@ namespace metalfit {
 
 // One loader per material: every catalog entry (`all`), or each material or file named (loaded here, so that an
 // unknown name or a bad file fails before any work). The loaders refer to `catalog`, which must outlive them.
+// `labels` name and cite a user file (UsageError with `all`, several materials or a catalog material).
 std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, bool all,
-                                                        const std::vector<std::string>& materials, const std::string& source);
+                                                        const std::vector<std::string>& materials, const std::string& source,
+                                                        const UserFileLabels& labels = {});
 
 // The colour pipeline a batch fits under: the OCIO config (each thread builds its own processor from it), the
 // colorimetry, and the converter of the calling thread.

@@ -50,12 +50,21 @@ private:
 };
 
 // True when `argument` names a file rather than a catalog material (it contains a path separator,
-// has a .yml/.yaml/.csv extension, or exists).
+// has a .yml/.yaml/.csv/.tsv/.txt/.dat extension, or exists).
 bool looks_like_path(std::string_view argument);
 
-// Loads a catalog material (optionally a named alternate source) or a user file, with provenance.
-// Unknown material or source: UsageError; bad file: InputError.
+// What a user says about a file of their own (`--name`, `--reference`): shown and exported instead of the file stem
+// and the file's own REFERENCES. Empty fields change nothing.
+struct UserFileLabels {
+    std::string name;       // the material's name and id ("my gold")
+    std::string reference;  // the literature reference ("A. Author, J. Opt. 1, 2 (2020)")
+
+    bool empty() const { return name.empty() && reference.empty(); }
+};
+
+// Loads a catalog material (optionally a named alternate source) or a user file, with provenance; `labels` apply to
+// a user file only. Unknown material or source, or labels for a catalog material: UsageError; bad file: InputError.
 Material load_material(const Catalog& catalog, std::string_view material_or_path,
-                       std::string_view source = {});
+                       std::string_view source = {}, const UserFileLabels& labels = {});
 
 }  // namespace metalfit

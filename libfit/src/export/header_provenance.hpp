@@ -1,0 +1,18 @@
+// Where an exported material's numbers come from, as the lines every export header carries: the data file and its
+// hash, the literature reference, the catalog's caveat, the colour pipeline. One list for every format (each format
+// only prefixes the lines with its comment syntax), so a new provenance item is one push_back here.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "libfit/fit/fit_record.hpp"
+#include "libfit/io/material.hpp"
+
+namespace metalfit::detail {
+
+// One line each, no prefix and no newline: "data source: …", "reference: …", "caveat: …" (only when the material
+// has a note), "colour space: …".
+std::vector<std::string> header_provenance_lines(const Material& material, const FitRecordContext& record);
+
+}  // namespace metalfit::detail

@@ -1,0 +1,39 @@
+// metalfit table: F0 and F82 tint of every catalog metal, linear and as 8-bit display values / hex, with the source
+// and caveat (libfit's metal_table), as CSV, JSON or Markdown.
+#include <nlohmann/json.hpp>
+
+#include "colour_options.hpp"
+#include "commands.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/fit/metal_table.hpp"
+
+namespace metalfit::cli {
+namespace {
+
+struct TableOptions {
+    ColourOptions colour;
+    std::string format = "md";
+    std::filesystem::path output;
+};
+
+}  // namespace
+
+std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& global) {
+    auto o = std::make_shared<TableOptions>();
+    add_colour_options(app, o->colour);
+    app.add_option("--format", o->format, "csv, json or md (Markdown; default md)")->check(CLI::IsMember({"csv", "json", "md"}));
+    app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
+    return [o, &global] {
+        const Catalog catalog = Catalog::load(global.data_dir);
+        const ColourSetup setup = resolve_colour_options(o->colour, global);
+        const ColorSpaceConverter scene_linear = ColorSpaceConverter::create(setup.config);
+        const DisplayTransform display = DisplayTransform::create(setup.config);
+        const MetalTable table =
+            metal_table(catalog, {setup.colorimetry, setup.converter, scene_linear, display, setup.spectral});
+        if (o->format == "csv") emit(metal_table_csv(table), o->output);
+        else if (o->format == "json") emit(metal_table_json(table).dump(2) + "\n", o->output);
+        else emit(metal_table_markdown(table), o->output);
+    };
+}
+
+}  // namespace metalfit::cli
