@@ -342,3 +342,21 @@ TEST_F(Cli, FitOutputIsWrittenWholeOrNotAtAll) {
 }
 
 }  // namespace
+
+// ---- stdout write errors (issue 13, item 5) ---------------------------------------------------------------------
+
+TEST(CliStdout, AFullStdoutIsAnErrorNotASilentSuccess) {
+    for (const char* args : {"list", "show gold", "models", "show gold --json"}) {
+        const std::string command = "env OCIO= '" METALFIT_EXE "' " + std::string(args) + " >/dev/full 2>/dev/null";
+        const int status = std::system(command.c_str());
+        ASSERT_TRUE(WIFEXITED(status)) << args;
+        EXPECT_EQ(WEXITSTATUS(status), 3) << args;
+    }
+    const std::string err_file = ::testing::TempDir() + "metalfit-stdout-err.txt";
+    const std::string command = "env OCIO= '" METALFIT_EXE "' list >/dev/full 2>'" + err_file + "'";
+    std::system(command.c_str());
+    const std::string err = metalfit::test::read_file(err_file);
+    EXPECT_TRUE(err.starts_with("metalfit: cannot write to standard output")) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    std::filesystem::remove(err_file);
+}

@@ -122,3 +122,15 @@ TEST(PreviewCli, BenchmarkModesPrintTheirJson) {
 
 }  // namespace
 }  // namespace metalfit::test
+
+TEST(PreviewCli, AFullStdoutIsAnError) {
+    // issue 13, item 5: what glpreview prints must reach stdout, or it says so and fails
+    TempDir dir;
+    const fs::path scene = dir.write("s.json", R"({"spheres": [{"center": [0, 1, 0], "reflection": "classic"}]})");
+    const std::string command = "env OCIO= '" GLPREVIEW_EXE "' '" + scene.string() + "' --explain >/dev/full 2>'" +
+                                (dir.path() / "err").string() + "'";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 3);
+    EXPECT_TRUE(metalfit::test::read_file(dir.path() / "err").starts_with("glpreview: cannot write to standard output"));
+}

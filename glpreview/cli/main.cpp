@@ -26,7 +26,9 @@ constexpr int ok = metalfit::exit_ok, usage = metalfit::exit_usage, gl_failure =
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_glpreview(int argc, char** argv) {
     using namespace metalfit;
     using namespace metalfit::glpreview;
 
@@ -130,4 +132,10 @@ int main(int argc, char** argv) {
     } catch (...) {
         return report_current_exception("glpreview");
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return metalfit::finish_standard_output("glpreview", run_glpreview(argc, argv));
 }

@@ -41,7 +41,9 @@ std::string first_command_word(int argc, char** argv, std::initializer_list<std:
 
 }  // namespace metalfit::cli
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_metalfit(int argc, char** argv) {
     using namespace metalfit;
     constexpr int ok = exit_ok, usage = exit_usage;
 
@@ -101,4 +103,10 @@ int main(int argc, char** argv) {
     } catch (...) {
         return report_current_exception("metalfit");
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return metalfit::finish_standard_output("metalfit", run_metalfit(argc, argv));
 }

@@ -1,5 +1,8 @@
 #include "libfit/base/errors.hpp"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 
 namespace metalfit {
@@ -38,6 +41,17 @@ int report_current_exception(const char* program) {
         std::cerr << program << ": internal error: " << e.what() << "\n";
         return exit_internal;
     }
+}
+
+int finish_standard_output(const char* program, int code) {
+    errno = 0;
+    std::cout.flush();
+    const bool lost = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+    if (!lost) return code;
+    const int error = errno;
+    std::fprintf(stderr, "%s: cannot write to standard output: %s\n", program,
+                 error == ENOSPC ? "disk full" : error != 0 ? std::strerror(error) : "a write failed (disk full?)");
+    return code == exit_ok ? exit_bad_input : code;
 }
 
 }  // namespace metalfit

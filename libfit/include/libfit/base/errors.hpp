@@ -48,4 +48,8 @@ enum ExitCode : int { exit_ok = 0, exit_internal = 1, exit_usage = 2, exit_bad_i
 // and returns the exit code of the exception being handled.
 int report_current_exception(const char* program);
 
+// At the end of main: flushes stdout; when anything written there was lost (a full disk, a closed pipe, /dev/full)
+// prints "<program>: cannot write to standard output: <why>" and returns exit_bad_input instead of `code`.
+int finish_standard_output(const char* program, int code);
+
 }  // namespace metalfit
