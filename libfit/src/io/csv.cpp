@@ -1,18 +1,19 @@
 #include "libfit/io/csv.hpp"
 
 #include <algorithm>
-#include <fstream>
+#include <sstream>
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
+#include "libfit/base/input_file.hpp"
 #include "libfit/io/refractiveindex.hpp"
 #include "base/parse_number.hpp"
 
 namespace metalfit {
 
 Material load_nk_csv(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError({file}, "cannot open file");
+    const std::string bytes = read_input_file(file);
+    std::istringstream in(bytes);
     double to_nm = 0.0;  // 0 until the header is read
     std::vector<SpectrumSample> n, k;
     int line_number = 0;
@@ -36,8 +37,11 @@ Material load_nk_csv(const std::filesystem::path& file) {
             throw InputError(here, "expected 3 fields (wavelength, n, k), found " + std::to_string(fields.size()));
         const std::vector<double> v = detail::parse_row(fields, here);
         detail::check_optical_row(v, fields, "nk", here);
-        n.push_back({v[0] * to_nm, v[1]});
-        k.push_back({v[0] * to_nm, v[2]});
+        const double nm = detail::wavelength_nm(v[0], to_nm, fields[0], here);
+        if (v[1] == 0.0 && v[2] == 0.0) throw InputError(here, detail::kZeroIndex);
+        if (n.size() >= kMaxTableRows) throw InputError(here, "more than " + std::to_string(kMaxTableRows) + " data rows (the limit)");
+        n.push_back({nm, v[1]});
+        k.push_back({nm, v[2]});
     }
     if (to_nm == 0.0) throw InputError({file, 1}, "empty file (expected the header 'wavelength_nm,n,k')");
     if (n.empty()) throw InputError({file, line_number}, "no data rows");
@@ -53,7 +57,7 @@ Material load_nk_csv(const std::filesystem::path& file) {
     m.provenance.file = file;
     m.provenance.format = "CSV";
     m.provenance.data_type = "tabulated nk";
-    m.provenance.sha256 = sha256_file(file);
+    m.provenance.sha256 = sha256_bytes(bytes);
     return m;
 }
 
