@@ -314,3 +314,25 @@ TEST(AtomicFileDigest, MissingFileThrowsInputError) {
 
 }  // namespace
 }  // namespace metalfit
+
+namespace metalfit {
+namespace {
+
+// ---- Messages (issue 13, item 12) --------------------------------------------------------------------------------
+
+TEST(SanitisedMessage, ControlBytesInvisibleCharactersAndHugeTokensAreMadeSafe) {
+    EXPECT_EQ(sanitised_message("a\nb\tc\x1b[31md"), "a b c\\x1B[31md");
+    EXPECT_EQ(sanitised_message("\xEF\xBB\xBFwavelength_nm"), "<U+FEFF>wavelength_nm");
+    EXPECT_EQ(sanitised_message("caf\xe9 \xc2\xb5m"), "caf\\xE9 \xc2\xb5m");  // a stray Latin-1 byte; µ stays
+    EXPECT_EQ(sanitised_message("x\xE2\x80\xAEy"), "x<U+202E>y");            // right-to-left override
+    const std::string huge(50'000'000, 'x');
+    const std::string cut = sanitised_message("found '" + huge + "'");
+    EXPECT_LE(cut.size(), kMaxMessageBytes + 40);
+    EXPECT_TRUE(cut.ends_with("… (49999008 more bytes)")) << cut.substr(cut.size() - 40);
+    // InputError's message is sanitised too
+    const InputError e({"f.csv", 2}, "non-numeric value '\xEF\xBB\xBF" "1.0\r'");
+    EXPECT_STREQ(e.what(), "f.csv:2: non-numeric value '<U+FEFF>1.0 '");
+}
+
+}  // namespace
+}  // namespace metalfit

@@ -20,7 +20,7 @@ void emit(const std::string& text, const std::filesystem::path& output) {
     else write_file_atomically(output, text);
 }
 
-void warn(const std::string& message) { std::cerr << "metalfit: warning: " << message << "\n"; }
+void warn(const std::string& message) { std::cerr << "metalfit: warning: " << sanitised_message(message) << "\n"; }
 
 std::string fixed(double v, int digits) {
     if (std::isnan(v)) return "-";
