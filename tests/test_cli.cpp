@@ -360,3 +360,22 @@ TEST(CliStdout, AFullStdoutIsAnErrorNotASilentSuccess) {
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
     std::filesystem::remove(err_file);
 }
+
+// ---- Library output (issue 13, item 10) and bad data through the CLI (item 2) ------------------------------------
+
+TEST_F(Cli, CeresPrintsNothingOnAFitWhereResidualsFailToEvaluate) {
+    // n = 0, k = 5: Ceres' residual evaluation fails at some starts and glog printed 151 lines
+    std::ofstream(dir_ / "n0k5.csv") << "wavelength_nm,n,k\n300,0,5\n900,0,5\n";
+    const Result r = run("fit '" + (dir_ / "n0k5.csv").string() + "'");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+}
+
+TEST_F(Cli, ZeroIndexOverABandIsBadInputForEveryCommand) {
+    std::ofstream(dir_ / "zero.csv") << "wavelength_nm,n,k\n400,0.2,3\n500,0,0\n600,0,0\n700,0.3,4\n";
+    for (const char* command : {"fit --metric abs", "show"}) {
+        const Result r = run(std::string(command) + " '" + (dir_ / "zero.csv").string() + "'");
+        EXPECT_EQ(r.exit_code, 3) << command << ": " << r.err;
+        expect_one_line_error(r, "zero.csv:3: n = k = 0");
+    }
+}

@@ -17,6 +17,7 @@
 #include "glpreview/scene/scene.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/library_logging.hpp"
 #include "libfit/base/version.hpp"
 
 namespace {
@@ -137,5 +138,6 @@ int run_glpreview(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    metalfit::route_library_logging("glpreview");
     return metalfit::finish_standard_output("glpreview", run_glpreview(argc, argv));
 }

@@ -11,6 +11,7 @@
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/library_logging.hpp"
 #include "libfit/base/version.hpp"
 
 namespace metalfit::cli {
@@ -108,5 +109,6 @@ int run_metalfit(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    metalfit::route_library_logging("metalfit");
     return metalfit::finish_standard_output("metalfit", run_metalfit(argc, argv));
 }
