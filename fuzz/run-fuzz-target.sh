@@ -5,12 +5,14 @@
 set -euo pipefail
 target=$1 kind=$2 corpus=$3 seconds=$4 src=$5
 mkdir -p "$corpus"
+# Seeds named after their path, so that data/nk/Au/Johnson.yml and data/nk/Cu/Johnson.yml are both kept.
+seed() { for f in "$@"; do cp "$f" "$corpus/$(printf '%s' "$f" | sha256sum | cut -c1-16)-$(basename "$f")"; done; }
 case $kind in
-  yml) find "$src/data/nk" "$src/tests/fixtures" -name '*.yml' -exec cp -t "$corpus" {} + ;;
-  csv) find "$src/tests/fixtures" -name '*.csv' -exec cp -t "$corpus" {} + ;;
-  catalog) cp "$src/data/catalog.json" "$corpus/" ;;
-  ocio) cp "$src/data/ocio/config.ocio" "$corpus/" ;;
-  scene) find "$src/data/scenes" "$src/tests/fixtures" -name '*.json' -path '*scene*' -exec cp -t "$corpus" {} + ;;
+  yml) mapfile -t files < <(find "$src/data/nk" "$src/tests/fixtures" -name '*.yml'); seed "${files[@]}" ;;
+  csv) mapfile -t files < <(find "$src/tests/fixtures" -name '*.csv'); seed "${files[@]}" ;;
+  catalog) seed "$src/data/catalog.json" ;;
+  ocio) seed "$src/data/ocio/config.ocio" ;;
+  scene) mapfile -t files < <(find "$src/data/scenes" -name '*.json'); seed "${files[@]}" ;;
   image) printf '\0#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 2\n\x80\x80\x80\x81\x80\x80\x80\x81\x80\x80\x80\x81\x80\x80\x80\x81' > "$corpus/tiny-hdr" ;;
 esac
 # -rss_limit_mb: a header that makes a reader allocate gigabytes is a finding too.
