@@ -12,6 +12,7 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/input_file.hpp"
+#include "libfit/io/catalog.hpp"
 #include "libfit/io/csv.hpp"
 #include "libfit/io/refractiveindex.hpp"
 
@@ -86,6 +87,24 @@ TEST(InputLimits, OversizedFilesAndTablesAreRefused) {
     for (std::size_t i = 0; i <= kMaxTableRows; ++i) rows += std::to_string(300 + i) + ",1,2\n";
     const std::string many = error_of(tmp.write("many.csv", rows));
     EXPECT_TRUE(Contains(many, ":" + std::to_string(kMaxTableRows + 2) + ": more than 100000 data rows")) << many;
+}
+
+}  // namespace
+}  // namespace metalfit
+
+namespace metalfit {
+namespace {
+
+// Found by fuzz/fuzz_catalog: a number beyond double range was nlohmann's out_of_range, an "internal error".
+TEST(InputLimits, ACatalogNumberBeyondDoubleRangeIsBadInput) {
+    TempDir tmp;
+    tmp.write("catalog.json", "{\"materials\": [], \"x\": 5555555555555555e554555655}");
+    try {
+        Catalog::load(tmp.path());
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(std::string(e.what()).starts_with((tmp.path() / "catalog.json").string() + ": invalid JSON")) << e.what();
+    }
 }
 
 }  // namespace

@@ -63,7 +63,7 @@ Catalog Catalog::load(const std::filesystem::path& data_dir) {
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number like 1e999
         throw InputError({file}, std::string("invalid JSON: ") + e.what());
     }
     const auto materials = j.find("materials");
