@@ -19,6 +19,7 @@ PACKAGES=(
   libopengl-dev libegl-dev             # glpreview: GL 4.5 core through libglvnd, headless EGL
   libegl-mesa0 libgl1-mesa-dri         # Mesa's EGL and llvmpipe: the preview runs without a GPU
   chromium                             # metalfit report: the browser test opens the pages headless
+  clang libclang-rt-14-dev             # the optional fuzz preset: clang with libFuzzer and the sanitizers (fuzz/)
 )
 # npm (from Debian's nodejs + npm unless a node with its own npm is already on PATH): installs the report's chart
 # libraries (vega, vega-lite, vega-embed) and playwright-core, pinned in package.json + package-lock.json.

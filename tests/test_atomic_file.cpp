@@ -8,12 +8,17 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <iterator>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include <signal.h>
+
 #include "libfit/base/atomic_file.hpp"
+#include "libfit/base/deferred_signals.hpp"
+#include "libfit/base/staged_folder.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
 
@@ -136,6 +141,142 @@ TEST(AtomicFile, ReadOnlyDirectoryThrowsAndLeavesNothing) {
     EXPECT_EQ(names, std::vector<std::string>{"existing.txt"}) << join(names);
 }
 
+// ---- Planted links (issue 13, item 1) ------------------------------------------------------------------------------
+
+// Links planted at every name the writer could use for its temporary (the old ".NAME.tmp.<pid>" scheme) must not
+// redirect the output into the file they point to.
+TEST(AtomicFile, LinksPlantedAtPredictableTemporaryNamesAreNotFollowed) {
+    TempDir dir;
+    const fs::path victim = dir.write("victim", "precious");
+    const fs::path target = dir.path() / "out.json";
+    fs::create_symlink(victim, dir.path() / (".out.json.tmp." + std::to_string(::getpid())));
+    write_file_atomically(target, "output");
+    EXPECT_EQ(read_file(victim), "precious");
+    EXPECT_EQ(read_file(target), "output");
+    write_files_atomically(std::vector<OutputFile>{{target, "second"}});
+    EXPECT_EQ(read_file(victim), "precious");
+    EXPECT_EQ(read_file(target), "second");
+}
+
+TEST(AtomicFile, ALinkAtTheTargetIsReplacedNotWrittenThrough) {
+    TempDir dir;
+    const fs::path victim = dir.write("victim", "precious");
+    const fs::path target = dir.path() / "out.json";
+    fs::create_symlink(victim, target);
+    write_file_atomically(target, "output");
+    EXPECT_EQ(read_file(victim), "precious");
+    EXPECT_FALSE(fs::is_symlink(target));
+    EXPECT_EQ(read_file(target), "output");
+}
+
+// ---- Signals: deferred while writing, raised afterwards ---------------------------------------------------------------
+
+TEST(DeferredSignalsDeathTest, ASignalWhileWritingEndsTheProcessAfterCleanup) {
+    TempDir dir;
+    const fs::path target = dir.path() / "out";
+    EXPECT_EXIT(
+        {
+            const DeferredSignals deferred;
+            ::raise(SIGTERM);
+            if (!DeferredSignals::pending()) std::exit(10);
+            try {
+                write_files_atomically(std::vector<OutputFile>{{target, "x"}});
+            } catch (const Interrupted&) {
+                if (!fs::is_empty(dir.path())) std::exit(11);
+                throw;
+            }
+            std::exit(12);
+        },
+        ::testing::KilledBySignal(SIGTERM), "");
+    EXPECT_TRUE(fs::is_empty(dir.path()));
+}
+
+// ---- Folders as one unit (issue 13, items 3 and 6) ---------------------------------------------------------------------
+
+std::map<std::string, std::string> tree(const fs::path& dir) {
+    std::map<std::string, std::string> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) files[e.path().lexically_relative(dir).string()] = read_file(e.path());
+    return files;
+}
+
+TEST(StagedFolder, KeepsOtherFilesReplacesItsOwnAndLeavesNoStaging) {
+    TempDir tmp;
+    const fs::path dir = tmp.path() / "a" / "b";
+    update_folder_as_unit(dir, std::vector<OutputFile>{{"x/one", "1"}, {"top", "t"}});
+    EXPECT_EQ(tree(dir), (std::map<std::string, std::string>{{"x/one", "1"}, {"top", "t"}}));
+    update_folder_as_unit(dir, std::vector<OutputFile>{{"top", "T"}, {"y/two", "2"}});
+    EXPECT_EQ(tree(dir), (std::map<std::string, std::string>{{"x/one", "1"}, {"top", "T"}, {"y/two", "2"}}));
+    EXPECT_EQ(list(tmp.path() / "a"), std::vector<std::string>{"b"});
+}
+
+TEST(StagedFolder, AFailureChangesNothing) {
+    TempDir tmp;
+    const fs::path dir = tmp.path() / "out";
+    update_folder_as_unit(dir, std::vector<OutputFile>{{"f", "old"}});
+    fs::create_directories(dir / "d");
+    EXPECT_THROW(update_folder_as_unit(dir, std::vector<OutputFile>{{"f", "new"}, {"d", "a file where a folder is"}}), InputError);
+    EXPECT_EQ(read_file(dir / "f"), "old");
+    EXPECT_EQ(list(tmp.path()), std::vector<std::string>{"out"});
+    // a merge that refuses: nothing changes either
+    EXPECT_THROW(update_folder_as_unit(dir, std::vector<OutputFile>{{"f", "new"}},
+                                       [](const fs::path&, const std::string&, const std::string&) -> std::string {
+                                           throw InputError({"f"}, "refused");
+                                       }),
+                 InputError);
+    EXPECT_EQ(read_file(dir / "f"), "old");
+    EXPECT_EQ(list(tmp.path()), std::vector<std::string>{"out"});
+}
+
+TEST(StagedFolder, AStaleStagingFolderIsRemovedByTheNextWriter) {
+    TempDir tmp;
+    const fs::path dir = tmp.path() / "out";
+    fs::create_directories(tmp.path() / ".out.metalfit-staging.abc123" / "glsl");
+    tmp.write(".out.metalfit-staging.abc123/glsl/half", "x");
+    update_folder_as_unit(dir, std::vector<OutputFile>{{"f", "1"}});
+    EXPECT_EQ(list(tmp.path()), std::vector<std::string>{"out"});
+}
+
+TEST(StagedFolder, NewFilesAreNotWrittenThroughLinksInTheOldFolder) {
+    TempDir tmp;
+    const fs::path victim = tmp.write("victim", "precious");
+    const fs::path dir = tmp.path() / "out";
+    fs::create_directories(dir);
+    fs::create_symlink(victim, dir / "f");
+    update_folder_as_unit(dir, std::vector<OutputFile>{{"f", "new"}});
+    EXPECT_EQ(read_file(victim), "precious");
+    EXPECT_EQ(read_file(dir / "f"), "new");
+}
+
+TEST(StagedFolder, ParallelWritersIntoOneNewNestedFolderAllSucceedAndKeepEveryFile) {
+    TempDir tmp;
+    const fs::path dir = tmp.path() / "n1" / "n2" / "out";
+    std::vector<std::thread> writers;
+    std::vector<std::string> errors(8);
+    for (int i = 0; i < 8; ++i)
+        writers.emplace_back([&, i] {
+            try {
+                update_folder_as_unit(dir, std::vector<OutputFile>{{"w" + std::to_string(i), std::to_string(i)}});
+            } catch (const std::exception& e) {
+                errors[static_cast<std::size_t>(i)] = e.what();
+            }
+        });
+    for (auto& w : writers) w.join();
+    for (const std::string& e : errors) EXPECT_EQ(e, "");
+    EXPECT_EQ(tree(dir).size(), 8u);
+    EXPECT_EQ(list(tmp.path() / "n1" / "n2"), std::vector<std::string>{"out"});
+}
+
+TEST(StagedFolder, TheCurrentFolderIsRefused) {
+    TempDir tmp;
+    const fs::path before = fs::current_path();
+    fs::current_path(tmp.path());
+    EXPECT_THROW(update_folder_as_unit(".", std::vector<OutputFile>{{"f", "1"}}), UsageError);
+    EXPECT_THROW(update_folder_as_unit(tmp.path().parent_path(), std::vector<OutputFile>{{"f", "1"}}), UsageError);
+    fs::current_path(before);
+    EXPECT_TRUE(fs::is_empty(tmp.path()));
+}
+
 TEST(AtomicFileDigest, Sha256OfAbc) {
     TempDir dir;
     const fs::path file = dir.path() / "abc.txt";
@@ -169,6 +310,28 @@ TEST(AtomicFileDigest, MissingFileThrowsInputError) {
     } catch (const InputError& e) {
         EXPECT_TRUE(Contains(e.what(), file.string()));
     }
+}
+
+}  // namespace
+}  // namespace metalfit
+
+namespace metalfit {
+namespace {
+
+// ---- Messages (issue 13, item 12) --------------------------------------------------------------------------------
+
+TEST(SanitisedMessage, ControlBytesInvisibleCharactersAndHugeTokensAreMadeSafe) {
+    EXPECT_EQ(sanitised_message("a\nb\tc\x1b[31md"), "a b c\\x1B[31md");
+    EXPECT_EQ(sanitised_message("\xEF\xBB\xBFwavelength_nm"), "<U+FEFF>wavelength_nm");
+    EXPECT_EQ(sanitised_message("caf\xe9 \xc2\xb5m"), "caf\\xE9 \xc2\xb5m");  // a stray Latin-1 byte; µ stays
+    EXPECT_EQ(sanitised_message("x\xE2\x80\xAEy"), "x<U+202E>y");            // right-to-left override
+    const std::string huge(50'000'000, 'x');
+    const std::string cut = sanitised_message("found '" + huge + "'");
+    EXPECT_LE(cut.size(), kMaxMessageBytes + 40);
+    EXPECT_TRUE(cut.ends_with("… (49999008 more bytes)")) << cut.substr(cut.size() - 40);
+    // InputError's message is sanitised too
+    const InputError e({"f.csv", 2}, "non-numeric value '\xEF\xBB\xBF" "1.0\r'");
+    EXPECT_STREQ(e.what(), "f.csv:2: non-numeric value '<U+FEFF>1.0 '");
 }
 
 }  // namespace

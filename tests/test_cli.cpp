@@ -763,4 +763,40 @@ TEST_F(Cli, TableGivesF0AndTintOfEveryMetalWithHexAndCaveat) {
     EXPECT_NE(md.out.find("linear ACEScg"), std::string::npos);
     EXPECT_NE(md.out.find("| Ta | tantalum |"), std::string::npos);
     EXPECT_EQ(run("table --format xml").exit_code, 2);
+
+// ---- stdout write errors (issue 13, item 5) ---------------------------------------------------------------------
+
+TEST(CliStdout, AFullStdoutIsAnErrorNotASilentSuccess) {
+    for (const char* args : {"list", "show gold", "models", "show gold --json"}) {
+        const std::string command = "env OCIO= '" METALFIT_EXE "' " + std::string(args) + " >/dev/full 2>/dev/null";
+        const int status = std::system(command.c_str());
+        ASSERT_TRUE(WIFEXITED(status)) << args;
+        EXPECT_EQ(WEXITSTATUS(status), 3) << args;
+    }
+    const std::string err_file = ::testing::TempDir() + "metalfit-stdout-err.txt";
+    const std::string command = "env OCIO= '" METALFIT_EXE "' list >/dev/full 2>'" + err_file + "'";
+    std::system(command.c_str());
+    const std::string err = metalfit::test::read_file(err_file);
+    EXPECT_TRUE(err.starts_with("metalfit: cannot write to standard output")) << err;
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    std::filesystem::remove(err_file);
+}
+
+// ---- Library output (issue 13, item 10) and bad data through the CLI (item 2) ------------------------------------
+
+TEST_F(Cli, CeresPrintsNothingOnAFitWhereResidualsFailToEvaluate) {
+    // n = 0, k = 5: Ceres' residual evaluation fails at some starts and glog printed 151 lines
+    std::ofstream(dir_ / "n0k5.csv") << "wavelength_nm,n,k\n300,0,5\n900,0,5\n";
+    const Result r = run("fit '" + (dir_ / "n0k5.csv").string() + "'");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+}
+
+TEST_F(Cli, ZeroIndexOverABandIsBadInputForEveryCommand) {
+    std::ofstream(dir_ / "zero.csv") << "wavelength_nm,n,k\n400,0.2,3\n500,0,0\n600,0,0\n700,0.3,4\n";
+    for (const char* command : {"fit --metric abs", "show"}) {
+        const Result r = run(std::string(command) + " '" + (dir_ / "zero.csv").string() + "'");
+        EXPECT_EQ(r.exit_code, 3) << command << ": " << r.err;
+        expect_one_line_error(r, "zero.csv:3: n = k = 0");
+    }
 }

@@ -11,6 +11,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "libfit/io/catalog.hpp"
 #include "libfit/color/color_space.hpp"
@@ -425,3 +426,68 @@ TEST(MaterialxColorspace, MatchesTheSpacesNameOrAliasesCaseInsensitively) {
 }
 
 }  // namespace
+
+// ---- A second export into a folder (issue 12, item 5) and parallel exports (issue 13, item 6) ------------------------
+
+namespace {
+std::map<std::string, std::string> files_below(const fs::path& dir) {
+    std::map<std::string, std::string> files;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        if (e.is_regular_file()) files[e.path().lexically_relative(dir).string()] = metalfit::test::read_file(e.path());
+    return files;
+}
+}  // namespace
+
+TEST(ExportMerge, ASecondMaterialIsAddedToTheIndexesNotSwappedForThem) {
+    TempDir tmp;
+    const fs::path dir = tmp.path() / "out";
+    Result r = run("export Au --model f82-tint --format json,cpp,glsl -o '" + dir.string() + "'", tmp.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = run("export Cu --model schlick --format json,cpp,glsl -o '" + dir.string() + "'", tmp.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json record = nlohmann::json::parse(metalfit::test::read_file(dir / "metalfit_export.json"));
+    EXPECT_TRUE(record["materials"].contains("Au"));
+    EXPECT_TRUE(record["materials"].contains("Cu"));
+    EXPECT_TRUE(record["materials"]["Au"]["models"].contains("f82-tint"));
+    const std::string index = metalfit::test::read_file(dir / "cpp" / "metalfit_materials.hpp");
+    EXPECT_NE(index.find("#include \"metalfit_au_f82_tint.hpp\""), std::string::npos) << index;
+    EXPECT_NE(index.find("#include \"metalfit_cu_schlick.hpp\""), std::string::npos) << index;
+    EXPECT_NE(index.find("std::array<Entry, 2>"), std::string::npos) << index;
+    const std::string models = metalfit::test::read_file(dir / "glsl" / "metalfit_models.glsl");
+    EXPECT_NE(models.find("vec3 metalfit_f82_tint("), std::string::npos);  // Au's file still finds its function
+    EXPECT_NE(models.find("vec3 metalfit_schlick("), std::string::npos);
+
+    // Another colour space cannot share the record: refused, saying why, and the folder is unchanged.
+    const auto before = files_below(dir);
+    r = run("export Ag --model schlick --format json --space ACEScg -o '" + dir.string() + "'", tmp.path());
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("ACEScg"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("metalfit_export.json"), std::string::npos) << r.err;
+    EXPECT_EQ(files_below(dir), before);
+}
+
+TEST(ExportMerge, ParallelExportsIntoOneNewNestedFolderAllSucceed) {
+    TempDir tmp;
+    const fs::path dir = tmp.path() / "a" / "b" / "out";
+    std::vector<std::thread> runs;
+    std::vector<Result> results(4);
+    const std::vector<std::string> materials{"Au", "Cu", "Ag", "Al"};
+    for (std::size_t i = 0; i < materials.size(); ++i)
+        runs.emplace_back([&, i] {
+            const fs::path scratch = tmp.path() / ("s" + std::to_string(i));
+            fs::create_directories(scratch);
+            results[i] = run("export " + materials[i] + " --model f82-tint --format json,cpp -o '" + dir.string() + "'", scratch);
+        });
+    for (auto& t : runs) t.join();
+    for (const Result& r : results) EXPECT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json record = nlohmann::json::parse(metalfit::test::read_file(dir / "metalfit_export.json"));
+    EXPECT_EQ(record["materials"].size(), 4u);
+}
+
+TEST(ExportMerge, TheCurrentFolderIsRefusedWithAReason) {
+    TempDir tmp;
+    const Result r = run("export Au --model f82-tint --format json -o .", tmp.path());
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("current folder"), std::string::npos) << r.err;
+}

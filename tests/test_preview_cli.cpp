@@ -5,6 +5,10 @@
 #include <set>
 #include <nlohmann/json.hpp>
 
+#include <sys/stat.h>
+
+#include "glpreview/io/image_io.hpp"
+#include "libfit/base/errors.hpp"
 #include "libfit/models/model.hpp"
 #include "test_support.hpp"
 
@@ -211,6 +215,41 @@ TEST(PreviewCli, SheetFilesAreRelativeToTheCurrentFolderNotTheScenes) {
     EXPECT_TRUE(Contains(explained.out, (dir.path() / "my-gold.csv").string())) << explained.out;
     ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
     EXPECT_TRUE(fs::exists(dir.path() / "out" / "sheet.json"));
+
+TEST(PreviewCli, AFullStdoutIsAnError) {
+    // issue 13, item 5: what glpreview prints must reach stdout, or it says so and fails
+    TempDir dir;
+    const fs::path scene = dir.write("s.json", R"({"spheres": [{"center": [0, 1, 0], "reflection": "classic"}]})");
+    const std::string command = "env OCIO= '" GLPREVIEW_EXE "' '" + scene.string() + "' --explain >/dev/full 2>'" +
+                                (dir.path() / "err").string() + "'";
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 3);
+    EXPECT_TRUE(read_file(dir.path() / "err").starts_with("glpreview: cannot write to standard output"));
+}
+
+// issue 13, items 7 and 8: an image header is checked before any pixel is allocated; special files are refused
+TEST(PreviewImageInput, HostileHeadersAndSpecialFilesAreBadInputNotMemoryOrAHang) {
+    TempDir dir;
+    const auto message_of = [](const fs::path& file) -> std::string {
+        try {
+            metalfit::glpreview::read_image(file);
+        } catch (const metalfit::InputError& e) {
+            return e.what();
+        }
+        return "";
+    };
+    const fs::path huge = dir.write("huge.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 20000 +X 20000\n" + std::string(200, '\x02'));
+    const std::string h = message_of(huge);
+    EXPECT_TRUE(h.starts_with(huge.string() + ": ")) << h;
+    EXPECT_TRUE(Contains(h, "20000 x 20000")) << h;
+    const fs::path negative = dir.write("neg.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y -5 +X 20\n");
+    const std::string n = message_of(negative);
+    EXPECT_TRUE(n.starts_with(negative.string() + ": ")) << n;
+    const fs::path fifo = dir.path() / "sky.exr";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_EQ(message_of(fifo), fifo.string() + ": cannot read the image: not a regular file");
+    EXPECT_EQ(message_of("/dev/zero"), "/dev/zero: cannot read the image: not a regular file");
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "glpreview/scene/scene.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/library_logging.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/io/catalog.hpp"
 
@@ -27,7 +28,9 @@ constexpr int ok = metalfit::exit_ok, usage = metalfit::exit_usage, gl_failure =
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_glpreview(int argc, char** argv) {
     using namespace metalfit;
     using namespace metalfit::glpreview;
 
@@ -146,4 +149,11 @@ int main(int argc, char** argv) {
     } catch (...) {
         return report_current_exception("glpreview");
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    metalfit::route_library_logging("glpreview");
+    return metalfit::finish_standard_output("glpreview", run_glpreview(argc, argv));
 }

@@ -12,6 +12,7 @@
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/library_logging.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/models/model.hpp"
 
@@ -28,7 +29,7 @@ std::string model_ids() {
     return ids;
 }
 
-void warn(const std::string& message) { std::cerr << "metalfit: warning: " << message << "\n"; }
+void warn(const std::string& message) { std::cerr << "metalfit: warning: " << sanitised_message(message) << "\n"; }
 
 std::string fixed(double v, int digits) {
     if (std::isnan(v)) return "-";
@@ -49,7 +50,9 @@ std::string first_command_word(int argc, char** argv, std::initializer_list<std:
 
 }  // namespace metalfit::cli
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_metalfit(int argc, char** argv) {
     using namespace metalfit;
     constexpr int ok = exit_ok, usage = exit_usage;
 
@@ -121,4 +124,11 @@ int main(int argc, char** argv) {
     } catch (...) {
         return report_current_exception("metalfit");
     }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    metalfit::route_library_logging("metalfit");
+    return metalfit::finish_standard_output("metalfit", run_metalfit(argc, argv));
 }

@@ -1,10 +1,12 @@
 #include "glpreview/io/image_io.hpp"
 
 #include <OpenImageIO/imageio.h>
+#include <stdlib.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cmath>
-#include <random>
+#include <memory>
 #include <system_error>
 
 #include "libfit/base/errors.hpp"
@@ -12,19 +14,18 @@
 namespace metalfit::glpreview {
 namespace {
 
-// "out/beauty.exr" → "out/.beauty.partial-<n>.exr": the extension is kept so that OpenImageIO picks the format.
-std::filesystem::path temporary_beside(const std::filesystem::path& file) {
-    std::random_device random;
-    return file.parent_path() /
-           ("." + file.stem().string() + ".partial-" + std::to_string(random() % 1000000) + file.extension().string());
-}
-
-// Writes pixels of `format` through OpenImageIO into a temporary file, then renames it over `file`.
+// Writes pixels of `format` through OpenImageIO into a new private folder beside `file` (mkdtemp: a name nobody can
+// plant a link at), then renames the image over `file` and removes the folder.
 void write_pixels(const std::filesystem::path& file, const OIIO::ImageSpec& spec, OIIO::TypeDesc format, const void* pixels) {
-    const std::filesystem::path temporary = temporary_beside(file);
+    const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+    std::string pattern = (dir / ("." + file.filename().string().substr(0, 200) + ".partial-XXXXXX")).string();
+    if (::mkdtemp(pattern.data()) == nullptr)
+        throw InputError(InputLocation(file), "cannot write the image: directory " + dir.string() + " is not writable");
+    const std::filesystem::path staging = pattern;
+    const std::filesystem::path temporary = staging / file.filename();
     auto fail = [&](const std::string& why) {
         std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
+        std::filesystem::remove_all(staging, ignored);
         throw InputError(InputLocation(file), "cannot write the image: " + why);
     };
     auto out = OIIO::ImageOutput::create(file.string());
@@ -35,13 +36,38 @@ void write_pixels(const std::filesystem::path& file, const OIIO::ImageSpec& spec
     std::error_code error;
     std::filesystem::rename(temporary, file, error);
     if (error) fail(error.message());
+    std::filesystem::remove(staging, error);
+}
+
+// Opens an image for reading after checking what a header can claim: a regular file (a FIFO or /dev/zero would hang
+// or never end) and dimensions within kMaxImageSide and kMaxImagePixels, before any pixel is allocated.
+std::unique_ptr<OIIO::ImageInput> open_checked(const std::filesystem::path& file) {
+    struct stat st {};
+    if (::stat(file.c_str(), &st) != 0) throw InputError(InputLocation(file), "cannot read the image: no such file");
+    if (!S_ISREG(st.st_mode)) throw InputError(InputLocation(file), "cannot read the image: not a regular file");
+    std::unique_ptr<OIIO::ImageInput> in;
+    try {
+        in = OIIO::ImageInput::open(file.string());
+    } catch (const std::exception& e) {
+        throw InputError(InputLocation(file), std::string("cannot read the image: ") + e.what());
+    }
+    if (!in) throw InputError(InputLocation(file), "cannot read the image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
+        static_cast<long long>(spec.width) * spec.height > kMaxImagePixels || spec.depth > 1 || spec.nchannels < 1 ||
+        spec.nchannels > 64)
+        throw InputError(InputLocation(file), "image dimensions " + std::to_string(spec.width) + " x " +
+                                                  std::to_string(spec.height) + " x " + std::to_string(spec.nchannels) +
+                                                  " channels are outside the limits (sides up to " +
+                                                  std::to_string(kMaxImageSide) + ", " + std::to_string(kMaxImagePixels) +
+                                                  " pixels, 64 channels)");
+    return in;
 }
 
 }  // namespace
 
 Image read_image(const std::filesystem::path& file) {
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in) throw InputError(InputLocation(file), "cannot read the image: " + OIIO::geterror());
+    auto in = open_checked(file);
     const OIIO::ImageSpec& spec = in->spec();
     const int channels = spec.nchannels;
     std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * channels);
@@ -69,8 +95,7 @@ void write_png(const std::filesystem::path& file, const Image& image, const Disp
 }
 
 Png8 read_png8(const std::filesystem::path& file) {
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in) throw InputError(InputLocation(file), "cannot read the image: " + OIIO::geterror());
+    auto in = open_checked(file);
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.nchannels != 3) throw InputError(InputLocation(file), "expected an RGB image");
     Png8 png{spec.width, spec.height, std::vector<unsigned char>(static_cast<std::size_t>(spec.width) * spec.height * 3)};

@@ -1,92 +1,115 @@
 #include "libfit/base/atomic_file.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
-#include <cstdio>
-#include <fstream>
 #include <system_error>
 #include <vector>
 
+#include "base/exclusive_file.hpp"
+#include "libfit/base/deferred_signals.hpp"
 #include "libfit/base/errors.hpp"
 
 namespace metalfit {
+namespace {
 
-void write_file_atomically(const std::filesystem::path& target, std::string_view contents) {
-    namespace fs = std::filesystem;
-    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+namespace fs = std::filesystem;
+
+fs::path directory_of(const fs::path& target) { return target.has_parent_path() ? target.parent_path() : fs::path("."); }
+
+// What is at `target` now, without following a link there.
+enum class TargetKind { none, regular, link, directory, written_in_place, refused };
+
+TargetKind kind_of(const fs::path& target) {
+    struct stat st {};
+    if (::lstat(target.c_str(), &st) != 0) return TargetKind::none;
+    if (S_ISREG(st.st_mode)) return TargetKind::regular;
+    if (S_ISDIR(st.st_mode)) return TargetKind::directory;
+    if (S_ISLNK(st.st_mode)) {
+        // /dev/stdout, /dev/fd/N, /proc/self/fd/N: links the system keeps, written through. Any other link is
+        // replaced by the renamed file, never written through (a planted link cannot redirect the output).
+        const std::string s = target.string();
+        const bool system_link = s.starts_with("/dev/") || s.starts_with("/proc/");
+        return system_link ? TargetKind::written_in_place : TargetKind::link;
+    }
+    if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)) return TargetKind::written_in_place;
+    return TargetKind::refused;  // block devices
+}
+
+void write_in_place(const fs::path& target, std::string_view contents) {
+    const int fd = ::open(target.c_str(), O_WRONLY | O_TRUNC | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0) throw InputError({target}, "cannot write: " + detail::describe_errno(errno));
+    int error = detail::write_all(fd, contents) ? 0 : errno;
+    if (::close(fd) != 0 && error == 0) error = errno;
+    if (error != 0) throw InputError({target}, "cannot write: " + detail::describe_errno(error));
+}
+
+[[noreturn]] void throw_cannot_write(const fs::path& target, int error) {
+    if (error == EACCES || error == EPERM || error == EROFS)
+        throw InputError({target}, "cannot write: directory " + directory_of(target).string() + " is not writable");
+    throw InputError({target}, "cannot write: " + detail::describe_errno(error));
+}
+
+void check_target(const fs::path& target, TargetKind kind) {
+    if (kind == TargetKind::directory) throw InputError({target}, "cannot write: it is a directory");
+    if (kind == TargetKind::refused) throw InputError({target}, "cannot write: it exists and is not a regular file");
     std::error_code ec;
+    if (!fs::is_directory(directory_of(target), ec))
+        throw InputError({target}, "cannot write: directory " + directory_of(target).string() + " does not exist");
+}
+
+}  // namespace
+
+void write_file_atomically(const fs::path& target, std::string_view contents) {
+    const TargetKind kind = kind_of(target);
     // A device, FIFO or terminal (-o /dev/null, -o /dev/stdout) is written in place: renaming a regular file over it
     // would replace the device itself.
-    if (fs::exists(target, ec) && !fs::is_regular_file(target, ec)) {
-        if (fs::is_directory(target, ec)) throw InputError({target}, "cannot write: it is a directory");
-        std::ofstream out(target, std::ios::binary);
-        out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-        out.flush();
-        if (!out) throw InputError({target}, "cannot write");
-        return;
-    }
-    if (!fs::is_directory(dir, ec))
-        throw InputError({target}, "cannot write: directory " + dir.string() + " does not exist");
-    std::string temporary_name = ".";
-    temporary_name += target.filename().string();
-    temporary_name += ".tmp.";
-    temporary_name += std::to_string(::getpid());
-    const fs::path temporary = dir / temporary_name;
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) throw InputError({target}, "cannot write: directory " + dir.string() + " is not writable");
-        out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-        out.flush();
-        if (!out) {
-            out.close();
-            fs::remove(temporary, ec);
-            throw InputError({target}, "cannot write (disk full?)");
-        }
-    }
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        throw InputError({target}, "cannot rename temporary file into place");
+    if (kind == TargetKind::written_in_place) return write_in_place(target, contents);
+    check_target(target, kind);
+    const DeferredSignals deferred;
+    int error = 0;
+    const auto temporary = detail::write_temporary_beside(target, contents, error);
+    if (!temporary) throw_cannot_write(target, error);
+    if (DeferredSignals::pending() || ::rename(temporary->c_str(), target.c_str()) != 0) {
+        error = errno;
+        ::unlink(temporary->c_str());
+        DeferredSignals::throw_if_pending();
+        throw InputError({target}, "cannot rename temporary file into place: " + detail::describe_errno(error));
     }
 }
 
-}  // namespace metalfit
-
-namespace metalfit {
-
 void write_files_atomically(std::span<const OutputFile> files) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
+    const DeferredSignals deferred;
     std::vector<fs::path> temporaries;
-    const auto remove_temporaries = [&] {
-        for (const fs::path& t : temporaries) fs::remove(t, ec);
+    const auto remove_temporaries = [&](std::size_t from) {
+        for (std::size_t j = from; j < temporaries.size(); ++j) ::unlink(temporaries[j].c_str());
     };
     for (const OutputFile& f : files) {
-        if (fs::exists(f.path, ec) && !fs::is_regular_file(f.path, ec))
-            throw InputError({f.path}, "cannot write: it exists and is not a regular file");
-        const fs::path dir = f.path.has_parent_path() ? f.path.parent_path() : fs::path(".");
-        const fs::path temporary = dir / ("." + f.path.filename().string() + ".tmp." + std::to_string(::getpid()));
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) {
-            remove_temporaries();
-            throw InputError({f.path}, "cannot write: directory " + dir.string() + " is not writable");
-        }
-        temporaries.push_back(temporary);
-        out.write(f.contents.data(), static_cast<std::streamsize>(f.contents.size()));
-        out.flush();
-        if (!out) {
-            remove_temporaries();
-            throw InputError({f.path}, "cannot write (disk full?)");
+        const TargetKind kind = kind_of(f.path);
+        try {
+            if (kind == TargetKind::written_in_place)
+                throw InputError({f.path}, "cannot write: it exists and is not a regular file");
+            check_target(f.path, kind);
+            DeferredSignals::throw_if_pending();
+            int error = 0;
+            const auto temporary = detail::write_temporary_beside(f.path, f.contents, error);
+            if (!temporary) throw_cannot_write(f.path, error);
+            temporaries.push_back(*temporary);
+        } catch (...) {
+            remove_temporaries(0);
+            throw;
         }
     }
     std::vector<fs::path> renamed_new;  // targets that did not exist before
     for (std::size_t i = 0; i < files.size(); ++i) {
-        const bool existed = fs::exists(files[i].path, ec);
-        fs::rename(temporaries[i], files[i].path, ec);
-        if (ec) {
-            for (std::size_t j = i; j < temporaries.size(); ++j) fs::remove(temporaries[j], ec);
-            for (const fs::path& p : renamed_new) fs::remove(p, ec);
-            throw InputError({files[i].path}, "cannot rename temporary file into place");
+        const bool existed = kind_of(files[i].path) != TargetKind::none;
+        if (DeferredSignals::pending() || ::rename(temporaries[i].c_str(), files[i].path.c_str()) != 0) {
+            const int error = errno;
+            remove_temporaries(i);
+            for (const fs::path& p : renamed_new) ::unlink(p.c_str());
+            DeferredSignals::throw_if_pending();
+            throw InputError({files[i].path}, "cannot rename temporary file into place: " + detail::describe_errno(error));
         }
         if (!existed) renamed_new.push_back(files[i].path);
     }

@@ -1,5 +1,8 @@
 #include "libfit/base/errors.hpp"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 
 namespace metalfit {
@@ -11,13 +14,64 @@ std::string format_location(const InputLocation& where, const std::string& messa
     out += ": ";
     if (!where.field.empty()) out += where.field + ": ";
     out += message;
-    // One line, always: newlines from parsers or file contents are folded.
-    for (char& c : out)
-        if (c == '\n' || c == '\r') c = ' ';
-    return out;
+    return sanitised_message(out);
+}
+
+// The length of the UTF-8 sequence starting at text[i], 0 when it is not one; `code` its code point.
+std::size_t utf8_sequence(std::string_view text, std::size_t i, char32_t& code) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const std::size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+    if (length == 0 || i + length > text.size()) return 0;
+    code = length == 1 ? c : length == 2 ? (c & 0x1F) : length == 3 ? (c & 0x0F) : (c & 0x07);
+    for (std::size_t j = 1; j < length; ++j) {
+        const auto d = static_cast<unsigned char>(text[i + j]);
+        if ((d >> 6) != 0x2) return 0;
+        code = (code << 6) | (d & 0x3F);
+    }
+    const bool overlong = (length == 2 && code < 0x80) || (length == 3 && code < 0x800) || (length == 4 && code < 0x10000);
+    if (overlong || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return 0;
+    return length;
+}
+
+bool invisible(char32_t code) {
+    return code == 0xFEFF || (code >= 0x200B && code <= 0x200F) || (code >= 0x202A && code <= 0x202E) ||
+           (code >= 0x2066 && code <= 0x2069) || (code >= 0x80 && code < 0xA0) || code == 0x2028 || code == 0x2029;
 }
 
 }  // namespace
+
+std::string sanitised_message(std::string_view message, std::size_t max_bytes) {
+    std::string out;
+    std::size_t i = 0;
+    char buffer[16];
+    while (i < message.size()) {
+        if (out.size() >= max_bytes) {
+            out += "… (" + std::to_string(message.size() - i) + " more bytes)";
+            break;
+        }
+        char32_t code = 0;
+        const std::size_t length = utf8_sequence(message, i, code);
+        if (length == 0) {
+            std::snprintf(buffer, sizeof buffer, "\\x%02X", static_cast<unsigned char>(message[i]));
+            out += buffer;
+            ++i;
+            continue;
+        }
+        if (code == '\n' || code == '\r' || code == '\t') {
+            out += ' ';
+        } else if (code < 0x20 || code == 0x7F) {
+            std::snprintf(buffer, sizeof buffer, "\\x%02X", static_cast<unsigned>(code));
+            out += buffer;
+        } else if (invisible(code)) {
+            std::snprintf(buffer, sizeof buffer, "<U+%04X>", static_cast<unsigned>(code));
+            out += buffer;
+        } else {
+            out.append(message.substr(i, length));
+        }
+        i += length;
+    }
+    return out;
+}
 
 InputError::InputError(const InputLocation& where, const std::string& message)
     : std::runtime_error(format_location(where, message)), where_(where) {}
@@ -26,18 +80,29 @@ int report_current_exception(const char* program) {
     try {
         throw;
     } catch (const UsageError& e) {
-        std::cerr << program << ": " << e.what() << "\n";
+        std::cerr << program << ": " << sanitised_message(e.what()) << "\n";
         return exit_usage;
     } catch (const InputError& e) {
         std::cerr << program << ": " << e.what() << "\n";
         return exit_bad_input;
     } catch (const ColorConfigError& e) {
-        std::cerr << program << ": " << e.what() << "\n";
+        std::cerr << program << ": " << sanitised_message(e.what()) << "\n";
         return exit_colour_config;
     } catch (const std::exception& e) {
-        std::cerr << program << ": internal error: " << e.what() << "\n";
+        std::cerr << program << ": internal error: " << sanitised_message(e.what()) << "\n";
         return exit_internal;
     }
+}
+
+int finish_standard_output(const char* program, int code) {
+    errno = 0;
+    std::cout.flush();
+    const bool lost = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+    if (!lost) return code;
+    const int error = errno;
+    std::fprintf(stderr, "%s: cannot write to standard output: %s\n", program,
+                 error == ENOSPC ? "disk full" : error != 0 ? std::strerror(error) : "a write failed (disk full?)");
+    return code == exit_ok ? exit_bad_input : code;
 }
 
 }  // namespace metalfit

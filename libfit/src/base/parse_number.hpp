@@ -78,4 +78,15 @@ inline void check_optical_row(const std::vector<double>& row, const std::vector<
                                         std::string(fields[i + 1]));
 }
 
+// The wavelength of a row in nm: `value` × `to_nm` (1 or 1000 for µm), refused when that overflows.
+inline double wavelength_nm(double value, double to_nm, std::string_view field, const InputLocation& where) {
+    const double nm = value * to_nm;
+    if (!std::isfinite(nm) || nm > 1e12)
+        throw InputError(where, "wavelength " + std::string(field) + " is out of range (" + (to_nm == 1.0 ? "nm" : "µm") + ")");
+    return nm;
+}
+
+// n + ik = 0: no material has it; the Fresnel reflectance is 0/0 there.
+inline constexpr const char* kZeroIndex = "n = k = 0: not a material (the Fresnel reflectance is undefined)";
+
 }  // namespace metalfit::detail

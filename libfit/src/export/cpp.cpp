@@ -77,18 +77,48 @@ std::string_view cpp_glsl_prelude() { return kCppPrelude; }
 
 namespace detail {
 
-std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials, const ExportContext& context) {
-    std::vector<ExportFile> files;
-    files.push_back({"cpp/metalfit_models.hpp",
-                     "// metalfit " METALFIT_VERSION " Fresnel models for C++: the GLSL of libfit/models, unchanged but for "
-                     "`inline`, over a\n// small vec3 prelude (docs/export.md). F(mu), mu = cos(theta), per RGB channel.\n"
-                     "#pragma once\n\n" +
-                         std::string(kCppPrelude) + inline_functions(glsl_library(context.request.models)) +
-                         "\n}  // namespace metalfit_shader\n"});
+std::string cpp_materials_index(const std::vector<CppIndexEntry>& entries) {
     std::string umbrella = "// metalfit " METALFIT_VERSION " exports: every material and model of this export, and one table of them.\n"
                            "#pragma once\n\n#include <array>\n\n";
     std::string table;
-    std::size_t count = 0;
+    for (const CppIndexEntry& e : entries) {
+        umbrella += e.include + "\n";
+        table += e.row + "\n";
+    }
+    umbrella += "\nnamespace metalfit_materials {\n\nstruct Entry {\n    const char* material;\n    const char* model;\n"
+                "    metalfit_shader::vec3 (*evaluate)(float mu);\n    int parameter_count;\n"
+                "    std::array<const std::array<double, 3>*, 4> parameters;  // in the order of `metalfit models`\n};\n\n"
+                "inline const std::array<Entry, " + std::to_string(entries.size()) + "> all{{\n" + table +
+                "}};\n\n}  // namespace metalfit_materials\n";
+    return umbrella;
+}
+
+std::vector<CppIndexEntry> parse_cpp_materials_index(std::string_view text) {
+    std::vector<std::string> includes, rows;
+    while (!text.empty()) {
+        const auto nl = text.find('\n');
+        const std::string_view line = text.substr(0, nl);
+        if (line.starts_with("#include \"")) includes.emplace_back(line);
+        if (line.starts_with("    {\"")) rows.emplace_back(line);
+        text = nl == std::string_view::npos ? std::string_view{} : text.substr(nl + 1);
+    }
+    if (includes.size() != rows.size()) throw std::invalid_argument("includes and table rows differ in number");
+    std::vector<CppIndexEntry> entries;
+    for (std::size_t i = 0; i < includes.size(); ++i) entries.push_back({includes[i], rows[i]});
+    return entries;
+}
+
+std::string cpp_models_file(const std::vector<const Model*>& models) {
+    return "// metalfit " METALFIT_VERSION " Fresnel models for C++: the GLSL of libfit/models, unchanged but for "
+           "`inline`, over a\n// small vec3 prelude (docs/export.md). F(mu), mu = cos(theta), per RGB channel.\n"
+           "#pragma once\n\n" +
+           std::string(kCppPrelude) + inline_functions(glsl_library(models)) + "\n}  // namespace metalfit_shader\n";
+}
+
+std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials, const ExportContext& context) {
+    std::vector<ExportFile> files;
+    files.push_back({"cpp/metalfit_models.hpp", cpp_models_file(context.request.models)});
+    std::vector<CppIndexEntry> index;
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models) {
             const WrittenParameters& w = e.written;
@@ -110,16 +140,11 @@ std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials,
                     "    return metalfit_shader::" + std::string(w.model->glsl_function()) + "(" + args + "mu);\n}\n\n}  // namespace " +
                     stem + "\n";
             files.push_back({"cpp/" + stem + ".hpp", text});
-            umbrella += "#include \"" + stem + ".hpp\"\n";
-            table += "    {\"" + m.fit->material.id + "\", \"" + std::string(w.model->id()) + "\", &" + stem +
-                     "::evaluate, " + std::to_string(parameters.size()) + ", {" + pointers + "}},\n";
-            ++count;
+            index.push_back({"#include \"" + stem + ".hpp\"",
+                             "    {\"" + m.fit->material.id + "\", \"" + std::string(w.model->id()) + "\", &" + stem +
+                                 "::evaluate, " + std::to_string(parameters.size()) + ", {" + pointers + "}},"});
         }
-    umbrella += "\nnamespace metalfit_materials {\n\nstruct Entry {\n    const char* material;\n    const char* model;\n"
-                "    metalfit_shader::vec3 (*evaluate)(float mu);\n    int parameter_count;\n"
-                "    std::array<const std::array<double, 3>*, 4> parameters;  // in the order of `metalfit models`\n};\n\n"
-                "inline const std::array<Entry, " + std::to_string(count) + "> all{{\n" + table + "}};\n\n}  // namespace metalfit_materials\n";
-    files.push_back({"cpp/metalfit_materials.hpp", umbrella});
+    files.push_back({"cpp/metalfit_materials.hpp", cpp_materials_index(index)});
     return files;
 }
 

@@ -16,6 +16,7 @@
 #include "export/export_formats.hpp"
 #include "export/header_provenance.hpp"
 #include "libfit/base/atomic_file.hpp"
+#include "libfit/base/staged_folder.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/color/ocio_config_contents.hpp"
@@ -341,38 +342,66 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
     return files;
 }
 
-void write_export(const std::filesystem::path& requested_dir, const std::vector<ExportFile>& files) {
-    namespace fs = std::filesystem;
-    // "gold/" names the folder "gold": without the trailing separator, so that creating it is not tried twice.
-    const fs::path dir = requested_dir.has_filename() || !requested_dir.has_relative_path() ? requested_dir
-                                                                                          : requested_dir.parent_path();
-    std::error_code ec;
-    // Folders this call creates, outermost first, so that a failure can take them away again.
-    std::vector<fs::path> created;
-    const auto make_dir = [&](const fs::path& d) {
-        std::vector<fs::path> missing;
-        for (fs::path p = d; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
-            missing.push_back(p);
-            if (p == p.parent_path()) break;
-        }
-        for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-            if (!fs::create_directory(*it, ec) || ec) throw InputError({*it}, "cannot create directory");
-            created.push_back(*it);
-        }
-        if (!fs::is_directory(d, ec)) throw InputError({d}, "cannot write: not a directory");
-    };
-    std::vector<OutputFile> outputs;
-    try {
-        make_dir(dir);
-        for (const ExportFile& f : files) {
-            make_dir((dir / f.path).parent_path());
-            outputs.push_back({dir / f.path, f.contents});
-        }
-        write_files_atomically(outputs);
-    } catch (...) {
-        for (auto it = created.rbegin(); it != created.rend(); ++it) fs::remove(*it, ec);  // only removes empty ones
-        throw;
+namespace {
+
+// The registered models whose functions a shared model file defines ("vec3 metalfit_schlick(", "float3 …").
+std::vector<const Model*> models_defined_in(std::string_view text) {
+    std::vector<const Model*> models;
+    for (const Model* m : all_models()) {
+        const std::string name = std::string(m->glsl_function()) + "(";
+        if (text.find("vec3 " + name) != std::string_view::npos || text.find("float3 " + name) != std::string_view::npos)
+            models.push_back(m);
     }
+    return models;
+}
+
+// The index files of a second export into a folder: merged with what is there, so that no entry is lost.
+std::string merge_index(const std::filesystem::path& dir, const std::filesystem::path& relative, const std::string& existing,
+                        const std::string& mine) {
+    const std::string name = relative.generic_string();
+    try {
+        if (name == "metalfit_export.json") return detail::merge_json_record(existing, mine);
+        if (name == "cpp/metalfit_materials.hpp") {
+            std::vector<detail::CppIndexEntry> entries = detail::parse_cpp_materials_index(existing);
+            for (const detail::CppIndexEntry& e : detail::parse_cpp_materials_index(mine)) {
+                const auto same = std::find_if(entries.begin(), entries.end(),
+                                               [&](const detail::CppIndexEntry& x) { return x.include == e.include; });
+                if (same != entries.end()) *same = e;
+                else entries.push_back(e);
+            }
+            return detail::cpp_materials_index(entries);
+        }
+        if (name == "glsl/metalfit_models.glsl" || name == "hlsl/metalfit_models.hlsl" || name == "cpp/metalfit_models.hpp") {
+            std::vector<const Model*> models = models_defined_in(existing);
+            const std::vector<const Model*> now = models_defined_in(mine);
+            if (std::all_of(models.begin(), models.end(), [&](const Model* m) {
+                    return std::find(now.begin(), now.end(), m) != now.end();
+                }))
+                return mine;
+            std::vector<const Model*> all;  // registry order
+            for (const Model* m : all_models())
+                if (std::find(models.begin(), models.end(), m) != models.end() || std::find(now.begin(), now.end(), m) != now.end())
+                    all.push_back(m);
+            if (name.starts_with("glsl/")) return detail::glsl_models_file(all);
+            if (name.starts_with("hlsl/")) return detail::hlsl_models_file(all);
+            return detail::cpp_models_file(all);
+        }
+    } catch (const std::invalid_argument& e) {
+        throw InputError({dir / relative}, std::string("cannot add this export to the folder: ") + e.what() +
+                                               "; export into another folder or remove this one");
+    }
+    return mine;
+}
+
+}  // namespace
+
+void write_export(const std::filesystem::path& dir, const std::vector<ExportFile>& files) {
+    std::vector<OutputFile> outputs;
+    outputs.reserve(files.size());
+    for (const ExportFile& f : files) outputs.push_back({f.path, f.contents});
+    update_folder_as_unit(dir, outputs, [&](const std::filesystem::path& relative, const std::string& existing, const std::string& mine) {
+        return merge_index(dir, relative, existing, mine);
+    });
 }
 
 }  // namespace metalfit

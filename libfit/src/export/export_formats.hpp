@@ -55,6 +55,25 @@ struct ShaderSyntax {
 std::string shader_constants(const MaterialExport& material, const ModelExport& model, const ExportContext& context,
                              const ShaderSyntax& syntax);
 
+// The shared files of model functions, for a list of models (an export's, or the union when merging).
+std::string glsl_models_file(const std::vector<const Model*>& models);
+std::string hlsl_models_file(const std::vector<const Model*>& models);
+std::string cpp_models_file(const std::vector<const Model*>& models);
+
+// cpp/metalfit_materials.hpp: one #include and one table row per material and model.
+struct CppIndexEntry {
+    std::string include;  // #include "<stem>.hpp"
+    std::string row;      // {"Au", "f82-tint", &<stem>::evaluate, …},
+};
+std::string cpp_materials_index(const std::vector<CppIndexEntry>& entries);
+// The entries of a file cpp_materials_index wrote; std::invalid_argument when it is not one.
+std::vector<CppIndexEntry> parse_cpp_materials_index(std::string_view text);
+
+// metalfit_export.json: the record already in a folder with the materials and models of `mine` added (replacing
+// the same material and model). std::invalid_argument saying why when the two cannot be one record (other colour
+// space, illuminant, settings or version; the same material from other data).
+std::string merge_json_record(const std::string& existing, const std::string& mine);
+
 std::vector<ExportFile> export_json(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_glsl(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_hlsl(const std::vector<MaterialExport>& materials, const ExportContext& context);

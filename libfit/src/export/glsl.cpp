@@ -28,13 +28,16 @@ std::string shader_constants(const MaterialExport& material, const ModelExport& 
     return text;
 }
 
+std::string glsl_models_file(const std::vector<const Model*>& models) {
+    return "// metalfit " METALFIT_VERSION " Fresnel models: the GLSL of libfit/models, unchanged (`metalfit models --glsl`).\n"
+           "// F(mu), mu = cos(theta), per RGB channel. Paste after #version (GLSL >= 1.30 or ES 3.00).\n" +
+           glsl_library(models);
+}
+
 std::vector<ExportFile> export_glsl(const std::vector<MaterialExport>& materials, const ExportContext& context) {
     static constexpr ShaderSyntax kGlsl{"const vec3", "vec3", "metalfit_models.glsl"};
     std::vector<ExportFile> files;
-    files.push_back({"glsl/metalfit_models.glsl",
-                     "// metalfit " METALFIT_VERSION " Fresnel models: the GLSL of libfit/models, unchanged (`metalfit models --glsl`).\n"
-                     "// F(mu), mu = cos(theta), per RGB channel. Paste after #version (GLSL >= 1.30 or ES 3.00).\n" +
-                         glsl_library(context.request.models)});
+    files.push_back({"glsl/metalfit_models.glsl", glsl_models_file(context.request.models)});
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models)
             files.push_back({"glsl/" + file_stem(m.fit->material.id, e.written.model->id()) + ".glsl",

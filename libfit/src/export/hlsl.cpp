@@ -81,13 +81,16 @@ std::string hlsl_from_glsl(std::string_view glsl) {
 
 namespace detail {
 
+std::string hlsl_models_file(const std::vector<const Model*>& models) {
+    return "// metalfit " METALFIT_VERSION " Fresnel models for HLSL: the GLSL of libfit/models translated mechanically "
+           "(prelude + token mapping, docs/export.md).\n// F(mu), mu = cos(theta), per RGB channel.\n" +
+           hlsl_from_glsl(glsl_library(models));
+}
+
 std::vector<ExportFile> export_hlsl(const std::vector<MaterialExport>& materials, const ExportContext& context) {
     static constexpr ShaderSyntax kHlsl{"static const float3", "float3", "metalfit_models.hlsl"};
     std::vector<ExportFile> files;
-    files.push_back({"hlsl/metalfit_models.hlsl",
-                     "// metalfit " METALFIT_VERSION " Fresnel models for HLSL: the GLSL of libfit/models translated mechanically "
-                     "(prelude + token mapping, docs/export.md).\n// F(mu), mu = cos(theta), per RGB channel.\n" +
-                         hlsl_from_glsl(glsl_library(context.request.models))});
+    files.push_back({"hlsl/metalfit_models.hlsl", hlsl_models_file(context.request.models)});
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models)
             files.push_back({"hlsl/" + file_stem(m.fit->material.id, e.written.model->id()) + ".hlsl",

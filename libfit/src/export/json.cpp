@@ -34,4 +34,43 @@ std::vector<ExportFile> export_json(const std::vector<MaterialExport>& materials
     return {{"metalfit_export.json", record.dump(2) + "\n"}};
 }
 
+std::string merge_json_record(const std::string& existing, const std::string& mine) {
+    Json old_record, new_record;
+    try {
+        old_record = Json::parse(existing);
+    } catch (const Json::exception&) {
+        throw std::invalid_argument("not a metalfit export record (invalid JSON)");
+    }
+    new_record = Json::parse(mine);
+    if (!old_record.is_object() || old_record.value("schema", "") != new_record["schema"] ||
+        !old_record.contains("materials") || !old_record["materials"].is_object())
+        throw std::invalid_argument("not a " + new_record["schema"].get<std::string>() + " record");
+    for (const auto& [key, value] : new_record.items())
+        if (key != "materials" && old_record[key] != value) {
+            std::string differs;
+            if (value.is_object())
+                for (const auto& [k, v] : value.items())
+                    if (!old_record[key].contains(k) || old_record[key][k] != v) {
+                        differs = key + "." + k + " " + old_record[key].value(k, Json()).dump() + " there, " + v.dump() + " now";
+                        break;
+                    }
+            throw std::invalid_argument("it was written with other settings (" + (differs.empty() ? key : differs) +
+                                        "): one record cannot hold both");
+        }
+    Json& materials = old_record["materials"];
+    for (const auto& [id, material] : new_record["materials"].items()) {
+        if (!materials.contains(id)) {
+            materials[id] = material;
+            continue;
+        }
+        Json& old_material = materials[id];
+        for (const auto& [key, value] : material.items())
+            if (key != "models" && old_material[key] != value)
+                throw std::invalid_argument("material " + id + " there was exported from other data (" + key +
+                                            " differs): one record cannot hold both");
+        for (const auto& [model, record] : material["models"].items()) old_material["models"][model] = record;
+    }
+    return old_record.dump(2) + "\n";
+}
+
 }  // namespace metalfit::detail

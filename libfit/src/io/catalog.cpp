@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/input_file.hpp"
 #include "libfit/io/csv.hpp"
 
 namespace metalfit {
@@ -55,12 +56,14 @@ const CatalogSource& CatalogEntry::find_source(std::string_view source) const {
 
 Catalog Catalog::load(const std::filesystem::path& data_dir) {
     const auto file = data_dir / "catalog.json";
-    std::ifstream in(file);
-    if (!in) throw InputError({file}, "cannot open the catalog (set $METALFIT_DATA to the data folder)");
+    std::error_code missing;
+    if (!std::filesystem::exists(file, missing))
+        throw InputError({file}, "cannot open the catalog (set $METALFIT_DATA to the data folder)");
+    const std::string text = read_input_file(file);
     nlohmann::json j;
     try {
-        j = nlohmann::json::parse(in);
-    } catch (const nlohmann::json::parse_error& e) {
+        j = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range for a number like 1e999
         throw InputError({file}, std::string("invalid JSON: ") + e.what());
     }
     const auto materials = j.find("materials");

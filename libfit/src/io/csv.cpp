@@ -1,11 +1,13 @@
 #include "libfit/io/csv.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <optional>
+#include <sstream>
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
+#include "libfit/base/input_file.hpp"
+#include "libfit/base/input_file.hpp"
 #include "libfit/io/refractiveindex.hpp"
 #include "base/parse_number.hpp"
 #include "io/table_columns.hpp"
@@ -13,8 +15,8 @@
 namespace metalfit {
 
 Material load_nk_csv(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError({file}, "cannot open file");
+    const std::string bytes = read_input_file(file);  // a regular file within the size limit (input_file.hpp)
+    std::istringstream in(bytes);
     std::optional<detail::TableLayout> layout;  // none until the first header line
     detail::TableSamples samples;
     std::vector<std::string> notes;
@@ -38,6 +40,8 @@ Material load_nk_csv(const std::filesystem::path& file) {
         if (!layout)
             throw InputError(here, "a data row before any header line (expected the header 'wavelength_nm,n,k' or "
                                    "'wavelength_um,n,k', found '" + std::string(line) + "')");
+        if (std::max(samples.n.size(), samples.k.size()) >= kMaxTableRows)
+            throw InputError(here, "more than " + std::to_string(kMaxTableRows) + " data rows (the limit)");
         detail::add_table_row(line, *layout, here, samples);
     }
     if (!layout) throw InputError({file, 1}, "empty file (expected the header 'wavelength_nm,n,k')");
@@ -67,7 +71,7 @@ Material load_nk_csv(const std::filesystem::path& file) {
     m.provenance.data_type = blocks > 1                                   ? "tabulated n + tabulated k"
                              : layout->has(detail::ColumnQuantity::eps1) ? "tabulated e1 e2 (converted to n, k)"
                                                                          : "tabulated nk";
-    m.provenance.sha256 = sha256_file(file);
+    m.provenance.sha256 = sha256_bytes(bytes);
     return m;
 }
 

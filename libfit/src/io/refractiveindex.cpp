@@ -2,12 +2,13 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <fstream>
+#include <cstdio>
 #include <optional>
 #include <sstream>
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
+#include "libfit/base/input_file.hpp"
 #include "base/parse_number.hpp"
 
 namespace metalfit {
@@ -17,10 +18,26 @@ namespace {
 constexpr const char* kSupportedTypes =
     "tabulated nk, tabulated n, tabulated k, formula 1, formula 2";
 
+// The file's text; InputError naming the line of the first byte that is not UTF-8 (yaml-cpp would stop on it
+// with an exception that names no file).
 std::string read_text(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError({file}, "cannot open file");
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    std::string text = read_input_file(file);
+    int line = 1;
+    for (std::size_t i = 0; i < text.size();) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c == '\n') ++line;
+        const std::size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+        bool valid = length > 0 && i + length <= text.size() && !(length == 2 && c < 0xC2);
+        for (std::size_t j = 1; valid && j < length; ++j) valid = (static_cast<unsigned char>(text[i + j]) >> 6) == 0x2;
+        if (!valid) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "0x%02X", c);
+            throw InputError({file, line}, std::string("byte ") + hex + " is not UTF-8 (a YAML file is UTF-8 text)");
+        }
+        if (c == 0) throw InputError({file, line}, "a NUL byte (not a text file)");
+        i += length;
+    }
+    return text;
 }
 
 std::vector<std::string> split_lines(const std::string& text) {
@@ -86,6 +103,11 @@ public:
             }
         }
         if (!n) throw InputError({file_, line_of(data), "DATA"}, "no n data (only k)");
+        // A "tabulated n" row with n = 0 is n = k = 0 where k is 0 there (no k data: everywhere).
+        for (const InputLocation& here : zero_n_) {
+            const double nm = zero_n_nm_[static_cast<std::size_t>(&here - zero_n_.data())];
+            if (!k || (*k)(nm, Interpolation::linear, OutOfRange::clamp) == 0.0) throw InputError(here, detail::kZeroIndex);
+        }
         if (!k) {
             m.warnings.push_back(file_.string() + ": no k data (" + types.front() +
                                  " only): k = 0 assumed");
@@ -94,7 +116,7 @@ public:
         std::string joined;
         for (const auto& t : types) joined += (joined.empty() ? "" : " + ") + t;
         m.provenance.data_type = joined;
-        m.provenance.sha256 = sha256_file(file_);
+        m.provenance.sha256 = sha256_bytes(text_);
         m.index = ComplexIndex{std::move(*n), std::move(*k)};
         m.id = m.name = file_.stem().string();
         m.source = file_.filename().string();
@@ -171,7 +193,14 @@ private:
                                            std::to_string(fields.size()));
             const std::vector<double> v = detail::parse_row(fields, here);
             detail::check_optical_row(v, fields, columns == 2 ? "nk" : is_k ? "k" : "n", here);
-            const double nm = v[0] * 1000.0;  // µm → nm
+            const double nm = detail::wavelength_nm(v[0], 1000.0, fields[0], here);  // µm → nm
+            if (columns == 2 && v[1] == 0.0 && v[2] == 0.0) throw InputError(here, detail::kZeroIndex);
+            if (columns == 1 && !is_k && v[1] == 0.0) {
+                zero_n_.push_back(here);
+                zero_n_nm_.push_back(nm);
+            }
+            if (first.size() >= kMaxTableRows)
+                throw InputError(here, "more than " + std::to_string(kMaxTableRows) + " data rows (the limit)");
             first.push_back({nm, v[1]});
             if (columns == 2) second.push_back({nm, v[2]});
         }
@@ -198,6 +227,8 @@ private:
         const auto r = numbers(range, where + ".wavelength_range");
         if (r.size() != 2 || !(r[0] > 0.0 && r[1] > r[0]))
             throw InputError({file_, line_of(range), where + ".wavelength_range"}, "expected two increasing positive wavelengths in µm");
+        if (!(r[1] * 1000.0 <= 1e12))
+            throw InputError({file_, line_of(range), where + ".wavelength_range"}, "wavelength out of range (µm)");
         auto c = numbers(coefficients, where + ".coefficients");
         if (c.empty()) throw InputError({file_, line_of(coefficients), where + ".coefficients"}, "no coefficients");
         return SellmeierFormula(squared ? SellmeierFormula::Form::squared_poles : SellmeierFormula::Form::linear_poles,
@@ -208,6 +239,8 @@ private:
     std::string text_;
     std::vector<std::string> lines_;  // to tell block scalars from plain ones
     std::vector<std::string> warnings_;
+    std::vector<InputLocation> zero_n_;  // rows of "tabulated n" blocks with n = 0, and their wavelengths
+    std::vector<double> zero_n_nm_;
 };
 
 }  // namespace

@@ -233,6 +233,7 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
     }
     if (n < 0.0) throw InputError(where, "negative refractive index n = " + std::string(n_text));
     if (k < 0.0) throw InputError(where, "negative extinction coefficient k = " + std::string(k_text));
+    if (n == 0.0 && k == 0.0) throw InputError(where, kZeroIndex);
     if (!std::isnan(n)) samples.n.push_back({nm, n});
     if (!std::isnan(k)) samples.k.push_back({nm, k});
 }

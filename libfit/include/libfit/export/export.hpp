@@ -77,8 +77,10 @@ std::string materialx_colorspace(const OcioConfigChoice& config, const std::stri
 // stderr): today, MaterialX documents in a space MaterialX cannot name.
 std::vector<std::string> export_warnings(const FitRecordContext& context, const ExportRequest& request);
 
-// Writes all files below `dir` (created if missing) as one unit: every file goes to a temporary name first and is
-// renamed into place only when all were written; on failure nothing new is left behind. Throws InputError.
+// Writes all files below `dir` (created if missing) as one unit (update_folder_as_unit: staged in a folder beside
+// `dir`, switched in with one rename; interrupted or failed, nothing changes). Files of an earlier export there stay;
+// its index files (metalfit_export.json, cpp/metalfit_materials.hpp and the shared model files) are merged with the
+// new entries, or the export is refused with an InputError saying why (another colour space or settings).
 void write_export(const std::filesystem::path& dir, const std::vector<ExportFile>& files);
 
 // The mechanical GLSL → HLSL translation of libfit's model functions (docs/export.md): a prelude of helpers plus a

@@ -1,0 +1,11 @@
+// libFuzzer target: HDR and EXR environment images through OpenImageIO (glpreview/io read_image: the header check,
+// then the pixels). The first byte picks the extension, so both readers are reached.
+#include "fuzz_input.hpp"
+#include "glpreview/io/image_io.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size == 0) return 0;
+    const auto file = metalfit::fuzz::input_file(data + 1, size - 1, data[0] & 1 ? "input.exr" : "input.hdr");
+    metalfit::fuzz::expect_only_documented_errors([&] { metalfit::glpreview::read_image(file); });
+    return 0;
+}
