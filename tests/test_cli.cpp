@@ -763,6 +763,7 @@ TEST_F(Cli, TableGivesF0AndTintOfEveryMetalWithHexAndCaveat) {
     EXPECT_NE(md.out.find("linear ACEScg"), std::string::npos);
     EXPECT_NE(md.out.find("| Ta | tantalum |"), std::string::npos);
     EXPECT_EQ(run("table --format xml").exit_code, 2);
+}
 
 // ---- stdout write errors (issue 13, item 5) ---------------------------------------------------------------------
 

@@ -40,7 +40,7 @@ void write_pixels(const std::filesystem::path& file, const OIIO::ImageSpec& spec
 }
 
 // Opens an image for reading after checking what a header can claim: a regular file (a FIFO or /dev/zero would hang
-// or never end) and dimensions within kMaxImageSide and kMaxImagePixels, before any pixel is allocated.
+// or never end) and dimensions within kMaxInputImageSide and kMaxInputImagePixels, before any pixel is allocated.
 std::unique_ptr<OIIO::ImageInput> open_checked(const std::filesystem::path& file) {
     struct stat st {};
     if (::stat(file.c_str(), &st) != 0) throw InputError(InputLocation(file), "cannot read the image: no such file");
@@ -53,13 +53,13 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::filesystem::path& file
     }
     if (!in) throw InputError(InputLocation(file), "cannot read the image: " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
-        static_cast<long long>(spec.width) * spec.height > kMaxImagePixels || spec.depth > 1 || spec.nchannels < 1 ||
+    if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxInputImageSide || spec.height > kMaxInputImageSide ||
+        static_cast<long long>(spec.width) * spec.height > kMaxInputImagePixels || spec.depth > 1 || spec.nchannels < 1 ||
         spec.nchannels > 64)
         throw InputError(InputLocation(file), "image dimensions " + std::to_string(spec.width) + " x " +
                                                   std::to_string(spec.height) + " x " + std::to_string(spec.nchannels) +
                                                   " channels are outside the limits (sides up to " +
-                                                  std::to_string(kMaxImageSide) + ", " + std::to_string(kMaxImagePixels) +
+                                                  std::to_string(kMaxInputImageSide) + ", " + std::to_string(kMaxInputImagePixels) +
                                                   " pixels, 64 channels)");
     return in;
 }

@@ -10,7 +10,7 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     // The materials are the graph's import: resolved (and fitted) before any pass runs, in sphere order, so that a
     // bad material is reported as before any file is touched.
     FresnelLibrary library(options.data_dir, options.ocio, scene.file);
-    PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, false, {}};
+    PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, {}, {}};
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
         run.fresnel.push_back(&library.get(scene.spheres[i], "spheres[" + std::to_string(i) + "]"));
 
@@ -28,6 +28,7 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     skip_unneeded_effects(graph);
     result.plan = plan_of(graph, features);
     graph.execute();
+    run.commit_outputs();
 
     result.renderer = run.renderer_name;
     if (const Image* beauty = graph.result(h.beauty)) result.beauty = *beauty;

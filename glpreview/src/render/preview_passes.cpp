@@ -37,7 +37,6 @@ void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, 
             const std::filesystem::path path = run->output_file(file);
             if (png) write_png(path, image_of(r.get(image)), *run->display);
             else write_exr(path, image_of(r.get(image)));
-            run->written.push_back(path);
         });
 }
 
@@ -111,15 +110,17 @@ GpuRenderer& PreviewRun::renderer() {
 }
 
 std::filesystem::path PreviewRun::output_file(const std::string& name) {
-    if (!output_dir_made) {
-        std::error_code error;
-        std::filesystem::create_directories(output_dir, error);
-        if (error) throw InputError(InputLocation(output_dir), "cannot create the output folder: " + error.message());
+    if (!staging) {
+        staging.emplace(output_dir);
         if (scene.outputs.png) display = DisplayTransform::create(ocio);
-        output_dir_made = true;
     }
     if (!display && std::filesystem::path(name).extension() == ".png") display = DisplayTransform::create(ocio);
-    return output_dir / name;
+    written.push_back(output_dir / name);
+    return staging->file(name);
+}
+
+void PreviewRun::commit_outputs() {
+    if (staging) staging->commit();
 }
 
 SceneInputs import_scene(PassGraph& graph, const Scene& scene) {
@@ -241,7 +242,6 @@ void add_json_file_pass(PassGraph& graph, const std::string& file, const std::st
             if (run->output_dir.empty()) return;
             const std::filesystem::path path = run->output_file(file);
             write_file_atomically(path, r.get(json).dump(2) + "\n");
-            run->written.push_back(path);
         });
 }
 

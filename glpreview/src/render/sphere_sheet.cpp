@@ -129,12 +129,13 @@ SphereSheet render_sphere_sheet(const Scene& base, const std::vector<std::string
     check_sheet_scene(base);
     FresnelLibrary library(options.data_dir, options.ocio, base.file);
     Scene scene = base;
-    PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, false, {}};
+    PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, {}, {}};
     graph::PassGraph graph;
     const graph::Handle<Json> record = add_sheet_passes(graph, base, scene, materials, &library, &run);
     graph.before_first_gpu_pass([&run] { run.open_gl(); });
     graph.compile();
     graph.execute();
+    run.commit_outputs();
     return {*graph.result(record), run.written};
 }
 

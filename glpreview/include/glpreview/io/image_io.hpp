@@ -12,8 +12,8 @@ namespace metalfit::glpreview {
 
 // The largest image read (an environment map): sides up to 16384 and 2^27 pixels (16384 x 8192, 1.5 GiB as float
 // RGB); a header claiming more is refused before any pixel is read.
-inline constexpr int kMaxImageSide = 16384;
-inline constexpr long long kMaxImagePixels = 1LL << 27;
+inline constexpr int kMaxInputImageSide = 16384;
+inline constexpr long long kMaxInputImagePixels = 1LL << 27;
 
 // Any OpenImageIO file (a regular file: FIFOs and devices are refused); RGB (a grey image is expanded, alpha dropped). Throws InputError naming the file.
 Image read_image(const std::filesystem::path& file);

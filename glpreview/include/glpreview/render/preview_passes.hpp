@@ -18,6 +18,7 @@
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/gpu_resources.hpp"
+#include "glpreview/render/output_staging.hpp"
 #include "glpreview/io/image.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
 #include "libfit/color/color_space.hpp"
@@ -44,12 +45,16 @@ struct PreviewRun {
     std::string renderer_name;                  // GL_RENDERER once a GPU pass ran
     std::optional<GpuRenderer> gpu;
     std::optional<DisplayTransform> display;
-    bool output_dir_made = false;
-    std::vector<std::filesystem::path> written;
+    std::optional<OutputStaging> staging;       // made by the first file written
+    std::vector<std::filesystem::path> written;  // final paths (output_dir / name), valid after commit_outputs()
 
     void open_gl();             // the context (if none) and the renderer; called before the first GPU pass
     GpuRenderer& renderer();
-    std::filesystem::path output_file(const std::string& name);  // makes the folder (and the display transform)
+    // Where a pass writes the output file `name` (staged; the display transform is made with the first file) and
+    // records output_dir / name as written.
+    std::filesystem::path output_file(const std::string& name);
+    // After the graph ran: every staged file into output_dir as one unit (nothing there changes when one failed).
+    void commit_outputs();
 };
 
 // Scene inputs every preview graph imports.
