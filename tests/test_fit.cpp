@@ -1060,7 +1060,8 @@ TEST(FitConstraints, PinnedF0HoldsNormalIncidenceExactly) {
     EXPECT_GT(held, 100);
     // Gold's red R(1) > 1 in Linear Rec.709: the n, k models (F0(n, k) < 1) cannot hold it.
     EXPECT_GE(refused, 3);
-    EXPECT_GT(std::abs(fitted("Zn").result("schlick").fit.value.metrics.err_f0[0]), 0.05);
+    // The unpinned Schlick fit of zinc moves red F0 measurably (−3.99 % on Werner 2009, zinc's primary; 1e-9 pinned).
+    EXPECT_GT(std::abs(fitted("Zn").result("schlick").fit.value.metrics.err_f0[0]), 0.02);
 }
 
 // err_f0 = M(1) / R(1) − 1, with R(1) from the reference curve itself.
@@ -1072,8 +1073,9 @@ TEST(FitMetrics, ErrorAtNormalIncidenceIsSignedAndRelative) {
             const double M1 = r.model->evaluate(std::span<const double>(r.fit.value.params[c]), 1.0);
             EXPECT_NEAR(r.fit.value.metrics.err_f0[c], M1 / R1[c] - 1.0, 1e-12) << r.model->id();
         }
-    // Schlick on zinc buys grazing accuracy with a lower F0 (issue 14): negative.
-    EXPECT_LT(f.result("schlick").fit.value.metrics.err_f0[0], -0.05);
+    // Schlick on zinc buys grazing accuracy with a lower F0 (issue 14): negative, −3.99 % in red on Werner 2009
+    // (zinc's primary; Querry 1987, the primary before, gave beyond −5 %).
+    EXPECT_LT(f.result("schlick").fit.value.metrics.err_f0[0], -0.02);
 }
 
 // Issue 12 item 7 / issue 13 item 11: a closed form outside the model's bounds (Gulbrandsen g > 1 where n is below
