@@ -653,19 +653,35 @@ TEST(FitClosedForms, FitIsNeverWorseThanAnyClosedFormForEveryCatalogMetal) {
                 }
                 any_defined = true;
                 const PerChannel& closed = form.value->metrics.rel_rms;
-                for (int c = 0; c < 3; ++c)
-                    EXPECT_LE(fit[c], closed[c] * (1 + 1e-12)) << what << " closed " << form.id << " " << kChannel[c];
-                EXPECT_LE(worst_channel(fit), worst_channel(closed) * (1 + 1e-12)) << what << " closed " << form.id;
+                for (int c = 0; c < 3; ++c) {
+                    const bool inside = within_bounds(*r.model, form.value->params[c]);
+                    EXPECT_EQ(inside, !Contains(form.outside_bounds, std::string(kChannelNames[c]) + ": "))
+                        << what << " closed " << form.id << ": " << form.outside_bounds;
+                    if (inside) {
+                        EXPECT_LE(fit[c], closed[c] * (1 + 1e-12)) << what << " closed " << form.id << " " << kChannel[c];
+                    } else if (closed[c] < fit[c]) {
+                        // Outside the bounds and better: never kept (issue 13 item 11), and the record says so.
+                        EXPECT_TRUE(Contains(r.fit.unrepresentable[c], "cannot represent"))
+                            << what << " closed " << form.id << " " << kChannel[c] << ": " << form.outside_bounds;
+                    }
+                }
+                if (form.outside_bounds.empty()) {
+                    EXPECT_LE(worst_channel(fit), worst_channel(closed) * (1 + 1e-12)) << what << " closed " << form.id;
+                }
             }
             ASSERT_EQ(r.best_closed.has_value(), any_defined) << what;
             if (r.best_closed) {
-                // best_closed is the defined form with the lowest worst channel.
-                const double best = worst_channel(r.closed_forms[*r.best_closed].value->metrics.rel_rms);
+                // best_closed is the defined form with the lowest worst channel, inside the bounds or not (what
+                // --params closed exports); the fit competes with it only where it lies inside the bounds.
+                const ClosedFormResult& best_form = r.closed_forms[*r.best_closed];
+                const double best = worst_channel(best_form.value->metrics.rel_rms);
                 for (const ClosedFormResult& form : r.closed_forms)
                     if (form.value) {
                         EXPECT_LE(best, worst_channel(form.value->metrics.rel_rms)) << what << " " << form.id;
                     }
-                EXPECT_LE(worst_channel(fit), best * (1 + 1e-12)) << what;
+                if (best_form.outside_bounds.empty()) {
+                    EXPECT_LE(worst_channel(fit), best * (1 + 1e-12)) << what;
+                }
             }
         }
     }
@@ -1044,7 +1060,8 @@ TEST(FitConstraints, PinnedF0HoldsNormalIncidenceExactly) {
     EXPECT_GT(held, 100);
     // Gold's red R(1) > 1 in Linear Rec.709: the n, k models (F0(n, k) < 1) cannot hold it.
     EXPECT_GE(refused, 3);
-    EXPECT_GT(std::abs(fitted("Zn").result("schlick").fit.value.metrics.err_f0[0]), 0.05);
+    // The unpinned Schlick fit of zinc moves red F0 measurably (−3.99 % on Werner 2009, zinc's primary; 1e-9 pinned).
+    EXPECT_GT(std::abs(fitted("Zn").result("schlick").fit.value.metrics.err_f0[0]), 0.02);
 }
 
 // err_f0 = M(1) / R(1) − 1, with R(1) from the reference curve itself.
@@ -1056,8 +1073,9 @@ TEST(FitMetrics, ErrorAtNormalIncidenceIsSignedAndRelative) {
             const double M1 = r.model->evaluate(std::span<const double>(r.fit.value.params[c]), 1.0);
             EXPECT_NEAR(r.fit.value.metrics.err_f0[c], M1 / R1[c] - 1.0, 1e-12) << r.model->id();
         }
-    // Schlick on zinc buys grazing accuracy with a lower F0 (issue 14): negative.
-    EXPECT_LT(f.result("schlick").fit.value.metrics.err_f0[0], -0.05);
+    // Schlick on zinc buys grazing accuracy with a lower F0 (issue 14): negative, −3.99 % in red on Werner 2009
+    // (zinc's primary; Querry 1987, the primary before, gave beyond −5 %).
+    EXPECT_LT(f.result("schlick").fit.value.metrics.err_f0[0], -0.02);
 }
 
 // Issue 12 item 7 / issue 13 item 11: a closed form outside the model's bounds (Gulbrandsen g > 1 where n is below

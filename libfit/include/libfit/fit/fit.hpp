@@ -50,7 +50,9 @@ std::string outside_bounds(const Model& model, const ChannelParameters& params);
 struct ModelResult {
     const Model* model = nullptr;
     std::vector<ClosedFormResult> closed_forms;
-    // The defined closed form with the lowest worst-channel chosen metric, if any is defined.
+    // The defined closed form with the lowest worst-channel chosen metric, if any is defined, inside the bounds or not
+    // (its outside_bounds says): what `--params closed` exports. Never the fit's fallback by itself: FitResult::fallback
+    // takes only forms inside the bounds, channel by channel.
     std::optional<std::size_t> best_closed;
     FitResult fit;
 };

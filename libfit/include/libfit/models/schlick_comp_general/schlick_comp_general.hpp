@@ -42,7 +42,8 @@ struct SchlickCompGeneral {
     // "r1": F0 = R(1), p = 5, a = 0 (Schlick).
     static std::vector<ClosedForm> closed_forms(const ClosedFormInput& input);
     static std::vector<ChannelParameters> neutral_starts() { return {{0.5, 5.0, 0.0, 6.0}, {0.9, 5.0, 0.3, 2.0}}; }
-    // Variable projection: for p on a grid from 1.5 to 64 (18 values) and a log grid of α, (F0, a) solved exactly; the best α of each p.
+    // Variable projection: for p on a grid from 1.5 to 64 (18 values) and a log grid of α, (F0, a) solved exactly; the
+    // best α of each p, then the 3 best p of the uncompensated curve (a = 0, F0 solved exactly, α = 1).
     static std::vector<ChannelParameters> target_starts(const ChannelTarget& target);
 };
 
