@@ -49,7 +49,8 @@ TEST(InputLimits, ZeroIndexRowsAreBadInputNamingTheLine) {
 TEST(InputLimits, AWavelengthOverflowingInNanometresIsBadInput) {
     TempDir tmp;
     const std::string csv = error_of(tmp.write("o.csv", "wavelength_um,n,k\n1e306,0.2,3\n2e306,0.2,3\n"));
-    EXPECT_EQ(csv, (tmp.path() / "o.csv").string() + ":2: wavelength 1e306 is out of range (µm)");
+    EXPECT_EQ(csv, (tmp.path() / "o.csv").string() +
+                       ":2: wavelength 1e306 (column 'wavelength_um') is out of range after unit conversion to nm");
     const std::string yml = error_of(tmp.write("o.yml", "DATA:\n  - type: tabulated nk\n    data: |\n        1e307 0.2 3\n"));
     EXPECT_TRUE(yml.starts_with((tmp.path() / "o.yml").string() + ":4: ")) << yml;
 }

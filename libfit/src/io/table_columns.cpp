@@ -197,7 +197,7 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
         throw InputError(where, "expected " + std::to_string(layout.columns.size()) + " fields (" + layout.describe() +
                                     "), found " + std::to_string(fields.size()));
     double x = 0.0, n = NAN, k = NAN, e1 = NAN, e2 = NAN;
-    std::string_view n_text, k_text, e2_text;
+    std::string_view n_text, k_text, e2_text, x_text;
     const TableColumn* abscissa = nullptr;
     for (std::size_t i = 0; i < fields.size(); ++i) {
         const TableColumn& c = layout.columns[i];
@@ -213,6 +213,7 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
             case ColumnQuantity::energy:
             case ColumnQuantity::wavenumber:
                 x = *value;
+                x_text = fields[i];
                 abscissa = &c;
                 break;
             case ColumnQuantity::n: n = *value; n_text = fields[i]; break;
@@ -224,7 +225,8 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
     }
     if (x <= 0.0) throw InputError(where, "column '" + abscissa->header + "' must be positive");
     const double nm = abscissa->quantity == ColumnQuantity::wavelength ? x * abscissa->to_nm : abscissa->to_nm / x;
-    if (!std::isfinite(nm) || nm <= 0.0) throw InputError(where, "wavelength out of range after unit conversion");
+    if (!std::isfinite(nm) || nm <= 0.0) throw InputError(where, "wavelength " + std::string(x_text) + " (column '" + abscissa->header +
+                                                                   "') is out of range after unit conversion to nm");
     if (!std::isnan(e1)) {
         if (e2 < 0.0) throw InputError(where, "negative \xce\xb5\xe2\x82\x82 = " + std::string(e2_text) + " (absorption must be >= 0)");
         const double modulus = std::hypot(e1, e2);
