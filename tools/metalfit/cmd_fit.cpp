@@ -11,6 +11,7 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "error_options.hpp"
 #include "material_selection.hpp"
 #include "progress.hpp"
 #include "libfit/io/catalog.hpp"
@@ -28,9 +29,7 @@ struct FitOptions {
     MaterialSelection selection;
     std::string models = "all";
     ColourOptions colour;
-    std::string metric = "rel";
-    std::string weight = "uniform";
-    int nodes = 128;
+    ErrorOptions error;
     int jobs = 0;  // 0: all cores
     bool json = false;
     bool timings = false;
@@ -133,7 +132,7 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
     const auto loaders = o.selection.loaders(catalog, "fit");
 
     const ColourSetup setup = resolve_colour_options(o.colour, global);
-    const ErrorSettings error{o.nodes, parse_error_metric(o.metric), parse_angular_weight(o.weight)};
+    const ErrorSettings error = o.error.settings();
     FitConstraints constraints;
     if (!o.pin.empty()) {
         if (o.pin != "F0") throw UsageError("--pin: only F0 can be pinned (--pin F0)");
@@ -179,10 +178,7 @@ std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global
     o->selection.add_options(app, true);
     app.add_option("--model", o->models, "Models, comma-separated, or all: " + model_ids());
     add_colour_options(app, o->colour);
-    app.add_option("--metric", o->metric, "Error the fit minimises: rel or abs")->check(CLI::IsMember({"rel", "abs"}));
-    app.add_option("--weight", o->weight, "Angular weight: uniform (in mu) or cosine (2 mu)")
-        ->check(CLI::IsMember({"uniform", "cosine"}));
-    app.add_option("--nodes", o->nodes, "Gauss-Legendre nodes on [0, 1]")->check(CLI::Range(2, 4096));
+    add_error_options(app, o->error);
     app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
     app.add_flag("--json", o->json, "Print the fit record (JSON, docs/fit-record.md)");
     app.add_flag("--timings", o->timings, "Print where the time goes (reference curves, closed forms, Ceres, metrics) on stderr");

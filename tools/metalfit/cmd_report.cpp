@@ -7,6 +7,7 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "error_options.hpp"
 #include "material_selection.hpp"
 #include "progress.hpp"
 #include "libfit/base/errors.hpp"
@@ -26,9 +27,7 @@ struct ReportOptions {
     MaterialSelection selection;
     std::string models = "all";
     ColourOptions colour;
-    std::string metric = "rel";
-    std::string weight = "uniform";
-    int nodes = 128;
+    ErrorOptions error;
     int jobs = 0;
     std::string renders = "auto";
     std::string fail_above;
@@ -50,7 +49,7 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
 
     const ColourSetup setup = resolve_colour_options(o.colour, global);
     const DisplayTransform display = DisplayTransform::create(setup.config);
-    const ErrorSettings error{o.nodes, parse_error_metric(o.metric), parse_angular_weight(o.weight)};
+    const ErrorSettings error = o.error.settings();
     const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models)};
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     TerminalProgress progress;
@@ -87,10 +86,7 @@ std::function<void()> add_report_command(CLI::App& app, const GlobalOptions& glo
     o->selection.add_options(app, true);
     app.add_option("--model", o->models, "Models, comma-separated, or all: " + model_ids());
     add_colour_options(app, o->colour);
-    app.add_option("--metric", o->metric, "Error the fit minimises: rel or abs")->check(CLI::IsMember({"rel", "abs"}));
-    app.add_option("--weight", o->weight, "Angular weight: uniform (in mu) or cosine (2 mu)")
-        ->check(CLI::IsMember({"uniform", "cosine"}));
-    app.add_option("--nodes", o->nodes, "Gauss-Legendre nodes on [0, 1]")->check(CLI::Range(2, 4096));
+    add_error_options(app, o->error);
     app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
     app.add_option("--renders", o->renders,
                    "Sphere renders through glpreview: auto (skip, saying why, when they cannot be made), on (fail then), off");
