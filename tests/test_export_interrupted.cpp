@@ -77,17 +77,20 @@ TEST(ExportInterrupted, AKilledExportLeavesTheOldFolderOrTheNewOne) {
     const std::vector<std::string> old_args{"export", "--all", "--model", "f82-tint", "--format", "json,glsl", "-o", old_dir.string()};
     ASSERT_EQ(wait_for(start_export(old_args)), 0);
     const auto old_tree = tree(old_dir);
-    const std::vector<std::string> new_args{"export", "--all", "--model", "all", "--format", "all", "-o", dir.string()};
+    // The closed forms: the writing of ~1200 files, which the kills aim at, dominates the run (no Ceres solves, which
+    // take minutes under the sanitizers).
+    const std::vector<std::string> new_args{"export", "--all", "--model", "schlick,lazanyi,f82-tint,conductor-rgb,gulbrandsen",
+                                            "--params", "closed", "--format", "all", "-o", dir.string()};
     fs::create_directories(work);
     copy_tree(old_dir, dir);
     const auto started = std::chrono::steady_clock::now();
     ASSERT_EQ(wait_for(start_export(new_args)), 0);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const auto new_tree = tree(dir);
-    ASSERT_GT(new_tree.size(), old_tree.size() + 500);  // the new set is the old one plus ~1000 files
+    ASSERT_GT(new_tree.size(), old_tree.size() + 500);  // the new set is the old one plus ~1100 files
 
     std::mt19937 random(20261201u);
-    std::uniform_real_distribution<double> late(0.85, 1.1);  // fitting comes first: most kills aim at the writing
+    std::uniform_real_distribution<double> late(0.5, 1.1);  // most kills aim at the writing, which dominates
     int old_seen = 0, new_seen = 0;
     for (int trial = 0; trial < 6; ++trial) {
         const int signal = trial % 3 == 2 ? SIGINT : SIGKILL;
