@@ -112,6 +112,19 @@ TEST_F(Report, CurvesAgreeWithIndependentForms) {
     EXPECT_EQ(sources[0]["F0"], show["F0"]);
 }
 
+// --sources primary: the material's fit without the other measurements of the catalog; the fits are the same.
+TEST_F(Report, SourcesPrimaryLeavesOutTheOtherMeasurements) {
+    const fs::path all = tmp_.path() / "all", primary = tmp_.path() / "primary";
+    ASSERT_EQ(run("report Cu --model schlick --renders off -o '" + all.string() + "'").exit_code, 0);
+    const auto r = run("report Cu --model schlick --renders off --sources primary -o '" + primary.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Json a = report_json(all)["materials"][0], p = report_json(primary)["materials"][0];
+    EXPECT_FALSE(a["data_sources"].is_null());
+    EXPECT_TRUE(p["data_sources"].is_null());
+    EXPECT_EQ(a["models"], p["models"]);
+    EXPECT_EQ(run("report Cu --renders off --sources some -o '" + (tmp_.path() / "x").string() + "'").exit_code, 2);
+}
+
 // A user file is reported with its own provenance, even when its name is a catalog id: no catalog licence, DOI or
 // alternate sources are borrowed for it.
 TEST_F(Report, AUserFileNamedLikeACatalogMaterialIsNotTheCatalogs) {

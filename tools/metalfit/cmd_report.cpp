@@ -30,6 +30,7 @@ struct ReportOptions {
     ErrorOptions error;
     int jobs = 0;
     std::string renders = "auto";
+    std::string sources = "all";
     std::string fail_above;
     std::string budget;
     std::string budget_metric = "rel_rms";
@@ -68,7 +69,8 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
 
     const FitRecordContext context = setup.record_context(error);
     const CostAndBudget cost = report_costs(fits, cost_table, budget);
-    const ReportInputs inputs{context, setup.colorimetry, setup.converter, display, catalog, cost, renders};
+    const ReportInputs inputs{context, setup.colorimetry, setup.converter, display, catalog, cost, renders,
+                              o.sources == "all"};
     write_report_folder(o.output, report_files(fits, inputs));
     std::cout << (o.output / "index.html").string() << "\n";
 
@@ -90,6 +92,11 @@ std::function<void()> add_report_command(CLI::App& app, const GlobalOptions& glo
     app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
     app.add_option("--renders", o->renders,
                    "Sphere renders through glpreview: auto (skip, saying why, when they cannot be made), on (fail then), off");
+    app.add_option("--sources", o->sources,
+                   "Data sources of a catalog material: all (F0 and F82 of every measurement the catalog holds, their "
+                   "spread next to each model's error) or primary (only the one fitted)")
+        ->check(CLI::IsMember({"all", "primary"}))
+        ->capture_default_str();
     app.add_option("--fail-above", o->fail_above,
                    "After writing the report, exit with code 6 and one line per material/model/channel whose fitted "
                    "rel_rms is above REL (0.005 or 0.5%)");

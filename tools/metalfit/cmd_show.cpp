@@ -1,5 +1,8 @@
 // metalfit show: the reference reflectance curve of one material at a few angles.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <sstream>
 
 #include "colour_options.hpp"
@@ -53,9 +56,11 @@ std::string show_text(const Material& material, const ReferenceCurve& curve, con
       << held_constant_lines(curve)
       << "  white       raw perfect reflector (" << fixed(white.r, 6) << ", " << fixed(white.g, 6) << ", "
       << fixed(white.b, 6) << "); curves are divided by it\n\n"
-      << "              mu         R         G         B\n";
+      << "            mu = cos θ   θ (deg)   R         G         B      (reflectance, fraction of 1)\n";
     for (const auto& sample : samples) {
-        s << "  " << sample.label << std::string(10 - sample.label.size(), ' ') << fixed(sample.mu, 4);
+        const double theta_deg = std::acos(std::clamp(sample.mu, 0.0, 1.0)) * 180.0 / std::numbers::pi;
+        s << "  " << sample.label << std::string(10 - sample.label.size(), ' ') << fixed(sample.mu, 4) << "    "
+          << (theta_deg < 10 ? " " : "") << fixed(theta_deg, 2) << "   ";
         for (int c = 0; c < 3; ++c) s << "  " << (sample.value[c] < 0 ? "" : " ") << fixed(sample.value[c]);
         s << "\n";
     }

@@ -126,7 +126,7 @@ Json channels_json(const std::vector<RGB>& values) {
 // model's error at the same two angles: how much the data disagree next to how much the model errs.
 Json sources_json(const MaterialFit& fit, const ReportInputs& in) {
     const CatalogEntry* entry = catalog_source(fit.material, in.catalog).first;
-    if (!entry || entry->alternates.empty()) return nullptr;
+    if (!in.compare_sources || !entry || entry->alternates.empty()) return nullptr;
     std::vector<const CatalogSource*> all{&entry->primary};
     for (const CatalogSource& s : entry->alternates) all.push_back(&s);
     Json sources = Json::array();

@@ -32,6 +32,9 @@ struct ReportInputs {
     const Catalog& catalog;                // kinds, DOIs, licences and the alternate sources of catalog materials
     const CostAndBudget& cost;
     const SphereRenders& renders;
+    // Compare a catalog material's sources (`--sources all`): F0 and F82 of every measurement the catalog holds and
+    // their spread; false (`--sources primary`): only the source fitted, `data_sources` is null.
+    bool compare_sources = true;
 };
 
 // The record (docs/report.md). `fits` as fit_materials gives them (the same models in the same order).
