@@ -270,6 +270,45 @@ TEST(PreviewGpu, ClassicModeEqualsTheCpuReferenceForAnEnvironmentAtInfinity) {
     }
 }
 
+// docs/scene.md, "Colour": an equirect image tagged `colorspace` is converted into the scene's space when it is read
+// (checked against the published ACEScg → Rec.709 matrix, Bradford); naming the default space changes nothing.
+TEST(PreviewGpu, AnEquirectImageIsConvertedFromItsColorspaceIntoTheScenesSpace) {
+    test::TempDir dir;
+    const RGB sky_acescg{0.5, 0.4, 0.3};
+    Image sky(16, 8);
+    for (int y = 0; y < sky.height; ++y)
+        for (int x = 0; x < sky.width; ++x) sky.set(x, y, sky_acescg);
+    write_exr(dir.path() / "sky.exr", sky);
+    Scene scene;
+    scene.file = dir.path() / "scene.json";
+    scene.width = 32;
+    scene.height = 24;
+    scene.environment.type = EnvironmentType::equirect;
+    scene.environment.equirect.file = dir.path() / "sky.exr";
+    Sphere s;
+    s.center = {0, 1, 0};
+    s.radius = 0.2;
+    s.reflection = ReflectionMode::classic;
+    scene.spheres = {s};
+    scene.outputs.beauty = scene.outputs.difference = scene.outputs.metrics = false;
+    const PreviewResult untagged = run_preview(scene, options(), &gl());
+    scene.environment.equirect.colorspace = "ACEScg";
+    const PreviewResult tagged = run_preview(scene, options(), &gl());
+    scene.space = "Linear Rec.709 (sRGB)";
+    const PreviewResult named = run_preview(scene, options(), &gl());
+    ASSERT_TRUE(untagged.reference && tagged.reference && named.reference);
+    constexpr double M[3][3] = {{1.7048586, -0.6217160, -0.0832993},
+                                {-0.1300768, 1.1407357, -0.0105598},
+                                {-0.0239640, -0.1289755, 1.1530216}};
+    const RGB corner_untagged = untagged.reference->image.at(0, 0), corner = tagged.reference->image.at(0, 0);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(corner_untagged[c], sky_acescg[c], 1e-3);  // half-float EXR: 3 decimal digits
+        const double expected = M[c][0] * sky_acescg.r + M[c][1] * sky_acescg.g + M[c][2] * sky_acescg.b;
+        EXPECT_NEAR(corner[c], expected, 2e-3) << c;
+    }
+    EXPECT_EQ(tagged.reference->image.rgb, named.reference->image.rgb);
+}
+
 // The seed's claim: in a room with occluders, the distance impostor beats classic environment mapping, and more
 // iterations help.
 TEST(PreviewGpu, ErrorFallsFromClassicToOneToFourIterationsInTheDifficultRoom) {

@@ -315,8 +315,54 @@ TEST(PreviewScene, FresnelIsParsedIntoATypedChoice) {
     EXPECT_EQ(f.models, (std::set<std::string>{"nope"}));
 }
 
+// The scene's colour space (docs/scene.md, "Colour"): `space` and an equirect's `colorspace` are read; empty or
+// mistyped ones are errors naming the field.
+TEST(PreviewScene, SpaceAndImageColorspaceAreReadAndChecked) {
+    const Scene scene = parse_scene(R"({"space": "ACEScg", "environment": {"type": "equirect", "file": "sky.exr",
+                                        "colorspace": "Linear Rec.2020"}, "spheres": [{"center": [0,1,0], "reflection": "classic"}]})",
+                                    "scene.json");
+    EXPECT_EQ(scene.space, "ACEScg");
+    EXPECT_EQ(scene.environment.equirect.colorspace, "Linear Rec.2020");
+    EXPECT_TRUE(parse_scene(R"({"spheres": [{"center": [0,1,0]}]})", "scene.json").space.empty());
+    EXPECT_TRUE(test::Contains(parse_error(R"({"space": "", "spheres": [{"center": [0,1,0]}]})"), "bad.json: space: must not be empty"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"space": 709, "spheres": [{"center": [0,1,0]}]})"), "bad.json: space: expected a string"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"type": "equirect", "file": "sky.exr", "colorspace": ""},
+                                              "spheres": [{"center": [0,1,0], "reflection": "classic"}]})"),
+                               "bad.json: environment.colorspace: must not be empty"));
+    // colorspace belongs to an image: a room has none.
+    EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"colorspace": "ACEScg"}, "spheres": [{"center": [0,1,0]}]})"),
+                               "environment.colorspace"));
+}
+
+// The Fresnel of a scene in ACEScg is the Rec.709 one through the published Rec.709 → ACEScg matrix (Bradford
+// D65 → ACES white; e.g. the ACES 1.x sRGB-to-ACEScg matrix), an independent form of OCIO's builtin transform.
+TEST(PreviewScene, TheFresnelIsComputedInTheScenesSpace) {
+    const OcioConfigChoice config = choose_ocio_config(std::nullopt, test::kData);
+    FresnelLibrary rec709(test::kData, config, "", "scene.json"), acescg(test::kData, config, "ACEScg", "scene.json");
+    EXPECT_EQ(acescg.converter().space(), "ACEScg");
+    Sphere gold;  // reference Fresnel of Au
+    const SphereFresnel& a = rec709.get(gold, "spheres[0]");
+    const SphereFresnel& b = acescg.get(gold, "spheres[0]");
+    constexpr double M[3][3] = {{0.6130974, 0.3395231, 0.0473795},
+                                {0.0701937, 0.9163539, 0.0134524},
+                                {0.0206156, 0.1095698, 0.8698147}};
+    for (const double mu : {1.0, 0.5, 0.1}) {
+        const RGB x = a(mu), y = b(mu);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(y[c], M[c][0] * x.r + M[c][1] * x.g + M[c][2] * x.b, 2e-4) << "mu " << mu << " channel " << c;
+    }
+    // A space the config lacks is the scene's error, naming `space` and listing what exists.
+    try {
+        FresnelLibrary bad(test::kData, config, "Linear Rec.710", "scene.json");
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(test::Contains(e.what(), "scene.json: space: ")) << e.what();
+        EXPECT_TRUE(test::Contains(e.what(), "ACEScg")) << e.what();
+    }
+}
+
 TEST(PreviewScene, AnUnknownModelIsReportedWhenItsFresnelIsMadeWithTheSameMessage) {
-    FresnelLibrary library(test::kData, choose_ocio_config(std::nullopt, test::kData), "scene.json");
+    FresnelLibrary library(test::kData, choose_ocio_config(std::nullopt, test::kData), "", "scene.json");
     Sphere sphere;
     sphere.fresnel = ModelFresnel{"nope", ParameterSource::fit};
     try {

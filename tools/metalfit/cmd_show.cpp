@@ -56,7 +56,8 @@ std::string show_text(const Material& material, const ReferenceCurve& curve, con
       << held_constant_lines(curve)
       << "  white       raw perfect reflector (" << fixed(white.r, 6) << ", " << fixed(white.g, 6) << ", "
       << fixed(white.b, 6) << "); curves are divided by it\n\n"
-      << "            mu = cos θ   θ (deg)   R         G         B      (reflectance, fraction of 1)\n";
+      << "  reflectance as a fraction of 1; mu = cos θ, θ in degrees from the normal\n"
+      << "                mu    θ deg            R         G         B\n";
     for (const auto& sample : samples) {
         const double theta_deg = std::acos(std::clamp(sample.mu, 0.0, 1.0)) * 180.0 / std::numbers::pi;
         s << "  " << sample.label << std::string(10 - sample.label.size(), ' ') << fixed(sample.mu, 4) << "    "

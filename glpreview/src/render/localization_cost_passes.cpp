@@ -116,7 +116,7 @@ Handle<Json> add_localization_cost_passes(PassGraph& graph, GpuBenchRun& run) {
                 },
                 [&run](const FresnelData& d, Resources& r) {
                     const LocalizationRoom& first = run.rooms.front();
-                    FresnelLibrary& library = run.library.emplace(run.options.data_dir, run.options.ocio, first.scene.file);
+                    FresnelLibrary& library = run.library.emplace(run.options.data_dir, run.options.ocio, first.scene.space, first.scene.file);
                     r.emplace(d.out, &library.get(first.scene.spheres.at(0), "spheres[0]"));
                 })
             .out;

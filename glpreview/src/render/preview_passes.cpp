@@ -1,6 +1,7 @@
 #include "glpreview/render/preview_passes.hpp"
 
 #include "glpreview/render/environment.hpp"
+#include "glpreview/render/scene_colour.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
@@ -48,6 +49,7 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
     j["scene"] = scene.file.filename().string();
     j["renderer"] = run.renderer_name;
     j["size"] = {scene.width, scene.height};
+    j["space"] = scene.space.empty() ? std::string("scene_linear") : scene.space;  // as the scene names it
     j["ms_per_frame"] = frame_ms.empty() ? 0.0 : median(frame_ms);
     j["frame_ms"] = frame_ms;
     const auto errors = sphere_errors(beauty, reference, scene.spheres.size());
@@ -112,9 +114,9 @@ GpuRenderer& PreviewRun::renderer() {
 std::filesystem::path PreviewRun::output_file(const std::string& name) {
     if (!staging) {
         staging.emplace(output_dir);
-        if (scene.outputs.png) display = DisplayTransform::create(ocio);
+        if (scene.outputs.png) display = DisplayTransform::create(ocio, scene.space);
     }
-    if (!display && std::filesystem::path(name).extension() == ".png") display = DisplayTransform::create(ocio);
+    if (!display && std::filesystem::path(name).extension() == ".png") display = DisplayTransform::create(ocio, scene.space);
     written.push_back(output_dir / name);
     return staging->file(name);
 }
@@ -145,19 +147,28 @@ Handle<EnvironmentCube> add_capture_environment_pass(PassGraph& graph, const Sce
         .out;
 }
 
-std::pair<Handle<EquirectTexture>, Handle<Image>> add_load_equirect_pass(PassGraph& graph, const Scene& scene) {
+std::pair<Handle<EquirectTexture>, Handle<Image>> add_load_equirect_pass(PassGraph& graph, const Scene& scene, PreviewRun* run) {
     struct Data {
         Handle<EquirectTexture> texture;
         Handle<Image> image;
     };
+    const Equirect& equirect = scene.environment.equirect;
     const Data& d = graph.add_pass<Data>(
-        {"load-equirect", "environment at infinity: " + scene.environment.equirect.file.string() + " (OpenImageIO)", Processor::cpu},
+        {"load-equirect",
+         "environment at infinity: " + equirect.file.string() + " (OpenImageIO)" +
+             (equirect.colorspace.empty() ? std::string(", taken as the scene's space (untagged)")
+                                          : ", from " + equirect.colorspace + " into the scene's space"),
+         Processor::cpu},
         [](Builder& b, Data& d) {
             d.texture = b.produce<EquirectTexture>("equirect-texture");
             d.image = b.produce<Image>("equirect-image");
         },
-        [file = scene.environment.equirect.file](const Data& d, Resources& r) {
-            const Image& image = r.emplace(d.image, read_image(file));
+        [&scene, run](const Data& d, Resources& r) {
+            Image pixels = read_image(scene.environment.equirect.file);
+            if (!scene.environment.equirect.colorspace.empty())
+                scene_space_conversion(scene, run->ocio, scene.environment.equirect.colorspace, "environment.colorspace")
+                    .apply(pixels.rgb);
+            const Image& image = r.emplace(d.image, std::move(pixels));
             r.emplace(d.texture, std::make_shared<const Image>(image));
         });
     return {d.texture, d.image};
@@ -184,7 +195,7 @@ EnvironmentInputs add_environment_passes(PassGraph& graph, const Scene& scene, c
         graph.skip("capture-environment", "the environment is an image at infinity: nothing to capture");
     }
     if (f.equirect_image) {
-        const auto [texture, image] = add_load_equirect_pass(graph, scene);
+        const auto [texture, image] = add_load_equirect_pass(graph, scene, run);
         environment.equirect_texture = texture;
         environment.equirect_image = image;
     }

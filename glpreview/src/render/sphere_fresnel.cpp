@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "glpreview/render/scene_colour.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/fit/fit.hpp"
 #include "libfit/reference/reference_curve.hpp"
@@ -30,10 +31,10 @@ RGB SphereFresnel::operator()(double mu) const {
 }
 
 FresnelLibrary::FresnelLibrary(const std::filesystem::path& data_dir, const OcioConfigChoice& config,
-                               const std::filesystem::path& scene_file)
+                               const std::string& space, const std::filesystem::path& scene_file)
     : catalog_(Catalog::load(data_dir)),
       colorimetry_(Colorimetry::load(data_dir, Observer::cie1931_2deg, Illuminant::D65)),
-      converter_(ColorSpaceConverter::create(config)),
+      converter_(scene_converter(config, space, scene_file)),
       scene_file_(scene_file) {}
 
 namespace {

@@ -127,7 +127,7 @@ Plan build_sheet_plan(const Scene& base, const std::vector<std::string>& materia
 SphereSheet render_sphere_sheet(const Scene& base, const std::vector<std::string>& materials, const PreviewOptions& options,
                                 GlContext* context) {
     check_sheet_scene(base);
-    FresnelLibrary library(options.data_dir, options.ocio, base.file);
+    FresnelLibrary library(options.data_dir, options.ocio, base.space, base.file);
     Scene scene = base;
     PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, {}, {}};
     graph::PassGraph graph;

@@ -393,7 +393,8 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
     }
     Scene scene;
     scene.file = file;
-    Reader top(root, "", file, {"image", "camera", "environment", "spheres", "outputs"});
+    Reader top(root, "", file, {"image", "space", "camera", "environment", "spheres", "outputs"});
+    if (top.has("space")) top.read("space", scene.space);
 
     if (top.has("image")) {
         Reader r(top.at("image"), "image", file, {"width", "height"});
@@ -449,7 +450,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
                 e.reference_point = p;
             }
         } else if (type == "equirect") {
-            Reader r(env, "environment", file, {"type", "file", "intensity"});
+            Reader r(env, "environment", file, {"type", "file", "intensity", "colorspace"});
             e.type = EnvironmentType::equirect;
             std::string path;
             r.read("file", path);
@@ -457,6 +458,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
             e.equirect.file = std::filesystem::path(path).is_absolute() ? std::filesystem::path(path)
                                                                         : file.parent_path() / path;
             r.read("intensity", e.equirect.intensity, 0, kBig);
+            if (r.has("colorspace")) r.read("colorspace", e.equirect.colorspace);
         } else {
             top.fail("environment.type", "unknown value '" + excerpt(type) + "' (known: room, sphere-room, equirect)");
         }

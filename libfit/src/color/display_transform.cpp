@@ -15,23 +15,24 @@ struct DisplayTransform::Impl {
     OCIO::ConstCPUProcessorRcPtr processor;
 };
 
-DisplayTransform DisplayTransform::create(const OcioConfigChoice& choice) {
+DisplayTransform DisplayTransform::create(const OcioConfigChoice& choice, const std::string& source) {
+    const std::string src = source.empty() ? OCIO::ROLE_SCENE_LINEAR : source;
     try {
         auto config = OCIO::Config::CreateFromFile(choice.path.string().c_str());
         const char* display = config->getDefaultDisplay();
         const char* view = config->getDefaultView(display);
         auto transform = OCIO::DisplayViewTransform::Create();
-        transform->setSrc(OCIO::ROLE_SCENE_LINEAR);
+        transform->setSrc(src.c_str());
         transform->setDisplay(display);
         transform->setView(view);
         auto processor = config->getProcessor(transform);
         auto impl = std::make_unique<Impl>();
         impl->processor = processor->getDefaultCPUProcessor();
-        const auto scene_linear = config->getColorSpace(OCIO::ROLE_SCENE_LINEAR);
-        return DisplayTransform(std::move(impl), std::string(scene_linear ? scene_linear->getName() : "scene_linear") +
-                                                     " → " + display + " / " + view);
+        const auto source_space = config->getColorSpace(src.c_str());
+        return DisplayTransform(std::move(impl), std::string(source_space ? source_space->getName() : src) + " → " +
+                                                     display + " / " + view);
     } catch (const OCIO::Exception& e) {
-        throw ColorConfigError(choice.path.string() + ": no display transform from scene_linear: " + e.what());
+        throw ColorConfigError(choice.path.string() + ": no display transform from " + src + ": " + e.what());
     }
 }
 

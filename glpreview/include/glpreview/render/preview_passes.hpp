@@ -97,7 +97,8 @@ void skip_unneeded_effects(graph::PassGraph& graph);
 // One pass each (preview_passes.cpp).
 graph::Handle<EnvironmentCube> add_capture_environment_pass(graph::PassGraph&, const Scene&, const Features&,
                                                             const SceneInputs&, PreviewRun*);
-std::pair<graph::Handle<EquirectTexture>, graph::Handle<Image>> add_load_equirect_pass(graph::PassGraph&, const Scene&);
+std::pair<graph::Handle<EquirectTexture>, graph::Handle<Image>> add_load_equirect_pass(graph::PassGraph&, const Scene&,
+                                                                                      PreviewRun*);
 graph::Handle<FresnelSet> add_reference_luts_pass(graph::PassGraph&, const Scene&, const SceneInputs&, PreviewRun*);
 graph::Handle<FresnelSet> add_model_parameters_pass(graph::PassGraph&, const Features&, const SceneInputs&, PreviewRun*);
 void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<Image> image, PreviewRun*);

@@ -39,8 +39,9 @@ struct SphereFresnel {
 // (material, source, model, params), cached.
 class FresnelLibrary {
 public:
-    // `scene_file`: named in errors; relative material files are looked up beside it.
-    FresnelLibrary(const std::filesystem::path& data_dir, const OcioConfigChoice& config,
+    // `space`: the scene's colour space (empty: scene_linear). `scene_file`: named in errors; relative material
+    // files are looked up beside it.
+    FresnelLibrary(const std::filesystem::path& data_dir, const OcioConfigChoice& config, const std::string& space,
                    const std::filesystem::path& scene_file);
 
     // Throws InputError naming the field (`field`, e.g. "spheres[2].material") for unknown materials/models.

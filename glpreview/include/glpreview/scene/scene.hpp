@@ -57,6 +57,7 @@ struct SphereRoom {
 struct Equirect {
     std::filesystem::path file;  // resolved against the scene file's folder
     double intensity = 1;
+    std::string colorspace;  // the OCIO colour space of the image's pixels; empty: the scene's space (untagged)
 };
 
 enum class EnvironmentType { room, sphere_room, equirect };
@@ -126,6 +127,10 @@ struct Outputs {
 struct Scene {
     std::filesystem::path file;  // where it was read from (for messages and relative paths)
     int width = 512, height = 512;
+    // The colour space the scene renders in (docs/scene.md): a colour space or role of the OCIO config in use;
+    // empty: the role scene_linear. Colours of the scene, the Fresnel curves and the EXR are in it; the PNG is the
+    // config's display transform from it.
+    std::string space;
     Camera camera;
     Environment environment;
     std::vector<Sphere> spheres;

@@ -11,12 +11,13 @@
 
 namespace metalfit {
 
-// scene_linear → the config's default display and view (metalfit's config: sRGB, Un-tone-mapped). The OCIO
-// processor is built once.
+// scene_linear (or another colour space of the config) → the config's default display and view (metalfit's config:
+// sRGB, Un-tone-mapped). The OCIO processor is built once.
 class DisplayTransform {
 public:
-    // Throws ColorConfigError naming the config.
-    static DisplayTransform create(const OcioConfigChoice& config);
+    // `source`: a colour space or role of the config; empty: the role scene_linear. Throws ColorConfigError naming
+    // the config.
+    static DisplayTransform create(const OcioConfigChoice& config, const std::string& source = {});
     // 8-bit display-referred RGB of interleaved scene-linear RGB pixels (width × height, rows kept as given):
     // each value clamped to [0, 1] after the transform and rounded to the nearest of 0 … 255.
     std::vector<unsigned char> apply(std::span<const float> rgb, int width, int height) const;

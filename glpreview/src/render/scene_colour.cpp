@@ -1,0 +1,32 @@
+#include "glpreview/render/scene_colour.hpp"
+
+#include "libfit/base/errors.hpp"
+
+namespace metalfit::glpreview {
+
+ColorSpaceConverter scene_converter(const OcioConfigChoice& config, const std::string& space,
+                                    const std::filesystem::path& scene_file) {
+    try {
+        return ColorSpaceConverter::create(config, space);
+    } catch (const ColorConfigError& e) {
+        if (space.empty()) throw;  // the config's own problem (no scene_linear role), not the scene's
+        throw InputError(InputLocation(scene_file, 0, "space"), e.what());
+    }
+}
+
+RgbConversion scene_space_conversion(const Scene& scene, const OcioConfigChoice& config, const std::string& from,
+                                     const std::string& field) {
+    const std::string to = scene.space.empty() ? std::string("scene_linear") : scene.space;
+    try {
+        RgbConversion::create(config, to, to);  // the scene's own space first, so that its error names `space`
+    } catch (const ColorConfigError& e) {
+        throw InputError(InputLocation(scene.file, 0, scene.space.empty() ? field : "space"), e.what());
+    }
+    try {
+        return RgbConversion::create(config, from, to);
+    } catch (const ColorConfigError& e) {
+        throw InputError(InputLocation(scene.file, 0, field), e.what());
+    }
+}
+
+}  // namespace metalfit::glpreview
