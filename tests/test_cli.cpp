@@ -239,6 +239,28 @@ TEST_F(Cli, UnknownCommandAndMissingMaterialSayWhatIsWrong) {
     EXPECT_FALSE(fs::exists(dir_ / "x"));
 }
 
+// --gamut-fit: the record says so, gold's red Schlick F0 ends at 1 (its unconstrained fit is 1.022), the export of
+// the same fit carries it; with --pin F0 it is a usage error.
+TEST_F(Cli, GamutFitHoldsTheCurvesInsideTheUnitInterval) {
+    const Result free = run("fit gold --model schlick --json"), held = run("fit gold --model schlick --gamut-fit --json");
+    ASSERT_EQ(held.exit_code, 0) << held.err;
+    const auto f = nlohmann::json::parse(free.out), h = nlohmann::json::parse(held.out);
+    EXPECT_FALSE(f["provenance"].contains("constraints"));
+    EXPECT_EQ(h["provenance"]["constraints"]["gamut_fit"], true);
+    EXPECT_GT(f["materials"]["Au"]["models"]["schlick"]["fit"]["params"]["F0"][0].get<double>(), 1.0);
+    EXPECT_LE(h["materials"]["Au"]["models"]["schlick"]["fit"]["params"]["F0"][0].get<double>(), 1.0);
+    EXPECT_NEAR(h["materials"]["Au"]["models"]["schlick"]["fit"]["params"]["F0"][0].get<double>(), 1.0, 1e-6);
+    EXPECT_NEAR(h["materials"]["Au"]["models"]["schlick"]["fit"]["params"]["F0"][1].get<double>(),
+                f["materials"]["Au"]["models"]["schlick"]["fit"]["params"]["F0"][1].get<double>(), 1e-8);  // inside already
+    const Result both = run("fit gold --model schlick --gamut-fit --pin F0");
+    EXPECT_EQ(both.exit_code, 2);
+    expect_one_line_error(both, "--gamut-fit");
+    const fs::path dir = dir_ / "held";
+    ASSERT_EQ(run("export gold --model schlick --gamut-fit --format json -o '" + dir.string() + "'").exit_code, 0);
+    const auto e = nlohmann::json::parse(read_file(dir / "metalfit_export.json"));
+    EXPECT_EQ(e["provenance"]["constraints"]["gamut_fit"], true) << e["provenance"].dump();
+}
+
 // --pin F0 holds F(1) = R(1) (the record says so), --budget picks the cheapest qualifying model per material with the
 // cost table named, --costs reads a bench report, and export --model best:BUDGET exports that model.
 TEST_F(Cli, PinBudgetAndBestExport) {

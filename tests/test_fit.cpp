@@ -1064,6 +1064,46 @@ TEST(FitConstraints, PinnedF0HoldsNormalIncidenceExactly) {
     EXPECT_GT(std::abs(fitted("Zn").result("schlick").fit.value.metrics.err_f0[0]), 0.02);
 }
 
+// --gamut-fit: every model's curve stays in [0, 1] on a 4097-point grid (evaluated here, not by the fitter's own
+// check) for gold, whose red R(μ) exceeds 1 in Linear Rec.709. Schlick is linear in F0 and F ≤ 1 ⇔ F0 ≤ 1, so its
+// constrained optimum is the exact least squares clamped to [0, 1]: an independent form of the constrained fit.
+TEST(FitConstraints, GamutFitKeepsEveryCurveInTheUnitInterval) {
+    MaterialFitRequest constrained = request();
+    constrained.constraints.gamut_fit = true;
+    const Fitted& free = fitted("Au");
+    const MaterialFit fit = fit_material(*free.material, env().colorimetry, env().converter, constrained);
+    int outside_unconstrained = 0;
+    for (const ModelResult& r : fit.models)
+        for (int c = 0; c < 3; ++c) {
+            SCOPED_TRACE(std::string(r.model->id()) + " " + kChannel[c]);
+            const auto excess = [&](const ChannelParameters& p) {
+                double e = 0;
+                for (int j = 0; j <= 4096; ++j) {
+                    const double F = r.model->evaluate(std::span<const double>(p), j / 4096.0);
+                    e = std::max({e, F - 1, -F});
+                }
+                return e;
+            };
+            EXPECT_LE(excess(r.fit.value.params[c]), 1e-15) << params_text(r.fit.value.params[c]);  // F(0) = 1 ± 1 ulp
+            EXPECT_TRUE(within_bounds(*r.model, r.fit.value.params[c]));
+            outside_unconstrained += excess(free.result(r.model->id()).fit.value.params[c]) > 1e-6;
+        }
+    EXPECT_GE(outside_unconstrained, 5);  // the constraint had work to do
+    const ChannelTarget red = free.reference->target(0);
+    const Optimum schlick = exact_schlick(red, 0.0, 1.0);
+    const ModelResult& s = [&]() -> const ModelResult& {
+        for (const ModelResult& r : fit.models)
+            if (r.model->id() == "schlick") return r;
+        throw std::logic_error("no schlick");
+    }();
+    EXPECT_NEAR(s.fit.value.params[0][0], schlick.params[0], 1e-6);
+    EXPECT_NEAR(channel_rms(*s.model, s.fit.value.params[0], red), schlick.rms, 1e-6 * schlick.rms);
+    // Together with --pin F0: refused.
+    MaterialFitRequest both = constrained;
+    both.constraints.pin_f0 = true;
+    EXPECT_THROW(fit_material(*free.material, env().colorimetry, env().converter, both), UsageError);
+}
+
 // err_f0 = M(1) / R(1) − 1, with R(1) from the reference curve itself.
 TEST(FitMetrics, ErrorAtNormalIncidenceIsSignedAndRelative) {
     const Fitted& f = fitted("Zn");

@@ -24,6 +24,7 @@ struct ExportOptions {
     std::string params = "fit";
     std::string formats;
     std::string gamut = "keep";
+    bool gamut_fit = false;
     ColourOptions colour;
     int jobs = 0;  // 0: all cores
     std::filesystem::path output;
@@ -52,13 +53,16 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     const auto loaders = o.selection.loaders(catalog, "export");
     const ColourSetup setup = resolve_colour_options(o.colour, global);
     const ErrorSettings error{};  // the defaults of `metalfit fit`: rel metric, uniform weight, 128 nodes
-    const MaterialFitRequest fit_request{setup.spectral, error, models_to_fit(request)};
+    FitConstraints constraints;
+    constraints.gamut_fit = o.gamut_fit;
+    const MaterialFitRequest fit_request{setup.spectral, error, models_to_fit(request), constraints};
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     TerminalProgress progress;
     const std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), fit_request, jobs, progress.callback());
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
-    const FitRecordContext context = setup.record_context(error);
+    FitRecordContext context = setup.record_context(error);
+    context.constraints = constraints;
     for (const std::string& w : export_warnings(context, request)) warn(w);
     if (budget) {
         const BudgetChoice choice = choose_model(fits.front().models, costs, *budget);
@@ -85,6 +89,8 @@ std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& glo
     app.add_option("--params", o->params, "Parameters written: fit (Ceres) or closed (best closed form)");
     app.add_option("--format", o->formats, "Formats, comma-separated, or all: json, glsl, hlsl, mtlx, openpbr, cpp")->required();
     app.add_option("--gamut", o->gamut, "Colour parameters outside [0, 1]: keep (flagged), clip, or scale by 1/max");
+    app.add_flag("--gamut-fit", o->gamut_fit,
+                 "Fit every channel's curve inside [0, 1] at every angle (constrained, so --gamut has nothing left to do)");
     add_colour_options(app, o->colour);
     app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
     app.add_option("-o,--output", o->output, "Output directory (created if missing)")->required();

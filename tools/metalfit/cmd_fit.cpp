@@ -36,6 +36,7 @@ struct FitOptions {
     std::filesystem::path output;
     std::filesystem::path summary;  // --summary: the catalog summary (Markdown)
     std::string pin;                // --pin F0
+    bool gamut_fit = false;         // --gamut-fit
     std::string budget;             // --budget 0.5%
     std::string budget_metric = "rel_rms";
     std::filesystem::path costs;    // --costs BENCH.json
@@ -77,6 +78,7 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
     if (fit.F0.max() > 1.0 || fit.F0.min() < 0.0) s << "  out of gamut, kept";
     s << "\n";
     if (context.constraints.pin_f0) s << "  F0 pinned: F(1) = R(1) in every channel (--pin F0)\n";
+    if (context.constraints.gamut_fit) s << "  fitted curves held in [0, 1] at every angle (--gamut-fit)\n";
     s << "  " << pad("model", width) << pad("", 24) << pad("rel_rms % R/G/B", 23) << pad("abs_rms % R/G/B", 23)
       << pad("ΔE00 max", 10) << "parameters\n";
     const auto row = [&](const std::string& model, const std::string& which, const EvaluatedParameters& v,
@@ -138,6 +140,9 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
         if (o.pin != "F0") throw UsageError("--pin: only F0 can be pinned (--pin F0)");
         constraints.pin_f0 = true;
     }
+    constraints.gamut_fit = o.gamut_fit;
+    if (constraints.pin_f0 && constraints.gamut_fit)
+        throw UsageError("--pin F0 and --gamut-fit together: F(1) = R(1) leaves [0, 1] wherever R(1) does; choose one");
     std::optional<Budget> budget;
     if (!o.budget.empty()) budget = parse_budget(o.budget, parse_budget_metric(o.budget_metric));
     else if (!o.costs.empty()) throw UsageError("--costs needs --budget");
@@ -186,6 +191,8 @@ std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global
     app.add_option("--summary", o->summary,
                    "Also write the catalog summary (Markdown: worst-channel rel_rms per material and model, median, worst) to this file");
     app.add_option("--pin", o->pin, "Hold a value exactly: F0 (F(1) = R(1) in every channel, as physicallybased.info and Adobe tabulate)");
+    app.add_flag("--gamut-fit", o->gamut_fit,
+                 "Fit every channel's curve inside [0, 1] at every angle (constrained, not clipped after; not with --pin F0)");
     app.add_option("--budget", o->budget,
                    "Per material, the cheapest model whose fit meets this error in every channel (0.5% or 0.005; a Delta E for de2000_max)");
     app.add_option("--budget-metric", o->budget_metric, "Metric of --budget: rel_rms, max_rel or de2000_max (default: rel_rms)");

@@ -1,5 +1,6 @@
 #include "libfit/fit/fit.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <span>
@@ -57,6 +58,15 @@ std::string outside_bounds(const Model& model, const ChannelParameters& params) 
     return text;
 }
 
+double curve_excess_outside_unit_range(const Model& model, const ChannelParameters& params) {
+    double excess = std::max(0.0, std::abs(model.evaluate(std::span<const double>(params), 0.0) - 1) - 1e-15);
+    for (int j = 1; j <= 4096; ++j) {
+        const double F = model.evaluate(std::span<const double>(params), j / 4096.0);
+        excess = std::max({excess, F - 1, -F});
+    }
+    return excess;
+}
+
 FitTimings& FitTimings::operator+=(const FitTimings& o) {
     reference += o.reference;
     closed_forms += o.closed_forms;
@@ -72,6 +82,8 @@ ClosedFormInput closed_form_input(const ReferenceCurve& curve, const Material& m
 
 ModelResult fit_model(const Model& model, const SampledReference& reference, const ClosedFormInput& input,
                       FitTimings* timings, const FitConstraints& constraints) {
+    if (constraints.pin_f0 && constraints.gamut_fit)
+        throw UsageError("--pin F0 and --gamut-fit together: F(1) = R(1) leaves [0, 1] wherever R(1) does; choose one");
     if (constraints.pin_f0 && !model.can_pin_f0())
         throw UsageError("--pin F0: model " + std::string(model.id()) + " cannot hold F(1) at a given value");
     const RGB R1 = reference.dense().back().value;  // R(1): the dense grid ends at μ = 1
@@ -107,6 +119,7 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
         const ChannelTarget target = reference.target(c);
         auto starts = starts_for_channel(model, result.closed_forms, c, target);
         ChannelConstraints channel_constraints;
+        channel_constraints.unit_range = constraints.gamut_fit;
         if (constraints.pin_f0) {
             // The unconstrained optimum is the best start of the pinned fit (from the others alone LM stops in local
             // minima: rational on zinc, 19 % instead of 1.3 %).
@@ -115,6 +128,9 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
             if (!free.params.empty()) starts.insert(starts.begin(), NamedStart{"unpinned optimum", free.params});
         }
         ChannelFit channel = model.fit(target, starts, channel_constraints);
+        if (channel.params.empty())
+            throw std::runtime_error(std::string(model.id()) + ": no start of the " + kChannelNames[c] + " fit converged" +
+                                     (constraints.gamut_fit ? " inside [0, 1] (--gamut-fit)" : ""));
         fit.value.params[c] = channel.params;
         fit.solver[c] = channel.solver;
     }
@@ -127,6 +143,7 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
     // Under --pin F0 only closed forms that meet the pin compete.
     const auto competes = [&](const ClosedFormResult& form, int c) {
         if (!form.value) return false;
+        if (constraints.gamut_fit) return curve_excess_outside_unit_range(model, form.value->params[c]) == 0;
         if (!constraints.pin_f0) return true;
         return std::abs(model.evaluate(std::span<const double>(form.value->params[c]), 1.0) - R1[c]) <= 1e-12;
     };

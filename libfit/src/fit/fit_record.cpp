@@ -173,7 +173,8 @@ Json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContex
               {"weight", to_string(e.weight)}}},
             {"materials", materials_json}};
     // Only when a constraint is on, so that unconstrained records keep their keys.
-    if (context.constraints.pin_f0) record["provenance"]["constraints"] = {{"pin_f0", true}};
+    if (context.constraints.pin_f0) record["provenance"]["constraints"]["pin_f0"] = true;
+    if (context.constraints.gamut_fit) record["provenance"]["constraints"]["gamut_fit"] = true;
     if (budgets && !budgets->empty())
         record["provenance"]["budget"] = {{"metric", to_string(budgets->front().budget.metric)},
                                           {"limit", budgets->front().budget.limit},

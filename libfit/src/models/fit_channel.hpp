@@ -51,6 +51,48 @@ struct PinnedCurveResidual {
     }
 };
 
+// --gamut-fit: weight · (how far M(p, μ_j) is outside [0, upper]) on the uniform grid of μ the constraint is checked
+// on, zero inside. `limits` is
+// the solver's own: its weight grows and its upper end tightens between solves of the same problem.
+struct GamutLimits {
+    static constexpr int kGrid = 4097;  // the grid --gamut-fit is checked on (gamut_excess)
+    double weight = 0;  // 0 and stride kGrid: the first solve is the unconstrained one
+    double upper = 1;
+    int stride = kGrid;  // every stride-th point: 257 while the penalty stiffens, then every point
+};
+
+template <class M>
+struct GamutPenalty {
+    const GamutLimits* limits;
+
+    template <class T>
+    bool operator()(const T* params, T* residuals) const {
+        for (int j = 0; j < GamutLimits::kGrid; ++j) {
+            if (j % limits->stride != 0) {
+                residuals[j] = T(0);
+                continue;
+            }
+            const T F = M::evaluate(params, T(static_cast<double>(j) / (GamutLimits::kGrid - 1)));
+            const T w(limits->weight);
+            residuals[j] = F > T(limits->upper) ? w * (F - T(limits->upper)) : (F < T(0) ? -w * F : T(0));
+        }
+        return true;
+    }
+};
+
+// The largest excursion of the curve outside [0, 1] on a 4097-point grid (0 inside): what --gamut-fit guarantees.
+// At μ = 0 every model's F = 1 by construction, which may round to 1 + 1 ulp: there 1e-15 is allowed.
+inline constexpr double kGamutTolerance = 0;
+template <class M>
+double gamut_excess(const ChannelParameters& p) {
+    double excess = std::max(0.0, std::abs(M::evaluate(p.data(), 0.0) - 1) - 1e-15);
+    for (int j = 1; j <= 4096; ++j) {
+        const double F = M::evaluate(p.data(), j / 4096.0);
+        excess = std::max({excess, F - 1, -F});
+    }
+    return excess;
+}
+
 template <class M>
 ChannelParameters clamp_to_bounds(ChannelParameters p) {
     for (std::size_t i = 0; i < M::kParameters.size(); ++i)
@@ -82,8 +124,15 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         if (constraints.pinned_f0) pinned = static_cast<int>(M::kPinnedParameter);
     if (constraints.pinned_f0 && pinned < 0)
         throw std::logic_error(std::string(M::kId) + " cannot pin F0");
+    if (constraints.pinned_f0 && constraints.unit_range)
+        throw std::logic_error("--pin F0 and --gamut-fit together");
     const auto solve = [&](ChannelParameters& x, std::vector<int> fixed, ceres::Solver::Summary& summary) {
         ceres::Problem problem;
+        GamutLimits limits;
+        if (constraints.unit_range)
+            problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GamutPenalty<M>, GamutLimits::kGrid, kCount>(
+                                         new GamutPenalty<M>{&limits}),
+                                     nullptr, x.data());
         const int residuals = static_cast<int>(target.mu.size());
         if constexpr (PinnableF0<M>) {
             if (pinned >= 0)
@@ -106,6 +155,28 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         if (static_cast<int>(fixed.size()) == kCount) problem.SetParameterBlockConstant(x.data());
         else if (!fixed.empty()) problem.SetManifold(x.data(), new ceres::SubsetManifold(kCount, fixed));
         ceres::Solve(options, &problem, &summary);
+        if (constraints.unit_range) {
+            // Where the unconstrained solution leaves [0, 1]: continuation, a stiffer penalty from the last solution,
+            // then the upper end lowered by what is still outside until the 4097-point grid holds the curve. The cost returned is the penalty-free curve cost.
+            const double initial_cost = summary.initial_cost;
+            if (gamut_excess<M>(x) > kGamutTolerance) {  // else the unconstrained optimum of this start holds already
+                limits.stride = 16;
+                for (const double weight : {1e2, 1e4, 1e6}) {
+                    limits.weight = weight;
+                    ceres::Solve(options, &problem, &summary);
+                }
+            }
+            limits.stride = 1;
+            for (int round = 0; round < 8; ++round) {
+                const double excess = gamut_excess<M>(x);
+                if (!(excess > kGamutTolerance)) break;
+                limits.upper -= 2 * excess + 1e-12;
+                ceres::Solve(options, &problem, &summary);
+            }
+            summary.initial_cost = initial_cost;
+            if (!(gamut_excess<M>(x) <= kGamutTolerance)) return std::numeric_limits<double>::quiet_NaN();  // this start cannot hold it
+            limits.weight = 0;
+        }
         // With an active bound the summary's final cost can differ (1e-4 relative) from the cost of the parameters
         // returned: evaluate them, so that starts are compared and reported on what is kept.
         double cost = std::numeric_limits<double>::quiet_NaN();

@@ -46,6 +46,9 @@ struct FitResult {
 
 // Where a channel's parameters leave the model's bounds ("g = 1.03 outside [0, 1]"), or "" when they are inside.
 std::string outside_bounds(const Model& model, const ChannelParameters& params);
+// How far a channel's curve leaves [0, 1] on a 4097-point grid of μ (0 inside; at μ = 0, where every model's F is 1
+// by construction, 1e-15 of rounding is allowed): what --gamut-fit holds.
+double curve_excess_outside_unit_range(const Model& model, const ChannelParameters& params);
 
 struct ModelResult {
     const Model* model = nullptr;
@@ -75,6 +78,9 @@ struct FitConstraints {
     // --pin F0: F(1) = R(1) exactly in every channel (the convention of physicallybased.info and Adobe's tables);
     // closed forms that do not meet it are never kept as fallbacks.
     bool pin_f0 = false;
+    // --gamut-fit: every channel's fitted curve stays in [0, 1] at every μ (4097-point grid), fitted under that
+    // constraint; closed forms outside it are never kept as fallbacks. Not together with pin_f0 (UsageError).
+    bool gamut_fit = false;
     bool operator==(const FitConstraints&) const = default;
 };
 

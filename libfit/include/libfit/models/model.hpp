@@ -113,6 +113,9 @@ struct NamedStart {
 struct ChannelConstraints {
     // --pin F0: F(1) equals this value exactly (the pinned parameter is computed from the others, Model::pin_f0).
     std::optional<double> pinned_f0;
+    // --gamut-fit: the fitted curve stays in [0, 1] at every μ (a penalty on a 4097-point grid, stiffened and
+    // tightened until that grid holds it), fitted under that constraint rather than clipped after.
+    bool unit_range = false;
 };
 
 class Model {
