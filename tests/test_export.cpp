@@ -227,6 +227,8 @@ ShaderExport parse_glsl_export(const fs::path& file) {
 }
 
 TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
+    // The figures are of the written doubles (metalfit_export.json); the GLSL constants are the floats nearest them.
+    const auto record = nlohmann::json::parse(read_file(out() / "metalfit_export.json"));
     using namespace metalfit;
     const fs::path data = test::kData;
     const Catalog catalog = Catalog::load(data);
@@ -253,8 +255,13 @@ TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
             const Model& model = find_model(e.model);
             ASSERT_EQ(e.params.size(), model.parameters().size());
             ModelParameters p;
+            const auto& written = record["materials"][id]["models"][e.model]["export"]["params"];
             for (int c = 0; c < 3; ++c)
-                for (const auto& v : e.params) p[c].push_back(v[c]);
+                for (std::size_t i = 0; i < e.params.size(); ++i) {
+                    const double v = written[std::string(model.parameters()[i].name)][c].get<double>();
+                    EXPECT_EQ(static_cast<float>(e.params[i][c]), static_cast<float>(v)) << model.parameters()[i].name;
+                    p[c].push_back(v);
+                }
             for (int c = 0; c < 3; ++c) {
                 double rel = 0, abs = 0, albedo = 0, max_rel = 0, max_abs = 0;
                 for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -273,7 +280,7 @@ TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
                 for (const auto& [key, value] : mine) {
                     ASSERT_TRUE(e.figures.count(key)) << key;
                     const double written = e.figures.at(key)[c];
-                    // Six significant digits are written; the constants are exact (shortest round trip).
+                    // Six significant digits are written; the JSON's doubles are exact (shortest round trip).
                     EXPECT_NEAR(value, written, 1e-5 * std::abs(written) + 1e-12) << key << " channel " << c;
                 }
             }
@@ -281,6 +288,21 @@ TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
         }
     }
     EXPECT_EQ(checked, static_cast<int>(catalog_material_count() * all_models().size()));
+}
+
+TEST_F(CatalogExport, ShaderHeadersStateTheLanguageAndHalfPrecisionSafety) {
+    const std::string au_conductor = read_file(out() / "glsl" / "metalfit_au_conductor_rgb.glsl");
+    EXPECT_TRUE(metalfit::test::Contains(au_conductor, "GLSL >= 1.30 (tested as 3.30 and 4.50) or GLSL ES 3.00"));
+    // Gold's red k (about 1097) squared is beyond half's 65504, and the fit put its n at the lower bound.
+    EXPECT_TRUE(metalfit::test::Contains(au_conductor, "half precision (16-bit float, mediump): NOT safe: k² or 4n²k² of red"));
+    EXPECT_TRUE(metalfit::test::Contains(au_conductor, "n red = 0.001 is the fit's lower bound"));
+    // Gulbrandsen's r = 0.99999 rounds to 1 in half.
+    EXPECT_TRUE(metalfit::test::Contains(read_file(out() / "hlsl" / "metalfit_au_gulbrandsen.hlsl"), "rounds to 1 in half"));
+    const std::string cu_f82 = read_file(out() / "glsl" / "metalfit_cu_f82_tint.glsl");
+    EXPECT_TRUE(metalfit::test::Contains(cu_f82, "half precision (16-bit float, mediump): in range"));
+    EXPECT_TRUE(metalfit::test::Contains(cu_f82, "#ifndef METALFIT_CU_F82_TINT_GLSL"));
+    EXPECT_TRUE(metalfit::test::Contains(read_file(out() / "glsl" / "metalfit_models.glsl"),
+                                         "#ifdef GL_ES\nprecision highp float;\n#endif\n"));
 }
 
 // ---- JSON: the fit record's schema, the written parameters in "export" ---------------------------------------------
@@ -293,9 +315,14 @@ TEST_F(CatalogExport, JsonIsTheFitRecordWithTheWrittenParameters) {
     EXPECT_EQ(au["export"]["from"], "fit");
     EXPECT_EQ(au["export"]["params"], au["fit"]["params"]);  // keep: the fit as it is
     EXPECT_EQ(au["export"]["metrics"], au["fit"]["metrics"]);
-    // The GLSL constants are the same numbers.
+    // The GLSL constants are the floats nearest the same numbers, as the shortest text of that float (<= 9 digits).
     const ShaderExport g = parse_glsl_export(out() / "glsl" / "metalfit_au_f82_tint.glsl");
-    for (int c = 0; c < 3; ++c) EXPECT_EQ(g.params[0][c], au["export"]["params"]["F0"][c].get<double>());
+    for (int c = 0; c < 3; ++c)
+        EXPECT_EQ(static_cast<float>(g.params[0][c]), static_cast<float>(au["export"]["params"]["F0"][c].get<double>()));
+    const std::string text = read_file(out() / "glsl" / "metalfit_au_f82_tint.glsl");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(_F0 = vec3\(([-0-9.e]+),)")));
+    EXPECT_LE(std::regex_replace(m[1].str(), std::regex("[-.]|e.*"), "").size(), 9u) << m[1];
 }
 
 // ---- Gamut policies ------------------------------------------------------------------------------------------------

@@ -188,9 +188,71 @@ std::string number(double v) {
     return s;
 }
 
+std::string shader_number(double v) {
+    char text[40];
+    const float f = static_cast<float>(v);
+    const auto end = std::to_chars(text, text + sizeof text, f).ptr;  // shortest text that reads back as f (<= 9 digits)
+    std::string s(text, end);
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+    return s;
+}
+
+std::string half_precision_note(const WrittenParameters& written, std::string_view prefix) {
+    // Half precision (binary16, mediump on most GPUs) holds |x| <= 65504 with an 11-bit significand. What the model
+    // functions compute beyond their constants: n, k (ParameterKind::index) are squared (k², 4n²k²); Gulbrandsen's
+    // r, g become n, k through 1 / (1 − √r) and 1 / (1 − r), infinite once r rounds to 1.
+    constexpr double kHalfMax = 65504.0, kHalfEpsilon = 1.0 / 2048.0;
+    const auto short_number = [](double v) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.6g", v);
+        return std::string(text);
+    };
+    const auto parameters = written.model->parameters();
+    std::vector<std::string> bounds;
+    std::string verdict;
+    const auto unsafe = [&](const std::string& why) {
+        if (verdict.empty()) verdict = "NOT safe: " + why + "; use highp";
+    };
+    std::vector<std::size_t> index;
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+        if (parameters[i].kind == ParameterKind::index) index.push_back(i);
+        const RGB v = written.params.parameter(i);
+        for (int c = 0; c < 3; ++c) {
+            const std::string which = std::string(parameters[i].name) + " " + kChannelNames[c] + " = " + short_number(v[c]);
+            if (std::abs(v[c]) > kHalfMax) unsafe(which + " is beyond 65504");
+            if (parameters[i].upper > parameters[i].lower && v[c] >= parameters[i].upper * (1.0 - 1e-9))
+                bounds.push_back(which + " is the fit's upper bound (the fit runs it there to come close to F0 > 1)");
+            if (parameters[i].upper > parameters[i].lower && v[c] <= parameters[i].lower * (1.0 + 1e-9))
+                bounds.push_back(which + " is the fit's lower bound");
+        }
+    }
+    for (int c = 0; c < 3; ++c) {
+        if (index.size() == 2) {
+            const double n = written.params[c][index[0]], k = written.params[c][index[1]];
+            const double squares = std::max(k * k, 4.0 * n * n * k * k);
+            if (squares > kHalfMax)
+                unsafe(std::string("k² or 4n²k² of ") + kChannelNames[c] + " reaches " + short_number(squares) + ", beyond 65504");
+        }
+        if (written.model->materialx_form() == MaterialxForm::artistic_ior && 1.0 - written.params[c][0] < kHalfEpsilon)
+            unsafe(std::string("r ") + kChannelNames[c] + " = " + short_number(written.params[c][0]) +
+                   " rounds to 1 in half, and 1 / (1 - r) is infinite");
+    }
+    if (verdict.empty())
+        verdict = "in range (constants and intermediates below 65504), but half's 11-bit significand (4.9e-4 relative) "
+                  "adds to the errors above";
+    std::string text = std::string(prefix) + "half precision (16-bit float, mediump): " + verdict + "\n";
+    for (const std::string& b : bounds) text += std::string(prefix) + "  " + b + "\n";
+    return text;
+}
+
 std::string channel_list(const ModelParameters& params, std::size_t index) {
     const RGB v = params.parameter(index);
     return number(v.r) + ", " + number(v.g) + ", " + number(v.b);
+}
+
+std::string shader_channel_list(const ModelParameters& params, std::size_t index) {
+    const RGB v = params.parameter(index);
+    return shader_number(v.r) + ", " + shader_number(v.g) + ", " + shader_number(v.b);
 }
 
 std::string comment_header(const MaterialExport& material, const WrittenParameters& written,
