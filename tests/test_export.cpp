@@ -176,7 +176,7 @@ TEST_F(CatalogExport, EveryMaterialxDocumentUsesOnlyDefinedNodesInputsAndTypes) 
         for (pugi::xml_node n : doc.child("materialx").children()) categories.insert(n.name());
     }
     EXPECT_EQ(categories, (std::set<std::string>{"generalized_schlick_bsdf", "conductor_bsdf", "artistic_ior", "surface",
-                                                 "surfacematerial", "open_pbr_surface"}));
+                                                 "surfacematerial", "open_pbr_surface", "roughness_anisotropy"}));
 }
 
 TEST_F(CatalogExport, MaterialxMappingFollowsTheModels) {
@@ -303,6 +303,54 @@ TEST_F(CatalogExport, ShaderHeadersStateTheLanguageAndHalfPrecisionSafety) {
     EXPECT_TRUE(metalfit::test::Contains(cu_f82, "#ifndef METALFIT_CU_F82_TINT_GLSL"));
     EXPECT_TRUE(metalfit::test::Contains(read_file(out() / "glsl" / "metalfit_models.glsl"),
                                          "#ifdef GL_ES\nprecision highp float;\n#endif\n"));
+}
+
+// ---- Roughness: the same value in MaterialX, OpenPBR and JSON --------------------------------------------------------
+
+// The roughness a MaterialX document gives its BSDF: roughness_anisotropy's input, followed from the BSDF's
+// roughness connection; -1 when the BSDF has none.
+double materialx_roughness(const fs::path& file) {
+    pugi::xml_document doc;
+    EXPECT_TRUE(doc.load_file(file.c_str())) << file;
+    const pugi::xml_node bsdf = doc.select_node("//*[@type='BSDF' and input[@name='roughness']]").node();
+    if (!bsdf) return -1;
+    const std::string node = bsdf.select_node("input[@name='roughness']").node().attribute("nodename").value();
+    const pugi::xml_node r = doc.select_node(("//roughness_anisotropy[@name='" + node + "']").c_str()).node();
+    return r ? r.select_node("input[@name='roughness']").node().attribute("value").as_double(-1) : -1;
+}
+
+TEST_F(CatalogExport, EveryDocumentCarriesTheDefaultRoughness) {
+    for (const fs::path& f : files_with_extension(out() / "mtlx", ".mtlx"))
+        EXPECT_EQ(materialx_roughness(f), metalfit::kDefaultRoughness) << f;
+    for (const fs::path& f : files_with_extension(out() / "openpbr", ".json"))
+        EXPECT_EQ(nlohmann::json::parse(read_file(f))["open_pbr_surface"]["specular_roughness"], metalfit::kDefaultRoughness) << f;
+    const auto record = nlohmann::json::parse(read_file(out() / "metalfit_export.json"));
+    EXPECT_EQ(record["materials"]["Cu"]["models"]["schlick"]["export"]["roughness"], metalfit::kDefaultRoughness);
+}
+
+TEST(ExportRoughness, TheGivenRoughnessIsWrittenInEveryFormatAndBadValuesAreUsageErrors) {
+    TempDir tmp;
+    const fs::path out = tmp.path() / "out";
+    const Result r = run("export Au --model f82-tint,conductor-rgb,gulbrandsen --format mtlx,openpbr,json --roughness 0.25 -o '" +
+                             out.string() + "'", tmp.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* stem : {"metalfit_au_f82_tint", "metalfit_au_conductor_rgb", "metalfit_au_gulbrandsen"}) {
+        EXPECT_EQ(materialx_roughness(out / "mtlx" / (std::string(stem) + ".mtlx")), 0.25) << stem;
+        EXPECT_EQ(nlohmann::json::parse(read_file(out / "openpbr" / (std::string(stem) + ".json")))["open_pbr_surface"]
+                                       ["specular_roughness"], 0.25) << stem;
+        pugi::xml_document doc;
+        ASSERT_TRUE(doc.load_file((out / "openpbr" / (std::string(stem) + ".mtlx")).c_str()));
+        EXPECT_STREQ(doc.select_node("//open_pbr_surface/input[@name='specular_roughness']").node().attribute("value").value(), "0.25");
+    }
+    EXPECT_EQ(nlohmann::json::parse(read_file(out / "metalfit_export.json"))["materials"]["Au"]["models"]["gulbrandsen"]
+                                   ["export"]["roughness"], 0.25);
+    for (const char* bad : {"1.5", "-0.1", "rough", "nan"}) {
+        const Result e = run(std::string("export Au --model schlick --format json --roughness ") + bad + " -o '" +
+                                 (tmp.path() / "bad").string() + "'", tmp.path());
+        EXPECT_EQ(e.exit_code, 2) << bad;
+        EXPECT_TRUE(metalfit::test::Contains(e.err, "--roughness")) << e.err;
+        EXPECT_FALSE(fs::exists(tmp.path() / "bad"));
+    }
 }
 
 // ---- JSON: the fit record's schema, the written parameters in "export" ---------------------------------------------

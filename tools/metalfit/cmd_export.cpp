@@ -24,6 +24,7 @@ struct ExportOptions {
     std::string params = "fit";
     std::string formats;
     std::string gamut = "keep";
+    std::string roughness;  // empty: kDefaultRoughness
     ColourOptions colour;
     int jobs = 0;  // 0: all cores
     std::filesystem::path output;
@@ -46,7 +47,8 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
         throw UsageError("export: --costs needs --model best:BUDGET");
     }
     ExportRequest request{parse_export_formats(o.formats), best ? parse_model_list("all") : parse_model_list(o.models),
-                          parse_parameter_source(o.params), parse_gamut_policy(o.gamut)};
+                          parse_parameter_source(o.params), parse_gamut_policy(o.gamut),
+                          o.roughness.empty() ? kDefaultRoughness : parse_roughness(o.roughness)};
     const CostTable costs = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
     const Catalog catalog = Catalog::load(global.data_dir);
     const auto loaders = o.selection.loaders(catalog, "export");
@@ -85,6 +87,9 @@ std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& glo
     app.add_option("--params", o->params, "Parameters written: fit (Ceres) or closed (best closed form)");
     app.add_option("--format", o->formats, "Formats, comma-separated, or all: json, glsl, hlsl, mtlx, openpbr, cpp")->required();
     app.add_option("--gamut", o->gamut, "Colour parameters outside [0, 1]: keep (flagged), clip, or scale by 1/max");
+    app.add_option("--roughness", o->roughness,
+                   "Surface roughness R in [0, 1] written with the Fresnel parameters (MaterialX, OpenPBR, JSON; "
+                   "OpenPBR's specular_roughness, MaterialX alpha = R^2); default " + std::string(kDefaultRoughnessText));
     add_colour_options(app, o->colour);
     app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
     app.add_option("-o,--output", o->output, "Output directory (created if missing)")->required();

@@ -313,6 +313,14 @@ std::string untagged_materialx_warning(const std::string& ocio_space) {
 
 }  // namespace detail
 
+double parse_roughness(const std::string& text) {
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc{} || end != text.data() + text.size() || !(value >= 0.0 && value <= 1.0))
+        throw UsageError("--roughness '" + text + "': expected a number in [0, 1] (OpenPBR's specular_roughness)");
+    return value;
+}
+
 std::string materialx_colorspace(const OcioConfigChoice& config, const std::string& ocio_space) {
     // MaterialX 1.39's linear colour spaces, each with the names OCIO configs (the builtin studio and CG configs,
     // ACES 1.x, metalfit's own) give the same space or list as aliases.

@@ -44,11 +44,20 @@ struct WrittenParameters {
 WrittenParameters written_parameters(const ModelResult& result, const SampledReference& reference,
                                      ParameterSource source, GamutPolicy gamut, const std::string& material_id);
 
+// The surface roughness written with the Fresnel parameters (MaterialX, OpenPBR, JSON): OpenPBR's
+// specular_roughness, perceptual, in [0, 1]; MaterialX's BSDFs receive it through roughness_anisotropy (α = R²),
+// so both folders render the same lobe. The default is OpenPBR's own default.
+inline constexpr double kDefaultRoughness = 0.3;
+inline constexpr const char* kDefaultRoughnessText = "0.3";  // as --help and the docs print it
+// "0.25" → 0.25; UsageError naming the value when it is not a number in [0, 1].
+double parse_roughness(const std::string& text);
+
 struct ExportRequest {
     std::vector<ExportFormat> formats;
     std::vector<const Model*> models;  // the models exported, in order
     ParameterSource source = ParameterSource::fit;
     GamutPolicy gamut = GamutPolicy::keep;
+    double roughness = kDefaultRoughness;
 };
 
 // The model the MaterialX and OpenPBR exports use where a model has no native equivalent (lazanyi-comp in MaterialX;
