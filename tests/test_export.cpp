@@ -183,7 +183,10 @@ TEST_F(CatalogExport, MaterialxMappingFollowsTheModels) {
     const auto category = [&](const std::string& stem) {
         pugi::xml_document doc;
         EXPECT_TRUE(doc.load_file((out() / "mtlx" / (stem + ".mtlx")).c_str()));
-        return std::string(doc.child("materialx").first_child().name());
+        // The BSDF (or artistic_ior) after the roughness node that feeds it.
+        pugi::xml_node n = doc.child("materialx").first_child();
+        EXPECT_STREQ(n.name(), "roughness_anisotropy");
+        return std::string(n.next_sibling().name());
     };
     EXPECT_EQ(category("metalfit_cu_f82_tint"), "generalized_schlick_bsdf");
     EXPECT_EQ(category("metalfit_cu_schlick"), "generalized_schlick_bsdf");
@@ -303,6 +306,22 @@ TEST_F(CatalogExport, ShaderHeadersStateTheLanguageAndHalfPrecisionSafety) {
     EXPECT_TRUE(metalfit::test::Contains(cu_f82, "#ifndef METALFIT_CU_F82_TINT_GLSL"));
     EXPECT_TRUE(metalfit::test::Contains(read_file(out() / "glsl" / "metalfit_models.glsl"),
                                          "#ifdef GL_ES\nprecision highp float;\n#endif\n"));
+}
+
+TEST_F(CatalogExport, MaterialxProvenanceIsTheDocOfTheMaterialAsWellAsTheComment) {
+    for (const char* file : {"mtlx/metalfit_au_lazanyi_comp.mtlx", "openpbr/metalfit_cu_f82_tint.mtlx"}) {
+        pugi::xml_document doc;
+        ASSERT_TRUE(doc.load_file((out() / file).c_str(), pugi::parse_default | pugi::parse_comments));
+        std::string comment;
+        for (pugi::xml_node n : doc.children())
+            if (n.type() == pugi::node_comment) comment = n.value();
+        comment = std::regex_replace(comment, std::regex("\n  "), "\n");
+        while (!comment.empty() && (comment.front() == '\n')) comment.erase(0, 1);
+        while (!comment.empty() && (comment.back() == '\n' || comment.back() == ' ')) comment.pop_back();
+        const std::string doc_string = doc.select_node("//surfacematerial").node().attribute("doc").value();
+        EXPECT_TRUE(metalfit::test::Contains(doc_string, "data source: ")) << file;
+        EXPECT_EQ(std::regex_replace(doc_string, std::regex("- -"), "--"), std::regex_replace(comment, std::regex("- -"), "--")) << file;
+    }
 }
 
 // ---- Roughness: the same value in MaterialX, OpenPBR and JSON --------------------------------------------------------

@@ -61,7 +61,8 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
     const FitRecordContext context = setup.record_context(error);
-    for (const std::string& w : export_warnings(context, request)) warn(w);
+    const std::string materialx_space = materialx_colorspace(context.config, context.space);  // reads the config once
+    for (const std::string& w : export_warnings(context, request, materialx_space)) warn(w);
     if (budget) {
         const BudgetChoice choice = choose_model(fits.front().models, costs, *budget);
         if (!choice.chosen)
@@ -71,7 +72,7 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
              "; cost table: " + choice.cost_source);
         request.models = {choice.chosen};
     }
-    write_export(o.output, export_files(fits, context, request));
+    write_export(o.output, export_files(fits, context, request, materialx_space));
 }
 
 }  // namespace

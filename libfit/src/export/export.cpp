@@ -350,12 +350,13 @@ std::string materialx_colorspace(const OcioConfigChoice& config, const std::stri
     return {};
 }
 
-std::vector<std::string> export_warnings(const FitRecordContext& context, const ExportRequest& request) {
+std::vector<std::string> export_warnings(const FitRecordContext& context, const ExportRequest& request,
+                                         const std::string& materialx_space) {
     std::vector<std::string> warnings;
     const bool materialx = std::any_of(request.formats.begin(), request.formats.end(), [](ExportFormat f) {
         return f == ExportFormat::mtlx || f == ExportFormat::openpbr;
     });
-    if (materialx && materialx_colorspace(context.config, context.space).empty())
+    if (materialx && materialx_space.empty())
         warnings.push_back(detail::untagged_materialx_warning(context.space));
     return warnings;
 }
@@ -364,7 +365,7 @@ namespace detail {
 }  // namespace detail
 
 std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
-                                     const ExportRequest& request) {
+                                     const ExportRequest& request, const std::string& materialx_space) {
     using detail::ModelExport;
     const Model& stand_in_model = expressible_stand_in();
     std::vector<detail::MaterialExport> materials;
@@ -390,7 +391,7 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
         }
         materials.push_back(std::move(m));
     }
-    const detail::ExportContext ctx{context, request, materialx_colorspace(context.config, context.space)};
+    const detail::ExportContext ctx{context, request, materialx_space};
     std::vector<ExportFile> files;
     for (ExportFormat format : request.formats) {
         std::vector<ExportFile> more;

@@ -95,8 +95,11 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
 // (the header), with colorspace when MaterialX has a name for the curves' space (context.materialx_colorspace).
 pugi::xml_node begin_materialx(pugi::xml_document& doc, const std::string& comment, const ExportContext& context);
 void add_input(pugi::xml_node node, const char* name, const char* type, const std::string& value);
-// <surface> around the BSDF node `bsdf` (unless it already is a surfaceshader) and <surfacematerial> around that.
-void add_surface_material(pugi::xml_node root, const std::string& stem, const std::string& shader, bool is_bsdf);
+// <surface> around the BSDF node `bsdf` (unless it already is a surfaceshader) and <surfacematerial> around that,
+// whose `doc` attribute holds `doc` (the comment header's lines: MaterialX keeps doc through a read and write, where
+// it drops comments).
+void add_surface_material(pugi::xml_node root, const std::string& stem, const std::string& shader, bool is_bsdf,
+                          const std::string& doc);
 std::string xml_text(const pugi::xml_document& doc);
 
 // The header line of a MaterialX document whose space MaterialX cannot name (export_warnings says the same on stderr).

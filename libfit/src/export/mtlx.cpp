@@ -73,6 +73,7 @@ std::string document(const MaterialExport& m, const ModelExport& e, const Export
         extra += std::string(extra.empty() ? "" : "\n") + untagged_materialx_warning(ocio_space);
     pugi::xml_document doc;
     pugi::xml_node root = begin_materialx(doc, comment_header(m, w, context, "  ", extra), context);
+    const std::string provenance = comment_header(m, w, context, "", extra);
     const std::string bsdf = stem + "_bsdf";
     // The perceptual roughness as OpenPBR takes it; roughness_anisotropy makes MaterialX's α = R² of it.
     const std::string roughness = stem + "_roughness";
@@ -123,7 +124,7 @@ std::string document(const MaterialExport& m, const ModelExport& e, const Export
             break;
         }
     }
-    add_surface_material(root, stem, bsdf, true);
+    add_surface_material(root, stem, bsdf, true, provenance);
     return xml_text(doc);
 }
 
@@ -146,7 +147,8 @@ void add_input(pugi::xml_node node, const char* name, const char* type, const st
     in.append_attribute("value") = value.c_str();
 }
 
-void add_surface_material(pugi::xml_node root, const std::string& stem, const std::string& shader, bool is_bsdf) {
+void add_surface_material(pugi::xml_node root, const std::string& stem, const std::string& shader, bool is_bsdf,
+                          const std::string& doc) {
     std::string surface = shader;
     if (is_bsdf) {
         surface = stem + "_surface";
@@ -161,6 +163,9 @@ void add_surface_material(pugi::xml_node root, const std::string& stem, const st
     pugi::xml_node m = root.append_child("surfacematerial");
     m.append_attribute("name") = (stem + "_material").c_str();
     m.append_attribute("type") = "material";
+    std::string text = doc;
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    m.append_attribute("doc") = text.c_str();
     pugi::xml_node in = m.append_child("input");
     in.append_attribute("name") = "surfaceshader";
     in.append_attribute("type") = "surfaceshader";

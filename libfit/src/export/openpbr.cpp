@@ -79,7 +79,7 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
             add_input(s, "specular_weight", "float", "1.0");
             add_input(s, "specular_color", "color3", channel_list(w.params, 1));
             add_input(s, "specular_roughness", "float", number(context.request.roughness));
-            add_surface_material(root, stem, shader, false);
+            add_surface_material(root, stem, shader, false, comment_header(m, w, context, "", note));
             files.push_back({"openpbr/" + stem + ".mtlx", xml_text(doc)});
         }
     return files;

@@ -73,9 +73,11 @@ struct ExportFile {
     std::string contents;
 };
 
-// Every file of an export (layout in docs/export.md). `fits` must hold the models of models_to_fit(request).
+// Every file of an export (layout in docs/export.md). `fits` must hold the models of models_to_fit(request);
+// `materialx_space` is materialx_colorspace(context.config, context.space), resolved once by the caller (it reads
+// the OCIO config) and given to export_warnings too.
 std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
-                                     const ExportRequest& request);
+                                     const ExportRequest& request, const std::string& materialx_space);
 
 // MaterialX's name of the OCIO colour space `space` of `config` ("lin_rec709", "acescg", "lin_displayp3",
 // "lin_adobergb"), matched by its name and its aliases in the config, case-insensitively; empty when MaterialX has
@@ -84,7 +86,8 @@ std::string materialx_colorspace(const OcioConfigChoice& config, const std::stri
 
 // What a consumer must be told about an export before using it (one line each; `metalfit export` prints them on
 // stderr): today, MaterialX documents in a space MaterialX cannot name.
-std::vector<std::string> export_warnings(const FitRecordContext& context, const ExportRequest& request);
+std::vector<std::string> export_warnings(const FitRecordContext& context, const ExportRequest& request,
+                                         const std::string& materialx_space);
 
 // Writes all files below `dir` (created if missing) as one unit (update_folder_as_unit: staged in a folder beside
 // `dir`, switched in with one rename; interrupted or failed, nothing changes). Files of an earlier export there stay;
