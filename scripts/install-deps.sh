@@ -22,7 +22,8 @@ PACKAGES=(
   clang libclang-rt-14-dev             # the optional fuzz preset: clang with libFuzzer and the sanitizers (fuzz/)
 )
 # npm (from Debian's nodejs + npm unless a node with its own npm is already on PATH): installs the report's chart
-# libraries (vega, vega-lite, vega-embed) and playwright-core, pinned in package.json + package-lock.json.
+# libraries (vega, vega-lite, vega-embed), playwright-core and the export consumer of the tests (@needle-tools/materialx:
+# MaterialX 1.39.4 as WebAssembly), pinned in package.json + package-lock.json.
 command -v npm >/dev/null 2>&1 || PACKAGES+=(nodejs npm)
 
 missing=()

@@ -176,14 +176,17 @@ TEST_F(CatalogExport, EveryMaterialxDocumentUsesOnlyDefinedNodesInputsAndTypes) 
         for (pugi::xml_node n : doc.child("materialx").children()) categories.insert(n.name());
     }
     EXPECT_EQ(categories, (std::set<std::string>{"generalized_schlick_bsdf", "conductor_bsdf", "artistic_ior", "surface",
-                                                 "surfacematerial", "open_pbr_surface"}));
+                                                 "surfacematerial", "open_pbr_surface", "roughness_anisotropy"}));
 }
 
 TEST_F(CatalogExport, MaterialxMappingFollowsTheModels) {
     const auto category = [&](const std::string& stem) {
         pugi::xml_document doc;
         EXPECT_TRUE(doc.load_file((out() / "mtlx" / (stem + ".mtlx")).c_str()));
-        return std::string(doc.child("materialx").first_child().name());
+        // The BSDF (or artistic_ior) after the roughness node that feeds it.
+        pugi::xml_node n = doc.child("materialx").first_child();
+        EXPECT_STREQ(n.name(), "roughness_anisotropy");
+        return std::string(n.next_sibling().name());
     };
     EXPECT_EQ(category("metalfit_cu_f82_tint"), "generalized_schlick_bsdf");
     EXPECT_EQ(category("metalfit_cu_schlick"), "generalized_schlick_bsdf");
@@ -227,6 +230,8 @@ ShaderExport parse_glsl_export(const fs::path& file) {
 }
 
 TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
+    // The figures are of the written doubles (metalfit_export.json); the GLSL constants are the floats nearest them.
+    const auto record = nlohmann::json::parse(read_file(out() / "metalfit_export.json"));
     using namespace metalfit;
     const fs::path data = test::kData;
     const Catalog catalog = Catalog::load(data);
@@ -253,8 +258,13 @@ TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
             const Model& model = find_model(e.model);
             ASSERT_EQ(e.params.size(), model.parameters().size());
             ModelParameters p;
+            const auto& written = record["materials"][id]["models"][e.model]["export"]["params"];
             for (int c = 0; c < 3; ++c)
-                for (const auto& v : e.params) p[c].push_back(v[c]);
+                for (std::size_t i = 0; i < e.params.size(); ++i) {
+                    const double v = written[std::string(model.parameters()[i].name)][c].get<double>();
+                    EXPECT_EQ(static_cast<float>(e.params[i][c]), static_cast<float>(v)) << model.parameters()[i].name;
+                    p[c].push_back(v);
+                }
             for (int c = 0; c < 3; ++c) {
                 double rel = 0, abs = 0, albedo = 0, max_rel = 0, max_abs = 0;
                 for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -273,7 +283,7 @@ TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
                 for (const auto& [key, value] : mine) {
                     ASSERT_TRUE(e.figures.count(key)) << key;
                     const double written = e.figures.at(key)[c];
-                    // Six significant digits are written; the constants are exact (shortest round trip).
+                    // Six significant digits are written; the JSON's doubles are exact (shortest round trip).
                     EXPECT_NEAR(value, written, 1e-5 * std::abs(written) + 1e-12) << key << " channel " << c;
                 }
             }
@@ -281,6 +291,85 @@ TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
         }
     }
     EXPECT_EQ(checked, static_cast<int>(catalog_material_count() * all_models().size()));
+}
+
+TEST_F(CatalogExport, ShaderHeadersStateTheLanguageAndHalfPrecisionSafety) {
+    const std::string au_conductor = read_file(out() / "glsl" / "metalfit_au_conductor_rgb.glsl");
+    EXPECT_TRUE(metalfit::test::Contains(au_conductor, "GLSL >= 1.30 (tested as 3.30 and 4.50) or GLSL ES 3.00"));
+    // Gold's red k (about 1097) squared is beyond half's 65504, and the fit put its n at the lower bound.
+    EXPECT_TRUE(metalfit::test::Contains(au_conductor, "half precision (16-bit float, mediump): NOT safe: k² or 4n²k² of red"));
+    EXPECT_TRUE(metalfit::test::Contains(au_conductor, "n red = 0.001 is the fit's lower bound"));
+    // Gulbrandsen's r = 0.99999 rounds to 1 in half.
+    EXPECT_TRUE(metalfit::test::Contains(read_file(out() / "hlsl" / "metalfit_au_gulbrandsen.hlsl"), "rounds to 1 in half"));
+    const std::string cu_f82 = read_file(out() / "glsl" / "metalfit_cu_f82_tint.glsl");
+    EXPECT_TRUE(metalfit::test::Contains(cu_f82, "half precision (16-bit float, mediump): in range"));
+    EXPECT_TRUE(metalfit::test::Contains(cu_f82, "#ifndef METALFIT_CU_F82_TINT_GLSL"));
+    EXPECT_TRUE(metalfit::test::Contains(read_file(out() / "glsl" / "metalfit_models.glsl"),
+                                         "#ifdef GL_ES\nprecision highp float;\n#endif\n"));
+}
+
+TEST_F(CatalogExport, MaterialxProvenanceIsTheDocOfTheMaterialAsWellAsTheComment) {
+    for (const char* file : {"mtlx/metalfit_au_lazanyi_comp.mtlx", "openpbr/metalfit_cu_f82_tint.mtlx"}) {
+        pugi::xml_document doc;
+        ASSERT_TRUE(doc.load_file((out() / file).c_str(), pugi::parse_default | pugi::parse_comments));
+        std::string comment;
+        for (pugi::xml_node n : doc.children())
+            if (n.type() == pugi::node_comment) comment = n.value();
+        comment = std::regex_replace(comment, std::regex("\n  "), "\n");
+        while (!comment.empty() && (comment.front() == '\n')) comment.erase(0, 1);
+        while (!comment.empty() && (comment.back() == '\n' || comment.back() == ' ')) comment.pop_back();
+        const std::string doc_string = doc.select_node("//surfacematerial").node().attribute("doc").value();
+        EXPECT_TRUE(metalfit::test::Contains(doc_string, "data source: ")) << file;
+        EXPECT_EQ(std::regex_replace(doc_string, std::regex("- -"), "--"), std::regex_replace(comment, std::regex("- -"), "--")) << file;
+    }
+}
+
+// ---- Roughness: the same value in MaterialX, OpenPBR and JSON --------------------------------------------------------
+
+// The roughness a MaterialX document gives its BSDF: roughness_anisotropy's input, followed from the BSDF's
+// roughness connection; -1 when the BSDF has none.
+double materialx_roughness(const fs::path& file) {
+    pugi::xml_document doc;
+    EXPECT_TRUE(doc.load_file(file.c_str())) << file;
+    const pugi::xml_node bsdf = doc.select_node("//*[@type='BSDF' and input[@name='roughness']]").node();
+    if (!bsdf) return -1;
+    const std::string node = bsdf.select_node("input[@name='roughness']").node().attribute("nodename").value();
+    const pugi::xml_node r = doc.select_node(("//roughness_anisotropy[@name='" + node + "']").c_str()).node();
+    return r ? r.select_node("input[@name='roughness']").node().attribute("value").as_double(-1) : -1;
+}
+
+TEST_F(CatalogExport, EveryDocumentCarriesTheDefaultRoughness) {
+    for (const fs::path& f : files_with_extension(out() / "mtlx", ".mtlx"))
+        EXPECT_EQ(materialx_roughness(f), metalfit::kDefaultRoughness) << f;
+    for (const fs::path& f : files_with_extension(out() / "openpbr", ".json"))
+        EXPECT_EQ(nlohmann::json::parse(read_file(f))["open_pbr_surface"]["specular_roughness"], metalfit::kDefaultRoughness) << f;
+    const auto record = nlohmann::json::parse(read_file(out() / "metalfit_export.json"));
+    EXPECT_EQ(record["materials"]["Cu"]["models"]["schlick"]["export"]["roughness"], metalfit::kDefaultRoughness);
+}
+
+TEST(ExportRoughness, TheGivenRoughnessIsWrittenInEveryFormatAndBadValuesAreUsageErrors) {
+    TempDir tmp;
+    const fs::path out = tmp.path() / "out";
+    const Result r = run("export Au --model f82-tint,conductor-rgb,gulbrandsen --format mtlx,openpbr,json --roughness 0.25 -o '" +
+                             out.string() + "'", tmp.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* stem : {"metalfit_au_f82_tint", "metalfit_au_conductor_rgb", "metalfit_au_gulbrandsen"}) {
+        EXPECT_EQ(materialx_roughness(out / "mtlx" / (std::string(stem) + ".mtlx")), 0.25) << stem;
+        EXPECT_EQ(nlohmann::json::parse(read_file(out / "openpbr" / (std::string(stem) + ".json")))["open_pbr_surface"]
+                                       ["specular_roughness"], 0.25) << stem;
+        pugi::xml_document doc;
+        ASSERT_TRUE(doc.load_file((out / "openpbr" / (std::string(stem) + ".mtlx")).c_str()));
+        EXPECT_STREQ(doc.select_node("//open_pbr_surface/input[@name='specular_roughness']").node().attribute("value").value(), "0.25");
+    }
+    EXPECT_EQ(nlohmann::json::parse(read_file(out / "metalfit_export.json"))["materials"]["Au"]["models"]["gulbrandsen"]
+                                   ["export"]["roughness"], 0.25);
+    for (const char* bad : {"1.5", "-0.1", "rough", "nan"}) {
+        const Result e = run(std::string("export Au --model schlick --format json --roughness ") + bad + " -o '" +
+                                 (tmp.path() / "bad").string() + "'", tmp.path());
+        EXPECT_EQ(e.exit_code, 2) << bad;
+        EXPECT_TRUE(metalfit::test::Contains(e.err, "--roughness")) << e.err;
+        EXPECT_FALSE(fs::exists(tmp.path() / "bad"));
+    }
 }
 
 // ---- JSON: the fit record's schema, the written parameters in "export" ---------------------------------------------
@@ -293,9 +382,14 @@ TEST_F(CatalogExport, JsonIsTheFitRecordWithTheWrittenParameters) {
     EXPECT_EQ(au["export"]["from"], "fit");
     EXPECT_EQ(au["export"]["params"], au["fit"]["params"]);  // keep: the fit as it is
     EXPECT_EQ(au["export"]["metrics"], au["fit"]["metrics"]);
-    // The GLSL constants are the same numbers.
+    // The GLSL constants are the floats nearest the same numbers, as the shortest text of that float (<= 9 digits).
     const ShaderExport g = parse_glsl_export(out() / "glsl" / "metalfit_au_f82_tint.glsl");
-    for (int c = 0; c < 3; ++c) EXPECT_EQ(g.params[0][c], au["export"]["params"]["F0"][c].get<double>());
+    for (int c = 0; c < 3; ++c)
+        EXPECT_EQ(static_cast<float>(g.params[0][c]), static_cast<float>(au["export"]["params"]["F0"][c].get<double>()));
+    const std::string text = read_file(out() / "glsl" / "metalfit_au_f82_tint.glsl");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(_F0 = vec3\(([-0-9.e]+),)")));
+    EXPECT_LE(std::regex_replace(m[1].str(), std::regex("[-.]|e.*"), "").size(), 9u) << m[1];
 }
 
 // ---- Gamut policies ------------------------------------------------------------------------------------------------

@@ -25,6 +25,7 @@ struct ExportOptions {
     std::string formats;
     std::string gamut = "keep";
     bool gamut_fit = false;
+    std::string roughness;  // empty: kDefaultRoughness
     ColourOptions colour;
     int jobs = 0;  // 0: all cores
     std::filesystem::path output;
@@ -47,7 +48,8 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
         throw UsageError("export: --costs needs --model best:BUDGET");
     }
     ExportRequest request{parse_export_formats(o.formats), best ? parse_model_list("all") : parse_model_list(o.models),
-                          parse_parameter_source(o.params), parse_gamut_policy(o.gamut)};
+                          parse_parameter_source(o.params), parse_gamut_policy(o.gamut),
+                          o.roughness.empty() ? kDefaultRoughness : parse_roughness(o.roughness)};
     const CostTable costs = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
     const Catalog catalog = Catalog::load(global.data_dir);
     const auto loaders = o.selection.loaders(catalog, "export");
@@ -63,7 +65,8 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
     FitRecordContext context = setup.record_context(error);
     context.constraints = constraints;
-    for (const std::string& w : export_warnings(context, request)) warn(w);
+    const std::string materialx_space = materialx_colorspace(context.config, context.space);  // reads the config once
+    for (const std::string& w : export_warnings(context, request, materialx_space)) warn(w);
     if (budget) {
         const BudgetChoice choice = choose_model(fits.front().models, costs, *budget);
         if (!choice.chosen)
@@ -73,7 +76,7 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
              "; cost table: " + choice.cost_source);
         request.models = {choice.chosen};
     }
-    write_export(o.output, export_files(fits, context, request));
+    write_export(o.output, export_files(fits, context, request, materialx_space));
 }
 
 }  // namespace
@@ -91,6 +94,9 @@ std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& glo
     app.add_option("--gamut", o->gamut, "Colour parameters outside [0, 1]: keep (flagged), clip, or scale by 1/max");
     app.add_flag("--gamut-fit", o->gamut_fit,
                  "Fit every channel's curve inside [0, 1] at every angle (constrained, so --gamut has nothing left to do)");
+    app.add_option("--roughness", o->roughness,
+                   "Surface roughness R in [0, 1] written with the Fresnel parameters (MaterialX, OpenPBR, JSON; "
+                   "OpenPBR's specular_roughness, MaterialX alpha = R^2); default " + std::string(kDefaultRoughnessText));
     add_colour_options(app, o->colour);
     app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
     app.add_option("-o,--output", o->output, "Output directory (created if missing)")->required();

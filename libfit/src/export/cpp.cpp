@@ -71,6 +71,44 @@ std::string inline_functions(std::string_view glsl) {
     return out;
 }
 
+// GLSL's floating literals are float, C++'s double: `f` after each (1.0 → 1.0f, 1e-30 → 1e-30f), so that the
+// header is clean under -Wconversion -Wdouble-promotion and evaluates in float as the shader does. Comments,
+// identifiers (F82, m6_bar) and integer literals are copied unchanged.
+std::string float_literals(std::string_view glsl) {
+    const auto digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+    const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    std::string out;
+    std::size_t i = 0;
+    while (i < glsl.size()) {
+        if (glsl.substr(i, 2) == "//") {
+            const std::size_t end = std::min(glsl.find('\n', i), glsl.size());
+            out += glsl.substr(i, end - i);
+            i = end;
+        } else if (word(glsl[i]) && !digit(glsl[i])) {
+            std::size_t j = i;
+            while (j < glsl.size() && word(glsl[j])) ++j;
+            out += glsl.substr(i, j - i);
+            i = j;
+        } else if (digit(glsl[i]) || (glsl[i] == '.' && i + 1 < glsl.size() && digit(glsl[i + 1]))) {
+            std::size_t j = i;
+            bool floating = false;
+            while (j < glsl.size() && (digit(glsl[j]) || glsl[j] == '.')) floating |= glsl[j++] == '.';
+            if (j < glsl.size() && (glsl[j] == 'e' || glsl[j] == 'E')) {
+                floating = true;
+                ++j;
+                if (j < glsl.size() && (glsl[j] == '-' || glsl[j] == '+')) ++j;
+                while (j < glsl.size() && digit(glsl[j])) ++j;
+            }
+            out += glsl.substr(i, j - i);
+            if (floating) out += 'f';
+            i = j;
+        } else {
+            out += glsl[i++];
+        }
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string_view cpp_glsl_prelude() { return kCppPrelude; }
@@ -110,9 +148,10 @@ std::vector<CppIndexEntry> parse_cpp_materials_index(std::string_view text) {
 
 std::string cpp_models_file(const std::vector<const Model*>& models) {
     return "// metalfit " METALFIT_VERSION " Fresnel models for C++: the GLSL of libfit/models, unchanged but for "
-           "`inline`, over a\n// small vec3 prelude (docs/export.md). F(mu), mu = cos(theta), per RGB channel.\n"
+           "`inline` and float\n// literals (1.0f), over a small vec3 prelude (docs/export.md). F(mu), mu = cos(theta), per "
+           "RGB channel. C++20;\n// clean under -Wall -Wextra -Wconversion -Wdouble-promotion.\n"
            "#pragma once\n\n" +
-           std::string(kCppPrelude) + inline_functions(glsl_library(models)) + "\n}  // namespace metalfit_shader\n";
+           std::string(kCppPrelude) + inline_functions(float_literals(glsl_library(models))) + "\n}  // namespace metalfit_shader\n";
 }
 
 std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials, const ExportContext& context) {

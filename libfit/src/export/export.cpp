@@ -188,9 +188,71 @@ std::string number(double v) {
     return s;
 }
 
+std::string shader_number(double v) {
+    char text[40];
+    const float f = static_cast<float>(v);
+    const auto end = std::to_chars(text, text + sizeof text, f).ptr;  // shortest text that reads back as f (<= 9 digits)
+    std::string s(text, end);
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+    return s;
+}
+
+std::string half_precision_note(const WrittenParameters& written, std::string_view prefix) {
+    // Half precision (binary16, mediump on most GPUs) holds |x| <= 65504 with an 11-bit significand. What the model
+    // functions compute beyond their constants: n, k (ParameterKind::index) are squared (k², 4n²k²); Gulbrandsen's
+    // r, g become n, k through 1 / (1 − √r) and 1 / (1 − r), infinite once r rounds to 1.
+    constexpr double kHalfMax = 65504.0, kHalfEpsilon = 1.0 / 2048.0;
+    const auto short_number = [](double v) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.6g", v);
+        return std::string(text);
+    };
+    const auto parameters = written.model->parameters();
+    std::vector<std::string> bounds;
+    std::string verdict;
+    const auto unsafe = [&](const std::string& why) {
+        if (verdict.empty()) verdict = "NOT safe: " + why + "; use highp";
+    };
+    std::vector<std::size_t> index;
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+        if (parameters[i].kind == ParameterKind::index) index.push_back(i);
+        const RGB v = written.params.parameter(i);
+        for (int c = 0; c < 3; ++c) {
+            const std::string which = std::string(parameters[i].name) + " " + kChannelNames[c] + " = " + short_number(v[c]);
+            if (std::abs(v[c]) > kHalfMax) unsafe(which + " is beyond 65504");
+            if (parameters[i].upper > parameters[i].lower && v[c] >= parameters[i].upper * (1.0 - 1e-9))
+                bounds.push_back(which + " is the fit's upper bound (the fit runs it there to come close to F0 > 1)");
+            if (parameters[i].upper > parameters[i].lower && v[c] <= parameters[i].lower * (1.0 + 1e-9))
+                bounds.push_back(which + " is the fit's lower bound");
+        }
+    }
+    for (int c = 0; c < 3; ++c) {
+        if (index.size() == 2) {
+            const double n = written.params[c][index[0]], k = written.params[c][index[1]];
+            const double squares = std::max(k * k, 4.0 * n * n * k * k);
+            if (squares > kHalfMax)
+                unsafe(std::string("k² or 4n²k² of ") + kChannelNames[c] + " reaches " + short_number(squares) + ", beyond 65504");
+        }
+        if (written.model->materialx_form() == MaterialxForm::artistic_ior && 1.0 - written.params[c][0] < kHalfEpsilon)
+            unsafe(std::string("r ") + kChannelNames[c] + " = " + short_number(written.params[c][0]) +
+                   " rounds to 1 in half, and 1 / (1 - r) is infinite");
+    }
+    if (verdict.empty())
+        verdict = "in range (constants and intermediates below 65504), but half's 11-bit significand (4.9e-4 relative) "
+                  "adds to the errors above";
+    std::string text = std::string(prefix) + "half precision (16-bit float, mediump): " + verdict + "\n";
+    for (const std::string& b : bounds) text += std::string(prefix) + "  " + b + "\n";
+    return text;
+}
+
 std::string channel_list(const ModelParameters& params, std::size_t index) {
     const RGB v = params.parameter(index);
     return number(v.r) + ", " + number(v.g) + ", " + number(v.b);
+}
+
+std::string shader_channel_list(const ModelParameters& params, std::size_t index) {
+    const RGB v = params.parameter(index);
+    return shader_number(v.r) + ", " + shader_number(v.g) + ", " + shader_number(v.b);
 }
 
 std::string comment_header(const MaterialExport& material, const WrittenParameters& written,
@@ -251,6 +313,14 @@ std::string untagged_materialx_warning(const std::string& ocio_space) {
 
 }  // namespace detail
 
+double parse_roughness(const std::string& text) {
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc{} || end != text.data() + text.size() || !(value >= 0.0 && value <= 1.0))
+        throw UsageError("--roughness '" + text + "': expected a number in [0, 1] (OpenPBR's specular_roughness)");
+    return value;
+}
+
 std::string materialx_colorspace(const OcioConfigChoice& config, const std::string& ocio_space) {
     // MaterialX 1.39's linear colour spaces, each with the names OCIO configs (the builtin studio and CG configs,
     // ACES 1.x, metalfit's own) give the same space or list as aliases.
@@ -280,12 +350,13 @@ std::string materialx_colorspace(const OcioConfigChoice& config, const std::stri
     return {};
 }
 
-std::vector<std::string> export_warnings(const FitRecordContext& context, const ExportRequest& request) {
+std::vector<std::string> export_warnings(const FitRecordContext& context, const ExportRequest& request,
+                                         const std::string& materialx_space) {
     std::vector<std::string> warnings;
     const bool materialx = std::any_of(request.formats.begin(), request.formats.end(), [](ExportFormat f) {
         return f == ExportFormat::mtlx || f == ExportFormat::openpbr;
     });
-    if (materialx && materialx_colorspace(context.config, context.space).empty())
+    if (materialx && materialx_space.empty())
         warnings.push_back(detail::untagged_materialx_warning(context.space));
     return warnings;
 }
@@ -294,7 +365,7 @@ namespace detail {
 }  // namespace detail
 
 std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
-                                     const ExportRequest& request) {
+                                     const ExportRequest& request, const std::string& materialx_space) {
     using detail::ModelExport;
     const Model& stand_in_model = expressible_stand_in();
     std::vector<detail::MaterialExport> materials;
@@ -320,7 +391,7 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
         }
         materials.push_back(std::move(m));
     }
-    const detail::ExportContext ctx{context, request, materialx_colorspace(context.config, context.space)};
+    const detail::ExportContext ctx{context, request, materialx_space};
     std::vector<ExportFile> files;
     for (ExportFormat format : request.formats) {
         std::vector<ExportFile> more;

@@ -37,19 +37,29 @@ std::string file_stem(const std::string& material_id, std::string_view model_id)
 
 // Shortest text that reads back as the same double ("%.17g"), always with a '.' or an exponent.
 std::string number(double v);
-// "a, b, c" of channel values of parameter `index`.
+// The float nearest v as the shortest text that reads back as that float (at most 9 significant digits): the
+// shader constants, which GLSL and HLSL store as 32-bit floats.
+std::string shader_number(double v);
+// "a, b, c" of channel values of parameter `index`: as doubles (number), or as floats (shader_number).
 std::string channel_list(const ModelParameters& params, std::size_t index);
+std::string shader_channel_list(const ModelParameters& params, std::size_t index);
 
 // The comment header of a text export, one line per entry, each prefixed with `prefix` ("// "): material, data
 // source, colour space, model, where the parameters come from, gamut notes, error figures, metalfit version.
 std::string comment_header(const MaterialExport& material, const WrittenParameters& written,
                            const ExportContext& context, std::string_view prefix, std::string_view extra = {});
 
+// One line (and one per parameter at its fit bound) saying whether `written` survives half precision (|x| <= 65504):
+// its constants, and what a conductor (k², 4n²k²) or Gulbrandsen's r, g → n, k compute from them.
+std::string half_precision_note(const WrittenParameters& written, std::string_view prefix);
+
 // How a shading language spells the constants of export_glsl / export_hlsl.
 struct ShaderSyntax {
     std::string_view constant;     // "const vec3" | "static const float3"
     std::string_view vector;       // "vec3" | "float3"
     std::string_view models_file;  // the shared file of model functions
+    std::string_view language;     // what the files need: "GLSL >= 1.30 …" | "HLSL …"
+    std::string_view extension;    // "GLSL" | "HLSL": include guards METALFIT_<MATERIAL>_<MODEL>_<extension>
 };
 // The constants of one material and model, and `<vector> metalfit_<material>_<model>(float mu)` calling the model.
 std::string shader_constants(const MaterialExport& material, const ModelExport& model, const ExportContext& context,
@@ -85,8 +95,11 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
 // (the header), with colorspace when MaterialX has a name for the curves' space (context.materialx_colorspace).
 pugi::xml_node begin_materialx(pugi::xml_document& doc, const std::string& comment, const ExportContext& context);
 void add_input(pugi::xml_node node, const char* name, const char* type, const std::string& value);
-// <surface> around the BSDF node `bsdf` (unless it already is a surfaceshader) and <surfacematerial> around that.
-void add_surface_material(pugi::xml_node root, const std::string& stem, const std::string& shader, bool is_bsdf);
+// <surface> around the BSDF node `bsdf` (unless it already is a surfaceshader) and <surfacematerial> around that,
+// whose `doc` attribute holds `doc` (the comment header's lines: MaterialX keeps doc through a read and write, where
+// it drops comments).
+void add_surface_material(pugi::xml_node root, const std::string& stem, const std::string& shader, bool is_bsdf,
+                          const std::string& doc);
 std::string xml_text(const pugi::xml_document& doc);
 
 // The header line of a MaterialX document whose space MaterialX cannot name (export_warnings says the same on stderr).

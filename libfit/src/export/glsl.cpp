@@ -13,6 +13,11 @@ std::string shader_constants(const MaterialExport& material, const ModelExport& 
     const std::string id = identifier(material.fit->material.id, w.model->id());
     std::string text = comment_header(material, w, context, "// ");
     text += "// Needs " + std::string(syntax.models_file) + " before this file; F(mu), mu = cos(theta), per RGB channel.\n";
+    text += "// " + std::string(syntax.language) + ". Constants: the float nearest each fitted value (at most 9 significant\n"
+            "// digits, the float's shortest round trip); the figures above are of the fitted doubles.\n";
+    text += half_precision_note(w, "// ");
+    const std::string guard = "METALFIT_" + id + "_" + std::string(syntax.extension);
+    text += "#ifndef " + guard + "  // the file may be included more than once\n#define " + guard + "\n";
     std::string args;
     const auto parameters = w.model->parameters();
     for (std::size_t i = 0; i < parameters.size(); ++i) {
@@ -20,22 +25,26 @@ std::string shader_constants(const MaterialExport& material, const ModelExport& 
         for (char& ch : name) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
         const std::string constant = "METALFIT_" + id + "_" + name;
         text += std::string(syntax.constant) + " " + constant + " = " + std::string(syntax.vector) + "(" +
-                channel_list(w.params, i) + ");\n";
+                shader_channel_list(w.params, i) + ");\n";
         args += constant + ", ";
     }
     text += std::string(syntax.vector) + " " + file_stem(material.fit->material.id, w.model->id()) + "(float mu) {\n    return " +
-            std::string(w.model->glsl_function()) + "(" + args + "mu);\n}\n";
+            std::string(w.model->glsl_function()) + "(" + args + "mu);\n}\n#endif  // " + guard + "\n";
     return text;
 }
 
 std::string glsl_models_file(const std::vector<const Model*>& models) {
     return "// metalfit " METALFIT_VERSION " Fresnel models: the GLSL of libfit/models, unchanged (`metalfit models --glsl`).\n"
-           "// F(mu), mu = cos(theta), per RGB channel. Paste after #version (GLSL >= 1.30 or ES 3.00).\n" +
+           "// F(mu), mu = cos(theta), per RGB channel. Paste after #version: GLSL >= 1.30 (tested as 3.30 and 4.50) or\n"
+           "// GLSL ES 3.00 (WebGL 2). GLSL ES has no default float precision in fragment shaders: the block below asks\n"
+           "// for highp, which the models need (half precision: see each material's file).\n"
+           "#ifdef GL_ES\nprecision highp float;\n#endif\n" +
            glsl_library(models);
 }
 
 std::vector<ExportFile> export_glsl(const std::vector<MaterialExport>& materials, const ExportContext& context) {
-    static constexpr ShaderSyntax kGlsl{"const vec3", "vec3", "metalfit_models.glsl"};
+    static constexpr ShaderSyntax kGlsl{"const vec3", "vec3", "metalfit_models.glsl",
+                                        "GLSL >= 1.30 (tested as 3.30 and 4.50) or GLSL ES 3.00 (WebGL 2)", "GLSL"};
     std::vector<ExportFile> files;
     files.push_back({"glsl/metalfit_models.glsl", glsl_models_file(context.request.models)});
     for (const MaterialExport& m : materials)

@@ -13,6 +13,8 @@ namespace {
 // GLSL built-ins the model functions use that HLSL spells differently or lacks, defined with HLSL built-ins.
 constexpr std::string_view kHlslPrelude = R"hlsl(// metalfit: GLSL constructs of the model functions, for HLSL (docs/export.md). vec3(s) splats a scalar, which HLSL's
 // float3(s) does not; mix with a bool3 selects per component; greaterThanEqual / equal compare per component.
+#ifndef METALFIT_HLSL_PRELUDE  // the file may be included more than once
+#define METALFIT_HLSL_PRELUDE
 float3 metalfit_vec3(float s) { return float3(s, s, s); }
 float3 metalfit_vec3(float x, float y, float z) { return float3(x, y, z); }
 float3 metalfit_vec3(float3 v) { return v; }
@@ -21,6 +23,7 @@ float3 metalfit_mix(float3 a, float3 b, float3 t) { return lerp(a, b, t); }
 float3 metalfit_mix(float3 a, float3 b, float t) { return lerp(a, b, t); }
 bool3 metalfit_greaterThanEqual(float3 a, float3 b) { return bool3(a.x >= b.x, a.y >= b.y, a.z >= b.z); }
 bool3 metalfit_equal(float3 a, float3 b) { return bool3(a.x == b.x, a.y == b.y, a.z == b.z); }
+#endif  // METALFIT_HLSL_PRELUDE
 )hlsl";
 
 bool identifier_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
@@ -88,7 +91,8 @@ std::string hlsl_models_file(const std::vector<const Model*>& models) {
 }
 
 std::vector<ExportFile> export_hlsl(const std::vector<MaterialExport>& materials, const ExportContext& context) {
-    static constexpr ShaderSyntax kHlsl{"static const float3", "float3", "metalfit_models.hlsl"};
+    static constexpr ShaderSyntax kHlsl{"static const float3", "float3", "metalfit_models.hlsl",
+                                        "HLSL (tested with glslangValidator's HLSL front end, compute stage)", "HLSL"};
     std::vector<ExportFile> files;
     files.push_back({"hlsl/metalfit_models.hlsl", hlsl_models_file(context.request.models)});
     for (const MaterialExport& m : materials)

@@ -8,8 +8,8 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json written_json(const WrittenParameters& w, GamutPolicy gamut) {
-    Json j = {{"from", w.origin}, {"gamut", to_string(gamut)}, {"out_of_gamut", w.gamut}};
+Json written_json(const WrittenParameters& w, GamutPolicy gamut, double roughness) {
+    Json j = {{"from", w.origin}, {"gamut", to_string(gamut)}, {"out_of_gamut", w.gamut}, {"roughness", roughness}};
     j.update(evaluated_record(*w.model, {w.params, w.metrics}));
     return j;
 }
@@ -30,7 +30,7 @@ std::vector<ExportFile> export_json(const std::vector<MaterialExport>& materials
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models)
             record["materials"][m.fit->material.id]["models"][std::string(e.written.model->id())]["export"] =
-                written_json(e.written, context.request.gamut);
+                written_json(e.written, context.request.gamut, context.request.roughness);
     return {{"metalfit_export.json", record.dump(2) + "\n"}};
 }
 

@@ -73,7 +73,20 @@ std::string document(const MaterialExport& m, const ModelExport& e, const Export
         extra += std::string(extra.empty() ? "" : "\n") + untagged_materialx_warning(ocio_space);
     pugi::xml_document doc;
     pugi::xml_node root = begin_materialx(doc, comment_header(m, w, context, "  ", extra), context);
+    const std::string provenance = comment_header(m, w, context, "", extra);
     const std::string bsdf = stem + "_bsdf";
+    // The perceptual roughness as OpenPBR takes it; roughness_anisotropy makes MaterialX's α = R² of it.
+    const std::string roughness = stem + "_roughness";
+    pugi::xml_node r = root.append_child("roughness_anisotropy");
+    r.append_attribute("name") = roughness.c_str();
+    r.append_attribute("type") = "vector2";
+    add_input(r, "roughness", "float", number(context.request.roughness));
+    const auto add_roughness = [&](pugi::xml_node n) {
+        pugi::xml_node in = n.append_child("input");
+        in.append_attribute("name") = "roughness";
+        in.append_attribute("type") = "vector2";
+        in.append_attribute("nodename") = roughness.c_str();
+    };
     switch (w.model->materialx_form()) {
         case MaterialxForm::generalized_schlick:
         case MaterialxForm::stand_in: {  // a stand-in is written as the stand-in model (generalized_schlick)
@@ -82,12 +95,14 @@ std::string document(const MaterialExport& m, const ModelExport& e, const Export
             add_input(n, "color82", "color3", colour3(w.params, 1));
             add_input(n, "color90", "color3", "1.0, 1.0, 1.0");
             add_input(n, "exponent", "float", "5.0");
+            add_roughness(n);
             break;
         }
         case MaterialxForm::conductor_bsdf: {
             pugi::xml_node n = append_bsdf(root, "conductor_bsdf", bsdf);
             add_input(n, "ior", "color3", colour3(w.params, 0));
             add_input(n, "extinction", "color3", colour3(w.params, 1));
+            add_roughness(n);
             break;
         }
         case MaterialxForm::artistic_ior: {
@@ -105,10 +120,11 @@ std::string document(const MaterialExport& m, const ModelExport& e, const Export
                 in.append_attribute("nodename") = ior.c_str();
                 in.append_attribute("output") = output;
             }
+            add_roughness(n);
             break;
         }
     }
-    add_surface_material(root, stem, bsdf, true);
+    add_surface_material(root, stem, bsdf, true, provenance);
     return xml_text(doc);
 }
 
@@ -131,7 +147,8 @@ void add_input(pugi::xml_node node, const char* name, const char* type, const st
     in.append_attribute("value") = value.c_str();
 }
 
-void add_surface_material(pugi::xml_node root, const std::string& stem, const std::string& shader, bool is_bsdf) {
+void add_surface_material(pugi::xml_node root, const std::string& stem, const std::string& shader, bool is_bsdf,
+                          const std::string& doc) {
     std::string surface = shader;
     if (is_bsdf) {
         surface = stem + "_surface";
@@ -146,6 +163,9 @@ void add_surface_material(pugi::xml_node root, const std::string& stem, const st
     pugi::xml_node m = root.append_child("surfacematerial");
     m.append_attribute("name") = (stem + "_material").c_str();
     m.append_attribute("type") = "material";
+    std::string text = doc;
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    m.append_attribute("doc") = text.c_str();
     pugi::xml_node in = m.append_child("input");
     in.append_attribute("name") = "surfaceshader";
     in.append_attribute("type") = "surfaceshader";

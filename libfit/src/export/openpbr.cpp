@@ -53,7 +53,8 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
                         {"base_color", colour(w.params, 0)},
                         {"base_metalness", 1.0},
                         {"specular_weight", 1.0},
-                        {"specular_color", colour(w.params, 1)}}},
+                        {"specular_color", colour(w.params, 1)},
+                        {"specular_roughness", context.request.roughness}}},
                       {"metrics",
                        {{"rel_rms", per_channel(mt.rel_rms)},
                         {"abs_rms", per_channel(mt.abs_rms)},
@@ -77,7 +78,8 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
             add_input(s, "base_metalness", "float", "1.0");
             add_input(s, "specular_weight", "float", "1.0");
             add_input(s, "specular_color", "color3", channel_list(w.params, 1));
-            add_surface_material(root, stem, shader, false);
+            add_input(s, "specular_roughness", "float", number(context.request.roughness));
+            add_surface_material(root, stem, shader, false, comment_header(m, w, context, "", note));
             files.push_back({"openpbr/" + stem + ".mtlx", xml_text(doc)});
         }
     return files;

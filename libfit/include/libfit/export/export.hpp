@@ -44,11 +44,20 @@ struct WrittenParameters {
 WrittenParameters written_parameters(const ModelResult& result, const SampledReference& reference,
                                      ParameterSource source, GamutPolicy gamut, const std::string& material_id);
 
+// The surface roughness written with the Fresnel parameters (MaterialX, OpenPBR, JSON): OpenPBR's
+// specular_roughness, perceptual, in [0, 1]; MaterialX's BSDFs receive it through roughness_anisotropy (α = R²),
+// so both folders render the same lobe. The default is OpenPBR's own default.
+inline constexpr double kDefaultRoughness = 0.3;
+inline constexpr const char* kDefaultRoughnessText = "0.3";  // as --help and the docs print it
+// "0.25" → 0.25; UsageError naming the value when it is not a number in [0, 1].
+double parse_roughness(const std::string& text);
+
 struct ExportRequest {
     std::vector<ExportFormat> formats;
     std::vector<const Model*> models;  // the models exported, in order
     ParameterSource source = ParameterSource::fit;
     GamutPolicy gamut = GamutPolicy::keep;
+    double roughness = kDefaultRoughness;
 };
 
 // The model the MaterialX and OpenPBR exports use where a model has no native equivalent (lazanyi-comp in MaterialX;
@@ -64,9 +73,11 @@ struct ExportFile {
     std::string contents;
 };
 
-// Every file of an export (layout in docs/export.md). `fits` must hold the models of models_to_fit(request).
+// Every file of an export (layout in docs/export.md). `fits` must hold the models of models_to_fit(request);
+// `materialx_space` is materialx_colorspace(context.config, context.space), resolved once by the caller (it reads
+// the OCIO config) and given to export_warnings too.
 std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
-                                     const ExportRequest& request);
+                                     const ExportRequest& request, const std::string& materialx_space);
 
 // MaterialX's name of the OCIO colour space `space` of `config` ("lin_rec709", "acescg", "lin_displayp3",
 // "lin_adobergb"), matched by its name and its aliases in the config, case-insensitively; empty when MaterialX has
@@ -75,7 +86,8 @@ std::string materialx_colorspace(const OcioConfigChoice& config, const std::stri
 
 // What a consumer must be told about an export before using it (one line each; `metalfit export` prints them on
 // stderr): today, MaterialX documents in a space MaterialX cannot name.
-std::vector<std::string> export_warnings(const FitRecordContext& context, const ExportRequest& request);
+std::vector<std::string> export_warnings(const FitRecordContext& context, const ExportRequest& request,
+                                         const std::string& materialx_space);
 
 // Writes all files below `dir` (created if missing) as one unit (update_folder_as_unit: staged in a folder beside
 // `dir`, switched in with one rename; interrupted or failed, nothing changes). Files of an earlier export there stay;

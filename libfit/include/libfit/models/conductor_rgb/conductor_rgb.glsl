@@ -3,6 +3,8 @@
 //   t = n² − k² − s², r = |η² − s²| = sqrt(t² + 4n²k²), a = Re sqrt(η² − s²)  (s² = 1 − μ²),
 //   F_s = (r − 2aμ + μ²) / (r + 2aμ + μ²),  F_p = F_s (μ²r − 2as²μ + s⁴) / (μ²r + 2as²μ + s⁴).
 // Takes k² (r uses 4n²k²) and nk (only where t < 0, a = nk / b), as libfit/include/libfit/model_math.hpp does.
+#ifndef METALFIT_CONDUCTOR_RGB_GLSL  // the file may be included more than once
+#define METALFIT_CONDUCTOR_RGB_GLSL
 vec3 metalfit_conductor_fresnel(vec3 n, vec3 k2, vec3 nk, float mu) {
     mu = mu < 0.0 ? 0.0 : (mu > 1.0 ? 1.0 : mu);  // a cosine a hair outside [0, 1] gives the end value (model_math::clamp_mu)
     float s2 = 1.0 - mu * mu;
@@ -22,3 +24,4 @@ vec3 metalfit_conductor_rgb(vec3 n, vec3 k, float mu) {
     mu = mu < 0.0 ? 0.0 : (mu > 1.0 ? 1.0 : mu);  // a cosine a hair outside [0, 1] gives the end value (model_math::clamp_mu)
     return metalfit_conductor_fresnel(n, k * k, n * k, mu);
 }
+#endif  // METALFIT_CONDUCTOR_RGB_GLSL
