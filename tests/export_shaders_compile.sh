@@ -4,12 +4,17 @@
 # models file's `#ifdef GL_ES` precision block is what makes it compile), GLSL 4.50 (compute) and HLSL (compute):
 # per material, the shared model functions — twice, to check the include guards — then each of its constants files
 # (also twice), in a shader that calls every material function (so a wrong constant or signature fails).
-# Usage: METALFIT GLSLANG_VALIDATOR
+# Usage: METALFIT GLSLANG_VALIDATOR [EXPORT_DIR]   (EXPORT_DIR: an `export --all --model all` with glsl and hlsl, as the
+# build makes it for the tests; without it the script makes its own)
 set -euo pipefail
 metalfit="$1" validator="$2"
 dir="$(mktemp -d)"
 trap 'rm -rf "$dir"' EXIT
-OCIO= "$metalfit" export --all --model all --format glsl,hlsl -o "$dir/out"
+if [ $# -ge 3 ]; then
+  ln -s "$(realpath "$3")" "$dir/out"
+else
+  OCIO= "$metalfit" export --all --model all --format glsl,hlsl -o "$dir/out"
+fi
 models=$("$metalfit" models --json | python3 -c 'import json,sys; print(" ".join(m["id"].replace("-", "_") for m in json.load(sys.stdin)))')
 materials=$("$metalfit" list --json | python3 -c 'import json,re,sys; print(" ".join(re.sub("[^a-z0-9]", "_", m["id"].lower()) for m in json.load(sys.stdin)))')
 # One shader per language holding every export: the models file and every constants file, each included twice.
