@@ -18,6 +18,19 @@ uniform vec3 u_param[4];  // the model's parameters, one vec3 (R, G, B) each, in
 vec3 fresnel(float mu) { return FRESNEL_CALL; }
 #endif
 
+#if defined(GLOSSY_PREFILTERED)
+// A rough sphere, split sum: the prefiltered radiance along the localized mirror lookup, at the mip level of its
+// roughness, times the DFG table of this sphere's own Fresnel over (μ, roughness).
+uniform samplerCube u_prefiltered;
+uniform sampler2D u_dfg;  // texel (i, j): μ = i / (width − 1), roughness = j / (height − 1)
+uniform float u_roughness;
+uniform float u_prefiltered_levels;
+vec3 dfg(float mu, float roughness) {
+    vec2 size = vec2(textureSize(u_dfg, 0));
+    return textureLod(u_dfg, (vec2(mu, roughness) * (size - 1.0) + 0.5) / size, 0.0).rgb;
+}
+#endif
+
 void main() {
     vec3 d = camera_ray(gl_FragCoord.xy);
     vec3 oc = u_camera_position - u_sphere_center;
@@ -39,6 +52,12 @@ void main() {
 #else
     out_color = vec4(0.0, 0.0, 0.0, 1.0);
 #endif
+    gl_FragDepth = t / (t + 1.0);
+    return;
+#endif
+#if defined(GLOSSY_PREFILTERED)
+    vec3 glossy = textureLod(u_prefiltered, reflection_lookup(p - u_reference, R), u_roughness * (u_prefiltered_levels - 1.0)).rgb;
+    out_color = vec4(dfg(mu, u_roughness) * glossy, 1.0);
     gl_FragDepth = t / (t + 1.0);
     return;
 #endif

@@ -14,10 +14,27 @@ struct EnvironmentCube {
     struct Descriptor {
         int size = 256;         // texels per face edge
         bool distance = false;  // float32 (distances need it: half floats keep 11 bits), else RGBA16F
+        bool mipmaps = false;   // a full mip chain (made after the capture), read by the prefilter's filtered sampling
     };
     static EnvironmentCube create(const Descriptor& descriptor);
     gl::Texture texture;
     int size = 0;
+    int levels = 1;
+};
+
+// The GGX-prefiltered radiance cube: level k holds the environment convolved with the lobe of roughness
+// k / (levels − 1) (level 0: the environment itself), RGBA16F. Made from the captured cube by the prefilter pass.
+struct PrefilteredCube {
+    struct Descriptor {
+        int size = 256;  // level 0's texels per face edge (the captured cube's)
+        int levels = 6;  // one mip level per roughness step
+    };
+    static PrefilteredCube create(const Descriptor& descriptor);
+    // The levels of a cube of `size`: 6, or fewer when the size does not halve that often (at least 2×2 texels).
+    static int levels_for(int size);
+    gl::Texture texture;
+    int size = 0;
+    int levels = 0;
 };
 
 // An image environment at infinity as an RGB32F texture, uploaded from the loaded image on its first GPU use
