@@ -187,7 +187,7 @@ void GpuRenderer::capture_environment() {
     if (!own_cube_) own_cube_ = EnvironmentCube::create(cube_descriptor());
     capture_environment(*own_cube_);
     if (features_.prefiltered_map) {
-        const int size = scene_.environment.cube_size;
+        const int size = PrefilteredCube::size_for(scene_.environment.cube_size);
         if (!own_prefiltered_) own_prefiltered_ = PrefilteredCube::create({size, PrefilteredCube::levels_for(size)});
         prefilter(*own_cube_, *own_prefiltered_);
     }

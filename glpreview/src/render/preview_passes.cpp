@@ -243,13 +243,13 @@ Handle<PrefilteredCube> add_prefilter_environment_pass(PassGraph& graph, const S
         Handle<EnvironmentCube> in;
         Handle<PrefilteredCube> out;
     };
-    const int size = scene.environment.cube_size, levels = PrefilteredCube::levels_for(size);
+    const int size = PrefilteredCube::size_for(scene.environment.cube_size), levels = PrefilteredCube::levels_for(size);
     std::vector<std::string> rough;
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
         if (scene.spheres[i].rough() && scene.spheres[i].glossy == GlossyMethod::prefiltered) rough.push_back(std::to_string(i));
     return graph
         .add_pass<Data>({"prefilter-environment",
-                         "sphere(s) " + join(rough) + " rough with glossy 'prefiltered': GGX-prefiltered cube, " + std::to_string(levels) +
+                         "sphere(s) " + join(rough) + " rough with glossy 'prefiltered': GGX-prefiltered " + std::to_string(size) + "² cube, " + std::to_string(levels) +
                              " mip levels (one per roughness step of 1/" + std::to_string(levels - 1) + "), filtered importance sampling",
                          Processor::gpu},
                         [&](Builder& b, Data& d) {

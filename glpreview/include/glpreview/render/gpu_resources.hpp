@@ -30,6 +30,9 @@ struct PrefilteredCube {
         int levels = 6;  // one mip level per roughness step
     };
     static PrefilteredCube create(const Descriptor& descriptor);
+    // Level 0's size for a captured cube of `cube_size`: the same, at most kMaxSize (the prefilter's cost).
+    static constexpr int kMaxSize = 512;
+    static int size_for(int cube_size) { return cube_size < kMaxSize ? cube_size : kMaxSize; }
     // The levels of a cube of `size`: 6, or fewer when the size does not halve that often (at least 2×2 texels).
     static int levels_for(int size);
     gl::Texture texture;
