@@ -245,6 +245,13 @@ TEST(PreviewScene, RoughnessAndGlossyMethodAreParsedStrictly) {
     EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"type": "equirect", "file": "sky.exr"},
                                               "spheres": [{"center": [0, 1, 0], "reflection": "classic", "roughness": 0.3}]})"),
                                "spheres[0].roughness: rough spheres need a captured environment"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": "localized", "localized_size": 1}]})"),
+                               "spheres[0].localized_size: must be in [2, 16]"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": "localized", "localized_size": 32}]})"),
+                               "spheres[0].localized_size: must be in [2, 16]"));
+    const Scene thesis = parse_scene(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.5, "glossy": "localized", "localized_size": 4}]})", "s.json");
+    EXPECT_EQ(thesis.spheres[0].glossy, GlossyMethod::localized);
+    EXPECT_EQ(thesis.spheres[0].localized_size, 4);
     // A method on a mirror means nothing: a warning naming the field.
     const Scene warned = parse_scene(R"({"spheres": [{"center": [0, 1, 0], "glossy": "prefiltered"}]})", "s.json");
     ASSERT_EQ(warned.warnings.size(), 1u);
@@ -258,7 +265,9 @@ TEST(PreviewPlan, AMirrorOnlyScenePlansNoGlossyPass) {
         EXPECT_NE(p.name, "prefilter-environment");
         EXPECT_NE(p.name, "monte-carlo-reference");
         EXPECT_NE(p.name.rfind("dfg-table", 0), 0u) << p.name;
+        EXPECT_NE(p.name.rfind("downsample-environment", 0), 0u) << p.name;
     }
+    EXPECT_TRUE(plan.features.downsample_sizes.empty());
     EXPECT_FALSE(plan.features.prefiltered_map);
     EXPECT_FALSE(plan.features.monte_carlo_reference);
     EXPECT_TRUE(plan.features.dfg_models.empty());
@@ -306,6 +315,19 @@ TEST(PreviewPlan, OneRoughReferenceSpherePlansOneDfgTableNotSix) {
     EXPECT_FALSE(two.runs("dfg-table reference"));
     EXPECT_FALSE(two.runs("monte-carlo-reference"));
     EXPECT_FALSE(two.runs("cpu-reference"));
+    EXPECT_FALSE(two.runs("downsample-environment 8"));
+    // Localized spheres: one downsample pass per M, no prefilter or table for them; the cube stores distances.
+    const Plan thesis = build_plan(scene_with(R"([{"center": [0,1,0], "roughness": 0.5, "glossy": "localized", "reflection": "classic"},
+        {"center": [1,1,0], "roughness": 0.5, "glossy": "localized", "localized_size": 4, "reflection": "classic"},
+        {"center": [1,1,0], "roughness": 0.7, "glossy": "localized", "localized_size": 4, "reflection": "classic"}])"));
+    EXPECT_TRUE(thesis.runs("downsample-environment 8"));
+    EXPECT_TRUE(thesis.runs("downsample-environment 4"));
+    EXPECT_FALSE(thesis.runs("prefilter-environment"));
+    EXPECT_TRUE(thesis.features.dfg_models.empty());
+    EXPECT_TRUE(thesis.features.distance_channel);
+    EXPECT_TRUE(thesis.runs("monte-carlo-reference"));
+    const std::string thesis_text = explain(thesis, scene_with(R"([{"center": [0,1,0]}])"));
+    EXPECT_TRUE(test::Contains(thesis_text, "downsample-environment 4 [GPU]: sphere(s) 1, 2 rough with glossy 'localized'"));
 }
 
 // The CPU tracer against geometry worked out by hand.

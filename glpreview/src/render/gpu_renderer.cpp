@@ -91,6 +91,7 @@ GLuint GpuRenderer::program(const std::string& kind, const std::vector<std::stri
     if (!fresnel_call.empty()) header += "#define FRESNEL_CALL " + fresnel_call + "\n";
     std::string body = std::string(shader_text("environment.glsl"));
     if (kind == "capture") body += std::string(shader_text("cube_face.glsl")) + std::string(shader_text("capture.frag"));
+    else if (kind == "downsample") body += std::string(shader_text("cube_face.glsl")) + std::string(shader_text("downsample.frag"));
     else if (kind == "prefilter") body += std::string(shader_text("cube_face.glsl")) + std::string(shader_text("prefilter.frag"));
     else if (kind == "background") body += std::string(shader_text("camera.glsl")) + std::string(shader_text("background.frag"));
     else {
@@ -115,6 +116,8 @@ GLuint GpuRenderer::program(const std::string& kind, const std::vector<std::stri
     set(id, "u_fresnel_lut", 2);
     set(id, "u_prefiltered", 3);
     set(id, "u_dfg", 4);
+    set(id, "u_area_radiance", 5);
+    set(id, "u_area_position", 6);
     return id;
 }
 
@@ -191,6 +194,34 @@ void GpuRenderer::capture_environment() {
         if (!own_prefiltered_) own_prefiltered_ = PrefilteredCube::create({size, PrefilteredCube::levels_for(size)});
         prefilter(*own_cube_, *own_prefiltered_);
     }
+    for (int m : features_.downsample_sizes) {
+        auto it = own_downsampled_.find(m);
+        if (it == own_downsampled_.end()) it = own_downsampled_.emplace(m, DownsampledCube::create({m})).first;
+        downsample(*own_cube_, it->second);
+    }
+}
+
+void GpuRenderer::downsample(const EnvironmentCube& source, const DownsampledCube& target) {
+    const GLuint p = program("downsample", {});
+    set(p, "u_source_size", source.size);
+    set(p, "u_m", target.m);
+    const gl::Framebuffer fbo = gl::create_framebuffer();
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.radiance.id(), 0);
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT1, target.position.id(), 0);
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(fbo.id(), 2, buffers);
+    if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw GlError("the downsampled cube cannot be rendered to");
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    glUseProgram(p);
+    glBindVertexArray(vao_.id());
+    glDisable(GL_DEPTH_TEST);
+    glBindTextureUnit(0, source.texture.id());
+    glViewport(0, 0, 6 * target.m, target.m);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    check_gl("downsampling the environment");
+    downsampled_[target.m] = &target;
 }
 
 void GpuRenderer::prefilter(const EnvironmentCube& source, const PrefilteredCube& target) {
@@ -296,7 +327,13 @@ void GpuRenderer::draw_frame(bool diagnostics) {
         const GLuint p = program("sphere", defines, fresnel.model ? model_call(*fresnel.model) : "");
         set(p, "u_sphere_center", sphere.center);
         set(p, "u_sphere_radius", static_cast<float>(sphere.radius));
-        if (sphere.rough()) {
+        if (sphere.rough() && sphere.glossy == GlossyMethod::localized) {
+            const auto it = downsampled_.find(sphere.localized_size);
+            if (it == downsampled_.end()) throw std::logic_error("GpuRenderer: a localized sphere needs its downsampled cube");
+            set(p, "u_roughness", static_cast<float>(sphere.roughness));
+            glBindTextureUnit(5, it->second->radiance.id());
+            glBindTextureUnit(6, it->second->position.id());
+        } else if (sphere.rough()) {
             if (!prefiltered_) throw std::logic_error("GpuRenderer: a rough sphere needs the prefiltered cube");
             if (!dfg_.count(&fresnel)) upload_dfg(&fresnel, make_dfg_table(fresnel));
             set(p, "u_roughness", static_cast<float>(sphere.roughness));

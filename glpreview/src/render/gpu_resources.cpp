@@ -32,6 +32,17 @@ PrefilteredCube PrefilteredCube::create(const Descriptor& d) {
     return cube;
 }
 
+DownsampledCube DownsampledCube::create(const Descriptor& d) {
+    DownsampledCube cube{gl::create_texture(GL_TEXTURE_2D), gl::create_texture(GL_TEXTURE_2D), d.m};
+    for (const gl::Texture* t : {&cube.radiance, &cube.position}) {
+        glTextureStorage2D(t->id(), 1, GL_RGBA32F, 6 * d.m, d.m);
+        glTextureParameteri(t->id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(t->id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    check_gl("creating the downsampled cube");
+    return cube;
+}
+
 GLuint EquirectTexture::id() const {
     if (!texture_) {
         texture_ = gl::create_texture(GL_TEXTURE_2D);

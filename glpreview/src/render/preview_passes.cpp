@@ -59,7 +59,8 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
     j["spheres"] = Json::array();
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
-        const bool impostor = s.reflection == ReflectionMode::distance_impostor;
+        // A localized rough sphere looks nothing up along its reflection mode: no impostor statistics.
+        const bool impostor = s.reflection == ReflectionMode::distance_impostor && !(s.rough() && s.glossy == GlossyMethod::localized);
         Json e;
         e["sphere"] = i;
         e["material"] = run.fresnel[i]->material;
@@ -78,6 +79,7 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
         e["mean_rho_error"] = impostor ? Json(effort[i].mean_rho_error) : Json(nullptr);
         e["roughness"] = s.roughness;
         e["glossy"] = s.rough() ? Json(to_string(s.glossy)) : Json(nullptr);
+        e["localized_size"] = s.rough() && s.glossy == GlossyMethod::localized ? Json(s.localized_size) : Json(nullptr);
         e["reference_noise"] = s.rough() ? noise[i] : 0.0;  // NaN (null) when no pixel shows the sphere
         j["spheres"].push_back(e);
     }
@@ -90,6 +92,7 @@ struct FrameInputs {
     std::optional<Handle<FresnelSet>> luts, parameters;
     std::optional<Handle<PrefilteredCube>> prefiltered;
     std::vector<Handle<DfgSet>> dfg;
+    std::vector<Handle<DownsampledCube>> downsampled;
 
     void declare(Builder& b, Handle<const Scene*> camera) const {
         b.read(camera);
@@ -98,12 +101,14 @@ struct FrameInputs {
         if (parameters) b.read(*parameters);
         if (prefiltered) b.read(*prefiltered);
         for (const auto& table : dfg) b.read(table);
+        for (const auto& cube : downsampled) b.read(cube);
     }
     GpuRenderer& bind(PreviewRun& run, Resources& r) const {
         GpuRenderer& gpu = run.renderer();
         environment.bind(gpu, r);
         if (prefiltered) gpu.use_prefiltered(r.get(*prefiltered));
         for (const auto& table : dfg) gpu.use_dfg(r.get(table));
+        for (const auto& cube : downsampled) gpu.use_downsampled(r.get(cube));
         return gpu;
     }
 };
@@ -260,6 +265,30 @@ Handle<PrefilteredCube> add_prefilter_environment_pass(PassGraph& graph, const S
         .out;
 }
 
+Handle<DownsampledCube> add_downsample_environment_pass(PassGraph& graph, const Scene& scene, int m, Handle<EnvironmentCube> cube,
+                                                       PreviewRun* run) {
+    struct Data {
+        Handle<EnvironmentCube> in;
+        Handle<DownsampledCube> out;
+    };
+    std::vector<std::string> spheres;
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        if (scene.spheres[i].rough() && scene.spheres[i].glossy == GlossyMethod::localized && scene.spheres[i].localized_size == m)
+            spheres.push_back(std::to_string(i));
+    const std::string size = std::to_string(m);
+    return graph
+        .add_pass<Data>({"downsample-environment " + size,
+                         "sphere(s) " + join(spheres) + " rough with glossy 'localized': the cube as " + size + " × " + size +
+                             " area lights per face (average radiance and position, thesis ch. 5)",
+                         Processor::gpu},
+                        [&](Builder& b, Data& d) {
+                            d.in = b.read(cube);
+                            d.out = b.create<DownsampledCube>("downsampled-cube " + size, {m});
+                        },
+                        [run](const Data& d, Resources& r) { run->renderer().downsample(r.get(d.in), r.get(d.out)); })
+        .out;
+}
+
 Handle<DfgSet> add_dfg_table_pass(PassGraph& graph, const Scene& scene, const std::string& fresnel, const SceneInputs& in,
                                   PreviewRun* run) {
     std::vector<std::size_t> spheres;
@@ -322,6 +351,11 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
     } else {
         graph.skip("prefilter-environment", "no sphere is rough with glossy 'prefiltered' (mirrors: roughness 0)");
         graph.skip("dfg-table", "no sphere is rough with glossy 'prefiltered'");
+    }
+    if (!f.downsample_sizes.empty() && h.environment.cube) {
+        for (int m : f.downsample_sizes) frame.downsampled.push_back(add_downsample_environment_pass(graph, scene, m, *h.environment.cube, run));
+    } else {
+        graph.skip("downsample-environment", "no sphere is rough with glossy 'localized'");
     }
 
     // beauty: one frame of every sphere with its shader variant.

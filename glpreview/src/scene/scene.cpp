@@ -466,7 +466,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
     if (!top.has("spheres")) top.fail("spheres", "missing (at least one sphere)");
     top.each("spheres", [&](const json& v, const std::string& path) {
         Reader r(v, path, file, {"center", "radius", "material", "source", "fresnel", "params", "reflection", "strategy", "iterations",
-                                  "tolerance", "roughness", "glossy"});
+                                  "tolerance", "roughness", "glossy", "localized_size"});
         Sphere s;
         if (!r.has("center")) r.fail(r.field("center"), "missing");
         r.read("center", s.center);
@@ -493,8 +493,12 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         r.read("tolerance", s.tolerance, 0, 1);
         r.read("roughness", s.roughness, 0, 1);
         r.read_enum("glossy", s.glossy, {{"prefiltered", GlossyMethod::prefiltered}, {"localized", GlossyMethod::localized}});
-        if (s.rough() && s.glossy == GlossyMethod::localized)
-            r.fail(r.field("glossy"), "'localized' is not implemented yet (issue 17 item 5); use 'prefiltered'");
+        r.read("localized_size", s.localized_size, 2, 16);
+        if (r.has("reflection") && s.rough() && s.glossy == GlossyMethod::localized)
+            scene.warnings.push_back(file.string() + ": " + r.field("reflection") +
+                                     ": ignored: glossy 'localized' localizes by the area lights' positions");
+        if (r.has("localized_size") && !(s.rough() && s.glossy == GlossyMethod::localized))
+            scene.warnings.push_back(file.string() + ": " + r.field("localized_size") + ": ignored: only a rough sphere with glossy 'localized' uses it");
         if (s.rough() && scene.environment.type == EnvironmentType::equirect)
             r.fail(r.field("roughness"), "rough spheres need a captured environment (room or sphere-room): an equirect image is not prefiltered");
         if (r.has("glossy") && !s.rough())

@@ -60,6 +60,10 @@ public:
     // (shaders/prefilter.frag), and reflects rough prefiltered spheres from it from then on.
     void prefilter(const EnvironmentCube& source, const PrefilteredCube& target);
     void use_prefiltered(const PrefilteredCube& cube) { prefiltered_ = &cube; }
+    // Downsamples the captured `source` (with distances) into `target`'s M × M area lights per face
+    // (shaders/downsample.frag); rough localized spheres of that M read it from then on.
+    void downsample(const EnvironmentCube& source, const DownsampledCube& target);
+    void use_downsampled(const DownsampledCube& cube) { downsampled_[cube.m] = &cube; }
     // Uploads the DFG tables of rough spheres (once per Fresnel). A rough sphere whose table was never handed over
     // gets one made here (tests and benchmarks without a graph).
     void use_dfg(const DfgSet& set);
@@ -104,6 +108,8 @@ private:
     const EquirectTexture* equirect_ = nullptr;
     std::optional<PrefilteredCube> own_prefiltered_;
     const PrefilteredCube* prefiltered_ = nullptr;
+    std::map<int, DownsampledCube> own_downsampled_;
+    std::map<int, const DownsampledCube*> downsampled_;  // by M
     std::map<const SphereFresnel*, gl::Texture> dfg_;  // DFG tables of rough spheres, by Fresnel
     std::map<const SphereFresnel*, gl::Texture> luts_;  // reference LUTs, uploaded on first use
     gl::Framebuffer framebuffer_;

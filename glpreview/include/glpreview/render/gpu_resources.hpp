@@ -40,6 +40,19 @@ struct PrefilteredCube {
     int levels = 0;
 };
 
+// The captured cube downsampled to M × M texels per face (thesis ch. 5), each texel an area light: two 2D RGBA32F
+// textures of 6M × M texels (texel (face · M + i, j) covers the source texels of face `face`, columns
+// [i S/M, (i+1) S/M) and rows [j S/M, (j+1) S/M)): the average radiance and the average position (relative to the
+// reference point) of the source texels it covers.
+struct DownsampledCube {
+    struct Descriptor {
+        int m = 8;
+    };
+    static DownsampledCube create(const Descriptor& descriptor);
+    gl::Texture radiance, position;
+    int m = 0;
+};
+
 // An image environment at infinity as an RGB32F texture, uploaded from the loaded image on its first GPU use
 // (so that a scene with no GPU pass opens no GL context).
 class EquirectTexture {

@@ -104,6 +104,9 @@ std::pair<graph::Handle<EquirectTexture>, graph::Handle<Image>> add_load_equirec
 graph::Handle<FresnelSet> add_reference_luts_pass(graph::PassGraph&, const Scene&, const SceneInputs&, PreviewRun*);
 graph::Handle<PrefilteredCube> add_prefilter_environment_pass(graph::PassGraph&, const Scene&, graph::Handle<EnvironmentCube>,
                                                               PreviewRun*);
+// One pass per M of the rough localized spheres.
+graph::Handle<DownsampledCube> add_downsample_environment_pass(graph::PassGraph&, const Scene&, int m, graph::Handle<EnvironmentCube>,
+                                                              PreviewRun*);
 // One pass per Fresnel name ("reference" or a model id) of the rough prefiltered spheres.
 graph::Handle<DfgSet> add_dfg_table_pass(graph::PassGraph&, const Scene&, const std::string& fresnel, const SceneInputs&,
                                          PreviewRun*);

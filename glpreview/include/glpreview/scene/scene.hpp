@@ -116,6 +116,7 @@ struct Sphere {
     double tolerance = kDefaultTolerance;  // a pixel stops once |ρ − 1| < tolerance (0: always `iterations` steps)
     double roughness = 0;  // GGX, α = roughness²; 0: the perfect mirror
     GlossyMethod glossy = GlossyMethod::prefiltered;  // the GPU method when roughness > 0
+    int localized_size = 8;  // `localized`: M, the downsampled cube's texels per face edge (2–16), each an area light
 
     bool rough() const { return roughness > 0; }
 };
