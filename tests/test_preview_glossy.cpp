@@ -10,6 +10,7 @@
 
 #include "glpreview/gl/gl_context.hpp"
 #include "glpreview/graph/features.hpp"
+#include "glpreview/io/image_io.hpp"
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/dfg_table.hpp"
 #include "glpreview/render/environment.hpp"
@@ -309,8 +310,9 @@ TEST(PreviewGlossy, RoughnessZeroGivesTodaysImagesByteForByte) {
     ASSERT_TRUE(today.beauty && zero.beauty && today.reference && zero.reference);
     EXPECT_EQ(today.beauty->rgb, zero.beauty->rgb);
     EXPECT_EQ(today.reference->image.rgb, zero.reference->image.rgb);
+    // The files hold the same pixels (the EXR header carries the time it was written, so not the same bytes).
     for (const char* file : {"beauty.exr", "beauty.png", "reference.exr", "reference.png", "difference.exr", "difference.png"})
-        EXPECT_EQ(test::read_file(dir.path() / "a" / file), test::read_file(dir.path() / "b" / file)) << file;
+        EXPECT_TRUE(read_image(dir.path() / "a" / file).rgb == read_image(dir.path() / "b" / file).rgb) << file;
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "b" / "reference-stderr.exr"));
     EXPECT_FALSE(zero.reference_standard_error);
     EXPECT_EQ(zero.metrics["spheres"][1]["roughness"], 0.0);
