@@ -63,7 +63,7 @@ RGB direct_integral(const SphereFresnel& f, double mu, double roughness) {
         return 0.5 * (-1 + std::sqrt(1 + a2 * tan2));
     };
     const Vec3 v{std::sqrt(1 - mu * mu), 0, mu};
-    const int nt = 500, np = 500;
+    const int nt = 320, np = 320;
     RGB sum{0, 0, 0};
     for (int i = 0; i < nt; ++i) {
         const double theta = (i + 0.5) * (pi / 2) / nt;
@@ -91,7 +91,7 @@ TEST(DfgTable, EqualsADirectIntegralOfTheSpheresOwnFresnel) {
             for (int c = 0; c < 3; ++c) EXPECT_NEAR(mirror[c], exact[c], 1e-12) << material;
         }
         for (int i : {6, 16, 28})
-            for (int j : {5, 10, 16}) {
+            for (int j : {5, 16}) {
                 const double mu = i / double(DfgTable::kMuSize - 1), r = j / double(DfgTable::kRoughnessSize - 1);
                 const RGB expected = direct_integral(f, mu, r), got = table.at(i, j);
                 for (int c = 0; c < 3; ++c)
@@ -103,10 +103,11 @@ TEST(DfgTable, EqualsADirectIntegralOfTheSpheresOwnFresnel) {
 TEST(DfgTable, DiffersBetweenModelsOfTheSameMaterial) {
     // The table integrates the sphere's own curve: two models of one metal give two tables (at least where their
     // curves differ, near grazing).
-    const DfgTable a = make_dfg_table(fresnel_of("Al", "schlick")), b = make_dfg_table(fresnel_of("Al", "reference"));
+    const SphereFresnel &a = fresnel_of("Al", "schlick"), &b = fresnel_of("Al", "reference");
     double largest = 0;
-    for (std::size_t k = 0; k < a.values.size(); ++k)
-        for (int c = 0; c < 3; ++c) largest = std::max(largest, std::abs(a.values[k][c] - b.values[k][c]));
+    for (double mu : {0.05, 0.2, 0.5})
+        for (double r : {0.25, 0.5, 1.0})
+            for (int c = 0; c < 3; ++c) largest = std::max(largest, std::abs(dfg_integral(a, mu, r)[c] - dfg_integral(b, mu, r)[c]));
     EXPECT_GT(largest, 1e-3);
 }
 
