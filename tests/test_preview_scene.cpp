@@ -217,6 +217,119 @@ TEST(PreviewPlan, PassOrderRespectsDependencies) {
             }
 }
 
+// Issue 17 item 1: roughness and the glossy method per sphere.
+TEST(PreviewScene, RoughnessAndGlossyMethodAreParsedStrictly) {
+    const Scene mirror = parse_scene(kMinimal, "s.json");
+    EXPECT_EQ(mirror.spheres[0].roughness, 0.0);
+    EXPECT_FALSE(mirror.spheres[0].rough());
+    EXPECT_EQ(mirror.spheres[0].glossy, GlossyMethod::prefiltered);  // the documented default
+    EXPECT_EQ(mirror.outputs.reference_samples, 256);
+    const Scene rough = parse_scene(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.25, "glossy": "prefiltered"}],
+                                        "outputs": {"reference_samples": 32}})", "s.json");
+    EXPECT_DOUBLE_EQ(rough.spheres[0].roughness, 0.25);
+    EXPECT_TRUE(rough.spheres[0].rough());
+    EXPECT_EQ(rough.outputs.reference_samples, 32);
+    EXPECT_TRUE(rough.warnings.empty());
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": -0.1}]})"),
+                               "bad.json: spheres[0].roughness: must be in [0, 1]"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 1.5}]})"),
+                               "spheres[0].roughness: must be in [0, 1]"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0]}, {"center": [0, 1, 0], "roughness": "matte"}]})"),
+                               "spheres[1].roughness: expected a number"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": "blurry"}]})"),
+                               "spheres[0].glossy: unknown value 'blurry' (known: prefiltered, localized)"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": 3}]})"),
+                               "spheres[0].glossy: expected a string"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0]}], "outputs": {"reference_samples": 0}})"),
+                               "outputs.reference_samples: must be in [1, 65536]"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"type": "equirect", "file": "sky.exr"},
+                                              "spheres": [{"center": [0, 1, 0], "reflection": "classic", "roughness": 0.3}]})"),
+                               "spheres[0].roughness: rough spheres need a captured environment"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": "localized", "localized_size": 1}]})"),
+                               "spheres[0].localized_size: must be in [2, 16]"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": "localized", "localized_size": 32}]})"),
+                               "spheres[0].localized_size: must be in [2, 16]"));
+    const Scene thesis = parse_scene(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.5, "glossy": "localized", "localized_size": 4}]})", "s.json");
+    EXPECT_EQ(thesis.spheres[0].glossy, GlossyMethod::localized);
+    EXPECT_EQ(thesis.spheres[0].localized_size, 4);
+    // A method on a mirror means nothing: a warning naming the field.
+    const Scene warned = parse_scene(R"({"spheres": [{"center": [0, 1, 0], "glossy": "prefiltered"}]})", "s.json");
+    ASSERT_EQ(warned.warnings.size(), 1u);
+    EXPECT_TRUE(test::Contains(warned.warnings[0], "spheres[0].glossy: ignored"));
+}
+
+// Issue 17 item 4: the planner adds the glossy passes only where a sphere is rough.
+TEST(PreviewPlan, AMirrorOnlyScenePlansNoGlossyPass) {
+    const Plan plan = build_plan(scene_with(R"([{"center": [0,1,0]}, {"center": [1,1,0], "fresnel": "schlick", "roughness": 0}])"));
+    for (const Pass& p : plan.passes) {
+        EXPECT_NE(p.name, "prefilter-environment");
+        EXPECT_NE(p.name, "monte-carlo-reference");
+        EXPECT_NE(p.name.rfind("dfg-table", 0), 0u) << p.name;
+        EXPECT_NE(p.name.rfind("downsample-environment", 0), 0u) << p.name;
+    }
+    EXPECT_TRUE(plan.features.downsample_sizes.empty());
+    EXPECT_FALSE(plan.features.prefiltered_map);
+    EXPECT_FALSE(plan.features.monte_carlo_reference);
+    EXPECT_TRUE(plan.features.dfg_models.empty());
+    const std::string text = explain(plan, scene_with(R"([{"center": [0,1,0]}])"));
+    EXPECT_TRUE(test::Contains(text, "prefilter-environment: no sphere is rough"));
+    EXPECT_TRUE(test::Contains(text, "monte-carlo-reference: every sphere is a mirror"));
+    EXPECT_EQ(std::count(plan.outputs.begin(), plan.outputs.end(), "reference-stderr.exr"), 0);
+    // The mirror sphere shader variants are today's (no glossy #define).
+    for (const std::string& v : plan.features.shader_variants) EXPECT_FALSE(test::Contains(v, "GLOSSY")) << v;
+}
+
+TEST(PreviewPlan, OneRoughReferenceSpherePlansOneDfgTableNotSix) {
+    const Plan plan = build_plan(scene_with(R"([{"center": [0,1,0], "roughness": 0.4},
+        {"center": [1,1,0], "fresnel": "schlick"}, {"center": [1,1,0], "fresnel": "f82-tint"},
+        {"center": [1,1,0], "fresnel": "lazanyi"}, {"center": [1,1,0], "fresnel": "gulbrandsen"},
+        {"center": [-1,1,0], "material": "Cu"}])"));
+    std::vector<std::string> dfg;
+    for (const Pass& p : plan.passes)
+        if (p.name.rfind("dfg-table", 0) == 0) dfg.push_back(p.name);
+    EXPECT_EQ(dfg, (std::vector<std::string>{"dfg-table reference"}));
+    EXPECT_EQ(plan.features.dfg_models, (std::set<std::string>{"reference"}));
+    EXPECT_TRUE(plan.runs("prefilter-environment"));
+    EXPECT_TRUE(plan.runs("monte-carlo-reference"));
+    EXPECT_EQ(std::count(plan.outputs.begin(), plan.outputs.end(), "reference-stderr.exr"), 1);
+    const std::string text = explain(plan, scene_with(R"([{"center": [0,1,0]}])"));
+    EXPECT_TRUE(test::Contains(text, "prefilter-environment [GPU]: sphere(s) 0 rough with glossy 'prefiltered'"));
+    EXPECT_TRUE(test::Contains(text, "dfg-table reference [CPU]: rough sphere(s) 0 use reference"));
+    EXPECT_TRUE(test::Contains(text, "monte-carlo-reference [CPU]: sphere(s) 0 rough"));
+    // The beauty frame reads the prefiltered cube and the table; the difference reads the Monte-Carlo reference.
+    for (const Pass& p : plan.passes) {
+        if (p.name == "beauty") {
+            EXPECT_NE(std::find(p.reads.begin(), p.reads.end(), "prefiltered-cube"), p.reads.end());
+            EXPECT_NE(std::find(p.reads.begin(), p.reads.end(), "dfg-tables reference"), p.reads.end());
+        }
+        if (p.name == "difference") {
+            EXPECT_NE(std::find(p.reads.begin(), p.reads.end(), "monte-carlo-reference-image"), p.reads.end());
+        }
+    }
+    // Two rough models: one table pass each; no reference asked for: no Monte Carlo.
+    const Plan two = build_plan(scene_with(R"([{"center": [0,1,0], "fresnel": "schlick", "roughness": 0.2},
+        {"center": [1,1,0], "fresnel": "f82-tint", "roughness": 0.5}, {"center": [1,1,0], "fresnel": "schlick", "material": "Cu", "roughness": 0.5}])",
+                                           R"({"reference": false, "difference": false, "metrics": false})"));
+    EXPECT_TRUE(two.runs("dfg-table schlick"));
+    EXPECT_TRUE(two.runs("dfg-table f82-tint"));
+    EXPECT_FALSE(two.runs("dfg-table reference"));
+    EXPECT_FALSE(two.runs("monte-carlo-reference"));
+    EXPECT_FALSE(two.runs("cpu-reference"));
+    EXPECT_FALSE(two.runs("downsample-environment 8"));
+    // Localized spheres: one downsample pass per M, no prefilter or table for them; the cube stores distances.
+    const Plan thesis = build_plan(scene_with(R"([{"center": [0,1,0], "roughness": 0.5, "glossy": "localized", "reflection": "classic"},
+        {"center": [1,1,0], "roughness": 0.5, "glossy": "localized", "localized_size": 4, "reflection": "classic"},
+        {"center": [1,1,0], "roughness": 0.7, "glossy": "localized", "localized_size": 4, "reflection": "classic"}])"));
+    EXPECT_TRUE(thesis.runs("downsample-environment 8"));
+    EXPECT_TRUE(thesis.runs("downsample-environment 4"));
+    EXPECT_FALSE(thesis.runs("prefilter-environment"));
+    EXPECT_TRUE(thesis.features.dfg_models.empty());
+    EXPECT_TRUE(thesis.features.distance_channel);
+    EXPECT_TRUE(thesis.runs("monte-carlo-reference"));
+    const std::string thesis_text = explain(thesis, scene_with(R"([{"center": [0,1,0]}])"));
+    EXPECT_TRUE(test::Contains(thesis_text, "downsample-environment 4 [GPU]: sphere(s) 1, 2 rough with glossy 'localized'"));
+}
+
 // The CPU tracer against geometry worked out by hand.
 TEST(PreviewEnvironment, RoomHitsAndRadianceRules) {
     Environment env = scene_with(R"([{"center": [0,1,0]}])", "{}",

@@ -18,6 +18,70 @@ uniform vec3 u_param[4];  // the model's parameters, one vec3 (R, G, B) each, in
 vec3 fresnel(float mu) { return FRESNEL_CALL; }
 #endif
 
+#if defined(GLOSSY_PREFILTERED)
+// A rough sphere, split sum: the prefiltered radiance along the localized mirror lookup, at the mip level of its
+// roughness, times the DFG table of this sphere's own Fresnel over (μ, roughness).
+uniform samplerCube u_prefiltered;
+uniform sampler2D u_dfg;  // texel (i, j): μ = i / (width − 1), roughness = j / (height − 1)
+uniform float u_roughness;
+uniform float u_prefiltered_levels;
+vec3 dfg(float mu, float roughness) {
+    vec2 size = vec2(textureSize(u_dfg, 0));
+    return textureLod(u_dfg, (vec2(mu, roughness) * (size - 1.0) + 0.5) / size, 0.0).rgb;
+}
+#endif
+
+#if defined(GLOSSY_LOCALIZED)
+// A rough sphere, thesis ch. 5 (FORMULAS.md §6): the downsampled cube's 6 M² texels as area lights at their average
+// positions y_i, each seen from the shaded point under the point-to-disc solid angle Δω*_i; reflected radiance
+// Σ L_i f_r(ω_i, ω_o) cos θ_i Δω*_i with the GGX BRDF and this sphere's Fresnel at the microfacet angle.
+uniform sampler2D u_area_radiance;  // 6M × M: average radiance
+uniform sampler2D u_area_position;  // 6M × M: average position relative to the reference point
+uniform float u_roughness;
+const float LOCALIZED_PI = 3.14159265358979;
+// Solid angle of the face rectangle [0, s] × [0, t] at distance 1 (the cube of edge 2), signed.
+float face_area(float s, float t) { return atan(s * t, sqrt(s * s + t * t + 1.0)); }
+float smith_lambda(float cos_t, float a2) {
+    float c2 = max(cos_t * cos_t, 1e-12);
+    return 0.5 * (-1.0 + sqrt(1.0 + a2 * (1.0 - c2) / c2));
+}
+vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
+    int M = textureSize(u_area_radiance, 0).y;
+    float a = u_roughness * u_roughness, a2 = a * a;
+    float lambda_v = smith_lambda(mu, a2);
+    float n_v = max(mu, 1e-4);
+    float step_st = 2.0 / float(M);
+    vec3 sum = vec3(0.0);
+    for (int face = 0; face < 6; ++face)
+        for (int j = 0; j < M; ++j)
+            for (int i = 0; i < M; ++i) {
+                ivec2 texel = ivec2(face * M + i, j);
+                vec3 L = texelFetch(u_area_radiance, texel, 0).rgb;
+                vec3 y = texelFetch(u_area_position, texel, 0).xyz;
+                // Δω_i: the texel's solid angle seen from o (exact for the cube's rectangle; the thesis shader
+                // approximates it by 4 / (M² |L|³ + 4/π)).
+                float s0 = -1.0 + float(i) * step_st, s1 = s0 + step_st, t0 = -1.0 + float(j) * step_st, t1 = t0 + step_st;
+                float dw = face_area(s1, t1) - face_area(s0, t1) - face_area(s1, t0) + face_area(s0, t0);
+                vec3 to_light = y - x;
+                float r_star = length(to_light);
+                vec3 l = to_light / r_star;
+                float n_l = dot(N, l);
+                if (n_l <= 0.0) continue;
+                float r = length(y);
+                float k = 2.0 * LOCALIZED_PI / (2.0 * LOCALIZED_PI - dw);
+                float dw_star = 2.0 * LOCALIZED_PI * (1.0 - 1.0 / sqrt(1.0 + (k * k - 1.0) * r * r / (r_star * r_star)));
+                vec3 H = normalize(V + l);
+                float n_h = dot(N, H);
+                float d = n_h * n_h * (a2 - 1.0) + 1.0;
+                float D = a2 / (LOCALIZED_PI * d * d);
+                float G2 = 1.0 / (1.0 + lambda_v + smith_lambda(n_l, a2));
+                // f_r cos θ_i = F D G2 / (4 (n·v)(n·l)) · (n·l)
+                sum += L * fresnel(clamp(dot(V, H), 0.0, 1.0)) * (D * G2 / (4.0 * n_v) * dw_star);
+            }
+    return sum;
+}
+#endif
+
 void main() {
     vec3 d = camera_ray(gl_FragCoord.xy);
     vec3 oc = u_camera_position - u_sphere_center;
@@ -39,6 +103,17 @@ void main() {
 #else
     out_color = vec4(0.0, 0.0, 0.0, 1.0);
 #endif
+    gl_FragDepth = t / (t + 1.0);
+    return;
+#endif
+#if defined(GLOSSY_LOCALIZED)
+    out_color = vec4(localized_glossy(p - u_reference, N, -d, mu), 1.0);
+    gl_FragDepth = t / (t + 1.0);
+    return;
+#endif
+#if defined(GLOSSY_PREFILTERED)
+    vec3 glossy = textureLod(u_prefiltered, reflection_lookup(p - u_reference, R), u_roughness * (u_prefiltered_levels - 1.0)).rgb;
+    out_color = vec4(dfg(mu, u_roughness) * glossy, 1.0);
     gl_FragDepth = t / (t + 1.0);
     return;
 #endif

@@ -46,6 +46,8 @@ std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere
             defines.push_back("TOLERANCE " + glsl_float(sphere.tolerance));
             break;
     }
+    if (sphere.rough())
+        defines.push_back(sphere.glossy == GlossyMethod::localized ? "GLOSSY_LOCALIZED" : "GLOSSY_PREFILTERED");
     defines.push_back(shows_reference(sphere) ? "FRESNEL_REFERENCE" : "FRESNEL_MODEL " + fresnel_name(sphere.fresnel));
     std::sort(defines.begin(), defines.end());
     return defines;
@@ -58,6 +60,10 @@ Features plan_features(const Scene& scene) {
     f.equirect_image = type == EnvironmentType::equirect;
     for (const Sphere& s : scene.spheres) {
         if (s.reflection == ReflectionMode::distance_impostor) f.distance_channel = true;
+        if (s.rough() && s.glossy == GlossyMethod::localized) {
+            f.distance_channel = true;  // the area lights' positions
+            f.downsample_sizes.insert(s.localized_size);
+        }
         if (const auto* model = std::get_if<ModelFresnel>(&s.fresnel)) {
             f.model_fits = true;
             f.models.insert(model->model);
@@ -65,12 +71,18 @@ Features plan_features(const Scene& scene) {
             f.reference_lut = true;
         }
         f.shader_variants.insert(join(sphere_defines(scene, s), " "));
+        if (s.rough() && s.glossy == GlossyMethod::prefiltered) {
+            f.prefiltered_map = true;
+            f.dfg_models.insert(fresnel_name(s.fresnel));
+        }
     }
     const Outputs& o = scene.outputs;
     f.difference_image = o.difference;
     f.metrics = o.metrics;
     f.localization_image = o.localization;
     f.cpu_reference = o.reference || o.difference || o.metrics;
+    f.monte_carlo_reference =
+        f.cpu_reference && std::any_of(scene.spheres.begin(), scene.spheres.end(), [](const Sphere& s) { return s.rough(); });
     return f;
 }
 

@@ -90,7 +90,9 @@ GLuint GpuRenderer::program(const std::string& kind, const std::vector<std::stri
     for (const auto& d : defines) header += define_line(d);
     if (!fresnel_call.empty()) header += "#define FRESNEL_CALL " + fresnel_call + "\n";
     std::string body = std::string(shader_text("environment.glsl"));
-    if (kind == "capture") body += shader_text("capture.frag");
+    if (kind == "capture") body += std::string(shader_text("cube_face.glsl")) + std::string(shader_text("capture.frag"));
+    else if (kind == "downsample") body += std::string(shader_text("cube_face.glsl")) + std::string(shader_text("downsample.frag"));
+    else if (kind == "prefilter") body += std::string(shader_text("cube_face.glsl")) + std::string(shader_text("prefilter.frag"));
     else if (kind == "background") body += std::string(shader_text("camera.glsl")) + std::string(shader_text("background.frag"));
     else {
         body += shader_text("reflection.glsl");
@@ -112,6 +114,10 @@ GLuint GpuRenderer::program(const std::string& kind, const std::vector<std::stri
     set(id, "u_env", 0);
     set(id, "u_equirect", 1);
     set(id, "u_fresnel_lut", 2);
+    set(id, "u_prefiltered", 3);
+    set(id, "u_dfg", 4);
+    set(id, "u_area_radiance", 5);
+    set(id, "u_area_position", 6);
     return id;
 }
 
@@ -176,13 +182,93 @@ void GpuRenderer::set_camera_uniforms(GLuint p) const {
 }
 
 EnvironmentCube::Descriptor GpuRenderer::cube_descriptor() const {
-    return {scene_.environment.cube_size, features_.distance_channel};
+    return {scene_.environment.cube_size, features_.distance_channel, features_.prefiltered_map};
 }
 
 void GpuRenderer::capture_environment() {
     if (!features_.environment_capture) return;
     if (!own_cube_) own_cube_ = EnvironmentCube::create(cube_descriptor());
     capture_environment(*own_cube_);
+    if (features_.prefiltered_map) {
+        const int size = PrefilteredCube::size_for(scene_.environment.cube_size);
+        if (!own_prefiltered_) own_prefiltered_ = PrefilteredCube::create({size, PrefilteredCube::levels_for(size)});
+        prefilter(*own_cube_, *own_prefiltered_);
+    }
+    for (int m : features_.downsample_sizes) {
+        auto it = own_downsampled_.find(m);
+        if (it == own_downsampled_.end()) it = own_downsampled_.emplace(m, DownsampledCube::create({m})).first;
+        downsample(*own_cube_, it->second);
+    }
+}
+
+void GpuRenderer::downsample(const EnvironmentCube& source, const DownsampledCube& target) {
+    const GLuint p = program("downsample", {});
+    set(p, "u_source_size", source.size);
+    set(p, "u_m", target.m);
+    const gl::Framebuffer fbo = gl::create_framebuffer();
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, target.radiance.id(), 0);
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT1, target.position.id(), 0);
+    const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glNamedFramebufferDrawBuffers(fbo.id(), 2, buffers);
+    if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw GlError("the downsampled cube cannot be rendered to");
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    glUseProgram(p);
+    glBindVertexArray(vao_.id());
+    glDisable(GL_DEPTH_TEST);
+    glBindTextureUnit(0, source.texture.id());
+    glViewport(0, 0, 6 * target.m, target.m);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    check_gl("downsampling the environment");
+    downsampled_[target.m] = &target;
+}
+
+void GpuRenderer::prefilter(const EnvironmentCube& source, const PrefilteredCube& target) {
+    const GLuint p = program("prefilter", {});
+    set(p, "u_source_size", source.size);
+    set(p, "u_samples", 64);
+    const gl::Framebuffer fbo = gl::create_framebuffer();
+    glUseProgram(p);
+    glBindVertexArray(vao_.id());
+    glDisable(GL_DEPTH_TEST);
+    glBindTextureUnit(0, source.texture.id());
+    for (int level = 0; level < target.levels; ++level) {
+        const int n = std::max(1, target.size >> level);
+        set(p, "u_size", n);
+        set(p, "u_roughness", target.levels > 1 ? float(level) / float(target.levels - 1) : 0.0f);
+        glViewport(0, 0, n, n);
+        for (int face = 0; face < 6; ++face) {
+            glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, target.texture.id(), level, face);
+            if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+                throw GlError("prefiltered cube face " + std::to_string(face) + " level " + std::to_string(level) + " cannot be rendered to");
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+            set(p, "u_face", face);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    check_gl("prefiltering the environment");
+    prefiltered_ = &target;
+}
+
+void GpuRenderer::use_dfg(const DfgSet& set) {
+    for (const auto& [fresnel, table] : set.tables) upload_dfg(fresnel, table);
+}
+
+void GpuRenderer::upload_dfg(const SphereFresnel* fresnel, const DfgTable& table) {
+    if (dfg_.count(fresnel)) return;
+    gl::Texture texture = gl::create_texture(GL_TEXTURE_2D);
+    std::vector<float> texels;
+    for (const RGB& v : table.values) texels.insert(texels.end(), {float(v.r), float(v.g), float(v.b)});
+    glTextureStorage2D(texture.id(), 1, GL_RGB32F, DfgTable::kMuSize, DfgTable::kRoughnessSize);
+    glTextureSubImage2D(texture.id(), 0, 0, 0, DfgTable::kMuSize, DfgTable::kRoughnessSize, GL_RGB, GL_FLOAT, texels.data());
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    check_gl("uploading a DFG table");
+    dfg_.emplace(fresnel, std::move(texture));
 }
 
 void GpuRenderer::capture_environment(const EnvironmentCube& cube) {
@@ -203,6 +289,7 @@ void GpuRenderer::capture_environment(const EnvironmentCube& cube) {
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (cube.levels > 1) glGenerateTextureMipmap(cube.texture.id());
     check_gl("capturing the environment");
     cube_ = &cube;
 }
@@ -240,6 +327,20 @@ void GpuRenderer::draw_frame(bool diagnostics) {
         const GLuint p = program("sphere", defines, fresnel.model ? model_call(*fresnel.model) : "");
         set(p, "u_sphere_center", sphere.center);
         set(p, "u_sphere_radius", static_cast<float>(sphere.radius));
+        if (sphere.rough() && sphere.glossy == GlossyMethod::localized) {
+            const auto it = downsampled_.find(sphere.localized_size);
+            if (it == downsampled_.end()) throw std::logic_error("GpuRenderer: a localized sphere needs its downsampled cube");
+            set(p, "u_roughness", static_cast<float>(sphere.roughness));
+            glBindTextureUnit(5, it->second->radiance.id());
+            glBindTextureUnit(6, it->second->position.id());
+        } else if (sphere.rough()) {
+            if (!prefiltered_) throw std::logic_error("GpuRenderer: a rough sphere needs the prefiltered cube");
+            if (!dfg_.count(&fresnel)) upload_dfg(&fresnel, make_dfg_table(fresnel));
+            set(p, "u_roughness", static_cast<float>(sphere.roughness));
+            set(p, "u_prefiltered_levels", static_cast<float>(prefiltered_->levels));
+            glBindTextureUnit(3, prefiltered_->texture.id());
+            glBindTextureUnit(4, dfg_.at(&fresnel).id());
+        }
         if (fresnel.model) {
             set_model_parameters(p, *fresnel.model, fresnel.parameters);
         } else {
@@ -288,7 +389,7 @@ std::vector<ProbeResult> GpuRenderer::probe(const Sphere& settings, std::span<co
     if (!cube_) throw std::logic_error("GpuRenderer::probe: no captured cube map");
     std::vector<std::string> defines;
     for (const auto& d : sphere_defines(scene_, settings))
-        if (d.rfind("FRESNEL", 0) != 0) defines.push_back(d);
+        if (d.rfind("FRESNEL", 0) != 0 && d.rfind("GLOSSY", 0) != 0) defines.push_back(d);
     const GLuint p = program("probe", defines);
     const int count = static_cast<int>(rays.size());
     set(p, "u_count", count);

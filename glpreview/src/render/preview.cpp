@@ -23,6 +23,7 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     graph.retain(h.localization);
     graph.retain(h.frame_times);
     graph.retain(h.metrics);
+    if (h.reference_standard_error) graph.retain(*h.reference_standard_error);
     graph.before_first_gpu_pass([&run] { run.open_gl(); });
     graph.compile();
     skip_unneeded_effects(graph);
@@ -33,6 +34,8 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     result.renderer = run.renderer_name;
     if (const Image* beauty = graph.result(h.beauty)) result.beauty = *beauty;
     if (const ReferenceRender* reference = graph.result(h.reference)) result.reference = *reference;
+    if (h.reference_standard_error)
+        if (const Image* error = graph.result(*h.reference_standard_error)) result.reference_standard_error = *error;
     if (const Image* difference = graph.result(h.difference)) result.difference = *difference;
     if (const Image* localization = graph.result(h.localization)) result.localization = *localization;
     if (const FrameTimes* frame_ms = graph.result(h.frame_times)) result.frame_ms = *frame_ms;

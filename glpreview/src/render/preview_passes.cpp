@@ -1,6 +1,8 @@
 #include "glpreview/render/preview_passes.hpp"
 
+#include "glpreview/render/dfg_table.hpp"
 #include "glpreview/render/environment.hpp"
+#include "glpreview/render/monte_carlo_reference.hpp"
 #include "glpreview/render/scene_colour.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
 #include "libfit/base/atomic_file.hpp"
@@ -42,7 +44,7 @@ void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, 
 }
 
 Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRender& reference, const Image& localization,
-                  const FrameTimes& frame_ms) {
+                  const FrameTimes& frame_ms, const Image* standard_error) {
     const Scene& scene = run.scene;
     Json j;
     j["schema"] = "metalfit.preview-metrics/1";
@@ -54,10 +56,13 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
     j["frame_ms"] = frame_ms;
     const auto errors = sphere_errors(beauty, reference, scene.spheres.size());
     const auto effort = sphere_localization(localization, reference, scene.spheres.size());
+    const auto noise = standard_error ? sphere_reference_noise(*standard_error, reference, scene.spheres.size())
+                                      : std::vector<double>(scene.spheres.size(), 0.0);
     j["spheres"] = Json::array();
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
-        const bool impostor = s.reflection == ReflectionMode::distance_impostor;
+        // A localized rough sphere looks nothing up along its reflection mode: no impostor statistics.
+        const bool impostor = s.reflection == ReflectionMode::distance_impostor && !(s.rough() && s.glossy == GlossyMethod::localized);
         Json e;
         e["sphere"] = i;
         e["material"] = run.fresnel[i]->material;
@@ -74,6 +79,10 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
         e["pixels"] = errors[i].pixels;
         e["mean_iterations"] = impostor ? Json(effort[i].mean_iterations) : Json(nullptr);
         e["mean_rho_error"] = impostor ? Json(effort[i].mean_rho_error) : Json(nullptr);
+        e["roughness"] = s.roughness;
+        e["glossy"] = s.rough() ? Json(to_string(s.glossy)) : Json(nullptr);
+        e["localized_size"] = s.rough() && s.glossy == GlossyMethod::localized ? Json(s.localized_size) : Json(nullptr);
+        e["reference_noise"] = s.rough() ? noise[i] : 0.0;  // NaN (null) when no pixel shows the sphere
         j["spheres"].push_back(e);
     }
     return j;
@@ -83,16 +92,25 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
 struct FrameInputs {
     EnvironmentInputs environment;
     std::optional<Handle<FresnelSet>> luts, parameters;
+    std::optional<Handle<PrefilteredCube>> prefiltered;
+    std::vector<Handle<DfgSet>> dfg;
+    std::vector<Handle<DownsampledCube>> downsampled;
 
     void declare(Builder& b, Handle<const Scene*> camera) const {
         b.read(camera);
         environment.declare(b);
         if (luts) b.read(*luts);
         if (parameters) b.read(*parameters);
+        if (prefiltered) b.read(*prefiltered);
+        for (const auto& table : dfg) b.read(table);
+        for (const auto& cube : downsampled) b.read(cube);
     }
     GpuRenderer& bind(PreviewRun& run, Resources& r) const {
         GpuRenderer& gpu = run.renderer();
         environment.bind(gpu, r);
+        if (prefiltered) gpu.use_prefiltered(r.get(*prefiltered));
+        for (const auto& table : dfg) gpu.use_dfg(r.get(table));
+        for (const auto& cube : downsampled) gpu.use_downsampled(r.get(cube));
         return gpu;
     }
 };
@@ -137,11 +155,11 @@ Handle<EnvironmentCube> add_capture_environment_pass(PassGraph& graph, const Sce
             {"capture-environment",
              std::string("procedural ") + to_string(scene.environment.type) + ": ray-cast by GL into a " +
                  std::to_string(scene.environment.cube_size) + "² cube map (radiance" + (f.distance_channel ? " + distance" : "") +
-                 "), once, reused by every frame",
+                 ")" + (f.prefiltered_map ? " with a mip chain for the prefilter" : "") + ", once, reused by every frame",
              Processor::gpu},
             [&](Builder& b, Out<EnvironmentCube>& d) {
                 b.read(in.environment);
-                d.out = b.create<EnvironmentCube>("environment-cube", {scene.environment.cube_size, f.distance_channel});
+                d.out = b.create<EnvironmentCube>("environment-cube", {scene.environment.cube_size, f.distance_channel, f.prefiltered_map});
             },
             [run](const Out<EnvironmentCube>& d, Resources& r) { run->renderer().capture_environment(r.get(d.out)); })
         .out;
@@ -235,6 +253,79 @@ Handle<FresnelSet> add_model_parameters_pass(PassGraph& graph, const Features& f
         .out;
 }
 
+Handle<PrefilteredCube> add_prefilter_environment_pass(PassGraph& graph, const Scene& scene, Handle<EnvironmentCube> cube,
+                                                       PreviewRun* run) {
+    struct Data {
+        Handle<EnvironmentCube> in;
+        Handle<PrefilteredCube> out;
+    };
+    const int size = PrefilteredCube::size_for(scene.environment.cube_size), levels = PrefilteredCube::levels_for(size);
+    std::vector<std::string> rough;
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        if (scene.spheres[i].rough() && scene.spheres[i].glossy == GlossyMethod::prefiltered) rough.push_back(std::to_string(i));
+    return graph
+        .add_pass<Data>({"prefilter-environment",
+                         "sphere(s) " + join(rough) + " rough with glossy 'prefiltered': GGX-prefiltered " + std::to_string(size) + "² cube, " + std::to_string(levels) +
+                             " mip levels (one per roughness step of 1/" + std::to_string(levels - 1) + "), filtered importance sampling",
+                         Processor::gpu},
+                        [&](Builder& b, Data& d) {
+                            d.in = b.read(cube);
+                            d.out = b.create<PrefilteredCube>("prefiltered-cube", {size, levels});
+                        },
+                        [run](const Data& d, Resources& r) { run->renderer().prefilter(r.get(d.in), r.get(d.out)); })
+        .out;
+}
+
+Handle<DownsampledCube> add_downsample_environment_pass(PassGraph& graph, const Scene& scene, int m, Handle<EnvironmentCube> cube,
+                                                       PreviewRun* run) {
+    struct Data {
+        Handle<EnvironmentCube> in;
+        Handle<DownsampledCube> out;
+    };
+    std::vector<std::string> spheres;
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        if (scene.spheres[i].rough() && scene.spheres[i].glossy == GlossyMethod::localized && scene.spheres[i].localized_size == m)
+            spheres.push_back(std::to_string(i));
+    const std::string size = std::to_string(m);
+    return graph
+        .add_pass<Data>({"downsample-environment " + size,
+                         "sphere(s) " + join(spheres) + " rough with glossy 'localized': the cube as " + size + " × " + size +
+                             " area lights per face (average radiance and position, thesis ch. 5)",
+                         Processor::gpu},
+                        [&](Builder& b, Data& d) {
+                            d.in = b.read(cube);
+                            d.out = b.create<DownsampledCube>("downsampled-cube " + size, {m});
+                        },
+                        [run](const Data& d, Resources& r) { run->renderer().downsample(r.get(d.in), r.get(d.out)); })
+        .out;
+}
+
+Handle<DfgSet> add_dfg_table_pass(PassGraph& graph, const Scene& scene, const std::string& fresnel, const SceneInputs& in,
+                                  PreviewRun* run) {
+    std::vector<std::size_t> spheres;
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+        if (scene.spheres[i].rough() && scene.spheres[i].glossy == GlossyMethod::prefiltered && fresnel_name(scene.spheres[i].fresnel) == fresnel)
+            spheres.push_back(i);
+    std::vector<std::string> names;
+    for (std::size_t i : spheres) names.push_back(std::to_string(i));
+    return graph
+        .add_pass<Out<DfgSet>>(
+            {"dfg-table " + fresnel,
+             "rough sphere(s) " + join(names) + " use " + fresnel + ": the GGX-weighted integral of its own F over (μ, roughness), " +
+                 std::to_string(DfgTable::kMuSize) + " × " + std::to_string(DfgTable::kRoughnessSize) + " per material",
+             Processor::cpu},
+            [&](Builder& b, Out<DfgSet>& d) {
+                b.read(in.materials);
+                d.out = b.produce<DfgSet>("dfg-tables " + fresnel);
+            },
+            [run, spheres](const Out<DfgSet>& d, Resources& r) {
+                DfgSet& set = r.emplace(d.out);
+                for (std::size_t i : spheres)
+                    if (!set.tables.count(run->fresnel[i])) set.tables.emplace(run->fresnel[i], make_dfg_table(*run->fresnel[i]));
+            })
+        .out;
+}
+
 void add_image_file_pass(PassGraph& graph, const std::string& file, Handle<Image> image, PreviewRun* run) {
     add_image_file(graph, file, image, run);
 }
@@ -265,6 +356,18 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
     else graph.skip("reference-luts", "no sphere uses fresnel 'reference'");
     if (f.model_fits) h.parameters = frame.parameters = add_model_parameters_pass(graph, f, in, run);
     else graph.skip("model-parameters", "no sphere uses a libfit model");
+    if (f.prefiltered_map && h.environment.cube) {
+        h.prefiltered = frame.prefiltered = add_prefilter_environment_pass(graph, scene, *h.environment.cube, run);
+        for (const std::string& fresnel : f.dfg_models) frame.dfg.push_back(add_dfg_table_pass(graph, scene, fresnel, in, run));
+    } else {
+        graph.skip("prefilter-environment", "no sphere is rough with glossy 'prefiltered' (mirrors: roughness 0)");
+        graph.skip("dfg-table", "no sphere is rough with glossy 'prefiltered'");
+    }
+    if (!f.downsample_sizes.empty() && h.environment.cube) {
+        for (int m : f.downsample_sizes) frame.downsampled.push_back(add_downsample_environment_pass(graph, scene, m, *h.environment.cube, run));
+    } else {
+        graph.skip("downsample-environment", "no sphere is rough with glossy 'localized'");
+    }
 
     // beauty: one frame of every sphere with its shader variant.
     h.beauty = graph
@@ -295,6 +398,40 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
                               r.emplace(d.out, render_reference(run->scene, run->fresnel, tracer, run->threads));
                           })
                       .out;
+    // monte-carlo-reference: the rough spheres' lobes by Monte Carlo, over the analytic reference's pixels.
+    if (f.monte_carlo_reference) {
+        struct Data {
+            Handle<ReferenceRender> analytic, out;
+            Handle<Image> standard_error;
+        };
+        std::vector<std::string> rough;
+        for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+            if (scene.spheres[i].rough()) rough.push_back(std::to_string(i));
+        const Data& mc = graph.add_pass<Data>(
+            {"monte-carlo-reference",
+             "sphere(s) " + join(rough) + " rough: the GGX lobe by Monte Carlo (" + std::to_string(scene.outputs.reference_samples) +
+                 " visible-normal samples per pixel, fixed seed), exact reflected rays, same Fresnel; standard error beside it",
+             Processor::cpu},
+            [&](Builder& b, Data& d) {
+                b.read(in.camera);
+                if (h.environment.equirect_image) b.read(*h.environment.equirect_image);
+                d.analytic = b.read(h.reference);
+                d.out = b.produce<ReferenceRender>("monte-carlo-reference-image");
+                d.standard_error = b.produce<Image>("reference-standard-error");
+            },
+            [run, equirect = h.environment.equirect_image](const Data& d, Resources& r) {
+                const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr);
+                MonteCarloReference result = render_monte_carlo_reference(run->scene, run->fresnel, tracer, r.get(d.analytic),
+                                                                          run->scene.outputs.reference_samples, run->threads);
+                r.emplace(d.out, std::move(result.render));
+                r.emplace(d.standard_error, std::move(result.standard_error));
+            });
+        h.reference = mc.out;
+        h.reference_standard_error = mc.standard_error;
+    } else {
+        graph.skip("monte-carlo-reference", f.cpu_reference ? "every sphere is a mirror: the analytic reference is exact"
+                                                            : "no reference, difference or metrics asked for");
+    }
     // localization: the impostor's steps taken and final |ρ − 1| per pixel, one diagnostics frame.
     h.localization = graph
                          .add_pass<Out<Image>>(
@@ -341,10 +478,12 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
                             b.read(h.reference);
                             b.read(h.localization);
                             b.read(h.frame_times);
+                            if (h.reference_standard_error) b.read(*h.reference_standard_error);
                             d.out = b.produce<Json>("metrics");
                         },
                         [run, h](const Out<Json>& d, Resources& r) {
-                            r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.localization), r.get(h.frame_times)));
+                            r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.localization), r.get(h.frame_times),
+                                                        h.reference_standard_error ? &r.get(*h.reference_standard_error) : nullptr));
                         })
                     .out;
 
@@ -359,13 +498,14 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
         if (o.reference) add_image_file_pass(graph, "reference." + format, h.reference, run);
     for (const auto& format : formats)
         if (o.difference) add_image_file_pass(graph, "difference." + format, h.difference, run);
+    if (o.reference && h.reference_standard_error)
+        add_image_file_pass(graph, "reference-stderr.exr", *h.reference_standard_error, run);
     if (o.localization) add_image_file_pass(graph, "localization.exr", h.localization, run);
     if (o.metrics) add_json_file_pass(graph, "metrics.json", "asked for", h.metrics, run);
     return h;
 }
 
 void skip_unneeded_effects(PassGraph& graph) {
-    graph.skip("prefiltered environment map", "every sphere is a perfect mirror (roughness 0)");
     graph.skip("SH irradiance", "metals have no diffuse lobe");
 }
 

@@ -30,6 +30,22 @@ std::vector<SphereError> sphere_errors(const Image& beauty, const ReferenceRende
     return errors;
 }
 
+std::vector<double> sphere_reference_noise(const Image& standard_error, const ReferenceRender& reference, std::size_t spheres) {
+    if (standard_error.width != reference.image.width || standard_error.height != reference.image.height)
+        throw std::invalid_argument("sphere_reference_noise: images of different sizes");
+    std::vector<double> squared(spheres, 0.0), count(spheres, 0.0);
+    for (std::size_t p = 0; p < reference.sphere_id.size(); ++p) {
+        const int id = reference.sphere_id[p];
+        if (id < 0) continue;
+        const auto s = static_cast<std::size_t>(id);
+        for (int c = 0; c < 3; ++c) squared[s] += double(standard_error.rgb[3 * p + c]) * double(standard_error.rgb[3 * p + c]);
+        count[s] += 3;
+    }
+    std::vector<double> noise(spheres);
+    for (std::size_t s = 0; s < spheres; ++s) noise[s] = count[s] > 0 ? std::sqrt(squared[s] / count[s]) : std::nan("");
+    return noise;
+}
+
 std::vector<SphereLocalization> sphere_localization(const Image& diagnostics, const ReferenceRender& reference,
                                                     std::size_t spheres) {
     if (diagnostics.width != reference.image.width || diagnostics.height != reference.image.height)

@@ -366,6 +366,8 @@ const char* to_string(EnvironmentType type) {
     return "?";
 }
 
+const char* to_string(GlossyMethod method) { return method == GlossyMethod::localized ? "localized" : "prefiltered"; }
+
 const char* to_string(ParameterSource source) { return source == ParameterSource::closed ? "closed" : "fit"; }
 
 std::string fresnel_name(const FresnelChoice& fresnel) {
@@ -466,7 +468,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
     if (!top.has("spheres")) top.fail("spheres", "missing (at least one sphere)");
     top.each("spheres", [&](const json& v, const std::string& path) {
         Reader r(v, path, file, {"center", "radius", "material", "source", "fresnel", "params", "reflection", "strategy", "iterations",
-                                  "tolerance"});
+                                  "tolerance", "roughness", "glossy", "localized_size"});
         Sphere s;
         if (!r.has("center")) r.fail(r.field("center"), "missing");
         r.read("center", s.center);
@@ -491,6 +493,18 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
                      {"safe-secant", Strategy::safe_secant}});
         r.read("iterations", s.iterations, 0, 64);
         r.read("tolerance", s.tolerance, 0, 1);
+        r.read("roughness", s.roughness, 0, 1);
+        r.read_enum("glossy", s.glossy, {{"prefiltered", GlossyMethod::prefiltered}, {"localized", GlossyMethod::localized}});
+        r.read("localized_size", s.localized_size, 2, 16);
+        if (r.has("reflection") && s.rough() && s.glossy == GlossyMethod::localized)
+            scene.warnings.push_back(file.string() + ": " + r.field("reflection") +
+                                     ": ignored: glossy 'localized' localizes by the area lights' positions");
+        if (r.has("localized_size") && !(s.rough() && s.glossy == GlossyMethod::localized))
+            scene.warnings.push_back(file.string() + ": " + r.field("localized_size") + ": ignored: only a rough sphere with glossy 'localized' uses it");
+        if (s.rough() && scene.environment.type == EnvironmentType::equirect)
+            r.fail(r.field("roughness"), "rough spheres need a captured environment (room or sphere-room): an equirect image is not prefiltered");
+        if (r.has("glossy") && !s.rough())
+            scene.warnings.push_back(file.string() + ": " + r.field("glossy") + ": ignored: the sphere is a mirror (roughness 0)");
         if (s.reflection != ReflectionMode::distance_impostor)
             for (const char* key : {"strategy", "iterations", "tolerance"})
                 if (r.has(key))
@@ -506,7 +520,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
     if (scene.spheres.empty()) top.fail("spheres", "at least one sphere");
     if (top.has("outputs")) {
         Reader r(top.at("outputs"), "outputs", file, {"beauty", "reference", "difference", "metrics", "exr", "png", "localization",
-                                                             "timing_frames"});
+                                                             "timing_frames", "reference_samples"});
         Outputs& o = scene.outputs;
         r.read("beauty", o.beauty);
         r.read("reference", o.reference);
@@ -516,6 +530,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         r.read("png", o.png);
         r.read("localization", o.localization);
         r.read("timing_frames", o.timing_frames, 5, 1000);
+        r.read("reference_samples", o.reference_samples, 1, 65536);
         if (!o.exr && !o.png && (o.beauty || o.reference || o.difference)) r.fail("outputs.exr", "images asked for but neither exr nor png");
     }
     for (std::string& w : placement_warnings(scene)) scene.warnings.push_back(std::move(w));

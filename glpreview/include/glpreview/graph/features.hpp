@@ -21,9 +21,12 @@ struct Features {
     bool difference_image = false;     // |beauty − reference| (asked for)
     bool metrics = false;              // metrics.json: per-sphere error and ms per frame
     bool localization_image = false;   // localization.exr: steps taken and final |ρ − 1| per pixel (asked for)
-    bool prefiltered_map = false;      // glossy reflections: no sphere is rough (pure mirrors), never needed yet
+    bool prefiltered_map = false;      // some sphere is rough with glossy 'prefiltered': the GGX-prefiltered cube mip chain
+    std::set<int> downsample_sizes;    // M of the rough spheres with glossy 'localized': one downsampled cube each
+    bool monte_carlo_reference = false;  // the CPU reference is needed and some sphere is rough: its lobe by Monte Carlo
     bool irradiance_sh = false;        // diffuse lobe: metals have none, never needed yet
     std::set<std::string> models;      // libfit model ids used
+    std::set<std::string> dfg_models;  // Fresnel names ("reference" or a model id) of the rough prefiltered spheres: one DFG pass each
     std::set<std::string> shader_variants;  // #define sets of the sphere shader, one per distinct variant
 };
 

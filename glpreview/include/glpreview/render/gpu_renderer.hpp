@@ -12,6 +12,7 @@
 
 #include "glpreview/gl/gl_context.hpp"
 #include "glpreview/gl/objects.hpp"
+#include "glpreview/render/dfg_table.hpp"
 #include "glpreview/render/gpu_resources.hpp"
 #include "glpreview/io/image.hpp"
 #include "glpreview/render/plan.hpp"
@@ -49,11 +50,23 @@ public:
 
     // Ray-casts the environment into `cube` (once; spheres may move afterwards) and reflects it from then on.
     void capture_environment(const EnvironmentCube& cube);
-    // The same into a cube map of the renderer's own (tests, benchmarks without a graph).
+    // The same into a cube map of the renderer's own (tests, benchmarks without a graph), prefiltered too when the
+    // features ask for it.
     void capture_environment();
     // Reflects an already captured cube / an equirect texture owned by the caller (the pass graph).
     void use_environment(const EnvironmentCube& cube) { cube_ = &cube; }
     void use_equirect(const EquirectTexture& texture) { equirect_ = &texture; }
+    // GGX-prefilters the captured `source` (made with mipmaps) into `target`, every face and level
+    // (shaders/prefilter.frag), and reflects rough prefiltered spheres from it from then on.
+    void prefilter(const EnvironmentCube& source, const PrefilteredCube& target);
+    void use_prefiltered(const PrefilteredCube& cube) { prefiltered_ = &cube; }
+    // Downsamples the captured `source` (with distances) into `target`'s M × M area lights per face
+    // (shaders/downsample.frag); rough localized spheres of that M read it from then on.
+    void downsample(const EnvironmentCube& source, const DownsampledCube& target);
+    void use_downsampled(const DownsampledCube& cube) { downsampled_[cube.m] = &cube; }
+    // Uploads the DFG tables of rough spheres (once per Fresnel). A rough sphere whose table was never handed over
+    // gets one made here (tests and benchmarks without a graph).
+    void use_dfg(const DfgSet& set);
     Image render();  // one beauty frame, read back
     // The localization diagnostics of the same frame (no background, 0 outside the spheres): per pixel r = the
     // distance impostor's refinement steps taken, g = |ρ − 1| at its lookup point, b = 1 on impostor spheres.
@@ -82,6 +95,7 @@ private:
     void draw_frame(bool diagnostics = false);
     Image read_frame() const;
     void upload_lut(const SphereFresnel* fresnel);
+    void upload_dfg(const SphereFresnel* fresnel, const DfgTable& table);
 
     const Scene& scene_;
     Features features_;
@@ -92,6 +106,11 @@ private:
     std::optional<EquirectTexture> own_equirect_;
     const EnvironmentCube* cube_ = nullptr;
     const EquirectTexture* equirect_ = nullptr;
+    std::optional<PrefilteredCube> own_prefiltered_;
+    const PrefilteredCube* prefiltered_ = nullptr;
+    std::map<int, DownsampledCube> own_downsampled_;
+    std::map<int, const DownsampledCube*> downsampled_;  // by M
+    std::map<const SphereFresnel*, gl::Texture> dfg_;  // DFG tables of rough spheres, by Fresnel
     std::map<const SphereFresnel*, gl::Texture> luts_;  // reference LUTs, uploaded on first use
     gl::Framebuffer framebuffer_;
     gl::Texture color_;

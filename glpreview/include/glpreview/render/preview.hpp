@@ -31,6 +31,7 @@ struct PreviewResult {
     std::string renderer;                     // GL_RENDERER, "" when no GPU pass ran
     std::optional<Image> beauty;
     std::optional<ReferenceRender> reference;
+    std::optional<Image> reference_standard_error;  // the Monte-Carlo reference's, when a sphere is rough
     std::optional<Image> difference;
     std::optional<Image> localization;        // GpuRenderer::render_localization(), when metrics or the file ran it
     std::vector<double> frame_ms;

@@ -28,6 +28,10 @@ struct SphereLocalization {
 std::vector<SphereLocalization> sphere_localization(const Image& diagnostics, const ReferenceRender& reference,
                                                     std::size_t spheres);
 
+// The noise of a Monte-Carlo reference per sphere: sqrt(mean over the mask's pixels and channels of the standard
+// error²), comparable to the RMSE (0 for mirror spheres, NaN where the mask is empty).
+std::vector<double> sphere_reference_noise(const Image& standard_error, const ReferenceRender& reference, std::size_t spheres);
+
 // |a − b| per pixel and channel, times `scale`.
 Image absolute_difference(const Image& a, const Image& b, double scale = 1.0);
 

@@ -90,6 +90,10 @@ struct ModelFresnel {
 };
 using FresnelChoice = std::variant<ReferenceFresnel, ModelFresnel>;
 
+// How a rough sphere (roughness > 0) reflects on the GPU (docs/scene.md): a GGX-prefiltered cube mip chain times the
+// sphere's own DFG table (split sum), or the thesis's ch. 5 sum over the downsampled cube's texels as area lights.
+enum class GlossyMethod { prefiltered, localized };
+
 inline constexpr Strategy kDefaultStrategy = Strategy::illinois;
 inline constexpr int kDefaultIterations = 8;
 inline constexpr double kDefaultTolerance = 1e-4;
@@ -111,6 +115,11 @@ struct Sphere {
     Strategy strategy = kDefaultStrategy;
     int iterations = kDefaultIterations;  // the most refinement steps a pixel takes
     double tolerance = kDefaultTolerance;  // a pixel stops once |ρ − 1| < tolerance (0: always `iterations` steps)
+    double roughness = 0;  // GGX, α = roughness²; 0: the perfect mirror
+    GlossyMethod glossy = GlossyMethod::prefiltered;  // the GPU method when roughness > 0
+    int localized_size = 8;  // `localized`: M, the downsampled cube's texels per face edge (2–16), each an area light
+
+    bool rough() const { return roughness > 0; }
 };
 
 struct Outputs {
@@ -122,6 +131,7 @@ struct Outputs {
     bool png = true;         // through the OCIO display transform
     bool localization = false;  // localization.exr: per pixel the refinement steps taken and the final |ρ − 1|
     int timing_frames = 5;   // frames for ms_per_frame (median)
+    int reference_samples = 256;  // Monte-Carlo samples per pixel of the reference on rough spheres
 };
 
 struct Scene {
@@ -161,6 +171,7 @@ const char* to_string(ReflectionMode mode);  // "classic", "distance-impostor", 
 const char* to_string(Strategy strategy);    // "secant", "false-position", "mixed", "illinois", "safe-secant"
 const char* to_string(EnvironmentType type);  // "room", "sphere-room", "equirect"
 const char* to_string(ParameterSource source);  // "fit", "closed"
+const char* to_string(GlossyMethod method);     // "prefiltered", "localized"
 std::string fresnel_name(const FresnelChoice& fresnel);  // "reference" or the model id, as in the scene JSON
 inline bool shows_reference(const Sphere& sphere) { return std::holds_alternative<ReferenceFresnel>(sphere.fresnel); }
 

@@ -1,0 +1,28 @@
+// The ground truth of rough spheres: per pixel, the same camera ray and sphere hit as the analytic reference, then
+// the GGX lobe (ggx.hpp) integrated by Monte Carlo: visible-normal samples, each reflected ray traced exactly
+// through the environment (EnvironmentTracer), weighted F(v·m) · G2 / G1 with the sphere's own Fresnel (the model
+// or the R_c table, as SphereFresnel evaluates it). Fixed seed per pixel, so the image does not depend on the
+// number of threads; rows are spread over std::threads. Mirror spheres (roughness 0) and the background keep the
+// analytic reference's pixels and a standard error of 0.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "glpreview/render/cpu_reference.hpp"
+
+namespace metalfit::glpreview {
+
+inline constexpr std::uint64_t kMonteCarloSeed = 20081117;  // fixed: the same scene gives the same reference
+
+struct MonteCarloReference {
+    ReferenceRender render;  // the reference image with the rough spheres' pixels estimated
+    Image standard_error;    // per pixel and channel: sample standard deviation / √samples (0 where exact)
+};
+
+// `analytic` is render_reference() of the same scene; `samples` per pixel (scene.outputs.reference_samples).
+MonteCarloReference render_monte_carlo_reference(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel,
+                                                 const EnvironmentTracer& environment, const ReferenceRender& analytic,
+                                                 int samples, int threads = 0);
+
+}  // namespace metalfit::glpreview
