@@ -6,6 +6,7 @@ Usage: scripts/check-catalog.py [DATA_DIR]      (default: <repo>/data)
 Checks:
   * the document has the metalfit.catalog/1 shape (keys, types, kinds);
   * every material has a primary; ids are unique;
+  * the optional coverage (range_nm, points_360_830) has its shape;
   * every "file" exists, is relative to DATA_DIR, and is nk/<id>/<source>.yml;
   * aliases contain the id and the name and are unique across the whole
     catalog, compared case-insensitively;
@@ -18,6 +19,9 @@ import sys
 
 KINDS = {"metal", "alloy", "intermetallic", "nitride", "carbide"}
 SOURCE_KEYS = ["source", "file", "reference", "doi", "licence", "database_path", "note"]
+# The table's coverage, written by scripts/catalog-coverage.py (metalfit list reads it instead of the table); optional,
+# both or neither.
+COVERAGE_KEYS = ["range_nm", "points_360_830"]
 MATERIAL_KEYS = ["id", "name", "aliases", "kind", "primary", "alternates"]
 DATABASE_KEYS = ["name", "repository", "commit", "licence", "citation"]
 
@@ -68,7 +72,18 @@ def main(argv):
             err(f"{where}: not an object")
             return
         missing = [k for k in SOURCE_KEYS if k not in src]
-        extra = set(src) - set(SOURCE_KEYS)
+        extra = set(src) - set(SOURCE_KEYS) - set(COVERAGE_KEYS)
+        present = [k for k in COVERAGE_KEYS if k in src]
+        if present and len(present) != len(COVERAGE_KEYS):
+            err(f"{where}: {present} without {[k for k in COVERAGE_KEYS if k not in src]} (both or neither)")
+        if "range_nm" in src:
+            r = src["range_nm"]
+            if not (isinstance(r, list) and len(r) == 2 and all(isinstance(x, (int, float)) for x in r) and r[0] < r[1]):
+                err(f"{where}.range_nm: must be [min, max] in nm, got {r!r}")
+        if "points_360_830" in src:
+            v = src["points_360_830"]
+            if not isinstance(v, int) or isinstance(v, bool) or v < 0:
+                err(f"{where}.points_360_830: must be a non-negative integer, got {v!r}")
         if missing:
             err(f"{where}: missing keys {missing}")
         if extra:

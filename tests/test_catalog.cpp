@@ -10,6 +10,7 @@
 #include <string>
 
 #include "libfit/io/catalog.hpp"
+#include "libfit/io/csv.hpp"
 #include "libfit/base/errors.hpp"
 
 namespace metalfit {
@@ -173,6 +174,51 @@ TEST(CatalogPaths, AnExistingFileLooksLikeAPath) {
     ScopedCwd cwd(dir.path());
     EXPECT_TRUE(looks_like_path("gold"));
     EXPECT_FALSE(looks_like_path("silver"));
+}
+
+// The coverage written into the catalog (scripts/catalog-coverage.py; what `metalfit list` prints without parsing
+// the tables) is what the tables give, for every source.
+TEST_F(CatalogTest, CoverageMetadataMatchesEveryTable) {
+    std::size_t sources = 0;
+    for (const CatalogEntry& e : catalog().entries()) {
+        std::vector<const CatalogSource*> all{&e.primary};
+        for (const CatalogSource& a : e.alternates) all.push_back(&a);
+        for (const CatalogSource* s : all) {
+            ASSERT_TRUE(s->coverage) << e.id << " " << s->source << ": no coverage (run scripts/catalog-coverage.py)";
+            const Material m = load_nk_file(s->file);
+            const WavelengthRange r = m.index.range();
+            EXPECT_EQ(s->coverage->range_nm.min_nm, r.min_nm) << e.id << " " << s->source << " (run scripts/catalog-coverage.py)";
+            EXPECT_EQ(s->coverage->range_nm.max_nm, r.max_nm) << e.id << " " << s->source;
+            EXPECT_EQ(s->coverage->points_360_830, m.index.n.tabulated_points_in(kVisibleRange)) << e.id << " " << s->source;
+            ++sources;
+        }
+    }
+    EXPECT_GT(sources, catalog().entries().size()) << "alternates must be checked too";
+}
+
+TEST(CatalogErrors, CoverageNeedsBothFieldsAndItsShape) {
+    TempDir dir;
+    const std::string source = R"("source": "S", "file": "nk/Au/S.yml", "reference": "r", "licence": "CC0-1.0")";
+    dir.write("catalog.json", R"({"materials": [{"id": "Au", "name": "gold", "primary": {)" + source + R"(, "range_nm": [300, 900]}}]})");
+    try {
+        (void)Catalog::load(dir.path());
+        FAIL() << "range_nm without points_360_830 must throw";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(Contains(e.what(), "materials[0].primary.points_360_830")) << e.what();
+    }
+    dir.write("catalog.json", R"({"materials": [{"id": "Au", "name": "gold", "primary": {)" + source +
+                                  R"(, "range_nm": [900, 300], "points_360_830": 3}}]})");
+    try {
+        (void)Catalog::load(dir.path());
+        FAIL() << "a reversed range must throw";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(Contains(e.what(), "materials[0].primary.range_nm")) << e.what();
+    }
+    dir.write("catalog.json", R"({"materials": [{"id": "Au", "name": "gold", "primary": {)" + source +
+                                  R"(, "range_nm": [300, 900], "points_360_830": 3}}]})");
+    const Catalog c = Catalog::load(dir.path());
+    ASSERT_TRUE(c.entries().front().primary.coverage);
+    EXPECT_EQ(c.entries().front().primary.coverage->points_360_830, 3u);
 }
 
 TEST(CatalogErrors, MalformedCatalogJsonIsInputError) {

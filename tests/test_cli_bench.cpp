@@ -52,8 +52,8 @@ esac
     EXPECT_TRUE(j.at("machine").at("cores").is_number_integer());
 
     const json& rows = j.at("rows");
-    // A row per registered model, then exact-complex, two LUTs and the spectral reference.
-    ASSERT_EQ(rows.size(), metalfit::all_models().size() + 4);
+    // A row per registered model, then exact-complex, exact-real, two LUTs and the spectral reference.
+    ASSERT_EQ(rows.size(), metalfit::all_models().size() + 5);
     std::map<std::string, json> by_id;
     for (const json& row : rows) {
         by_id[row.at("id")] = row;

@@ -93,12 +93,12 @@ BenchReport run_bench(const BenchOptions& o) {
         row.kind = k.kind;
         row.description = k.description;
         row.params_per_channel = k.params_per_channel;
-        const AccuracySummary* a = accuracy.find(k.id == "exact-complex" ? std::string(kBaselineKernel) : k.id);
+        const AccuracySummary* a = accuracy.find(k.id == "exact-complex" || k.id == "exact-real" ? std::string(kBaselineKernel) : k.id);
         if (a) {
             row.median_rel_rms = a->median;
             row.worst_rel_rms = a->worst;
             row.accuracy_source = k.kind == "lut" ? "the table against the reference at the 128 nodes"
-                                  : k.id == "exact-complex" ? "conductor-rgb's fit (the same function)"
+                                  : k.id == "exact-complex" || k.id == "exact-real" ? "conductor-rgb's fit (the same function)"
                                                             : "the fit of every catalog material";
             if (k.kind == "model") row.fit_ms = 1e3 * a->fit_seconds_median;
         } else {

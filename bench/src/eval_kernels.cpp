@@ -8,6 +8,7 @@
 #include "libfit/optics/fresnel.hpp"
 #include "libfit/models/registry.hpp"
 #include "metalfit_bench/reference_lut.hpp"
+#include "exact_real_kernel.hpp"
 
 namespace metalfit::bench {
 namespace {
@@ -148,6 +149,7 @@ std::vector<EvalKernel> eval_kernels(const PreparedMaterial& material) {
     std::vector<EvalKernel> kernels;
     for_each_model(Registry{}, [&]<class M>() { kernels.push_back(model_kernel<M>(material)); });
     kernels.push_back(exact_complex_kernel(material));
+    kernels.push_back(exact_real_kernel(material));
     kernels.push_back(lut_kernel(material, 64));
     kernels.push_back(lut_kernel(material, 256));
     kernels.push_back(spectral_kernel(material));

@@ -79,7 +79,8 @@ std::vector<Table> report_tables(const BenchReport& r) {
     main.notes = {
         "ns/eval: one RGB evaluation (3 channels), float, one μ at a time; array: a loop over 1024 μ the compiler may "
         "vectorise. Ratios: median over rounds of the per-round ratio, ± half its interquartile range.",
-        "exact-complex: libfit's complex Fresnel in double with conductor-rgb's fitted n,k; spectral-reference: 471 "
+        "exact-complex: libfit's complex Fresnel in double with conductor-rgb's fitted n,k; exact-real: the same in "
+        "libfit's real branch-free form (fresnel_real, float; its array loop vectorises); spectral-reference: 471 "
         "wavelengths × CMF + OCIO per μ; lut-N: N float RGB entries, linear interpolation (accuracy: the table "
         "against the reference).",
         "fit ms: fit_model() per material (closed forms, every Ceres start, metrics), median over the catalog.",

@@ -15,8 +15,15 @@ struct ListOptions {
     std::filesystem::path output;
 };
 
-nlohmann::json describe(const CatalogEntry& entry, const Material& m) {
-    const WavelengthRange r = m.index.range();
+// The coverage from the catalog's metadata; only a catalog written without it makes the table be parsed.
+CatalogCoverage coverage_of(const Catalog& catalog, const CatalogEntry& entry) {
+    if (entry.primary.coverage) return *entry.primary.coverage;
+    const Material m = load_material(catalog, entry.id);
+    return {m.index.range(), m.index.n.tabulated_points_in(kVisibleRange)};
+}
+
+nlohmann::json describe(const CatalogEntry& entry, const CatalogCoverage& coverage) {
+    const WavelengthRange r = coverage.range_nm;
     nlohmann::json alternates = nlohmann::json::array();
     for (const auto& a : entry.alternates) alternates.push_back(a.source);
     return {{"id", entry.id},
@@ -25,7 +32,7 @@ nlohmann::json describe(const CatalogEntry& entry, const Material& m) {
             {"source", entry.primary.source},
             {"alternates", alternates},
             {"range_nm", {r.min_nm, r.max_nm}},
-            {"points_360_830", m.index.n.tabulated_points_in(kVisibleRange)},
+            {"points_360_830", coverage.points_360_830},
             {"covers_360_830", r.covers(kVisibleRange)},
             {"reference", entry.primary.reference},
             {"note", entry.primary.note}};
@@ -66,7 +73,7 @@ std::function<void()> add_list_command(CLI::App& app, const GlobalOptions& globa
     return [options, &global] {
         const Catalog catalog = Catalog::load(global.data_dir);
         nlohmann::json rows = nlohmann::json::array();
-        for (const auto& entry : catalog.entries()) rows.push_back(describe(entry, load_material(catalog, entry.id)));
+        for (const auto& entry : catalog.entries()) rows.push_back(describe(entry, coverage_of(catalog, entry)));
         emit(options->json ? rows.dump(2) + "\n" : table(rows), options->output);
     };
 }

@@ -2,7 +2,7 @@
 // - each model's float evaluation (the C++ definition in libfit/models/, inlined) with the material's fitted
 //   parameters;
 // - the exact conductor Fresnel of the RGB n,k in libfit's complex form (fresnel(), double), with conductor-rgb's
-//   fitted n,k;
+//   fitted n,k, and in libfit's real branch-free form (fresnel_real(), float), the one that vectorises;
 // - the exact spectral reference: per-wavelength complex Fresnel × CMF integration + the OCIO conversion and white
 //   balance (ReferenceCurve, double): the true cost of "exact";
 // - a 1D LUT of the exact curve with linear interpolation at 64 and 256 entries.
@@ -22,7 +22,7 @@
 namespace metalfit::bench {
 
 struct EvalKernel {
-    std::string id;           // model id, "exact-complex", "spectral-reference", "lut-64", "lut-256"
+    std::string id;           // model id, "exact-complex", "exact-real", "spectral-reference", "lut-64", "lut-256"
     std::string kind;         // "model", "exact" or "lut"
     std::string description;  // one line
     std::optional<int> params_per_channel;  // model parameters, LUT entries; none for the spectral reference
@@ -35,7 +35,7 @@ struct EvalKernel {
 // The baseline of every ratio: the exact conductor Fresnel of fitted RGB n,k, as a model (real form, float).
 inline constexpr const char* kBaselineKernel = "conductor-rgb";
 
-// Every model in all_models() order, then exact-complex, lut-64, lut-256, spectral-reference.
+// Every model in all_models() order, then exact-complex, exact-real, lut-64, lut-256, spectral-reference.
 std::vector<EvalKernel> eval_kernels(const PreparedMaterial& material);
 
 // `count` μ values spread over (0, 1]: μ_i = (i + 1) / count, in a fixed shuffled order (so that branch predictors

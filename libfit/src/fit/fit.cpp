@@ -27,19 +27,6 @@ std::vector<NamedStart> starts_for_channel(const Model& model, const std::vector
     return starts;
 }
 
-// Adds the seconds since the last call (or construction) to a phase.
-class PhaseClock {
-public:
-    void charge(double& phase) {
-        const auto now = std::chrono::steady_clock::now();
-        phase += std::chrono::duration<double>(now - last_).count();
-        last_ = now;
-    }
-
-private:
-    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
-
 std::string number(double x) {
     char text[32];
     std::snprintf(text, sizeof text, "%.6g", x);
@@ -73,6 +60,14 @@ FitTimings& FitTimings::operator+=(const FitTimings& o) {
     ceres += o.ceres;
     metrics += o.metrics;
     return *this;
+}
+
+PhaseTime FitTimings::total() const {
+    PhaseTime t = reference;
+    t += closed_forms;
+    t += ceres;
+    t += metrics;
+    return t;
 }
 
 ClosedFormInput closed_form_input(const ReferenceCurve& curve, const Material& material, SpectralOptions options) {

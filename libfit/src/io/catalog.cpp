@@ -40,6 +40,17 @@ CatalogSource read_source(const nlohmann::json& j, const std::filesystem::path& 
     s.licence = get_string(j, "licence", file, where);
     s.database_path = get_string(j, "database_path", file, where, false);
     s.note = get_string(j, "note", file, where, false);
+    const auto range = j.find("range_nm"), points = j.find("points_360_830");
+    if ((range == j.end()) != (points == j.end()))
+        throw InputError({file, 0, where + (range == j.end() ? ".range_nm" : ".points_360_830")},
+                         "missing (range_nm and points_360_830 come together)");
+    if (range != j.end()) {
+        if (!range->is_array() || range->size() != 2 || !(*range)[0].is_number() || !(*range)[1].is_number() ||
+            !((*range)[0].get<double>() < (*range)[1].get<double>()))
+            throw InputError({file, 0, where + ".range_nm"}, "expected [min, max] in nm");
+        if (!points->is_number_unsigned()) throw InputError({file, 0, where + ".points_360_830"}, "expected a non-negative integer");
+        s.coverage = CatalogCoverage{{(*range)[0].get<double>(), (*range)[1].get<double>()}, points->get<std::size_t>()};
+    }
     return s;
 }
 

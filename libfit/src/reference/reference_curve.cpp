@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "libfit/base/errors.hpp"
-#include "libfit/optics/fresnel.hpp"
+#include "libfit/optics/fresnel_real.hpp"
 
 namespace metalfit {
 namespace {
@@ -50,15 +50,70 @@ ReferenceCurve::ReferenceCurve(const Material& material, const Colorimetry& colo
     : colorimetry_(colorimetry), converter_(std::move(converter)) {
     require_visible_coverage(material, options);
     const DenseSpectrum<XYZ>& grid = colorimetry_.weights();
-    eta_ = DenseSpectrum<std::complex<double>>::sampled(grid.first_nm(), grid.last_nm(), [&](int nm) {
-        return material.index(nm, options.interpolation, options.out_of_range);
-    });
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const SquaredIndex<double> e = squared_index(material.index(grid.nm(i), options.interpolation, options.out_of_range));
+        eta2_re_.push_back(e.re);
+        eta2_re_minus_1_.push_back(e.re_minus_1);
+        eta2_im_.push_back(e.im);
+        eta2_norm2_.push_back(e.norm2);
+        weight_x_.push_back(grid[i].X);
+        weight_y_.push_back(grid[i].Y);
+        weight_z_.push_back(grid[i].Z);
+    }
     raw_white_ = converter_(colorimetry_.white());
     held_constant_ = held_constant_ranges(material, {double(grid.first_nm()), double(grid.last_nm())}, options);
 }
 
-XYZ ReferenceCurve::xyz(double mu) const {
-    return colorimetry_.integrate(eta_.map([mu](const std::complex<double>& eta) { return fresnel(mu, eta); }));
+namespace {
+
+// μ values evaluated together: the inner loop over them is what the compiler vectorises (2 lanes with SSE2, 4 with
+// AVX2), with the per-λ constants broadcast.
+constexpr std::size_t kLanes = 8;
+
+// The columns of the per-λ constants and weights.
+struct SpectralColumns {
+    const double *re, *re1, *im, *norm2, *wx, *wy, *wz;
+    std::size_t size;
+};
+
+// Σ_λ F(μ_j, λ) w(λ) for kLanes values of μ. On x86-64 GCC also builds an AVX2 clone, chosen at load time (ifunc);
+// both clones use the same IEEE operations (no FMA), so the values do not depend on the machine.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void integrate_lanes(const SpectralColumns& s, const double* m, double* x, double* y, double* z) {
+    for (std::size_t i = 0; i < s.size; ++i)
+        for (std::size_t j = 0; j < kLanes; ++j) {
+            const double f = fresnel_real(m[j], s.re[i], s.re1[i], s.im[i], s.norm2[i]);
+            x[j] += f * s.wx[i];  // Σ_λ F(λ) w(λ) in grid order, as sum_of_products
+            y[j] += f * s.wy[i];
+            z[j] += f * s.wz[i];
+        }
+}
+
+}  // namespace
+
+std::vector<XYZ> ReferenceCurve::xyz(std::span<const double> mu) const {
+    std::vector<XYZ> out(mu.size());
+    const SpectralColumns columns{eta2_re_.data(), eta2_re_minus_1_.data(), eta2_im_.data(), eta2_norm2_.data(),
+                                  weight_x_.data(), weight_y_.data(), weight_z_.data(), eta2_re_.size()};
+    for (std::size_t first = 0; first < mu.size(); first += kLanes) {
+        const std::size_t count = std::min(kLanes, mu.size() - first);
+        double m[kLanes], x[kLanes] = {}, y[kLanes] = {}, z[kLanes] = {};
+        for (std::size_t j = 0; j < kLanes; ++j) m[j] = mu[first + std::min(j, count - 1)];  // padded with the last μ
+        integrate_lanes(columns, m, x, y, z);
+        for (std::size_t j = 0; j < count; ++j) out[first + j] = XYZ{x[j], y[j], z[j]};
+    }
+    return out;
+}
+
+XYZ ReferenceCurve::xyz(double mu) const { return xyz(std::span<const double>(&mu, 1)).front(); }
+
+std::vector<RGB> ReferenceCurve::operator()(std::span<const double> mu) const {
+    std::vector<RGB> out;
+    out.reserve(mu.size());
+    for (const XYZ& v : xyz(mu)) out.push_back(converter_(v) / raw_white_);
+    return out;
 }
 
 RGB ReferenceCurve::operator()(double mu) const { return converter_(xyz(mu)) / raw_white_; }

@@ -29,15 +29,22 @@ SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSetti
     if (settings.nodes < 2 || settings.nodes > 4096)
         throw UsageError("the number of quadrature nodes must be in [2, 4096], got " + std::to_string(settings.nodes));
     white_ = converter_.to_xyz(raw_white_);
-    const auto sample = [&](double mu, double weight, double albedo_weight) {
-        const RGB value = curve(mu);
-        return Sample{mu, weight, albedo_weight, value, lab(value)};
-    };
     for (const QuadratureNode& q : gauss_legendre_unit(settings.nodes)) {
         const double w = settings.weight == AngularWeight::uniform ? 1.0 : 2.0 * q.mu;
-        nodes_.push_back(sample(q.mu, q.weight * w, q.weight * 2.0 * q.mu));
+        nodes_.push_back(Sample{q.mu, q.weight * w, q.weight * 2.0 * q.mu, {}, {}});
     }
-    for (int i = 0; i <= kDenseIntervals; ++i) dense_.push_back(sample(double(i) / kDenseIntervals, 0.0, 0.0));
+    for (int i = 0; i <= kDenseIntervals; ++i) dense_.push_back(Sample{double(i) / kDenseIntervals, 0.0, 0.0, {}, {}});
+    // Every μ in one batch (the curve evaluates them together, with the same values as one at a time).
+    std::vector<double> mu;
+    for (const auto* samples : {&nodes_, &dense_})
+        for (const Sample& s : *samples) mu.push_back(s.mu);
+    const std::vector<RGB> values = curve(std::span<const double>(mu));
+    std::size_t next = 0;
+    for (auto* samples : {&nodes_, &dense_})
+        for (Sample& s : *samples) {
+            s.value = values[next++];
+            s.lab = lab(s.value);
+        }
 
     for (const auto* samples : {&nodes_, &dense_})
         for (const Sample& s : *samples)

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "libfit/base/phase_clock.hpp"
 #include "libfit/color/colorimetry.hpp"
 #include "libfit/io/material.hpp"
 #include "libfit/fit/metrics.hpp"
@@ -61,13 +62,14 @@ struct ModelResult {
 };
 
 // Where the time of a fit goes (seconds of one thread), for `metalfit fit --timings`; never written to records.
+// CPU time (the fitting thread's own CPU clock) and wall time of each phase (base/phase_clock.hpp).
 struct FitTimings {
-    double reference = 0;     // spectral integration + OCIO at the nodes and the dense grid
-    double closed_forms = 0;  // closed forms (their spectral samples included)
-    double ceres = 0;         // Ceres solves, all starts
-    double metrics = 0;       // metrics of closed forms and fits
+    PhaseTime reference;     // spectral integration + OCIO at the nodes and the dense grid
+    PhaseTime closed_forms;  // closed forms (their spectral samples included)
+    PhaseTime ceres;         // Ceres solves, all starts
+    PhaseTime metrics;       // metrics of closed forms and fits
     FitTimings& operator+=(const FitTimings& o);
-    double total() const { return reference + closed_forms + ceres + metrics; }
+    PhaseTime total() const;
 };
 
 // The closed-form input of a material: its reference curve and its measured η(λ).

@@ -11,6 +11,13 @@
 
 namespace metalfit {
 
+// What a table covers, as written in the catalog by scripts/catalog-coverage.py (so that listing the catalog parses
+// no table); CatalogCoverage.MetadataMatchesEveryTable checks it against the tables.
+struct CatalogCoverage {
+    WavelengthRange range_nm;       // where n and k are both defined
+    std::size_t points_360_830 = 0;  // tabulated samples of n inside 360–830 nm
+};
+
 struct CatalogSource {
     std::string source;               // "Johnson"
     std::filesystem::path file;       // absolute path of the nk file
@@ -19,6 +26,7 @@ struct CatalogSource {
     std::string licence;
     std::string database_path;        // path in the refractiveindex.info repository
     std::string note;
+    std::optional<CatalogCoverage> coverage;  // absent in catalogs written without it
 };
 
 struct CatalogEntry {

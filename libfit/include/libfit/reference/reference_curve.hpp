@@ -2,6 +2,7 @@
 #pragma once
 
 #include <complex>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,10 @@ struct SpectralOptions {
 };
 
 // R_c(μ) = RGB_c(XYZ(F(·, μ))) / RGB_c(perfect reflector) (DESIGN.md), so R_c(0) = 1 in every
-// space. η(λ) is sampled once on the colorimetry's 1 nm grid; each μ costs one Fresnel
-// evaluation per wavelength and one OCIO conversion.
+// space. η(λ) is sampled once on the colorimetry's 1 nm grid and kept as the per-λ constants of the real Fresnel form
+// (optics/fresnel_real.hpp); each μ costs one real Fresnel evaluation per wavelength and one OCIO conversion. The
+// batch forms evaluate several μ per wavelength at once (vectorised across μ; each μ's sum over λ keeps the order of
+// the 1 nm summation, so a batch gives exactly the values of single calls).
 class ReferenceCurve {
 public:
     // Throws InputError naming the material's file when its data do not cover 360–830 nm (and
@@ -33,6 +36,8 @@ public:
 
     RGB operator()(double mu) const;  // white balanced
     XYZ xyz(double mu) const;         // before the colour space
+    std::vector<RGB> operator()(std::span<const double> mu) const;  // white balanced, one per μ
+    std::vector<XYZ> xyz(std::span<const double> mu) const;
     // RGB of the perfect reflector before white balance (provenance: about (1.00016, 0.99998,
     // 0.99976) for D65 in Linear Rec.709).
     RGB raw_white() const { return raw_white_; }
@@ -42,7 +47,9 @@ public:
     const std::vector<std::string>& held_constant() const { return held_constant_; }
 
 private:
-    DenseSpectrum<std::complex<double>> eta_;  // on the colorimetry's grid
+    // η² of every wavelength of the colorimetry's grid (SquaredIndex, as arrays) and the XYZ weights, as arrays.
+    std::vector<double> eta2_re_, eta2_re_minus_1_, eta2_im_, eta2_norm2_;
+    std::vector<double> weight_x_, weight_y_, weight_z_;
     Colorimetry colorimetry_;
     ColorSpaceConverter converter_;
     RGB raw_white_;
