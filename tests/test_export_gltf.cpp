@@ -34,7 +34,8 @@ metalfit::test::CommandResult run(const std::string& args, const fs::path& scrat
 // compensation term a mu (1 - mu)^alpha of lazanyi-comp vanishes at mu = 1). Empty for the other models.
 std::optional<double> independent_f0(const std::string& model, const Json& params, int c) {
     const auto p = [&](const char* name) { return params.at(name).at(c).get<double>(); };
-    if (model == "schlick" || model == "f82-tint") return p("F0");
+    // The compensated Schlick forms add terms in mu (1 - mu)^... that vanish at mu = 1.
+    if (model == "schlick" || model == "f82-tint" || model.starts_with("schlick-comp")) return p("F0");
     if (model == "gulbrandsen") return p("r");
     if (model == "conductor-rgb" || model == "lazanyi" || model == "lazanyi-comp") {
         const double n = p("n"), k = p("k");
