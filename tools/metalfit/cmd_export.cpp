@@ -58,14 +58,15 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     FitConstraints constraints;
     constraints.gamut_fit = o.gamut_fit;
     const MaterialFitRequest fit_request{setup.spectral, error, models_to_fit(request), constraints};
+    FitRecordContext context = setup.record_context(error);
+    context.constraints = constraints;
+    const std::string materialx_space = materialx_colorspace(context.config, context.space);  // reads the config once
+    require_export_space(request, context.space, materialx_space);  // glTF: Linear Rec.709 only, refused before fitting
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     TerminalProgress progress;
     const std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), fit_request, jobs, progress.callback());
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
-    FitRecordContext context = setup.record_context(error);
-    context.constraints = constraints;
-    const std::string materialx_space = materialx_colorspace(context.config, context.space);  // reads the config once
     for (const std::string& w : export_warnings(context, request, materialx_space)) warn(w);
     if (budget) {
         const BudgetChoice choice = choose_model(fits.front().models, costs, *budget);
@@ -90,7 +91,7 @@ std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& glo
     app.add_option("--costs", o->costs, "Cost table for --model best:BUDGET: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");
     // --params and --gamut are checked by libfit's parsers: one line naming the value, like every other error.
     app.add_option("--params", o->params, "Parameters written: fit (Ceres) or closed (best closed form)");
-    app.add_option("--format", o->formats, "Formats, comma-separated, or all: json, glsl, hlsl, mtlx, openpbr, cpp")->required();
+    app.add_option("--format", o->formats, "Formats, comma-separated, or all: json, glsl, hlsl, mtlx, openpbr, cpp, gltf")->required();
     app.add_option("--gamut", o->gamut, "Colour parameters outside [0, 1]: keep (flagged), clip, or scale by 1/max");
     app.add_flag("--gamut-fit", o->gamut_fit,
                  "Fit every channel's curve inside [0, 1] at every angle (constrained, so --gamut has nothing left to do)");

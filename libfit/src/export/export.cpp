@@ -26,8 +26,9 @@ namespace metalfit {
 
 namespace {
 
-constexpr std::array<ExportFormat, 6> kFormats{ExportFormat::json, ExportFormat::glsl, ExportFormat::hlsl,
-                                               ExportFormat::mtlx, ExportFormat::openpbr, ExportFormat::cpp};
+constexpr std::array<ExportFormat, 7> kFormats{ExportFormat::json, ExportFormat::glsl, ExportFormat::hlsl,
+                                               ExportFormat::mtlx, ExportFormat::openpbr, ExportFormat::cpp,
+                                               ExportFormat::gltf};
 
 std::string figure(double v) {
     if (std::isnan(v)) return "undefined";
@@ -82,6 +83,7 @@ std::string to_string(ExportFormat format) {
         case ExportFormat::mtlx: return "mtlx";
         case ExportFormat::openpbr: return "openpbr";
         case ExportFormat::cpp: return "cpp";
+        case ExportFormat::gltf: return "gltf";
     }
     return "?";
 }
@@ -94,11 +96,11 @@ std::vector<ExportFormat> parse_export_formats(std::string_view list) {
         const std::string_view name = list.substr(0, comma);
         const auto it = std::find_if(kFormats.begin(), kFormats.end(), [&](ExportFormat f) { return to_string(f) == name; });
         if (it == kFormats.end())
-            throw UsageError("unknown export format '" + std::string(name) + "' (known: json, glsl, hlsl, mtlx, openpbr, cpp, or all)");
+            throw UsageError("unknown export format '" + std::string(name) + "' (known: json, glsl, hlsl, mtlx, openpbr, cpp, gltf, or all)");
         if (std::find(formats.begin(), formats.end(), *it) == formats.end()) formats.push_back(*it);
         list = comma == std::string_view::npos ? std::string_view{} : list.substr(comma + 1);
     }
-    if (formats.empty()) throw UsageError("empty export format list (known: json, glsl, hlsl, mtlx, openpbr, cpp, or all)");
+    if (formats.empty()) throw UsageError("empty export format list (known: json, glsl, hlsl, mtlx, openpbr, cpp, gltf, or all)");
     return formats;
 }
 
@@ -367,6 +369,7 @@ namespace detail {
 std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
                                      const ExportRequest& request, const std::string& materialx_space) {
     using detail::ModelExport;
+    require_export_space(request, context.space, materialx_space);
     const Model& stand_in_model = expressible_stand_in();
     std::vector<detail::MaterialExport> materials;
     for (const MaterialFit& fit : fits) {
@@ -402,6 +405,7 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
             case ExportFormat::mtlx: more = detail::export_mtlx(materials, ctx); break;
             case ExportFormat::openpbr: more = detail::export_openpbr(materials, ctx); break;
             case ExportFormat::cpp: more = detail::export_cpp(materials, ctx); break;
+            case ExportFormat::gltf: more = detail::export_gltf(materials, ctx); break;
         }
         for (ExportFile& f : more) files.push_back(std::move(f));
     }

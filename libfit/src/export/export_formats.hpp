@@ -90,6 +90,17 @@ std::vector<ExportFile> export_hlsl(const std::vector<MaterialExport>& materials
 std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_mtlx(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materials, const ExportContext& context);
+std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials, const ExportContext& context);
+
+// glTF's baseColorFactor of a written model: its curve at normal incidence (F0 = F(mu = 1)), with a channel outside
+// [0, 1] clipped, or the colour scaled by 1 / max under --gamut scale (glTF holds [0, 1] only); `adjustment` says
+// what was done, empty when F0 was in [0, 1].
+struct GltfBaseColor {
+    RGB f0;
+    RGB factor;
+    std::string adjustment;
+};
+GltfBaseColor gltf_base_color(const WrittenParameters& written, GamutPolicy gamut);
 
 // MaterialX documents (export_mtlx.cpp, used by export_openpbr.cpp too): <materialx version="1.39"> after a comment
 // (the header), with colorspace when MaterialX has a name for the curves' space (context.materialx_colorspace).

@@ -14,7 +14,7 @@
 
 namespace metalfit {
 
-enum class ExportFormat { json, glsl, hlsl, mtlx, openpbr, cpp };
+enum class ExportFormat { json, glsl, hlsl, mtlx, openpbr, cpp, gltf };
 std::string to_string(ExportFormat format);
 // "glsl,mtlx" or "all", in the order given (duplicates removed); UsageError naming the unknown format.
 std::vector<ExportFormat> parse_export_formats(std::string_view list);
@@ -83,6 +83,11 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
 // "lin_adobergb"), matched by its name and its aliases in the config, case-insensitively; empty when MaterialX has
 // none (Linear Rec.2020, ACES2065-1: the .mtlx then carries no colorspace and says so in its header).
 std::string materialx_colorspace(const OcioConfigChoice& config, const std::string& space);
+
+// glTF 2.0 defines its colours as linear Rec.709 and cannot name another space: a request with ExportFormat::gltf in
+// another space (materialx_space, materialx_colorspace's name of it, other than "lin_rec709") is a UsageError saying
+// so. `metalfit export` calls it before fitting; export_files calls it too.
+void require_export_space(const ExportRequest& request, const std::string& space, const std::string& materialx_space);
 
 // What a consumer must be told about an export before using it (one line each; `metalfit export` prints them on
 // stderr): today, MaterialX documents in a space MaterialX cannot name.

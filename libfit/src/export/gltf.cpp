@@ -1,0 +1,231 @@
+// glTF 2.0 export: per material and model a self-contained .gltf asset — one metal material (pbrMetallicRoughness:
+// baseColorFactor = the model's F0, metallicFactor 1, roughnessFactor = --roughness) on a UV sphere whose vertices
+// and indices are an embedded base64 data: URI buffer — with metalfit's provenance in the material's extras.
+// glTF's colours are linear Rec.709 (sRGB primaries, D65), in [0, 1]: another working space is refused
+// (require_export_space) and a channel above 1 is clipped, or scaled with --gamut scale (docs/export.md).
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <numbers>
+
+#include "export/export_formats.hpp"
+#include "export/header_provenance.hpp"
+#include "libfit/base/errors.hpp"
+#include "libfit/base/version.hpp"
+
+namespace metalfit::detail {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+static_assert(std::endian::native == std::endian::little, "glTF buffers are little-endian; the sphere is written as memory");
+
+// RFC 4648 base64 with padding: what a data: URI's ";base64," carries.
+std::string base64(const std::string& bytes) {
+    static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    for (std::size_t i = 0; i < bytes.size(); i += 3) {
+        const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
+        std::uint32_t v = 0;
+        for (std::size_t j = 0; j < 3; ++j)
+            v = (v << 8) | (j < n ? static_cast<unsigned char>(bytes[i + j]) : 0u);
+        for (std::size_t j = 0; j < 4; ++j) out += j <= n ? kAlphabet[(v >> (18 - 6 * j)) & 63u] : '=';
+    }
+    return out;
+}
+
+template <typename T>
+void append(std::string& bytes, T value) {
+    char raw[sizeof(T)];
+    std::memcpy(raw, &value, sizeof(T));
+    bytes.append(raw, sizeof(T));
+}
+
+// The unit sphere (radius 1, +Y up, glTF's convention): a pole at each end and kRings - 1 rings of kSegments
+// vertices; the normal of each vertex is its position. Triangles are counter-clockwise seen from outside (glTF's
+// front face). Made once: every asset holds the same mesh.
+struct Sphere {
+    static constexpr int kSegments = 32, kRings = 16;
+    std::vector<std::array<float, 3>> vertices;
+    std::vector<std::uint16_t> indices;
+    std::array<float, 3> min{}, max{};
+    std::string buffer;  // positions, then normals, then indices
+    std::size_t positions_bytes = 0, indices_bytes = 0;
+};
+
+const Sphere& sphere() {
+    static const Sphere s = [] {
+        Sphere m;
+        const auto vertex = [&](double theta, double phi) {
+            m.vertices.push_back({static_cast<float>(std::sin(theta) * std::sin(phi)), static_cast<float>(std::cos(theta)),
+                                  static_cast<float>(std::sin(theta) * std::cos(phi))});
+        };
+        vertex(0.0, 0.0);  // north pole, index 0
+        for (int i = 1; i < Sphere::kRings; ++i)
+            for (int j = 0; j < Sphere::kSegments; ++j)
+                vertex(std::numbers::pi * i / Sphere::kRings, 2.0 * std::numbers::pi * j / Sphere::kSegments);
+        vertex(std::numbers::pi, 0.0);  // south pole, the last index
+        const auto at = [](int ring, int segment) {  // ring 1 … kRings - 1
+            return static_cast<std::uint16_t>(1 + (ring - 1) * Sphere::kSegments + segment % Sphere::kSegments);
+        };
+        const auto south = static_cast<std::uint16_t>(m.vertices.size() - 1);
+        for (int j = 0; j < Sphere::kSegments; ++j) {
+            m.indices.insert(m.indices.end(), {0, at(1, j), at(1, j + 1)});
+            for (int i = 1; i + 1 < Sphere::kRings; ++i) {
+                m.indices.insert(m.indices.end(), {at(i, j), at(i + 1, j), at(i, j + 1)});
+                m.indices.insert(m.indices.end(), {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+            }
+            m.indices.insert(m.indices.end(), {at(Sphere::kRings - 1, j), south, at(Sphere::kRings - 1, j + 1)});
+        }
+        m.min = m.max = m.vertices.front();
+        for (const auto& v : m.vertices)
+            for (int c = 0; c < 3; ++c) {
+                m.min[c] = std::min(m.min[c], v[c]);
+                m.max[c] = std::max(m.max[c], v[c]);
+            }
+        for (const auto& v : m.vertices)
+            for (float x : v) append(m.buffer, x);
+        m.positions_bytes = m.buffer.size();
+        for (const auto& v : m.vertices)
+            for (float x : v) append(m.buffer, x);  // the normals: the same unit vectors
+        for (std::uint16_t i : m.indices) append(m.buffer, i);
+        m.indices_bytes = m.indices.size() * sizeof(std::uint16_t);
+        while (m.buffer.size() % 4 != 0) m.buffer += '\0';  // a buffer's length padded to 4 bytes
+        return m;
+    }();
+    return s;
+}
+
+Json vec3_json(const std::array<float, 3>& v) { return Json::array({double(v[0]), double(v[1]), double(v[2])}); }
+
+}  // namespace
+
+GltfBaseColor gltf_base_color(const WrittenParameters& written, GamutPolicy gamut) {
+    GltfBaseColor out;
+    out.f0 = written.model->evaluate(written.params, 1.0);  // the curve at normal incidence (mu = cos 0 = 1)
+    out.factor = out.f0;
+    const double max = std::max({out.f0.r, out.f0.g, out.f0.b});
+    std::string outside;
+    for (int c = 0; c < 3; ++c)
+        if (out.f0[c] > 1.0 || out.f0[c] < 0.0)
+            outside += (outside.empty() ? "" : ", ") + std::string(kChannelNames[c]) + " " + number(out.f0[c]);
+    if (outside.empty()) return out;
+    if (gamut == GamutPolicy::scale) {
+        for (int c = 0; c < 3; ++c) out.factor[c] = std::max(0.0, max > 1.0 ? out.f0[c] / max : out.f0[c]);
+        out.adjustment = "F0 outside [0, 1] (" + outside + "): " +
+                         (max > 1.0 ? "scaled by 1/" + number(max) : std::string("negative values set to 0")) +
+                         " (--gamut scale)";
+    } else {
+        for (int c = 0; c < 3; ++c) out.factor[c] = std::clamp(out.f0[c], 0.0, 1.0);
+        out.adjustment = "F0 outside [0, 1] (" + outside + "): clipped to [0, 1] (glTF's baseColorFactor is in [0, 1]; "
+                         "--gamut scale scales instead)";
+    }
+    return out;
+}
+
+std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials, const ExportContext& context) {
+    const Sphere& mesh = sphere();
+    const std::string uri = "data:application/octet-stream;base64," + base64(mesh.buffer);
+    std::vector<ExportFile> files;
+    for (const MaterialExport& m : materials)
+        for (const ModelExport& e : m.models) {
+            const std::string stem = file_stem(m.fit->material.id, e.written.model->id());
+            const WrittenParameters& w = e.written;
+            const GltfBaseColor base = gltf_base_color(w, context.request.gamut);
+            const Metrics& mt = w.metrics;
+            const auto per_channel = [](const PerChannel& v) { return Json::array({v[0], v[1], v[2]}); };
+            Json params = Json::object();
+            const auto parameters = w.model->parameters();
+            for (std::size_t i = 0; i < parameters.size(); ++i) {
+                const RGB v = w.params.parameter(i);
+                params[std::string(parameters[i].name)] = Json::array({v.r, v.g, v.b});
+            }
+            Json tint = nullptr;
+            if (const auto f82 = as_f82_tint(w, *m.fit->reference)) {
+                const RGB t = f82->params.parameter(1);
+                tint = Json::array({t.r, t.g, t.b});
+            }
+            const Json provenance = {
+                {"schema", "metalfit.gltf/1"},
+                {"metalfit_version", METALFIT_VERSION},
+                {"material", m.fit->material.id},
+                {"name", m.fit->material.name},
+                {"source", m.fit->material.source},
+                {"provenance", header_provenance_lines(m.fit->material, context.record)},
+                {"color_space", context.record.space},
+                {"model", w.model->id()},
+                {"from", w.origin},
+                {"params", params},
+                {"gamut", to_string(context.request.gamut)},
+                {"out_of_gamut", w.gamut},
+                {"f0", Json::array({base.f0.r, base.f0.g, base.f0.b})},
+                {"base_color_factor", base.adjustment.empty() ? std::string("F0 of the curve (the model at mu = 1)")
+                                                               : "F0 of the curve (the model at mu = 1); " + base.adjustment},
+                {"f82_tint", tint},
+                {"f82_tint_note", "not in the material: KHR_materials_specular's specularColorFactor tints the dielectric "
+                                  "F0 only and leaves the metal BRDF (Schlick from baseColor to 1) as it is, so glTF "
+                                  "metals have no F82 tint"},
+                {"roughness", context.request.roughness},
+                {"metrics",
+                 {{"rel_rms", per_channel(mt.rel_rms)},
+                  {"abs_rms", per_channel(mt.abs_rms)},
+                  {"max_rel", per_channel(mt.max_rel)},
+                  {"max_abs", per_channel(mt.max_abs)},
+                  {"de2000_mean", mt.de2000_mean},
+                  {"de2000_max", mt.de2000_max},
+                  {"albedo_err", per_channel(mt.albedo_err)}}}};
+            const std::size_t vertex_bytes = mesh.positions_bytes;
+            Json j = {
+                {"asset", {{"version", "2.0"}, {"generator", "metalfit " METALFIT_VERSION}}},
+                {"scene", 0},
+                {"scenes", Json::array({{{"name", stem}, {"nodes", Json::array({0})}}})},
+                {"nodes", Json::array({{{"name", stem}, {"mesh", 0}}})},
+                {"meshes", Json::array({{{"name", stem + "_sphere"},
+                                         {"primitives", Json::array({{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}},
+                                                                      {"indices", 2},
+                                                                      {"material", 0},
+                                                                      {"mode", 4}}})}}})},
+                {"materials", Json::array({{{"name", stem},
+                                            {"pbrMetallicRoughness",
+                                             {{"baseColorFactor", Json::array({base.factor.r, base.factor.g, base.factor.b, 1.0})},
+                                              {"metallicFactor", 1.0},
+                                              {"roughnessFactor", context.request.roughness}}},
+                                            {"extras", {{"metalfit", provenance}}}}})},
+                {"accessors", Json::array({{{"bufferView", 0},
+                                            {"componentType", 5126},
+                                            {"count", mesh.vertices.size()},
+                                            {"type", "VEC3"},
+                                            {"min", vec3_json(mesh.min)},
+                                            {"max", vec3_json(mesh.max)}},
+                                           {{"bufferView", 1}, {"componentType", 5126}, {"count", mesh.vertices.size()}, {"type", "VEC3"}},
+                                           {{"bufferView", 2}, {"componentType", 5123}, {"count", mesh.indices.size()}, {"type", "SCALAR"}}})},
+                {"bufferViews", Json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", vertex_bytes}, {"target", 34962}},
+                                             {{"buffer", 0}, {"byteOffset", vertex_bytes}, {"byteLength", vertex_bytes}, {"target", 34962}},
+                                             {{"buffer", 0},
+                                              {"byteOffset", 2 * vertex_bytes},
+                                              {"byteLength", mesh.indices_bytes},
+                                              {"target", 34963}}})},
+                {"buffers", Json::array({{{"byteLength", mesh.buffer.size()}, {"uri", uri}}})}};
+            files.push_back({"gltf/" + stem + ".gltf", j.dump(2) + "\n"});
+        }
+    return files;
+}
+
+}  // namespace metalfit::detail
+
+namespace metalfit {
+
+void require_export_space(const ExportRequest& request, const std::string& space, const std::string& materialx_space) {
+    if (std::find(request.formats.begin(), request.formats.end(), ExportFormat::gltf) == request.formats.end()) return;
+    if (materialx_space == "lin_rec709") return;
+    throw UsageError("export --format gltf: glTF 2.0's colours are linear Rec.709 (sRGB primaries) and a .gltf cannot name another "
+           "space, but this export is in '" + space + "'; export glTF with --space 'Linear Rec.709 (sRGB)' (the default), "
+           "or list the other formats (json,glsl,hlsl,mtlx,openpbr,cpp) instead of all");
+}
+
+}  // namespace metalfit
