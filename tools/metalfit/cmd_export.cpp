@@ -61,6 +61,10 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     FitRecordContext context = setup.record_context(error);
     context.constraints = constraints;
     const std::string materialx_space = materialx_colorspace(context.config, context.space);  // reads the config once
+    if (o.formats == "all")
+        if (const std::string left_out = leave_out_formats_the_space_cannot_carry(request, context.space, materialx_space);
+            !left_out.empty())
+            warn(left_out);
     require_export_space(request, context.space, materialx_space);  // glTF: Linear Rec.709 only, refused before fitting
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     TerminalProgress progress;

@@ -228,4 +228,13 @@ void require_export_space(const ExportRequest& request, const std::string& space
            "or list the other formats (json,glsl,hlsl,mtlx,openpbr,cpp) instead of all");
 }
 
+std::string leave_out_formats_the_space_cannot_carry(ExportRequest& request, const std::string& space,
+                                                     const std::string& materialx_space) {
+    const auto gltf = std::find(request.formats.begin(), request.formats.end(), ExportFormat::gltf);
+    if (gltf == request.formats.end() || materialx_space == "lin_rec709") return {};
+    request.formats.erase(gltf);
+    return "--format all: glTF left out: glTF 2.0's colours are linear Rec.709 and a .gltf cannot name '" + space +
+           "' (export it with --space 'Linear Rec.709 (sRGB)')";
+}
+
 }  // namespace metalfit

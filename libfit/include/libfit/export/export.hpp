@@ -88,6 +88,10 @@ std::string materialx_colorspace(const OcioConfigChoice& config, const std::stri
 // another space (materialx_space, materialx_colorspace's name of it, other than "lin_rec709") is a UsageError saying
 // so. `metalfit export` calls it before fitting; export_files calls it too.
 void require_export_space(const ExportRequest& request, const std::string& space, const std::string& materialx_space);
+// `--format all` means every format the space allows: outside linear Rec.709 glTF is taken out of `request` and the
+// warning saying so is returned (empty when nothing was taken out). An explicit gltf stays, for require_export_space.
+std::string leave_out_formats_the_space_cannot_carry(ExportRequest& request, const std::string& space,
+                                                     const std::string& materialx_space);
 
 // What a consumer must be told about an export before using it (one line each; `metalfit export` prints them on
 // stderr): today, MaterialX documents in a space MaterialX cannot name.
