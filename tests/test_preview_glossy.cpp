@@ -42,7 +42,7 @@ const SphereFresnel& unit_fresnel() {
 }
 
 FresnelLibrary& library() {
-    static FresnelLibrary lib(kData, choose_ocio_config(std::nullopt, kData), "test.json");
+    static FresnelLibrary lib(kData, choose_ocio_config(std::nullopt, kData), "", "test.json");
     return lib;
 }
 
