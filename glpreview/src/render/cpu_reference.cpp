@@ -5,6 +5,7 @@
 #include <cmath>
 #include <thread>
 
+#include "glpreview/render/worker_threads.hpp"
 #include "glpreview/scene/camera.hpp"
 
 namespace metalfit::glpreview {
@@ -51,12 +52,7 @@ ReferenceRender render_reference(const Scene& scene, const std::vector<const Sph
             }
         }
     };
-    const int count = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
-    {
-        std::vector<std::jthread> pool;
-        for (int t = 1; t < count; ++t) pool.emplace_back(worker);
-        worker();
-    }
+    run_on_threads(threads, worker);
     return out;
 }
 

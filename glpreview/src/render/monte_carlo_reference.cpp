@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "glpreview/render/ggx.hpp"
+#include "glpreview/render/worker_threads.hpp"
 #include "glpreview/scene/camera.hpp"
 
 namespace metalfit::glpreview {
@@ -64,12 +65,7 @@ MonteCarloReference render_monte_carlo_reference(const Scene& scene, const std::
             }
         }
     };
-    const int count = threads > 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
-    {
-        std::vector<std::jthread> pool;
-        for (int t = 1; t < count; ++t) pool.emplace_back(worker);
-        worker();
-    }
+    run_on_threads(threads, worker);
     return out;
 }
 

@@ -15,6 +15,7 @@
 #include "export/header_provenance.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/version.hpp"
+#include "libfit/fit/fit_record.hpp"
 
 namespace metalfit::detail {
 
@@ -138,7 +139,6 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
             const WrittenParameters& w = e.written;
             const GltfBaseColor base = gltf_base_color(w, context.request.gamut);
             const Metrics& mt = w.metrics;
-            const auto per_channel = [](const PerChannel& v) { return Json::array({v[0], v[1], v[2]}); };
             Json params = Json::object();
             const auto parameters = w.model->parameters();
             for (std::size_t i = 0; i < parameters.size(); ++i) {
@@ -171,14 +171,7 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
                                   "F0 only and leaves the metal BRDF (Schlick from baseColor to 1) as it is, so glTF "
                                   "metals have no F82 tint"},
                 {"roughness", context.request.roughness},
-                {"metrics",
-                 {{"rel_rms", per_channel(mt.rel_rms)},
-                  {"abs_rms", per_channel(mt.abs_rms)},
-                  {"max_rel", per_channel(mt.max_rel)},
-                  {"max_abs", per_channel(mt.max_abs)},
-                  {"de2000_mean", mt.de2000_mean},
-                  {"de2000_max", mt.de2000_max},
-                  {"albedo_err", per_channel(mt.albedo_err)}}}};
+                {"metrics", metrics_record(mt)}};
             const std::size_t vertex_bytes = mesh.positions_bytes;
             Json j = {
                 {"asset", {{"version", "2.0"}, {"generator", "metalfit " METALFIT_VERSION}}},

@@ -4,6 +4,7 @@
 #include "export/export_formats.hpp"
 #include "export/header_provenance.hpp"
 #include "libfit/base/version.hpp"
+#include "libfit/fit/fit_record.hpp"
 
 namespace metalfit::detail {
 
@@ -11,7 +12,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json per_channel(const PerChannel& v) { return Json::array({v[0], v[1], v[2]}); }
 Json colour(const ModelParameters& p, std::size_t i) {
     const RGB v = p.parameter(i);
     return Json::array({v.r, v.g, v.b});
@@ -55,14 +55,7 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
                         {"specular_weight", 1.0},
                         {"specular_color", colour(w.params, 1)},
                         {"specular_roughness", context.request.roughness}}},
-                      {"metrics",
-                       {{"rel_rms", per_channel(mt.rel_rms)},
-                        {"abs_rms", per_channel(mt.abs_rms)},
-                        {"max_rel", per_channel(mt.max_rel)},
-                        {"max_abs", per_channel(mt.max_abs)},
-                        {"de2000_mean", mt.de2000_mean},
-                        {"de2000_max", mt.de2000_max},
-                        {"albedo_err", per_channel(mt.albedo_err)}}}};
+                      {"metrics", metrics_record(mt)}};
             files.push_back({"openpbr/" + stem + ".json", j.dump(2) + "\n"});
 
             pugi::xml_document doc;

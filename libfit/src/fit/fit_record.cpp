@@ -53,18 +53,21 @@ Json data_provenance(const Material& material) {
 
 }  // namespace
 
+Json metrics_record(const Metrics& m) {
+    return {{"rel_rms", per_channel(m.rel_rms)},
+            {"abs_rms", per_channel(m.abs_rms)},
+            {"max_rel", per_channel(m.max_rel)},
+            {"max_abs", per_channel(m.max_abs)},
+            {"de2000_mean", m.de2000_mean},
+            {"de2000_max", m.de2000_max},
+            {"albedo_err", per_channel(m.albedo_err)}};
+}
+
 // params, metrics (exactly the seven keys of DESIGN.md) and where the maxima are.
 Json evaluated_record(const Model& model, const EvaluatedParameters& value) {
     const Metrics& m = value.metrics;
     return {{"params", params_json(model, value.params)},
-            {"metrics",
-             {{"rel_rms", per_channel(m.rel_rms)},
-              {"abs_rms", per_channel(m.abs_rms)},
-              {"max_rel", per_channel(m.max_rel)},
-              {"max_abs", per_channel(m.max_abs)},
-              {"de2000_mean", m.de2000_mean},
-              {"de2000_max", m.de2000_max},
-              {"albedo_err", per_channel(m.albedo_err)}}},
+            {"metrics", metrics_record(m)},
             {"err_f0", per_channel(m.err_f0)},
             {"metrics_at_mu",
              {{"max_rel", per_channel(m.max_rel_mu)},
