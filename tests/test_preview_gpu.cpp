@@ -309,6 +309,91 @@ TEST(PreviewGpu, AnEquirectImageIsConvertedFromItsColorspaceIntoTheScenesSpace) 
     EXPECT_EQ(tagged.reference->image.rgb, named.reference->image.rgb);
 }
 
+// EXRs say which RGB they hold (issue 20 item 5): the `chromaticities` of the scene's space as OCIO maps it to CIE XYZ
+// D65 (docs/preview.md, "Outputs"): Rec.709 / D65 (ITU-R BT.709) as published; ACEScg (AP1, ACES white, SMPTE ST
+// 2065-1 / S-2014-004) Bradford-adapted to D65, computed here from the published primaries.
+using Mat3 = std::array<std::array<double, 3>, 3>;
+Mat3 mul(const Mat3& a, const Mat3& b) {
+    Mat3 m{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k) m[i][j] += a[i][k] * b[k][j];
+    return m;
+}
+Mat3 inverse(const Mat3& a) {
+    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    Mat3 m;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+            m[i][j] = (a[r0][c0] * a[r1][c1] - a[r0][c1] * a[r1][c0]) / det;
+        }
+    return m;
+}
+std::array<double, 3> xyz_of(double x, double y) { return {x / y, 1.0, (1 - x - y) / y}; }
+std::array<double, 3> times(const Mat3& m, const std::array<double, 3>& v) {
+    return {m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2], m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
+            m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2]};
+}
+// RGB → XYZ of primaries r, g, b and white w (xy pairs), then Bradford from w to D65; the xy of each column and of white.
+std::array<double, 8> adapted_chromaticities(const std::array<double, 8>& p) {
+    Mat3 P;
+    for (int c = 0; c < 3; ++c) {
+        const auto v = xyz_of(p[2 * c], p[2 * c + 1]);
+        for (int r = 0; r < 3; ++r) P[r][c] = v[r];
+    }
+    const auto W = xyz_of(p[6], p[7]), D65 = xyz_of(0.3127, 0.3290);
+    const auto S = times(inverse(P), W);
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) P[r][c] *= S[c];
+    const Mat3 B{{{0.8951, 0.2664, -0.1614}, {-0.7502, 1.7135, 0.0367}, {0.0389, -0.0685, 1.0296}}};
+    const auto from = times(B, W), to = times(B, D65);
+    const Mat3 D{{{to[0] / from[0], 0, 0}, {0, to[1] / from[1], 0}, {0, 0, to[2] / from[2]}}};
+    const Mat3 M = mul(mul(inverse(B), mul(D, B)), P);
+    std::array<double, 8> out;
+    for (int c = 0; c < 4; ++c) {
+        const auto v = c < 3 ? std::array<double, 3>{M[0][c], M[1][c], M[2][c]} : times(M, {1, 1, 1});
+        const double sum = v[0] + v[1] + v[2];
+        out[2 * c] = v[0] / sum, out[2 * c + 1] = v[1] / sum;
+    }
+    return out;
+}
+
+TEST(PreviewGpu, ExrOutputsCarryTheChromaticitiesOfTheScenesSpace) {
+    test::TempDir dir;
+    Scene scene;
+    scene.file = dir.path() / "scene.json";
+    scene.width = 16;
+    scene.height = 12;
+    Sphere s;
+    s.reflection = ReflectionMode::classic;
+    scene.spheres = {s};
+    scene.outputs.beauty = scene.outputs.difference = scene.outputs.metrics = scene.outputs.png = false;
+    struct Case {
+        std::string space, name;
+        std::array<double, 8> xy;
+    };
+    const std::array<double, 8> rec709{0.64, 0.33, 0.30, 0.60, 0.15, 0.06, 0.3127, 0.3290};
+    const std::array<double, 8> ap1{0.713, 0.293, 0.165, 0.830, 0.128, 0.044, 0.32168, 0.33767};
+    EXPECT_NEAR(adapted_chromaticities(rec709)[0], 0.64, 1e-12);  // the adaptation of D65 to D65 changes nothing
+    for (const Case& c : {Case{"", "Linear Rec.709 (sRGB)", rec709}, Case{"ACEScg", "ACEScg", adapted_chromaticities(ap1)}}) {
+        scene.space = c.space;
+        PreviewOptions o = options();
+        o.output_dir = dir.path() / ("out-" + c.name.substr(0, 6));
+        run_preview(scene, o, &gl());
+        const auto colour = read_exr_colour(o.output_dir / "reference.exr");
+        ASSERT_TRUE(colour) << c.name;
+        EXPECT_EQ(colour->space, c.name);
+        const auto& k = colour->chromaticities;
+        const std::array<double, 8> got{k.red[0], k.red[1], k.green[0], k.green[1], k.blue[0], k.blue[1], k.white[0], k.white[1]};
+        for (int i = 0; i < 8; ++i) EXPECT_NEAR(got[i], c.xy[i], 5e-4) << c.name << " " << i;
+    }
+    // An EXR written without them has none.
+    write_exr(dir.path() / "plain.exr", Image(2, 2));
+    EXPECT_FALSE(read_exr_colour(dir.path() / "plain.exr"));
+}
+
 // The seed's claim: in a room with occluders, the distance impostor beats classic environment mapping, and more
 // iterations help.
 TEST(PreviewGpu, ErrorFallsFromClassicToOneToFourIterationsInTheDifficultRoom) {

@@ -81,11 +81,29 @@ Image read_image(const std::filesystem::path& file) {
     return image;
 }
 
-void write_exr(const std::filesystem::path& file, const Image& image) {
+void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour) {
     OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::HALF);
     spec.channelnames = {"R", "G", "B"};
     spec.attribute("compression", "zip");
+    if (colour) {
+        const Chromaticities& c = colour->chromaticities;
+        const float xy[8] = {static_cast<float>(c.red[0]),   static_cast<float>(c.red[1]),
+                             static_cast<float>(c.green[0]), static_cast<float>(c.green[1]),
+                             static_cast<float>(c.blue[0]),  static_cast<float>(c.blue[1]),
+                             static_cast<float>(c.white[0]), static_cast<float>(c.white[1])};
+        spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), xy);
+        spec.attribute("colorSpace", colour->space);
+    }
     write_pixels(file, spec, OIIO::TypeDesc::FLOAT, image.rgb.data());
+}
+
+std::optional<ExrColour> read_exr_colour(const std::filesystem::path& file) {
+    auto in = open_checked(file);
+    const OIIO::ImageSpec& spec = in->spec();
+    float xy[8];
+    if (!spec.getattribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), xy)) return std::nullopt;
+    return ExrColour{{{{xy[0], xy[1]}}, {{xy[2], xy[3]}}, {{xy[4], xy[5]}}, {{xy[6], xy[7]}}},
+                     spec.get_string_attribute("colorSpace")};
 }
 
 void write_png(const std::filesystem::path& file, const Image& image, const DisplayTransform& display) {

@@ -39,7 +39,7 @@ void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, 
             if (run->output_dir.empty()) return;
             const std::filesystem::path path = run->output_file(file);
             if (png) write_png(path, image_of(r.get(image)), *run->display);
-            else write_exr(path, image_of(r.get(image)));
+            else write_exr(path, image_of(r.get(image)), run->exr_colour ? &*run->exr_colour : nullptr);
         });
 }
 

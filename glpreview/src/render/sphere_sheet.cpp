@@ -129,7 +129,8 @@ SphereSheet render_sphere_sheet(const Scene& base, const std::vector<std::string
     check_sheet_scene(base);
     FresnelLibrary library(options.data_dir, options.ocio, base.space, base.file);
     Scene scene = base;
-    PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, {}, {}};
+    PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, {}, {}, {}};
+    run.exr_colour = ExrColour{chromaticities_of(library.converter()), library.converter().space()};
     graph::PassGraph graph;
     const graph::Handle<Json> record = add_sheet_passes(graph, base, scene, materials, &library, &run);
     graph.before_first_gpu_pass([&run] { run.open_gl(); });

@@ -3,9 +3,11 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "glpreview/io/image.hpp"
+#include "libfit/color/chromaticities.hpp"
 #include "libfit/color/display_transform.hpp"
 
 namespace metalfit::glpreview {
@@ -18,8 +20,18 @@ inline constexpr long long kMaxInputImagePixels = 1LL << 27;
 // Any OpenImageIO file (a regular file: FIFOs and devices are refused); RGB (a grey image is expanded, alpha dropped). Throws InputError naming the file.
 Image read_image(const std::filesystem::path& file);
 
-// Throws InputError naming the file when it cannot be written; never leaves a partial file.
-void write_exr(const std::filesystem::path& file, const Image& image);
+// What an EXR says about its pixels besides them (docs/preview.md, "Outputs"): the working space's primaries and
+// white (the standard `chromaticities` attribute) and its OCIO name (`colorSpace`, a string attribute).
+struct ExrColour {
+    Chromaticities chromaticities;
+    std::string space;
+};
+
+// Throws InputError naming the file when it cannot be written; never leaves a partial file. Without `colour` the
+// file carries no chromaticities (readers then assume Rec.709).
+void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour = nullptr);
+// The chromaticities and colour space an EXR says it holds (nothing when it carries no `chromaticities`).
+std::optional<ExrColour> read_exr_colour(const std::filesystem::path& file);
 
 void write_png(const std::filesystem::path& file, const Image& image, const DisplayTransform& display);
 

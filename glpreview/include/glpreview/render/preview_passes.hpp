@@ -46,6 +46,7 @@ struct PreviewRun {
     std::string renderer_name;                  // GL_RENDERER once a GPU pass ran
     std::optional<GpuRenderer> gpu;
     std::optional<DisplayTransform> display;
+    std::optional<ExrColour> exr_colour;        // the scene's space, written into every EXR
     std::optional<OutputStaging> staging;       // made by the first file written
     std::vector<std::filesystem::path> written;  // final paths (output_dir / name), valid after commit_outputs()
 
