@@ -9,20 +9,10 @@
 #include "libfit/models/registry.hpp"
 #include "metalfit_bench/reference_lut.hpp"
 #include "exact_real_kernel.hpp"
+#include "opaque.hpp"
 
 namespace metalfit::bench {
 namespace {
-
-// Hides a value from the optimiser (it may have changed), without a memory round trip: one μ at a time.
-inline void opaque(float& v) {
-#if defined(__x86_64__) || defined(__i386__)
-    asm volatile("" : "+x"(v));
-#elif defined(__aarch64__)
-    asm volatile("" : "+w"(v));
-#else
-    asm volatile("" : "+m"(v) : : "memory");
-#endif
-}
 
 // The most parameters any registered model has.
 constexpr std::size_t kMaxParameters = [] {

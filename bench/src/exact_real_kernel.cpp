@@ -5,22 +5,9 @@
 
 #include "libfit/models/registry.hpp"
 #include "libfit/optics/fresnel_real.hpp"
+#include "opaque.hpp"
 
 namespace metalfit::bench {
-namespace {
-
-// Hides a value from the optimiser, one μ at a time (as eval_kernels.cpp's scalar loops).
-inline void opaque(float& v) {
-#if defined(__x86_64__) || defined(__i386__)
-    asm volatile("" : "+x"(v));
-#elif defined(__aarch64__)
-    asm volatile("" : "+w"(v));
-#else
-    asm volatile("" : "+m"(v) : : "memory");
-#endif
-}
-
-}  // namespace
 
 EvalKernel exact_real_kernel(const PreparedMaterial& material) {
     const ModelParameters& nk = material.params(models::ConductorRgb::kId);
