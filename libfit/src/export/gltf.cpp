@@ -150,28 +150,21 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
                 const RGB t = f82->params.parameter(1);
                 tint = Json::array({t.r, t.g, t.b});
             }
-            const Json provenance = {
-                {"schema", "metalfit.gltf/1"},
-                {"metalfit_version", METALFIT_VERSION},
-                {"material", m.fit->material.id},
-                {"name", m.fit->material.name},
-                {"source", m.fit->material.source},
-                {"provenance", header_provenance_lines(m.fit->material, context.record)},
-                {"color_space", context.record.space},
-                {"model", w.model->id()},
-                {"from", w.origin},
-                {"params", params},
-                {"gamut", to_string(context.request.gamut)},
-                {"out_of_gamut", w.gamut},
-                {"f0", Json::array({base.f0.r, base.f0.g, base.f0.b})},
-                {"base_color_factor", base.adjustment.empty() ? std::string("F0 of the curve (the model at mu = 1)")
-                                                               : "F0 of the curve (the model at mu = 1); " + base.adjustment},
-                {"f82_tint", tint},
-                {"f82_tint_note", "not in the material: KHR_materials_specular's specularColorFactor tints the dielectric "
-                                  "F0 only and leaves the metal BRDF (Schlick from baseColor to 1) as it is, so glTF "
-                                  "metals have no F82 tint"},
-                {"roughness", context.request.roughness},
-                {"metrics", metrics_record(mt)}};
+            Json provenance = material_identity_json("metalfit.gltf/1", m.fit->material, context.record, w.model->id());
+            provenance["from"] = w.origin;
+            provenance["params"] = params;
+            provenance["gamut"] = to_string(context.request.gamut);
+            provenance["out_of_gamut"] = w.gamut;
+            provenance["f0"] = Json::array({base.f0.r, base.f0.g, base.f0.b});
+            provenance["base_color_factor"] = base.adjustment.empty()
+                                                  ? std::string("F0 of the curve (the model at mu = 1)")
+                                                  : "F0 of the curve (the model at mu = 1); " + base.adjustment;
+            provenance["f82_tint"] = tint;
+            provenance["f82_tint_note"] = "not in the material: KHR_materials_specular's specularColorFactor tints the "
+                                          "dielectric F0 only and leaves the metal BRDF (Schlick from baseColor to 1) as "
+                                          "it is, so glTF metals have no F82 tint";
+            provenance["roughness"] = context.request.roughness;
+            provenance["metrics"] = metrics_record(mt);
             const std::size_t vertex_bytes = mesh.positions_bytes;
             Json j = {
                 {"asset", {{"version", "2.0"}, {"generator", "metalfit " METALFIT_VERSION}}},

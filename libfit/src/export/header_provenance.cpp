@@ -1,6 +1,7 @@
 #include "export/header_provenance.hpp"
 
 #include "libfit/base/text.hpp"
+#include "libfit/base/version.hpp"
 
 namespace metalfit::detail {
 
@@ -17,6 +18,18 @@ std::vector<std::string> header_provenance_lines(const Material& m, const FitRec
                     describe_adaptation(r.adaptation, r.adapted, r.illuminant));
     for (const std::string& warning : m.warnings) lines.push_back("DATA WARNING: " + warning);
     return lines;
+}
+
+nlohmann::ordered_json material_identity_json(std::string_view schema, const Material& material,
+                                              const FitRecordContext& record, std::string_view model) {
+    return {{"schema", schema},
+            {"metalfit_version", METALFIT_VERSION},
+            {"material", material.id},
+            {"name", material.name},
+            {"source", material.source},
+            {"provenance", header_provenance_lines(material, record)},
+            {"color_space", record.space},
+            {"model", model}};
 }
 
 }  // namespace metalfit::detail

@@ -4,7 +4,10 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "libfit/fit/fit_record.hpp"
 #include "libfit/io/material.hpp"
@@ -14,5 +17,11 @@ namespace metalfit::detail {
 // One line each, no prefix and no newline: "data source: …", "reference: …", "caveat: …" (only when the material
 // has a note), "colour space: …".
 std::vector<std::string> header_provenance_lines(const Material& material, const FitRecordContext& record);
+
+// The identity that opens every per-material JSON document (glTF extras, OpenPBR parameters): `schema`,
+// `metalfit_version`, `material`, `name`, `source`, `provenance` (the lines above), `color_space` and `model`, in
+// that order; each format appends its own keys after them.
+nlohmann::ordered_json material_identity_json(std::string_view schema, const Material& material,
+                                              const FitRecordContext& record, std::string_view model);
 
 }  // namespace metalfit::detail

@@ -35,27 +35,19 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
             }
             const WrittenParameters& w = *f82;
             const Metrics& mt = w.metrics;
-            Json j = {{"schema", "metalfit.openpbr/1"},
-                      {"metalfit_version", METALFIT_VERSION},
-                      {"material", m.fit->material.id},
-                      {"name", m.fit->material.name},
-                      {"source", m.fit->material.source},
-                      {"provenance", header_provenance_lines(m.fit->material, context.record)},
-                      {"color_space", context.record.space},
-                      {"model", e.written.model->id()},
-                      {"written_as", "f82-tint"},
-                      {"from", w.origin},
-                      {"note", note},
-                      {"gamut", to_string(context.request.gamut)},
-                      {"out_of_gamut", w.gamut},
-                      {"open_pbr_surface",
-                       {{"base_weight", 1.0},
-                        {"base_color", colour(w.params, 0)},
-                        {"base_metalness", 1.0},
-                        {"specular_weight", 1.0},
-                        {"specular_color", colour(w.params, 1)},
-                        {"specular_roughness", context.request.roughness}}},
-                      {"metrics", metrics_record(mt)}};
+            Json j = material_identity_json("metalfit.openpbr/1", m.fit->material, context.record, e.written.model->id());
+            j["written_as"] = "f82-tint";
+            j["from"] = w.origin;
+            j["note"] = note;
+            j["gamut"] = to_string(context.request.gamut);
+            j["out_of_gamut"] = w.gamut;
+            j["open_pbr_surface"] = {{"base_weight", 1.0},
+                                     {"base_color", colour(w.params, 0)},
+                                     {"base_metalness", 1.0},
+                                     {"specular_weight", 1.0},
+                                     {"specular_color", colour(w.params, 1)},
+                                     {"specular_roughness", context.request.roughness}};
+            j["metrics"] = metrics_record(mt);
             files.push_back({"openpbr/" + stem + ".json", j.dump(2) + "\n"});
 
             pugi::xml_document doc;
