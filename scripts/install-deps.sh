@@ -15,6 +15,7 @@ PACKAGES=(
   libssl-dev                           # SHA-256 of data files (OpenSSL libcrypto)
   libpugixml-dev                       # XML: MaterialX exports written and checked with pugixml
   glslang-tools                        # glslangValidator: compiles the models' GLSL in the tests
+  pngcheck                             # reads back the colour chunks of glpreview's PNGs (a test)
   libbenchmark-dev                     # Google Benchmark: bench/ (metalfit_benchmarks)
   libopengl-dev libegl-dev             # glpreview: GL 4.5 core through libglvnd, headless EGL
   libegl-mesa0 libgl1-mesa-dri         # Mesa's EGL and llvmpipe: the preview runs without a GPU
