@@ -24,7 +24,7 @@ PACKAGES=(
 )
 # npm (from Debian's nodejs + npm unless a node with its own npm is already on PATH): installs the report's chart
 # libraries (vega, vega-lite, vega-embed), playwright-core and the export consumer of the tests (@needle-tools/materialx:
-# MaterialX 1.39.4 as WebAssembly), and the JSON Schema validator of the records' test (ajv), pinned in package.json +
+# MaterialX 1.39.4 as WebAssembly; three.js, whose GLTFLoader loads the glTF exports in chromium), and the JSON Schema validator of the records' test (ajv), pinned in package.json +
 # package-lock.json.
 command -v npm >/dev/null 2>&1 || PACKAGES+=(nodejs npm)
 
