@@ -15,6 +15,7 @@ PACKAGES=(
   libssl-dev                           # SHA-256 of data files (OpenSSL libcrypto)
   libpugixml-dev                       # XML: MaterialX exports written and checked with pugixml
   glslang-tools                        # glslangValidator: compiles the models' GLSL in the tests
+  pngcheck                             # reads back the colour chunks of glpreview's PNGs (a test)
   libbenchmark-dev                     # Google Benchmark: bench/ (metalfit_benchmarks)
   libopengl-dev libegl-dev             # glpreview: GL 4.5 core through libglvnd, headless EGL
   libegl-mesa0 libgl1-mesa-dri         # Mesa's EGL and llvmpipe: the preview runs without a GPU
@@ -23,7 +24,8 @@ PACKAGES=(
 )
 # npm (from Debian's nodejs + npm unless a node with its own npm is already on PATH): installs the report's chart
 # libraries (vega, vega-lite, vega-embed), playwright-core and the export consumer of the tests (@needle-tools/materialx:
-# MaterialX 1.39.4 as WebAssembly), pinned in package.json + package-lock.json.
+# MaterialX 1.39.4 as WebAssembly; three.js, whose GLTFLoader loads the glTF exports in chromium), and the JSON Schema validator of the records' test (ajv), pinned in package.json +
+# package-lock.json.
 command -v npm >/dev/null 2>&1 || PACKAGES+=(nodejs npm)
 
 missing=()

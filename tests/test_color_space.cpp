@@ -11,6 +11,7 @@
 
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
+#include "libfit/color/display_transform.hpp"
 #include "libfit/base/errors.hpp"
 
 namespace metalfit {
@@ -136,6 +137,39 @@ TEST(ColorSpace, EnvironmentVariableWinsOverCommandLineOverDefault) {
     EXPECT_EQ(choose_ocio_config(std::nullopt, "/data").origin, "$OCIO");
     if (saved) ::setenv("OCIO", saved_value.c_str(), 1);
     else ::unsetenv("OCIO");
+}
+
+// The display's encoding is measured (what glpreview's PNG chunks say): the shipped sRGB display is the sRGB curve on
+// Rec.709 / D65; the same display made Rec.1886 (a pure 2.4 power law, Rec.709 primaries) is `gamma` 2.4; made
+// Rec.1886 on Rec.2020 primaries it is `other` (no PNG chunk could say so); a config without the XYZ role is `other`.
+TEST(DisplayTransform, TheDisplaysEncodingIsMeasuredThroughOcio) {
+    const DisplayEncoding shipped = DisplayTransform::create(kShipped).encoding();
+    EXPECT_EQ(shipped.kind, DisplayEncoding::Kind::srgb) << shipped.why;
+    EXPECT_EQ(shipped.display_space, "sRGB - Display");
+
+    std::ifstream in(kConfig);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string srgb = "{style: DISPLAY - CIE-XYZ-D65_to_sRGB}";
+    ASSERT_NE(text.find(srgb), std::string::npos);
+    const auto with_display = [&](const std::string& name, const std::string& style) {
+        std::string t = text;
+        t.replace(t.find(srgb), srgb.size(), "{style: " + style + "}");
+        return DisplayTransform::create({write_temp_config(name, t), "test"}).encoding();
+    };
+    const DisplayEncoding bt1886 = with_display("bt1886.ocio", "DISPLAY - CIE-XYZ-D65_to_REC.1886-REC.709");
+    EXPECT_EQ(bt1886.kind, DisplayEncoding::Kind::gamma) << bt1886.why;
+    EXPECT_NEAR(bt1886.gamma, 2.4, 1e-3);
+    const DisplayEncoding rec2020 = with_display("rec2020.ocio", "DISPLAY - CIE-XYZ-D65_to_REC.1886-REC.2020");
+    EXPECT_EQ(rec2020.kind, DisplayEncoding::Kind::other);
+    EXPECT_NE(rec2020.why.find("primaries"), std::string::npos) << rec2020.why;
+
+    std::string no_role = text;
+    const std::string role = "  cie_xyz_d65_interchange: CIE-XYZ-D65\n";
+    no_role.erase(no_role.find(role), role.size());
+    const DisplayEncoding unmeasured = DisplayTransform::create({write_temp_config("no-role.ocio", no_role), "test"}).encoding();
+    EXPECT_EQ(unmeasured.kind, DisplayEncoding::Kind::other);
+    EXPECT_NE(unmeasured.why.find("cie_xyz_d65_interchange"), std::string::npos) << unmeasured.why;
+    std::filesystem::remove_all(std::filesystem::temp_directory_path() / "metalfit-test-ocio");
 }
 
 }  // namespace

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
+#include <fstream>
+#include <variant>
 #include <map>
 #include <cmath>
 #include <numbers>
@@ -16,10 +19,12 @@
 #include "glpreview/render/gpu_bench.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/io/image_io.hpp"
+#include "glpreview/render/sphere_fresnel.hpp"
 #include "glpreview/render/preview.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/color/color_space.hpp"
+#include "libfit/base/version.hpp"
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
@@ -392,6 +397,89 @@ TEST(PreviewGpu, ExrOutputsCarryTheChromaticitiesOfTheScenesSpace) {
     // An EXR written without them has none.
     write_exr(dir.path() / "plain.exr", Image(2, 2));
     EXPECT_FALSE(read_exr_colour(dir.path() / "plain.exr"));
+}
+
+// The chunks of a PNG file: type → data (read here from the file's bytes, not through the writer's library).
+std::map<std::string, std::string> png_chunks(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::map<std::string, std::string> chunks;
+    EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+    for (std::size_t at = 8; at + 12 <= bytes.size();) {
+        const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(bytes[i]); };
+        const std::size_t length = (std::size_t(byte(at)) << 24) | (byte(at + 1) << 16) | (byte(at + 2) << 8) | byte(at + 3);
+        chunks[bytes.substr(at + 4, 4)] += bytes.substr(at + 8, length);
+        at += 12 + length;
+    }
+    return chunks;
+}
+std::vector<unsigned> big_endian_words(const std::string& data) {
+    std::vector<unsigned> words;
+    for (std::size_t i = 0; i + 4 <= data.size(); i += 4)
+        words.push_back((unsigned(static_cast<unsigned char>(data[i])) << 24) | (unsigned(static_cast<unsigned char>(data[i + 1])) << 16) |
+                        (unsigned(static_cast<unsigned char>(data[i + 2])) << 8) | unsigned(static_cast<unsigned char>(data[i + 3])));
+    return words;
+}
+
+// Issue 20 item 5: each EXR names its spheres (material, model, parameters, roughness) and every image; each PNG of
+// metalfit's sRGB display says so with sRGB, gAMA and cHRM chunks (PNG 1.2 §4.2: gAMA 45455, cHRM of Rec.709 / D65
+// in units of 1e-5).
+TEST(PreviewGpu, ExrHeadersNameEverySphereAndPngsCarryTheirSrgbChunks) {
+    test::TempDir dir;
+    Scene scene;
+    scene.file = dir.path() / "scene.json";
+    scene.width = 16;
+    scene.height = 12;
+    Sphere gold;
+    gold.reflection = ReflectionMode::classic;
+    Sphere copper;
+    copper.center = {1.1, 0.9, 0};
+    copper.material = "Cu";
+    copper.fresnel = ModelFresnel{"f82-tint", ParameterSource::fit};
+    copper.reflection = ReflectionMode::box_parallax;
+    copper.roughness = 0.25;
+    copper.glossy = GlossyMethod::prefiltered;
+    scene.spheres = {gold, copper};
+    scene.outputs.reference_samples = 4;
+    PreviewOptions o = options();
+    o.output_dir = dir.path() / "out";
+    run_preview(scene, o, &gl());
+
+    FresnelLibrary library(kData, o.ocio, "", scene.file);
+    const SphereFresnel& fitted = library.get(copper, "copper");
+    std::string parameters;
+    char text[64];
+    for (std::size_t i = 0; i < 2; ++i) {
+        const RGB v = fitted.parameters.parameter(i);
+        std::snprintf(text, sizeof text, "%s = (%.9g, %.9g, %.9g)", i ? "; tint" : "F0", v.r, v.g, v.b);
+        parameters += text;
+    }
+    for (const std::string image : {"beauty.exr", "reference.exr", "difference.exr"}) {
+        std::map<std::string, std::variant<std::string, float, int>> got;
+        for (const ExrAttribute& a : read_image_metadata(o.output_dir / image, "metalfit/")) got[a.name] = a.value;
+        using V = std::variant<std::string, float, int>;
+        const std::map<std::string, V> expected{
+            {"metalfit/version", V(std::string(METALFIT_VERSION))}, {"metalfit/image", V(image)},
+            {"metalfit/scene", V(std::string("scene.json"))}, {"metalfit/spheres", V(2)},
+            {"metalfit/sphere0/material", V(std::string("Au"))}, {"metalfit/sphere0/name", V(std::string("gold"))},
+            {"metalfit/sphere0/source", V(std::string("Johnson"))}, {"metalfit/sphere0/model", V(std::string("reference"))},
+            {"metalfit/sphere0/roughness", V(0.0f)}, {"metalfit/sphere0/reflection", V(std::string("classic"))},
+            {"metalfit/sphere1/material", V(std::string("Cu"))}, {"metalfit/sphere1/name", V(std::string("copper"))},
+            {"metalfit/sphere1/source", V(std::string("Johnson"))}, {"metalfit/sphere1/model", V(std::string("f82-tint"))},
+            {"metalfit/sphere1/params", V(std::string("fit"))}, {"metalfit/sphere1/parameters", V(parameters)},
+            {"metalfit/sphere1/roughness", V(0.25f)}, {"metalfit/sphere1/reflection", V(std::string("box-parallax"))}};
+        EXPECT_EQ(got, expected) << image;
+    }
+    for (const std::string image : {"beauty.png", "reference.png", "difference.png"}) {
+        const auto chunks = png_chunks(o.output_dir / image);
+        ASSERT_TRUE(chunks.count("sRGB")) << image;
+        EXPECT_EQ(chunks.at("sRGB").size(), 1u);
+        ASSERT_TRUE(chunks.count("gAMA")) << image;
+        EXPECT_EQ(big_endian_words(chunks.at("gAMA")), std::vector<unsigned>{45455});
+        ASSERT_TRUE(chunks.count("cHRM")) << image;
+        EXPECT_EQ(big_endian_words(chunks.at("cHRM")),
+                  (std::vector<unsigned>{31270, 32900, 64000, 33000, 30000, 60000, 15000, 6000}));  // white, R, G, B
+    }
 }
 
 // The seed's claim: in a room with occluders, the distance impostor beats classic environment mapping, and more

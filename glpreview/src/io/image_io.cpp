@@ -81,7 +81,7 @@ Image read_image(const std::filesystem::path& file) {
     return image;
 }
 
-void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour) {
+void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour, const ExrMetadata& metadata) {
     OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::HALF);
     spec.channelnames = {"R", "G", "B"};
     spec.attribute("compression", "zip");
@@ -94,7 +94,25 @@ void write_exr(const std::filesystem::path& file, const Image& image, const ExrC
         spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), xy);
         spec.attribute("colorSpace", colour->space);
     }
+    for (const ExrAttribute& a : metadata) {
+        if (const auto* text = std::get_if<std::string>(&a.value)) spec.attribute(a.name, *text);
+        else if (const auto* f = std::get_if<float>(&a.value)) spec.attribute(a.name, *f);
+        else spec.attribute(a.name, std::get<int>(a.value));
+    }
     write_pixels(file, spec, OIIO::TypeDesc::FLOAT, image.rgb.data());
+}
+
+ExrMetadata read_image_metadata(const std::filesystem::path& file, const std::string& prefix) {
+    auto in = open_checked(file);
+    ExrMetadata out;
+    for (const OIIO::ParamValue& p : in->spec().extra_attribs) {
+        const std::string name = p.name().string();
+        if (name.rfind(prefix, 0) != 0) continue;
+        if (p.type() == OIIO::TypeDesc::STRING) out.push_back({name, std::string(p.get_ustring().string())});
+        else if (p.type() == OIIO::TypeDesc::FLOAT) out.push_back({name, p.get_float()});
+        else if (p.type() == OIIO::TypeDesc::INT) out.push_back({name, p.get_int()});
+    }
+    return out;
 }
 
 std::optional<ExrColour> read_exr_colour(const std::filesystem::path& file) {
@@ -109,6 +127,12 @@ std::optional<ExrColour> read_exr_colour(const std::filesystem::path& file) {
 void write_png(const std::filesystem::path& file, const Image& image, const DisplayTransform& display) {
     const std::vector<unsigned char> pixels = display.apply(image.rgb, image.width, image.height);
     OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+    // OpenImageIO's PNG writer turns "sRGB" into the sRGB chunk with gAMA 0.45455 and cHRM of Rec.709 / D65, and
+    // "Gamma<g>" into gAMA 1/g. Another display (other primaries, another curve) gets no colour chunk: none would be true.
+    const DisplayEncoding& encoding = display.encoding();
+    if (encoding.kind == DisplayEncoding::Kind::srgb) spec.attribute("oiio:ColorSpace", "sRGB");
+    else if (encoding.kind == DisplayEncoding::Kind::gamma)
+        spec.attribute("oiio:ColorSpace", "Gamma" + std::to_string(encoding.gamma));
     write_pixels(file, spec, OIIO::TypeDesc::UINT8, pixels.data());
 }
 

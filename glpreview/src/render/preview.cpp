@@ -1,5 +1,6 @@
 #include "glpreview/render/preview.hpp"
 
+#include "glpreview/render/exr_metadata.hpp"
 #include "glpreview/render/preview_passes.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
 
@@ -14,6 +15,7 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     run.exr_colour = ExrColour{chromaticities_of(library.converter()), library.converter().space()};
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
         run.fresnel.push_back(&library.get(scene.spheres[i], "spheres[" + std::to_string(i) + "]"));
+    run.exr_metadata = sphere_metadata(scene, run.fresnel);
 
     graph::PassGraph graph;
     const Features features = plan_features(scene);

@@ -2,6 +2,7 @@
 
 #include "glpreview/render/dfg_table.hpp"
 #include "glpreview/render/environment.hpp"
+#include "glpreview/render/exr_metadata.hpp"
 #include "glpreview/render/monte_carlo_reference.hpp"
 #include "glpreview/render/scene_colour.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
@@ -39,7 +40,8 @@ void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, 
             if (run->output_dir.empty()) return;
             const std::filesystem::path path = run->output_file(file);
             if (png) write_png(path, image_of(r.get(image)), *run->display);
-            else write_exr(path, image_of(r.get(image)), run->exr_colour ? &*run->exr_colour : nullptr);
+            else write_exr(path, image_of(r.get(image)), run->exr_colour ? &*run->exr_colour : nullptr,
+                           image_metadata(run->exr_metadata, file));
         });
 }
 

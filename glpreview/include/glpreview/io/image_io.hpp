@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "glpreview/io/image.hpp"
 #include "libfit/color/chromaticities.hpp"
@@ -27,9 +29,19 @@ struct ExrColour {
     std::string space;
 };
 
+// A named header attribute of an EXR (docs/preview.md, "Outputs"): a string, a float or an int.
+struct ExrAttribute {
+    std::string name;  // "metalfit/sphere0/material"
+    std::variant<std::string, float, int> value;
+};
+using ExrMetadata = std::vector<ExrAttribute>;
+
 // Throws InputError naming the file when it cannot be written; never leaves a partial file. Without `colour` the
-// file carries no chromaticities (readers then assume Rec.709).
-void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour = nullptr);
+// file carries no chromaticities (readers then assume Rec.709); `metadata` goes into the header as it is.
+void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour = nullptr,
+               const ExrMetadata& metadata = {});
+// Every header attribute of an image whose name starts with `prefix`, as OpenImageIO reads it back.
+ExrMetadata read_image_metadata(const std::filesystem::path& file, const std::string& prefix);
 // The chromaticities and colour space an EXR says it holds (nothing when it carries no `chromaticities`).
 std::optional<ExrColour> read_exr_colour(const std::filesystem::path& file);
 

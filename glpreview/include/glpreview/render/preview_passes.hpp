@@ -49,6 +49,7 @@ struct PreviewRun {
     std::optional<ExrColour> exr_colour;        // the scene's space, written into every EXR
     std::optional<OutputStaging> staging;       // made by the first file written
     std::vector<std::filesystem::path> written;  // final paths (output_dir / name), valid after commit_outputs()
+    ExrMetadata exr_metadata = {};               // the spheres (render/exr_metadata.hpp), written into every EXR
 
     void open_gl();             // the context (if none) and the renderer; called before the first GPU pass
     GpuRenderer& renderer();

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# ctest json_schemas.records: writes every kind of JSON record
+# metalfit writes (fit --json plain, pinned and with a budget; metalfit_export.json of the catalog export and of two
+# exports merged into one folder; openpbr/*.json; the glTF extras; show --json; table --format json; report.json;
+# bench --json; glpreview's metrics.json when glpreview is given) and validates each against schemas/ with Ajv
+# (json_schemas.mjs); then has json_schemas.mjs --broken break each record in many ways and checks that every broken
+# copy is refused (the schemas can fail).
+# Usage: METALFIT GLPREVIEW|- NODE NODE_MODULES SCHEMAS_DIR CATALOG_EXPORT_DIR
+set -euo pipefail
+metalfit="$1" glpreview="$2" node="$3" modules="$4" schemas="$5" catalog_export="$6"
+here="$(cd "$(dirname "$0")" && pwd)"
+dir="$(mktemp -d)"
+trap 'rm -rf "$dir"' EXIT
+export OCIO=
+"$metalfit" fit Au,Cu,Zn,TiN --model all --json -o "$dir/fit.json"
+"$metalfit" fit Au --model f82-tint,schlick --pin F0 --json -o "$dir/fit-pinned.json"
+"$metalfit" fit Cu,Al --model all --budget 0.5% --json -o "$dir/fit-budget.json"
+"$metalfit" export Au --model all --format json,openpbr,gltf -o "$dir/ex" 2>/dev/null
+"$metalfit" export Cu --model f82-tint,conductor-rgb --format json,openpbr,gltf --params closed --gamut scale --roughness 0.05 -o "$dir/ex" 2>/dev/null
+"$metalfit" show Au --json > "$dir/show.json"
+"$metalfit" show Zn --space ACEScg --json > "$dir/show-acescg.json"
+"$metalfit" table --format json -o "$dir/table.json"
+"$metalfit" report Au,Cu --renders off -o "$dir/report" > /dev/null
+# The GPU sections of bench need glpreview: without one they are skipped, which the schema describes too.
+"$metalfit" bench --quick --json --glpreview "$dir/no-glpreview" -o "$dir/bench.json" 2>/dev/null
+# The catalog export of the build (every material and model) and its OpenPBR and glTF files of the materials a…
+files=("$dir"/*.json "$dir/ex/metalfit_export.json" "$dir"/ex/openpbr/*.json "$dir"/ex/gltf/*.gltf "$dir/report/report.json"
+       "$catalog_export/metalfit_export.json" "$catalog_export"/openpbr/metalfit_a*.json "$catalog_export"/gltf/metalfit_a*.gltf)
+if [ "$glpreview" != - ]; then
+  cat > "$dir/scene.json" <<'EOF'
+{
+  "image": {"width": 48, "height": 32},
+  "camera": {"position": [0.0, 1.3, 2.6], "look_at": [0.0, 1.0, 0.0], "fov_y_deg": 50},
+  "environment": {"type": "room", "min": [-3, 0, -3], "max": [3, 3, 3], "reference_point": [0, 1.2, 0]},
+  "spheres": [
+    {"center": [-1.1, 0.9, 0.0], "radius": 0.5, "material": "Au", "fresnel": "reference", "reflection": "classic"},
+    {"center": [0.0, 0.9, 0.0], "radius": 0.5, "material": "Cu", "fresnel": "f82-tint", "reflection": "box-parallax", "roughness": 0.2},
+    {"center": [1.1, 0.9, 0.0], "radius": 0.5, "material": "Ag", "fresnel": "schlick", "reflection": "distance-impostor",
+     "strategy": "false-position", "iterations": 4}
+  ],
+  "outputs": {"beauty": false, "reference": false, "difference": false, "metrics": true, "reference_samples": 16}
+}
+EOF
+  "$glpreview" "$dir/scene.json" -o "$dir/preview" > /dev/null
+  files+=("$dir/preview/metrics.json")
+fi
+"$node" "$here/json_schemas.mjs" "$modules" "$schemas" "${files[@]}"
+"$node" "$here/json_schemas.mjs" "$modules" "$schemas" --broken "${files[@]}"
