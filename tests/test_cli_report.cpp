@@ -260,6 +260,11 @@ TEST_F(Report, RendersOneColumnGroupPerModelOfTheReport) {
     // Each material page finds its row.
     for (const Json& m : report["materials"])
         EXPECT_EQ(renders["rows"][m["render_row"].get<int>()]["material"], m["id"]);
+    // A rerun with renders is byte-identical too (the labelled PNG included).
+    const fs::path again = tmp_.path() / "again";
+    ASSERT_EQ(run("report Au,Zn --model f82-tint,schlick,conductor-rgb --renders on -o '" + again.string() + "'").exit_code, 0);
+    ASSERT_EQ(files_below(dir), files_below(again));
+    for (const fs::path& f : files_below(dir)) EXPECT_EQ(read_file(dir / f), read_file(again / f)) << f;
 }
 
 // Without glpreview beside metalfit, --renders auto still writes the report and says why there are no renders.
