@@ -19,6 +19,7 @@ PACKAGES=(
   libbenchmark-dev                     # Google Benchmark: bench/ (metalfit_benchmarks)
   libopengl-dev libegl-dev             # glpreview: GL 4.5 core through libglvnd, headless EGL
   libegl-mesa0 libgl1-mesa-dri         # Mesa's EGL and llvmpipe: the preview runs without a GPU
+  fonts-dejavu-core                    # DejaVu Sans: glpreview's sheet labels (OpenImageIO render_text finds it)
   chromium                             # metalfit report: the browser test opens the pages headless
   clang libclang-rt-14-dev             # the optional fuzz preset: clang with libFuzzer and the sanitizers (fuzz/)
 )

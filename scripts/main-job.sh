@@ -11,7 +11,7 @@
 #                                   export-summary.md: what the MaterialX documents cost where they differ from the fit
 #   preview/                        glpreview (docs/preview.md): the difficult room (beauty | CPU reference | difference,
 #                                   EXR + PNG, metrics.json) and the sphere sheet sheet.png: per metal, reference |
-#                                   best fitted model | |difference| x 10, distance impostor in the difficult room
+#                                   best fitted model | |difference| x 10, labelled, distance impostor in the difficult room
 #   report/                         `metalfit report --all --model all`: open report/index.html in a browser (the catalog,
 #                                   a page per material, report.json; docs/report.md); renders through glpreview
 set -euo pipefail

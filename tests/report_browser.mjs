@@ -91,6 +91,12 @@ for (const m of report.materials) {
   if (report.renders.skipped === undefined && m.render_row != null) {
     const loaded = await page.evaluate(() => { const img = document.getElementById('render'); return img && img.complete && img.naturalWidth > 0; });
     check(loaded, `${m.page}: the render did not load`);
+    // One render per shown model (reference | model | |difference| x 10), each model named once, in the report's order.
+    const shown = await page.evaluate(() => [...document.querySelectorAll('figure.render-model')].map((f) => f.dataset.model));
+    check(JSON.stringify(shown) === JSON.stringify(report.renders.models), `${m.page}: renders of ${shown.join(',')}, models ${report.renders.models.join(',')}`);
+    check(JSON.stringify(shown) === JSON.stringify(report.models.map((x) => x.id)), `${m.page}: the renders are not the report's models`);
+    const cells = await page.evaluate(() => document.querySelectorAll('figure.render-model img.render-cell').length);
+    check(cells === 3 * report.renders.models.length, `${m.page}: ${cells} render cells, not 3 per model`);
   } else {
     const text = await page.evaluate(() => document.body.innerText);
     check(/renders skipped: /.test(text), `${m.page}: neither a render nor "renders skipped: <reason>"`);

@@ -214,4 +214,73 @@ TEST_F(Report, FailuresAreOneLineWithTheirExitCodeAndLeaveNothing) {
     EXPECT_EQ(read_file(tmp_.path() / "file"), "x");
 }
 
+
+// The PNG's size from its IHDR chunk (bytes 16–23, big-endian).
+std::pair<int, int> png_size(const std::string& png) {
+    auto be32 = [&](std::size_t at) {
+        return (int(static_cast<unsigned char>(png[at])) << 24) | (int(static_cast<unsigned char>(png[at + 1])) << 16) |
+               (int(static_cast<unsigned char>(png[at + 2])) << 8) | int(static_cast<unsigned char>(png[at + 3]));
+    };
+    return {be32(16), be32(20)};
+}
+
+// Issue 16: the renders per model, reference | model | |difference| x 10, from glpreview's sheet with the report's
+// models (one column group each).
+TEST_F(Report, RendersOneColumnGroupPerModelOfTheReport) {
+    const fs::path glpreview = fs::path(METALFIT_EXE).parent_path() / "glpreview";
+    if (!fs::exists(glpreview)) GTEST_SKIP() << "glpreview not built";
+    const fs::path dir = tmp_.path() / "r";
+    const auto r = run("report Au,Zn --model f82-tint,schlick,conductor-rgb --renders on -o '" + dir.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Json report = report_json(dir);
+    const Json& renders = report["renders"];
+    ASSERT_FALSE(renders.contains("skipped")) << renders;
+    EXPECT_EQ(renders["models"], Json({"f82-tint", "schlick", "conductor-rgb"}));
+    ASSERT_EQ(renders["rows"].size(), 2u);
+    const auto [width, height] = png_size(read_file(dir / "assets" / "renders" / "sheet.png"));
+    const int cell = renders["cell"][0].get<int>();
+    EXPECT_EQ(width, (1 + 2 * 3) * cell);
+    EXPECT_EQ(height, 2 * cell);
+    for (std::size_t row = 0; row < 2; ++row) {
+        const Json& models = renders["rows"][row]["models"];
+        ASSERT_EQ(models.size(), 3u);
+        std::set<int> columns;
+        for (std::size_t m = 0; m < 3; ++m) {
+            EXPECT_EQ(models[m]["model"], renders["models"][m]);
+            ASSERT_EQ(models[m]["cells"].size(), 1u) << "the mirror only";
+            const Json& c = models[m]["cells"][0];
+            EXPECT_EQ(c["roughness"], 0.0);
+            EXPECT_EQ(c["reference"], 0);
+            columns.insert(c["model"].get<int>());
+            columns.insert(c["difference"].get<int>());
+            EXPECT_GT(c["image_rmse"].get<double>(), 0.0);
+        }
+        EXPECT_EQ(columns.size(), 6u) << "each model's cells have columns of their own";
+    }
+    // Each material page finds its row.
+    for (const Json& m : report["materials"])
+        EXPECT_EQ(renders["rows"][m["render_row"].get<int>()]["material"], m["id"]);
+    // A rerun with renders is byte-identical too (the labelled PNG included).
+    const fs::path again = tmp_.path() / "again";
+    ASSERT_EQ(run("report Au,Zn --model f82-tint,schlick,conductor-rgb --renders on -o '" + again.string() + "'").exit_code, 0);
+    ASSERT_EQ(files_below(dir), files_below(again));
+    for (const fs::path& f : files_below(dir)) EXPECT_EQ(read_file(dir / f), read_file(again / f)) << f;
+}
+
+// Without glpreview beside metalfit, --renders auto still writes the report and says why there are no renders.
+TEST_F(Report, WithoutGlpreviewTheRendersAreSkippedWithTheReason) {
+    const fs::path bin = tmp_.path() / "bin";
+    fs::create_directories(bin);
+    fs::copy_file(METALFIT_EXE, bin / "metalfit");
+    const fs::path dir = tmp_.path() / "r";
+    const auto r = metalfit::test::run_command(bin / "metalfit", "report Au --model schlick -o '" + dir.string() + "'", tmp_.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(report_json(dir)["renders"]["skipped"], "glpreview was not built beside metalfit");
+    EXPECT_FALSE(fs::exists(dir / "assets" / "renders"));
+    const auto on = metalfit::test::run_command(bin / "metalfit", "report Au --model schlick --renders on -o '" + (tmp_.path() / "on").string() + "'",
+                                                tmp_.path());
+    EXPECT_EQ(on.exit_code, 3) << on.err;
+    EXPECT_FALSE(fs::exists(tmp_.path() / "on"));
+}
+
 }  // namespace

@@ -26,6 +26,29 @@ namespace {
 // libfit's exit codes (metalfit::ExitCode), and one more of the renderer's own.
 constexpr int ok = metalfit::exit_ok, usage = metalfit::exit_usage, gl_failure = 5;
 
+// "a,b,,c" → {"a", "b", "c"}.
+std::vector<std::string> split_list(const std::string& text) {
+    std::vector<std::string> items;
+    std::stringstream list(text);
+    for (std::string item; std::getline(list, item, ',');)
+        if (!item.empty()) items.push_back(item);
+    return items;
+}
+
+// One value of --sheet-roughness (the range is checked with the request).
+double parse_roughness(const std::string& text) {
+    std::size_t used = 0;
+    double value = 0;
+    try {
+        value = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size())
+        throw metalfit::UsageError("--sheet-roughness: expected numbers in [0, 1], e.g. 0,0.2,0.5 (got '" + text.substr(0, 40) + "')");
+    return value;
+}
+
 }  // namespace
 
 namespace {
@@ -57,7 +80,17 @@ int run_glpreview(int argc, char** argv) {
     std::string sheet;
     app.add_option("--sheet", sheet,
                    "Sphere sheet instead of the scene's outputs: comma-separated materials, one row each "
-                   "(reference | best fitted model | |difference| x 10); the scene holds one sphere");
+                   "(reference | model | |difference| x 10); the scene holds one sphere");
+    std::string sheet_models = "best", sheet_roughness, sheet_labels = "on";
+    app.add_option("--sheet-models", sheet_models,
+                   "Sheet: the models shown, comma-separated libfit ids, one column group each, or best (each "
+                   "material's best fitted model)")
+        ->capture_default_str();
+    app.add_option("--sheet-roughness", sheet_roughness,
+                   "Sheet: the roughness of the columns, comma-separated in [0, 1], e.g. 0,0.2,0.5 (default: the scene "
+                   "sphere's)");
+    app.add_option("--sheet-labels", sheet_labels, "Sheet: material, model, roughness and error drawn on sheet.png (on|off)")
+        ->capture_default_str();
     app.add_flag("--explain", explain_only, "Print the plan (passes, why they run, what is skipped) and render nothing");
     app.add_option("--data-dir", data_dir, "Built-in database folder")->check(CLI::ExistingDirectory);
     app.add_option("--ocio-config", ocio_config, "OCIO config when $OCIO is not set (default: data/ocio/config.ocio)");
@@ -107,22 +140,32 @@ int run_glpreview(int argc, char** argv) {
         }
         for (const std::string& warning : scene.warnings) std::cerr << "glpreview: warning: " << warning << "\n";
         // --sheet materials given as files are the user's paths: relative to the current folder, not to the scene's.
-        std::vector<std::string> sheet_materials;
-        std::stringstream list(sheet);
-        for (std::string m; std::getline(list, m, ',');)
-            if (!m.empty()) sheet_materials.push_back(looks_like_path(m) ? std::filesystem::absolute(m).string() : m);
+        SheetRequest sheet_request;
+        for (const std::string& m : split_list(sheet))
+            sheet_request.materials.push_back(looks_like_path(m) ? std::filesystem::absolute(m).string() : m);
+        if (sheet_models != "best") sheet_request.models = split_list(sheet_models);
+        for (const std::string& r : split_list(sheet_roughness)) sheet_request.roughness.push_back(parse_roughness(r));
+        if (sheet_labels != "on" && sheet_labels != "off")
+            throw UsageError("--sheet-labels: on or off (got '" + sheet_labels.substr(0, 40) + "')");
+        sheet_request.labels = sheet_labels == "on";
+        if (sheet.empty() && (sheet_models != "best" || !sheet_roughness.empty() || sheet_labels != "on"))
+            throw UsageError("--sheet-models, --sheet-roughness and --sheet-labels need --sheet");
+        if (!sheet.empty()) check_sheet_request(sheet_request);
         if (explain_only) {
-            std::cout << explain(sheet.empty() ? build_plan(scene) : build_sheet_plan(scene, sheet_materials), scene);
+            std::cout << explain(sheet.empty() ? build_plan(scene) : build_sheet_plan(scene, sheet_request), scene);
             return ok;
         }
         PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), output_dir, 0};
         if (!sheet.empty()) {
-            const SphereSheet result = render_sphere_sheet(scene, sheet_materials, options);
-            for (const auto& row : result.record)
-                std::printf("%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f\n",
+            const SphereSheet result = render_sphere_sheet(scene, sheet_request, options);
+            for (const auto& row : result.record) {
+                std::printf("%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f",
                             row["material"].get<std::string>().c_str(), row["model"].get<std::string>().c_str(),
                             row["model_worst_rel_rms"].get<double>(), kSheetDifferenceScale,
                             row["image_rmse_model_vs_reference"].get<double>());
+                if (!sheet_request.roughness.empty()) std::printf(" at roughness %g", row["roughness"].get<double>());
+                std::printf("\n");
+            }
             std::cout << (output_dir / "sheet.png").string() << "\n";
             return ok;
         }

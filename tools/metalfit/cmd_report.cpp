@@ -58,9 +58,10 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
 
-    // glpreview renders catalog materials from their primary source.
-    SphereRenderRequest render_request{glpreview_beside_this_program(), global.data_dir / "scenes" / "sheet.json", {},
+    // glpreview renders catalog materials from their primary source, a column group per model of the report.
+    SphereRenderRequest render_request{glpreview_beside_this_program(), global.data_dir / "scenes" / "sheet.json", {}, {},
                                        global.data_dir, setup.config};
+    for (const Model* m : request.models) render_request.models.emplace_back(m->id());
     for (const MaterialFit& f : fits)
         if (const CatalogEntry* e = catalog.find(f.material.id); e && e->id == f.material.id && e->primary.file == f.material.provenance.file)
             render_request.materials.push_back(f.material.id);

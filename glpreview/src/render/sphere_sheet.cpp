@@ -1,5 +1,6 @@
 #include "glpreview/render/sphere_sheet.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -19,92 +20,180 @@ void paste(Image& sheet, const Image& cell, int column, int row) {
         for (int x = 0; x < cell.width; ++x) sheet.set(column * cell.width + x, row * cell.height + y, cell.at(x, y));
 }
 
-}  // namespace
+double image_rmse(const Image& a, const Image& b) {
+    double squared = 0;
+    for (std::size_t i = 0; i < a.rgb.size(); ++i) {
+        const double diff = double(a.rgb[i]) - double(b.rgb[i]);
+        squared += diff * diff;
+    }
+    return std::sqrt(squared / double(a.rgb.size()));
+}
 
-namespace {
-
+// Per material: the reference and the Fresnel of each model group.
 struct SheetRow {
     const SphereFresnel* reference;
-    const SphereFresnel* model;
+    std::vector<const SphereFresnel*> models;
 };
 using SheetRows = std::vector<SheetRow>;
+using SheetCells = std::vector<SheetCell>;
+
+// The roughness of the columns: those asked for, else the scene sphere's own.
+std::vector<double> column_roughness(const Scene& base, const SheetRequest& request) {
+    return request.roughness.empty() ? std::vector<double>{base.spheres[0].roughness} : request.roughness;
+}
+
+std::string roughness_list(const std::vector<double>& roughness) {
+    std::vector<std::string> text;
+    for (double r : roughness) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", r);
+        text.emplace_back(value);
+    }
+    return join(text);
+}
 
 // The sheet's passes. `library` and `run` are null when the graph is only planned (--explain): nothing executes.
-// `scene` is the renderer's copy of `base`: only its sphere's Fresnel kind changes between cells.
-graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base, Scene& scene,
-                                     const std::vector<std::string>& materials, FresnelLibrary* library, PreviewRun* run) {
+// `scene` is the renderer's copy of `base` with the largest roughness asked for (what the environment passes plan
+// for); only its sphere's Fresnel kind and roughness change between cells.
+graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base, Scene& scene, const SheetRequest& request,
+                                     FresnelLibrary* library, PreviewRun* run) {
     using namespace graph;
+    const std::vector<double> roughness = column_roughness(base, request);
+    scene.spheres[0].roughness = *std::max_element(roughness.begin(), roughness.end());
     const Features features = plan_features(scene);
     const SceneInputs in = import_scene(graph, scene);
+    const std::string models = request.models.empty() ? "the best fitted libfit model" : "models " + join(request.models);
     const Handle<SheetRows> rows =
         graph
             .add_pass<Out<SheetRows>>(
-                {"sheet-fresnel",
-                 "per material (" + join(materials) + "): the reference LUT and the best fitted libfit model", Processor::cpu},
+                {"sheet-fresnel", "per material (" + join(request.materials) + "): the reference LUT and " + models, Processor::cpu},
                 [&](Builder& b, Out<SheetRows>& d) {
                     b.read(in.materials);
                     d.out = b.produce<SheetRows>("sheet-fresnel");
                 },
-                [&base, &materials, library, run](const Out<SheetRows>& d, Resources& r) {
+                [&base, &request, library, run](const Out<SheetRows>& d, Resources& r) {
                     SheetRows& result = r.emplace(d.out);
-                    for (const std::string& name : materials) {
+                    for (const std::string& name : request.materials) {
                         Sphere sphere = base.spheres[0];
                         sphere.material = name;
                         sphere.fresnel = ReferenceFresnel{};
-                        const SphereFresnel& reference = library->get(sphere, "sheet material " + name);
-                        sphere.fresnel = ModelFresnel{library->best_model(name), ParameterSource::fit};
-                        result.push_back({&reference, &library->get(sphere, "sheet material " + name)});
+                        SheetRow row{&library->get(sphere, "sheet material " + name), {}};
+                        const std::vector<std::string> ids = request.models.empty() ? std::vector{library->best_model(name)} : request.models;
+                        for (const std::string& id : ids) {
+                            sphere.fresnel = ModelFresnel{id, ParameterSource::fit};
+                            row.models.push_back(&library->get(sphere, "sheet material " + name));
+                        }
+                        result.push_back(row);
                     }
                     if (!result.empty()) run->fresnel = {result.front().reference};
                 })
             .out;
     const EnvironmentInputs environment = add_environment_passes(graph, scene, features, in, run);
+    std::optional<Handle<PrefilteredCube>> prefiltered;
+    std::vector<Handle<DownsampledCube>> downsampled;
+    if (features.prefiltered_map && environment.cube) prefiltered = add_prefilter_environment_pass(graph, scene, *environment.cube, run);
+    else graph.skip("prefilter-environment", "no roughness column above 0 with glossy 'prefiltered'");
+    if (environment.cube)
+        for (int m : features.downsample_sizes) downsampled.push_back(add_downsample_environment_pass(graph, scene, m, *environment.cube, run));
     struct Cells {
         Handle<Image> image;
         Handle<Json> record;
+        Handle<SheetCells> cells;
     };
+    const int groups = request.models.empty() ? 1 : static_cast<int>(request.models.size());
     const Cells& cells = graph.add_pass<Cells>(
-        {"sheet-cells", "per material: reference | model | |difference| x 10, one GPU frame each", Processor::gpu},
+        {"sheet-cells",
+         "per material: reference | model | |difference| x 10 for " + std::to_string(groups) + " model group(s) at roughness " +
+             roughness_list(roughness) + ", one GPU frame each (DFG tables of rough cells made on first use)",
+         Processor::gpu},
         [&](Builder& b, Cells& d) {
             b.read(rows);
             environment.declare(b);
+            if (prefiltered) b.read(*prefiltered);
+            for (const auto& cube : downsampled) b.read(cube);
             d.image = b.produce<Image>("sheet-image");
             d.record = b.produce<Json>("sheet-record");
+            d.cells = b.produce<SheetCells>("sheet-cell-labels");
         },
-        [&scene, rows, environment, run](const Cells& d, Resources& r) {
+        [&scene, rows, environment, prefiltered, downsampled, roughness, groups, run](const Cells& d, Resources& r) {
             GpuRenderer& gpu = run->renderer();
             environment.bind(gpu, r);
+            if (prefiltered) gpu.use_prefiltered(r.get(*prefiltered));
+            for (const auto& cube : downsampled) gpu.use_downsampled(r.get(cube));
             const SheetRows& all = r.get(rows);
-            Image& sheet = r.emplace(d.image, 3 * scene.width, static_cast<int>(all.size()) * scene.height);
+            const int n_roughness = static_cast<int>(roughness.size());
+            const int n_columns = static_cast<int>(sheet_columns(groups, n_roughness).size());
+            Image& sheet = r.emplace(d.image, n_columns * scene.width, static_cast<int>(all.size()) * scene.height);
             Json& record = r.emplace(d.record, Json::array());
+            SheetCells& labels = r.emplace(d.cells);
             for (std::size_t row = 0; row < all.size(); ++row) {
-                const SphereFresnel& model = *all[row].model;
-                scene.spheres[0].fresnel = ReferenceFresnel{};
-                gpu.set_fresnel(0, all[row].reference);
-                const Image reference_image = gpu.render();
-                scene.spheres[0].fresnel = ModelFresnel{model.fresnel, ParameterSource::fit};
-                gpu.set_fresnel(0, &model);
-                const Image model_image = gpu.render();
-                const Image difference = absolute_difference(model_image, reference_image, kSheetDifferenceScale);
-                paste(sheet, reference_image, 0, static_cast<int>(row));
-                paste(sheet, model_image, 1, static_cast<int>(row));
-                paste(sheet, difference, 2, static_cast<int>(row));
-                double squared = 0;
-                for (std::size_t i = 0; i < model_image.rgb.size(); ++i) {
-                    const double diff = double(model_image.rgb[i]) - double(reference_image.rgb[i]);
-                    squared += diff * diff;
+                const int y = static_cast<int>(row);
+                const std::string& material = all[row].reference->material;
+                std::vector<Image> references;
+                for (int k = 0; k < n_roughness; ++k) {
+                    scene.spheres[0].roughness = roughness[k];
+                    scene.spheres[0].fresnel = ReferenceFresnel{};
+                    gpu.set_fresnel(0, all[row].reference);
+                    references.push_back(gpu.render());
+                    const int column = sheet_column(SheetCellKind::reference, 0, k, n_roughness);
+                    paste(sheet, references.back(), column, y);
+                    labels.push_back({y, column, SheetCellKind::reference, material, {}, roughness[k], 0.0});
                 }
-                record.push_back({{"row", row},
-                                  {"material", model.material},
-                                  {"source", model.source},
-                                  {"model", model.fresnel},
-                                  {"model_worst_rel_rms", model.worst_rel_rms},
-                                  {"image_rmse_model_vs_reference", std::sqrt(squared / double(model_image.rgb.size()))}});
+                for (int g = 1; g <= groups; ++g) {
+                    const SphereFresnel& model = *all[row].models[g - 1];
+                    for (int k = 0; k < n_roughness; ++k) {
+                        scene.spheres[0].roughness = roughness[k];
+                        scene.spheres[0].fresnel = ModelFresnel{model.fresnel, ParameterSource::fit};
+                        gpu.set_fresnel(0, &model);
+                        const Image model_image = gpu.render();
+                        const Image difference = absolute_difference(model_image, references[k], kSheetDifferenceScale);
+                        const int model_column = sheet_column(SheetCellKind::model, g, k, n_roughness);
+                        const int difference_column = sheet_column(SheetCellKind::difference, g, k, n_roughness);
+                        paste(sheet, model_image, model_column, y);
+                        paste(sheet, difference, difference_column, y);
+                        const double rmse = image_rmse(model_image, references[k]);
+                        labels.push_back({y, model_column, SheetCellKind::model, material, model.fresnel, roughness[k], model.worst_rel_rms});
+                        labels.push_back({y, difference_column, SheetCellKind::difference, material, model.fresnel, roughness[k], rmse});
+                        record.push_back({{"row", row},
+                                          {"material", model.material},
+                                          {"source", model.source},
+                                          {"model", model.fresnel},
+                                          {"model_worst_rel_rms", model.worst_rel_rms},
+                                          {"image_rmse_model_vs_reference", rmse},
+                                          {"roughness", roughness[k]},
+                                          {"columns",
+                                           {{"reference", sheet_column(SheetCellKind::reference, 0, k, n_roughness)},
+                                            {"model", model_column},
+                                            {"difference", difference_column}}}});
+                    }
+                }
             }
         });
     add_image_file_pass(graph, "sheet.exr", cells.image, run);
-    add_image_file_pass(graph, "sheet.png", cells.image, run);
-    add_json_file_pass(graph, "sheet.json", "the rows' record", cells.record, run);
+    if (request.labels) {
+        const Handle<Image> labelled =
+            graph
+                .add_pass<Out<Image>>(
+                    {"sheet-labels",
+                     "material, model, roughness and error drawn in each cell's top and bottom band (OpenImageIO render_text, " +
+                         std::string(kLabelFont) + "), on sheet.png only",
+                     Processor::cpu},
+                    [&](Builder& b, Out<Image>& d) {
+                        b.read(cells.image);
+                        b.read(cells.cells);
+                        d.out = b.produce<Image>("sheet-labelled");
+                    },
+                    [&scene, image = cells.image, labels = cells.cells](const Out<Image>& d, Resources& r) {
+                        Image& out = r.emplace(d.out, r.get(image));
+                        draw_text(out, sheet_labels(r.get(labels), scene.width, scene.height));
+                    })
+                .out;
+        add_image_file_pass(graph, "sheet.png", labelled, run);
+    } else {
+        graph.skip("sheet-labels", "--sheet-labels off");
+        add_image_file_pass(graph, "sheet.png", cells.image, run);
+    }
+    add_json_file_pass(graph, "sheet.json", "the cells' record", cells.record, run);
     graph.retain(cells.record);
     return cells.record;
 }
@@ -115,24 +204,26 @@ void check_sheet_scene(const Scene& scene) {
 
 }  // namespace
 
-Plan build_sheet_plan(const Scene& base, const std::vector<std::string>& materials) {
+Plan build_sheet_plan(const Scene& base, const SheetRequest& request) {
     check_sheet_scene(base);
+    check_sheet_request(request);
     Scene scene = base;
     graph::PassGraph graph;
-    add_sheet_passes(graph, base, scene, materials, nullptr, nullptr);
+    add_sheet_passes(graph, base, scene, request, nullptr, nullptr);
     graph.compile();
     return plan_of(graph, plan_features(scene));
 }
 
-SphereSheet render_sphere_sheet(const Scene& base, const std::vector<std::string>& materials, const PreviewOptions& options,
+SphereSheet render_sphere_sheet(const Scene& base, const SheetRequest& request, const PreviewOptions& options,
                                 GlContext* context) {
     check_sheet_scene(base);
+    check_sheet_request(request);
     FresnelLibrary library(options.data_dir, options.ocio, base.space, base.file);
     Scene scene = base;
     PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, {}, {}, {}};
     run.exr_colour = ExrColour{chromaticities_of(library.converter()), library.converter().space()};
     graph::PassGraph graph;
-    const graph::Handle<Json> record = add_sheet_passes(graph, base, scene, materials, &library, &run);
+    const graph::Handle<Json> record = add_sheet_passes(graph, base, scene, request, &library, &run);
     graph.before_first_gpu_pass([&run] { run.open_gl(); });
     graph.compile();
     graph.execute();

@@ -294,12 +294,26 @@ Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in)
     if (in.renders.sheet) {
         const SphereSheetImage& s = *in.renders.sheet;
         renders = {{"image", "assets/renders/sheet.png"},
-                   {"by", "glpreview --sheet (data/scenes/sheet.json): distance impostor in a procedural room"},
+                   {"by", "glpreview --sheet --sheet-models (data/scenes/sheet.json): distance impostor in a procedural room, "
+                          "mirror spheres; labels drawn by glpreview"},
                    {"cell", {s.cell_width, s.cell_height}},
-                   {"columns", {"reference (exact Fresnel)", "best fitted model", "|difference| × 10"}},
+                   {"columns", {"reference (exact Fresnel)", "model", "|difference| × 10"}},
+                   {"models", s.models},
                    {"rows", Json::array()}};
-        for (std::size_t r = 0; r < s.materials.size(); ++r)
-            renders["rows"].push_back({{"material", s.materials[r]}, {"model", s.models[r]}});
+        for (std::size_t r = 0; r < s.materials.size(); ++r) {
+            Json models = Json::array();
+            for (std::size_t m = 0; m < s.models.size(); ++m) {
+                Json cells = Json::array();
+                for (const SphereSheetCells& c : s.cells[r][m])
+                    cells.push_back({{"roughness", c.roughness},
+                                     {"reference", c.reference},
+                                     {"model", c.model},
+                                     {"difference", c.difference},
+                                     {"image_rmse", c.image_rmse}});
+                models.push_back({{"model", s.models[m]}, {"cells", cells}});
+            }
+            renders["rows"].push_back({{"material", s.materials[r]}, {"models", models}});
+        }
     } else {
         renders = {{"skipped", in.renders.skipped}};
     }

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/text.hpp"
 
 extern char** environ;
 
@@ -52,11 +54,11 @@ struct TemporaryFolder {
 SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
     if (r.glpreview.empty() || !fs::exists(r.glpreview)) throw std::runtime_error("glpreview was not built beside metalfit");
     if (r.materials.empty()) throw std::runtime_error("no catalog material to render");
+    if (r.models.empty()) throw std::runtime_error("no model to render");
     const TemporaryFolder folder;
-    std::string materials;
-    for (const std::string& m : r.materials) materials += (materials.empty() ? "" : ",") + m;
     const std::string size = std::to_string(r.cell_size) + "x" + std::to_string(r.cell_size);
-    std::vector<std::string> args{r.glpreview.string(), r.scene.string(), "--sheet", materials, "--size", size,
+    std::vector<std::string> args{r.glpreview.string(), r.scene.string(), "--sheet", join(r.materials, ","), "--sheet-models",
+                                  join(r.models, ","), "--size", size,
                                   "-o", folder.path.string(), "--data-dir", r.data_dir.string(),
                                   "--ocio-config", r.ocio.path.string()};
     std::vector<char*> argv;
@@ -82,10 +84,24 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
     SphereSheetImage sheet;
     sheet.png = read_bytes(folder.path / "sheet.png");
     const auto record = nlohmann::json::parse(read_bytes(folder.path / "sheet.json"));
-    // Row r is the r-th material asked for (glpreview names it by its catalog name).
+    // Row r is the r-th material asked for (glpreview names it by its catalog name); its entries go by model, then
+    // roughness.
     sheet.materials = r.materials;
-    for (const auto& row : record) sheet.models.push_back(row.at("model").get<std::string>());
-    if (sheet.png.empty() || sheet.models.size() != r.materials.size()) throw std::runtime_error("glpreview wrote no complete sheet");
+    sheet.models = r.models;
+    sheet.cells.assign(r.materials.size(), std::vector<std::vector<SphereSheetCells>>(r.models.size()));
+    for (const auto& entry : record) {
+        const std::size_t row = entry.at("row").get<std::size_t>();
+        const auto model = std::find(r.models.begin(), r.models.end(), entry.at("model").get<std::string>());
+        if (row >= r.materials.size() || model == r.models.end()) throw std::runtime_error("glpreview's sheet.json names a cell not asked for");
+        const auto& columns = entry.at("columns");
+        sheet.cells[row][static_cast<std::size_t>(model - r.models.begin())].push_back(
+            {entry.at("roughness").get<double>(), columns.at("reference").get<int>(), columns.at("model").get<int>(),
+             columns.at("difference").get<int>(), entry.at("image_rmse_model_vs_reference").get<double>()});
+    }
+    bool complete = !sheet.png.empty();
+    for (const auto& row : sheet.cells)
+        for (const auto& model : row) complete = complete && !model.empty();
+    if (!complete) throw std::runtime_error("glpreview wrote no complete sheet");
     sheet.cell_width = sheet.cell_height = r.cell_size;
     return sheet;
 }

@@ -1,6 +1,6 @@
-// The sphere renders of a report: glpreview's sphere sheet (one row per material: reference | best fitted model |
-// |difference| × 10), made by running the glpreview executable, so that libfit and the metalfit CLI never link
-// OpenGL (docs/decisions.md).
+// The sphere renders of a report: glpreview's sphere sheet (one row per material; per model of the report a column
+// group: reference | model | |difference| × 10), made by running the glpreview executable, so that libfit and the
+// metalfit CLI never link OpenGL (docs/decisions.md).
 #pragma once
 
 #include <filesystem>
@@ -15,10 +15,18 @@ namespace metalfit {
 enum class RenderMode { auto_, on, off };
 RenderMode parse_render_mode(const std::string& text);  // "auto" | "on" | "off", else UsageError
 
+// Where one model's render of one material at one roughness lies in the sheet (columns; the row is the material's).
+struct SphereSheetCells {
+    double roughness = 0;
+    int reference = 0, model = 0, difference = 0;
+    double image_rmse = 0;  // of the model cell against the reference cell (linear radiance)
+};
+
 struct SphereSheetImage {
-    std::string png;                     // the bytes of glpreview's sheet.png
+    std::string png;                     // the bytes of glpreview's sheet.png (labelled)
     std::vector<std::string> materials;  // row r shows materials[r] ...
-    std::vector<std::string> models;     // ... next to models[r], the model glpreview chose for it
+    std::vector<std::string> models;     // ... with a column group per model, in this order
+    std::vector<std::vector<std::vector<SphereSheetCells>>> cells;  // cells[r][m]: row r, models[m], per roughness
     int cell_width = 0, cell_height = 0;
 };
 
@@ -32,6 +40,7 @@ struct SphereRenderRequest {
     std::filesystem::path glpreview;     // the executable (glpreview_beside_this_program() by default)
     std::filesystem::path scene;         // a scene with one sphere (data/scenes/sheet.json)
     std::vector<std::string> materials;  // catalog ids
+    std::vector<std::string> models;     // libfit model ids (the report's), one column group each
     std::filesystem::path data_dir;
     OcioConfigChoice ocio;
     int cell_size = 160;                 // pixels, square cells
@@ -40,7 +49,7 @@ struct SphereRenderRequest {
 // glpreview in the directory of the running executable (empty when it is not there).
 std::filesystem::path glpreview_beside_this_program();
 
-// Runs glpreview --sheet in a temporary folder (removed afterwards). `off`: skipped ("--renders off"); `auto`:
+// Runs glpreview --sheet MATERIALS --sheet-models MODELS (the scene sphere's roughness: the mirror of sheet.json) in a temporary folder (removed afterwards). `off`: skipped ("--renders off"); `auto`:
 // any failure (no glpreview, no EGL context, ...) becomes the skipped reason; `on`: a failure throws InputError
 // naming glpreview and its last line of error output.
 SphereRenders render_spheres(const SphereRenderRequest& request, RenderMode mode);

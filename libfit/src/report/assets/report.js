@@ -261,15 +261,28 @@
     if (skipped) renders.append(skipped);
     else if (mat.render_row == null) renders.append(el('p', { class: 'renders-skipped', text: 'renders skipped: glpreview rendered no row for ' + mat.id }));
     else {
+      // Per model of the report one render: reference | model | |difference| × 10, one line per roughness, each cell
+      // cropped from the one sheet image (glpreview drew its labels in it).
       const r = report.renders, row = r.rows[mat.render_row];
       const [w, h] = r.cell;
-      const labels = [r.columns[0], `${row.model} (${r.columns[1]})`, r.columns[2]];
-      renders.append(el('div', { class: 'sheet' },
-        el('div', { class: 'sheet-columns', style: `width:${3 * w}px` }, ...labels.map((l) => el('span', { style: `width:${w}px`, text: l }))),
-        el('div', { class: 'sheet-row-label', text: `${row.material}` }),
-        el('div', { class: 'sheet-crop', style: `width:${3 * w}px;height:${h}px` },
-          el('img', { id: 'render', src: '../' + r.image, alt: `sphere sheet row of ${row.material}`, style: `margin-top:${-mat.render_row * h}px` }))),
-        el('p', { class: 'note', text: r.by }));
+      const crop = (column, alt, id) => el('div', { class: 'sheet-crop', style: `width:${w}px;height:${h}px` },
+        el('img', { class: 'render-cell', ...(id ? { id } : {}), src: '../' + r.image, alt,
+          style: `margin-left:${-column * w}px;margin-top:${-mat.render_row * h}px` }));
+      let first = true;
+      for (const m of row.models) {
+        const labels = [r.columns[0], m.model, r.columns[2]];
+        const lines = m.cells.map((c) => el('div', { class: 'sheet-line' },
+          crop(c.reference, `${row.material}: reference, roughness ${c.roughness}`, first ? 'render' : null),
+          crop(c.model, `${row.material}: ${m.model}, roughness ${c.roughness}`),
+          crop(c.difference, `${row.material}: |${m.model} - reference| x 10, roughness ${c.roughness}`),
+          el('span', { class: 'sheet-row-label', text: `roughness ${c.roughness}, image RMSE ${c.image_rmse.toPrecision(2)}` })));
+        first = false;
+        renders.append(el('figure', { class: 'sheet render-model', 'data-model': m.model },
+          el('figcaption', { text: `${row.material}: ${m.model}` }),
+          el('div', { class: 'sheet-columns', style: `width:${3 * w}px` }, ...labels.map((l) => el('span', { style: `width:${w}px`, text: l }))),
+          ...lines));
+      }
+      renders.append(el('p', { class: 'note', text: r.by }));
     }
 
     if (mat.data_sources) main.append(section('Data sources: how much the measurements disagree vs how much each model errs', ...sourcesTable(mat)));
