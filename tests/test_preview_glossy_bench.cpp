@@ -51,6 +51,7 @@ TEST(PreviewGlossyBench, TheTableHasEveryRoughnessAndMethodAndItsRmseIsThePrevie
         EXPECT_EQ(sphere.at("roughness").get<double>(), v.roughness);
         EXPECT_NEAR(sphere.at("rmse").get<double>(), rows[i].at("rmse").get<double>(), 1e-12) << glossy_variant_name(v) << " " << v.roughness;
         EXPECT_NEAR(sphere.at("mean_abs").get<double>(), rows[i].at("mean_abs").get<double>(), 1e-12) << i;
+        EXPECT_NEAR(sphere.at("reference_noise").get<double>(), rows[i].at("reference_noise").get<double>(), 1e-12) << i;
     }
 }
 

@@ -84,11 +84,12 @@ int run_glpreview(int argc, char** argv) {
                         result["renderer"].get<std::string>().c_str(), result["material"].get<std::string>().c_str(),
                         result["size"][0].get<int>(), result["size"][1].get<int>(), result["frames"].get<int>(),
                         result["reference_samples"].get<int>());
-            std::printf("| roughness | method | ms per frame | ratio to mirror classic | rmse | mean abs |\n|---:|---|---:|---:|---:|---:|\n");
+            std::printf("| roughness | method | ms per frame | ratio to mirror classic | rmse | mean abs | reference noise |\n"
+                        "|---:|---|---:|---:|---:|---:|---:|\n");
             for (const auto& r : result["rows"])
-                std::printf("| %.2f | %s | %.3f | %.2f ± %.2f | %.4f | %.4f |\n", r["roughness"].get<double>(), r["method"].get<std::string>().c_str(),
-                            r["ms_per_frame"].get<double>(), r["ratio_to_mirror_classic"].get<double>(), r["ratio_noise"].get<double>(),
-                            r["rmse"].get<double>(), r["mean_abs"].get<double>());
+                std::printf("| %.2f | %s | %.3f | %.2f ± %.2f | %.4f | %.4f | %.4f |\n", r["roughness"].get<double>(),
+                            r["method"].get<std::string>().c_str(), r["ms_per_frame"].get<double>(), r["ratio_to_mirror_classic"].get<double>(),
+                            r["ratio_noise"].get<double>(), r["rmse"].get<double>(), r["mean_abs"].get<double>(), r["reference_noise"].get<double>());
             std::printf("\n| mirror scene | size | spheres | ms per frame |\n|---|---|---:|---:|\n");
             for (const auto& m : result["mirror_scenes"])
                 std::printf("| %s | %dx%d | %zu | %.2f |\n", m["scene"].get<std::string>().c_str(), m["size"][0].get<int>(),

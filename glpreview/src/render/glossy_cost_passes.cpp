@@ -26,7 +26,11 @@ using graph::Processor;
 using graph::Resources;
 using Json = nlohmann::ordered_json;
 using BenchFresnel = const SphereFresnel*;
-using References = std::vector<ReferenceRender>;  // by roughness, as glossy_bench_roughness()
+// By roughness, as glossy_bench_roughness(), then the analytic one of the mirror; each with its noise (0 for the mirror).
+struct References {
+    std::vector<ReferenceRender> images;
+    std::vector<double> noise;
+};
 
 // The cube formats of the variants: what plan_features gives a scene of that one sphere.
 enum class CubeGroup { mirror, prefiltered_box, prefiltered_impostor, localized };
@@ -75,6 +79,7 @@ Json time_variants(const Scene& base, const SphereFresnel* fresnel, const Refere
     const std::vector<double> roughness = glossy_bench_roughness();
     std::vector<std::function<void()>> frames;
     std::vector<SphereError> errors;
+    std::vector<double> noise;
     for (const GlossyVariant& v : variants) {
         const std::size_t k = r.by_group.at(group_of(v));
         Scene& scene = *r.scenes[k];
@@ -82,9 +87,10 @@ Json time_variants(const Scene& base, const SphereFresnel* fresnel, const Refere
         apply(scene.spheres.at(0), v);
         std::size_t level = 0;
         while (level < roughness.size() && roughness[level] != v.roughness) ++level;
-        // The mirror baseline is measured against the analytic reference (kept in references.back()).
-        const ReferenceRender& reference = v.roughness == 0 ? references.back() : references.at(level);
-        errors.push_back(sphere_errors(gpu.render(), reference, 1).front());
+        // The mirror baseline is measured against the analytic reference (kept last).
+        const std::size_t which = v.roughness == 0 ? references.images.size() - 1 : level;
+        errors.push_back(sphere_errors(gpu.render(), references.images.at(which), 1).front());
+        noise.push_back(references.noise.at(which));
         frames.push_back([&scene, &gpu, v] {
             apply(scene.spheres.at(0), v);
             gpu.draw_frame_for_timing();
@@ -104,7 +110,8 @@ Json time_variants(const Scene& base, const SphereFresnel* fresnel, const Refere
                         {"ratio_to_mirror_classic", ratio.median},
                         {"ratio_noise", ratio.noise},
                         {"rmse", errors[i].rmse},
-                        {"mean_abs", errors[i].mean_abs}});
+                        {"mean_abs", errors[i].mean_abs},
+                        {"reference_noise", noise[i]}});
     }
     return rows;
 }
@@ -208,11 +215,13 @@ Handle<Json> add_glossy_cost_passes(PassGraph& graph, GpuBenchRun& run) {
                         Scene scene = base;
                         scene.spheres.at(0).roughness = roughness;
                         const ReferenceRender analytic = render_reference(scene, f, tracer, run.options.threads);
-                        out.push_back(render_monte_carlo_reference(scene, f, tracer, analytic, scene.outputs.reference_samples,
-                                                                   run.options.threads)
-                                          .render);
+                        MonteCarloReference mc = render_monte_carlo_reference(scene, f, tracer, analytic, scene.outputs.reference_samples,
+                                                                              run.options.threads);
+                        out.noise.push_back(sphere_reference_noise(mc.standard_error, mc.render, 1).front());
+                        out.images.push_back(std::move(mc.render));
                     }
-                    out.push_back(render_reference(base, f, tracer, run.options.threads));
+                    out.images.push_back(render_reference(base, f, tracer, run.options.threads));
+                    out.noise.push_back(0);
                 })
             .out;
     struct Timing {

@@ -82,7 +82,7 @@ Scene glossy_bench_scene(const std::filesystem::path& data_dir, bool quick, cons
 
 // {"renderer", "size", "frames", "reference_samples", "material",
 //  "rows": [{"roughness", "method", "glossy", "reflection", "localized_size", "ms_per_frame", "ratio_to_mirror_classic",
-//            "ratio_noise", "rmse", "mean_abs"}],  (rows[0]: the mirror classic pass, its RMSE against the analytic reference)
+//            "ratio_noise", "rmse", "mean_abs", "reference_noise"}],  (rows[0]: the mirror classic pass, its RMSE against the analytic reference)
 //  "mirror_scenes": [{"scene", "size", "spheres", "ms_per_frame"}]}
 nlohmann::ordered_json bench_glossy(GlContext& context, const PreviewOptions& options, bool quick);
 
