@@ -300,7 +300,8 @@ EnvironmentProxy read_proxy(const Reader& environment) {
     b.read("min", box.min);
     b.read("max", box.max);
     for (int i = 0; i < 3; ++i) {
-        if (std::abs(box.min[i]) > kBig || std::abs(box.max[i]) > kBig) b.fail(b.field("max"), "coordinates must be in [-1e+06, 1e+06]");
+        if (std::abs(box.min[i]) > kBig) b.fail(b.field("min"), "coordinates must be in [-1e+06, 1e+06]");
+        if (std::abs(box.max[i]) > kBig) b.fail(b.field("max"), "coordinates must be in [-1e+06, 1e+06]");
         if (!(box.max[i] - box.min[i] >= 1e-3)) b.fail(b.field("max"), "must exceed min by at least 1e-3 on every axis");
     }
     return box;
