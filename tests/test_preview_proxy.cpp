@@ -70,7 +70,7 @@ TEST(PreviewProxy, TheProxyIsParsedAndMalformedOnesNameTheirField) {
     // What a proxy makes possible stays refused without one, and box-parallax needs a box.
     EXPECT_TRUE(test::Contains(parse_error(sky + "\"intensity\": 1}", R"([{"center": [0, 0, 0], "roughness": 0.2, "reflection": "classic"}])"),
                                "spheres[0].roughness: rough spheres need a captured environment"));
-    EXPECT_TRUE(test::Contains(parse_error(sky + "\"intensity\": 1}", R"([{"center": [0, 0, 0]}])"), "spheres[0].reflection: an equirect environment without a proxy"));
+    EXPECT_TRUE(test::Contains(parse_error(sky + "\"intensity\": 1}", R"([{"center": [0, 0, 0]}])"), "spheres[0].reflection: an equirect environment is at infinity without a proxy"));
     EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"sphere": 5}})", R"([{"center": [0, 0, 0], "reflection": "box-parallax"}])"),
                                "spheres[0].reflection: box-parallax needs a room environment or an equirect with a box proxy"));
     // Capture settings without a proxy mean nothing: warnings.

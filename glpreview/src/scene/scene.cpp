@@ -561,7 +561,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
                     scene.warnings.push_back(file.string() + ": " + r.field(key) + ": ignored: only the distance impostor refines (reflection '" +
                                              to_string(s.reflection) + "')");
         if (s.reflection != ReflectionMode::classic && !scene.environment.captured())
-            r.fail(r.field("reflection"), "an equirect environment without a proxy is at infinity: only 'classic' reflections");
+            r.fail(r.field("reflection"), "an equirect environment is at infinity without a proxy: only 'classic' reflections");
         if (s.reflection == ReflectionMode::box_parallax && !scene.environment.parallax_box())
             r.fail(r.field("reflection"), "box-parallax needs a room environment or an equirect with a box proxy");
         if (scene.spheres.size() >= kMaxSpheres) top.fail("spheres", "at most " + std::to_string(kMaxSpheres) + " spheres");
