@@ -506,7 +506,7 @@ bool culled(const graph::PassGraph& g, const std::string& pass) {
 }
 
 TEST(PreviewBenchGraph, TheShaderBenchmarkRunsOnlyItsPasses) {
-    GpuBenchRun run{{test::kData, choose_ocio_config(std::nullopt, test::kData), {}, 0}, true, nullptr, localization_rooms(test::kData, true), {}};
+    GpuBenchRun run{{test::kData, choose_ocio_config(std::nullopt, test::kData), {}, 0}, true, nullptr, localization_rooms(test::kData, true), {}, {}};
     graph::PassGraph g;
     const GpuBenchHandles records = add_gpu_bench_passes(g, run);
     g.request(records.shaders);
@@ -521,7 +521,7 @@ TEST(PreviewBenchGraph, TheShaderBenchmarkRunsOnlyItsPasses) {
 }
 
 TEST(PreviewBenchGraph, TheLocalizationBenchmarkFreesEachRoomsCubeBeforeTheNextIsMade) {
-    GpuBenchRun run{{test::kData, choose_ocio_config(std::nullopt, test::kData), {}, 0}, true, nullptr, localization_rooms(test::kData, true), {}};
+    GpuBenchRun run{{test::kData, choose_ocio_config(std::nullopt, test::kData), {}, 0}, true, nullptr, localization_rooms(test::kData, true), {}, {}};
     ASSERT_EQ(run.rooms.size(), 2u);
     EXPECT_TRUE(run.rooms[0].scene.environment.room.boxes.empty());
     EXPECT_FALSE(run.rooms[1].scene.environment.room.boxes.empty());

@@ -65,11 +65,14 @@ int run_glpreview(int argc, char** argv) {
     std::filesystem::path data_dir = default_data_dir();
     std::optional<std::filesystem::path> ocio_config;
     app.add_option("scene", scene_file, "Scene JSON (docs/scene.md)");
-    bool bench_shader_cost = false, bench_localization_cost = false, quick = false, json = false;
+    bool bench_shader_cost = false, bench_localization_cost = false, bench_glossy_cost = false, quick = false, json = false;
     app.add_flag("--bench-shaders", bench_shader_cost,
                  "Benchmark: full-screen 1024² pass per libfit model, ratio to the exact conductor-rgb pass (JSON with --json)");
     app.add_flag("--bench-localization", bench_localization_cost,
                  "Benchmark: ms per frame and error vs the CPU reference for every reflection mode and iteration count");
+    app.add_flag("--bench-glossy", bench_glossy_cost,
+                 "Benchmark: roughness x rough method, ms per frame as a ratio to the mirror classic pass, RMSE vs the Monte-Carlo "
+                 "reference; the shipped mirror scenes' ms per frame (a Markdown table; JSON with --json)");
     app.add_flag("--quick", quick, "Benchmarks: fewer frames, smaller images");
     app.add_flag("--json", json, "Benchmarks: print JSON");
     app.add_option("-o,--output", output_dir, "Output folder (default: preview/)");
@@ -102,6 +105,30 @@ int run_glpreview(int argc, char** argv) {
         return code == 0 ? ok : usage;
     }
     try {
+        if (bench_glossy_cost) {
+            GlContext context = GlContext::create();
+            const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
+            const auto result = bench_glossy(context, options, quick);
+            if (json) {
+                std::cout << result.dump(2) << "\n";
+                return ok;
+            }
+            std::printf("renderer %s; %s sphere (reference Fresnel), %dx%d, %d interleaved rounds, Monte-Carlo reference %d samples per pixel\n\n",
+                        result["renderer"].get<std::string>().c_str(), result["material"].get<std::string>().c_str(),
+                        result["size"][0].get<int>(), result["size"][1].get<int>(), result["frames"].get<int>(),
+                        result["reference_samples"].get<int>());
+            std::printf("| roughness | method | ms per frame | ratio to mirror classic | rmse | mean abs | reference noise |\n"
+                        "|---:|---|---:|---:|---:|---:|---:|\n");
+            for (const auto& r : result["rows"])
+                std::printf("| %.2f | %s | %.3f | %.2f ± %.2f | %.4f | %.4f | %.4f |\n", r["roughness"].get<double>(),
+                            r["method"].get<std::string>().c_str(), r["ms_per_frame"].get<double>(), r["ratio_to_mirror_classic"].get<double>(),
+                            r["ratio_noise"].get<double>(), r["rmse"].get<double>(), r["mean_abs"].get<double>(), r["reference_noise"].get<double>());
+            std::printf("\n| mirror scene | size | spheres | ms per frame |\n|---|---|---:|---:|\n");
+            for (const auto& m : result["mirror_scenes"])
+                std::printf("| %s | %dx%d | %zu | %.2f |\n", m["scene"].get<std::string>().c_str(), m["size"][0].get<int>(),
+                            m["size"][1].get<int>(), m["spheres"].get<std::size_t>(), m["ms_per_frame"].get<double>());
+            return ok;
+        }
         if (bench_shader_cost || bench_localization_cost) {
             GlContext context = GlContext::create();
             const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
@@ -125,7 +152,7 @@ int run_glpreview(int argc, char** argv) {
                                     r["ratio_to_classic"].get<double>(), r["ratio_noise"].get<double>(), r["rmse"].get<double>());
             return ok;
         }
-        if (scene_file.empty()) throw UsageError("a scene file is required (or --bench-shaders / --bench-localization)");
+        if (scene_file.empty()) throw UsageError("a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy)");
         Scene scene = load_scene(scene_file);
         confine_scene_paths(scene, {data_dir, allow_paths_outside});
         if (!size.empty()) {

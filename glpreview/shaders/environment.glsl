@@ -1,5 +1,6 @@
 // The environment, traced analytically on the GPU (capture of the cube map, background of the camera view).
-// Mirrors src/environment.cpp line by line; exactly one of ENV_ROOM, ENV_SPHERE_ROOM, ENV_EQUIRECT is defined.
+// Mirrors src/environment.cpp line by line; exactly one of ENV_ROOM, ENV_SPHERE_ROOM, ENV_EQUIRECT (at infinity),
+// ENV_EQUIRECT_BOX, ENV_EQUIRECT_SPHERE (the image on its proxy) is defined.
 #define MAX_BOXES 32
 #define MAX_PANELS 16
 
@@ -104,7 +105,7 @@ vec4 environment_trace(vec3 origin, vec3 d) {
     return vec4(checker_even(lat, lon, u_sphere_room_checker) ? u_sphere_room_light : u_sphere_room_dark, t);
 }
 
-#elif defined(ENV_EQUIRECT)
+#elif defined(ENV_EQUIRECT) || defined(ENV_EQUIRECT_BOX) || defined(ENV_EQUIRECT_SPHERE)
 uniform sampler2D u_equirect;  // RGB32F, row 0 at the top (v = 0: +y)
 uniform float u_equirect_intensity;
 
@@ -124,5 +125,29 @@ vec3 sample_equirect(vec3 d) {
     return (1.0 - fy) * top + fy * bottom;
 }
 
+#if defined(ENV_EQUIRECT_BOX)
+// The image painted on the proxy box: the ray leaves the box at t, the image is read in the direction from the
+// capture point o to that point.
+uniform vec3 u_proxy_min;  // the proxy box relative to o
+uniform vec3 u_proxy_max;
+float proxy_safe(float d) { return abs(d) < 1e-12 ? (d < 0.0 ? -1e-12 : 1e-12) : d; }
+vec4 environment_trace(vec3 origin, vec3 d) {
+    vec3 x = origin - u_reference;
+    vec3 inv = vec3(1.0 / proxy_safe(d.x), 1.0 / proxy_safe(d.y), 1.0 / proxy_safe(d.z));
+    vec3 t3 = max((u_proxy_max - x) * inv, (u_proxy_min - x) * inv);
+    float t = min(t3.x, min(t3.y, t3.z));
+    return vec4(u_equirect_intensity * sample_equirect(normalize(x + t * d)), t);
+}
+#elif defined(ENV_EQUIRECT_SPHERE)
+// The image painted on the proxy sphere of radius u_proxy_radius around the capture point o.
+uniform float u_proxy_radius;
+vec4 environment_trace(vec3 origin, vec3 d) {
+    vec3 x = origin - u_reference;
+    float b = dot(x, d), c = dot(x, x) - u_proxy_radius * u_proxy_radius;
+    float t = -b + sqrt(max(b * b - c, 0.0));
+    return vec4(u_equirect_intensity * sample_equirect(normalize(x + t * d)), t);
+}
+#else
 vec4 environment_trace(vec3 origin, vec3 d) { return vec4(u_equirect_intensity * sample_equirect(d), 1e30); }
+#endif
 #endif

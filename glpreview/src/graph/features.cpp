@@ -6,11 +6,13 @@
 #include "libfit/base/text.hpp"
 
 namespace metalfit::glpreview {
-const char* environment_define(EnvironmentType type) {
-    switch (type) {
+const char* environment_define(const Environment& environment) {
+    switch (environment.type) {
         case EnvironmentType::room: return "ENV_ROOM";
         case EnvironmentType::sphere_room: return "ENV_SPHERE_ROOM";
-        case EnvironmentType::equirect: return "ENV_EQUIRECT";
+        case EnvironmentType::equirect:
+            if (!environment.equirect.proxy) return "ENV_EQUIRECT";
+            return std::holds_alternative<BoxProxy>(*environment.equirect.proxy) ? "ENV_EQUIRECT_BOX" : "ENV_EQUIRECT_SPHERE";
     }
     return "";
 }
@@ -35,7 +37,7 @@ std::string glsl_float(double value) {
 }
 
 std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere) {
-    std::vector<std::string> defines{environment_define(scene.environment.type)};
+    std::vector<std::string> defines{environment_define(scene.environment)};
     switch (sphere.reflection) {
         case ReflectionMode::classic: defines.push_back("REFLECTION_CLASSIC"); break;
         case ReflectionMode::box_parallax: defines.push_back("REFLECTION_BOX_PARALLAX"); break;
@@ -56,7 +58,7 @@ std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere
 Features plan_features(const Scene& scene) {
     Features f;
     const auto type = scene.environment.type;
-    f.environment_capture = type == EnvironmentType::room || type == EnvironmentType::sphere_room;
+    f.environment_capture = scene.environment.captured();
     f.equirect_image = type == EnvironmentType::equirect;
     for (const Sphere& s : scene.spheres) {
         if (s.reflection == ReflectionMode::distance_impostor) f.distance_channel = true;

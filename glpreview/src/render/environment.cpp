@@ -27,9 +27,31 @@ EnvironmentHit EnvironmentTracer::trace(Vec3 origin, Vec3 dir) const {
     switch (environment_.type) {
         case EnvironmentType::room: return trace_room(origin, dir);
         case EnvironmentType::sphere_room: return trace_sphere_room(origin, dir);
-        case EnvironmentType::equirect: return {equirect_radiance(dir)};
+        case EnvironmentType::equirect:
+            if (environment_.equirect.proxy) return trace_proxy(origin, dir);
+            return {equirect_radiance(dir)};
     }
     return {};
+}
+
+// The image painted on its proxy: where the ray leaves the proxy (box or sphere around the capture point o), the
+// image is read in the direction from o to that point (environment.glsl, ENV_EQUIRECT_BOX / _SPHERE).
+EnvironmentHit EnvironmentTracer::trace_proxy(Vec3 origin, Vec3 d) const {
+    const Vec3 x = origin - environment_.reference();
+    double t = 0;
+    if (const auto* sphere = std::get_if<SphereProxy>(&*environment_.equirect.proxy)) {
+        const double b = dot(x, d), c = dot(x, x) - sphere->radius * sphere->radius;
+        t = -b + std::sqrt(std::max(b * b - c, 0.0));
+    } else {
+        const BoxProxy& box = std::get<BoxProxy>(*environment_.equirect.proxy);
+        const Vec3 lo = box.min - environment_.reference(), hi = box.max - environment_.reference();
+        t = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < 3; ++i) {
+            const double inv = 1.0 / safe(d[i]);
+            t = std::min(t, std::max((hi[i] - x[i]) * inv, (lo[i] - x[i]) * inv));
+        }
+    }
+    return {equirect_radiance(normalize(x + t * d)), t};
 }
 
 EnvironmentHit EnvironmentTracer::trace_room(Vec3 o, Vec3 d) const {
@@ -117,6 +139,18 @@ RGB sample_equirect(const Image& image, Vec3 d) {
     const RGB top = (1 - fx) * image.at(xa, ya) + fx * image.at(xb, ya);
     const RGB bottom = (1 - fx) * image.at(xa, yb) + fx * image.at(xb, yb);
     return (1 - fy) * top + fy * bottom;
+}
+
+Vec3 equirect_direction(int x, int y, int width, int height) {
+    const double phi = ((x + 0.5) / width - 0.5) * 2 * std::numbers::pi, theta = (y + 0.5) / height * std::numbers::pi;
+    return {std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi)};
+}
+
+Image capture_equirect(const EnvironmentTracer& environment, Vec3 point, int width, int height) {
+    Image image(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) image.set(x, y, environment.trace(point, equirect_direction(x, y, width, height)).radiance);
+    return image;
 }
 
 }  // namespace metalfit::glpreview

@@ -160,8 +160,6 @@ void GpuRenderer::set_environment_uniforms(GLuint p) const {
             set(p, ("u_box_max" + index).c_str(), box.max);
             set(p, ("u_box_color" + index).c_str(), box.color);
         }
-        set(p, "u_box_parallax_min", room.min - env.reference());
-        set(p, "u_box_parallax_max", room.max - env.reference());
     } else if (env.type == EnvironmentType::sphere_room) {
         set(p, "u_sphere_room_radius", static_cast<float>(env.sphere_room.radius));
         set(p, "u_sphere_room_checker", static_cast<float>(env.sphere_room.checker_deg));
@@ -169,6 +167,19 @@ void GpuRenderer::set_environment_uniforms(GLuint p) const {
         set(p, "u_sphere_room_dark", env.sphere_room.dark);
     } else {
         set(p, "u_equirect_intensity", static_cast<float>(env.equirect.intensity));
+        if (env.equirect.proxy) {
+            if (const auto* sphere = std::get_if<SphereProxy>(&*env.equirect.proxy)) {
+                set(p, "u_proxy_radius", static_cast<float>(sphere->radius));
+            } else {
+                const auto& box = std::get<BoxProxy>(*env.equirect.proxy);
+                set(p, "u_proxy_min", box.min - env.reference());
+                set(p, "u_proxy_max", box.max - env.reference());
+            }
+        }
+    }
+    if (const auto box = env.parallax_box()) {  // the room's box or the equirect's box proxy
+        set(p, "u_box_parallax_min", box->min - env.reference());
+        set(p, "u_box_parallax_max", box->max - env.reference());
     }
 }
 
@@ -273,9 +284,13 @@ void GpuRenderer::upload_dfg(const SphereFresnel* fresnel, const DfgTable& table
 
 void GpuRenderer::capture_environment(const EnvironmentCube& cube) {
     const int n = cube.size;
-    const GLuint p = program("capture", {environment_define(scene_.environment.type)});
+    const GLuint p = program("capture", {environment_define(scene_.environment)});
     set(p, "u_size", n);
     const gl::Framebuffer fbo = gl::create_framebuffer();
+    if (scene_.environment.type == EnvironmentType::equirect) {  // an equirect on its proxy: the image is painted on it
+        if (!equirect_) throw std::invalid_argument("GpuRenderer: the equirect image is missing");
+        glBindTextureUnit(1, equirect_->id());
+    }
     glUseProgram(p);
     glBindVertexArray(vao_.id());
     glDisable(GL_DEPTH_TEST);
@@ -312,7 +327,7 @@ void GpuRenderer::draw_frame(bool diagnostics) {
         const float zero[4] = {0, 0, 0, 0};
         glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, zero);
     } else {
-        glUseProgram(program("background", {environment_define(scene_.environment.type)}));
+        glUseProgram(program("background", {environment_define(scene_.environment)}));
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
 

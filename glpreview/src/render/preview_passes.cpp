@@ -150,20 +150,39 @@ SceneInputs import_scene(PassGraph& graph, const Scene& scene) {
             graph.import<const Scene*>("camera", &scene)};
 }
 
+namespace {
+// What the capture ray-casts: "procedural room", or "equirect on its box proxy".
+std::string captured_environment_name(const Environment& environment) {
+    if (environment.type != EnvironmentType::equirect) return std::string("procedural ") + to_string(environment.type);
+    if (const auto* sphere = std::get_if<SphereProxy>(&*environment.equirect.proxy))
+        return "equirect on its sphere proxy (radius " + glsl_float(sphere->radius) + ")";
+    return "equirect on its box proxy";
+}
+}  // namespace
+
 Handle<EnvironmentCube> add_capture_environment_pass(PassGraph& graph, const Scene& scene, const Features& f,
-                                                     const SceneInputs& in, PreviewRun* run) {
+                                                     const SceneInputs& in, PreviewRun* run,
+                                                     std::optional<Handle<EquirectTexture>> equirect) {
+    struct Data {
+        std::optional<Handle<EquirectTexture>> equirect;
+        Handle<EnvironmentCube> out;
+    };
     return graph
-        .add_pass<Out<EnvironmentCube>>(
+        .add_pass<Data>(
             {"capture-environment",
-             std::string("procedural ") + to_string(scene.environment.type) + ": ray-cast by GL into a " +
+             captured_environment_name(scene.environment) + ": ray-cast by GL into a " +
                  std::to_string(scene.environment.cube_size) + "² cube map (radiance" + (f.distance_channel ? " + distance" : "") +
                  ")" + (f.prefiltered_map ? " with a mip chain for the prefilter" : "") + ", once, reused by every frame",
              Processor::gpu},
-            [&](Builder& b, Out<EnvironmentCube>& d) {
+            [&](Builder& b, Data& d) {
                 b.read(in.environment);
+                if (equirect) d.equirect = b.read(*equirect);
                 d.out = b.create<EnvironmentCube>("environment-cube", {scene.environment.cube_size, f.distance_channel, f.prefiltered_map});
             },
-            [run](const Out<EnvironmentCube>& d, Resources& r) { run->renderer().capture_environment(r.get(d.out)); })
+            [run](const Data& d, Resources& r) {
+                if (d.equirect) run->renderer().use_equirect(r.get(*d.equirect));
+                run->renderer().capture_environment(r.get(d.out));
+            })
         .out;
 }
 
@@ -175,7 +194,7 @@ std::pair<Handle<EquirectTexture>, Handle<Image>> add_load_equirect_pass(PassGra
     const Equirect& equirect = scene.environment.equirect;
     const Data& d = graph.add_pass<Data>(
         {"load-equirect",
-         "environment at infinity: " + equirect.file.string() + " (OpenImageIO)" +
+         std::string(equirect.proxy ? "environment image on a proxy: " : "environment at infinity: ") + equirect.file.string() + " (OpenImageIO)" +
              (equirect.colorspace.empty() ? std::string(", taken as the scene's space (untagged)")
                                           : ", from " + equirect.colorspace + " into the scene's space"),
          Processor::cpu},
@@ -207,17 +226,17 @@ void EnvironmentInputs::bind(GpuRenderer& gpu, Resources& r) const {
 EnvironmentInputs add_environment_passes(PassGraph& graph, const Scene& scene, const Features& f, const SceneInputs& in,
                                          PreviewRun* run) {
     EnvironmentInputs environment;
-    if (f.environment_capture) {
-        environment.cube = add_capture_environment_pass(graph, scene, f, in, run);
-        if (!f.distance_channel)
-            graph.skip("distance channel", "no sphere uses the distance impostor: the cube map stores radiance only (RGBA16F)");
-    } else {
-        graph.skip("capture-environment", "the environment is an image at infinity: nothing to capture");
-    }
     if (f.equirect_image) {
         const auto [texture, image] = add_load_equirect_pass(graph, scene, run);
         environment.equirect_texture = texture;
         environment.equirect_image = image;
+    }
+    if (f.environment_capture) {
+        environment.cube = add_capture_environment_pass(graph, scene, f, in, run, environment.equirect_texture);
+        if (!f.distance_channel)
+            graph.skip("distance channel", "no sphere uses the distance impostor: the cube map stores radiance only (RGBA16F)");
+    } else {
+        graph.skip("capture-environment", "the environment is an image at infinity: nothing to capture");
     }
     return environment;
 }

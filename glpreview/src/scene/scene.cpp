@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <string_view>
@@ -283,6 +284,29 @@ Room read_room(const Reader& r) {
     return room;
 }
 
+// "proxy": {"box": {"min": [..], "max": [..]}} or {"sphere": radius} (docs/scene.md, "Environments").
+EnvironmentProxy read_proxy(const Reader& environment) {
+    const Reader r(environment.at("proxy"), "environment.proxy", environment.file(), {"box", "sphere"});
+    if (r.has("box") == r.has("sphere")) r.fail("environment.proxy", "expected exactly one of 'box' or 'sphere'");
+    if (r.has("sphere")) {
+        SphereProxy sphere;
+        r.read("sphere", sphere.radius, 1e-3, kBig);
+        return sphere;
+    }
+    const Reader b(r.at("box"), "environment.proxy.box", environment.file(), {"min", "max"});
+    BoxProxy box;
+    for (const char* key : {"min", "max"})
+        if (!b.has(key)) b.fail(b.field(key), "missing");
+    b.read("min", box.min);
+    b.read("max", box.max);
+    for (int i = 0; i < 3; ++i) {
+        if (std::abs(box.min[i]) > kBig) b.fail(b.field("min"), "coordinates must be in [-1e+06, 1e+06]");
+        if (std::abs(box.max[i]) > kBig) b.fail(b.field("max"), "coordinates must be in [-1e+06, 1e+06]");
+        if (!(box.max[i] - box.min[i] >= 1e-3)) b.fail(b.field("max"), "must exceed min by at least 1e-3 on every axis");
+    }
+    return box;
+}
+
 }  // namespace
 
 void check_image_size(const std::filesystem::path& file, const std::string& what, int width, int height) {
@@ -335,6 +359,13 @@ Vec3 Environment::reference() const {
     if (reference_point) return *reference_point;
     if (type == EnvironmentType::room) return 0.5 * (room.min + room.max);
     return {0, 0, 0};
+}
+
+std::optional<BoxProxy> Environment::parallax_box() const {
+    if (type == EnvironmentType::room) return BoxProxy{room.min, room.max};
+    if (type == EnvironmentType::equirect && equirect.proxy)
+        if (const auto* box = std::get_if<BoxProxy>(&*equirect.proxy)) return *box;
+    return std::nullopt;
 }
 
 const char* to_string(ReflectionMode mode) {
@@ -452,7 +483,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
                 e.reference_point = p;
             }
         } else if (type == "equirect") {
-            Reader r(env, "environment", file, {"type", "file", "intensity", "colorspace"});
+            Reader r(env, "environment", file, {"type", "file", "intensity", "colorspace", "proxy", "reference_point", "cube_size"});
             e.type = EnvironmentType::equirect;
             std::string path;
             r.read("file", path);
@@ -461,6 +492,25 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
                                                                         : file.parent_path() / path;
             r.read("intensity", e.equirect.intensity, 0, kBig);
             if (r.has("colorspace")) r.read("colorspace", e.equirect.colorspace);
+            if (r.has("proxy")) e.equirect.proxy = read_proxy(r);
+            r.read("cube_size", e.cube_size, 8, 4096);
+            if (r.has("reference_point")) {
+                Vec3 p;
+                r.read("reference_point", p);
+                e.reference_point = p;
+            }
+            if (const auto* box = e.equirect.proxy ? std::get_if<BoxProxy>(&*e.equirect.proxy) : nullptr) {
+                const Vec3 o = e.reference();
+                for (int i = 0; i < 3; ++i)
+                    if (!(o[i] > box->min[i] && o[i] < box->max[i]))
+                        r.fail(r.has("reference_point") ? "environment.reference_point" : "environment.proxy.box",
+                               "the capture point (environment.reference_point, default the origin) must lie inside the proxy box");
+            }
+            if (!e.equirect.proxy)
+                for (const char* key : {"reference_point", "cube_size"})
+                    if (r.has(key))
+                        scene.warnings.push_back(file.string() + ": environment." + key +
+                                                 ": ignored: an equirect without a proxy is at infinity (nothing is captured)");
         } else {
             top.fail("environment.type", "unknown value '" + excerpt(type) + "' (known: room, sphere-room, equirect)");
         }
@@ -501,8 +551,8 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
                                      ": ignored: glossy 'localized' localizes by the area lights' positions");
         if (r.has("localized_size") && !(s.rough() && s.glossy == GlossyMethod::localized))
             scene.warnings.push_back(file.string() + ": " + r.field("localized_size") + ": ignored: only a rough sphere with glossy 'localized' uses it");
-        if (s.rough() && scene.environment.type == EnvironmentType::equirect)
-            r.fail(r.field("roughness"), "rough spheres need a captured environment (room or sphere-room): an equirect image is not prefiltered");
+        if (s.rough() && !scene.environment.captured())
+            r.fail(r.field("roughness"), "rough spheres need a captured environment (room, sphere-room or an equirect with a proxy): an equirect at infinity is not prefiltered");
         if (r.has("glossy") && !s.rough())
             scene.warnings.push_back(file.string() + ": " + r.field("glossy") + ": ignored: the sphere is a mirror (roughness 0)");
         if (s.reflection != ReflectionMode::distance_impostor)
@@ -510,10 +560,10 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
                 if (r.has(key))
                     scene.warnings.push_back(file.string() + ": " + r.field(key) + ": ignored: only the distance impostor refines (reflection '" +
                                              to_string(s.reflection) + "')");
-        if (s.reflection != ReflectionMode::classic && scene.environment.type == EnvironmentType::equirect)
-            r.fail(r.field("reflection"), "an equirect environment is at infinity: only 'classic' reflections");
-        if (s.reflection == ReflectionMode::box_parallax && scene.environment.type != EnvironmentType::room)
-            r.fail(r.field("reflection"), "box-parallax needs a room environment");
+        if (s.reflection != ReflectionMode::classic && !scene.environment.captured())
+            r.fail(r.field("reflection"), "an equirect environment is at infinity without a proxy: only 'classic' reflections");
+        if (s.reflection == ReflectionMode::box_parallax && !scene.environment.parallax_box())
+            r.fail(r.field("reflection"), "box-parallax needs a room environment or an equirect with a box proxy");
         if (scene.spheres.size() >= kMaxSpheres) top.fail("spheres", "at most " + std::to_string(kMaxSpheres) + " spheres");
         scene.spheres.push_back(s);
     });

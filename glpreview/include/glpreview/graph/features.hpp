@@ -12,9 +12,9 @@ namespace metalfit::glpreview {
 
 // What the scene calls for. Every flag has a reason string for --explain.
 struct Features {
-    bool environment_capture = false;  // a procedural room (or sphere room): ray-cast by GL into the cube map
+    bool environment_capture = false;  // a procedural room, sphere room or an equirect on its proxy: ray-cast by GL into the cube map
     bool distance_channel = false;     // some sphere uses the distance impostor: the cube map stores distances
-    bool equirect_image = false;       // an image environment at infinity (read with OpenImageIO)
+    bool equirect_image = false;       // an image environment, at infinity or on a proxy (read with OpenImageIO)
     bool reference_lut = false;        // some sphere shows the exact reference curve (1D RGB texture)
     bool model_fits = false;           // some sphere uses a libfit model (fit or closed-form parameters)
     bool cpu_reference = false;        // the ray-traced reference image (asked for, or needed by difference/metrics)
@@ -32,8 +32,9 @@ struct Features {
 
 Features plan_features(const Scene& scene);
 
-// The shader #define of an environment type: "ENV_ROOM", "ENV_SPHERE_ROOM" or "ENV_EQUIRECT".
-const char* environment_define(EnvironmentType type);
+// The shader #define of an environment: "ENV_ROOM", "ENV_SPHERE_ROOM", "ENV_EQUIRECT" (at infinity), or
+// "ENV_EQUIRECT_BOX" / "ENV_EQUIRECT_SPHERE" (an equirect on its proxy).
+const char* environment_define(const Environment& environment);
 
 // "STRATEGY_SECANT", ... "STRATEGY_SAFE_SECANT".
 const char* strategy_define(Strategy strategy);

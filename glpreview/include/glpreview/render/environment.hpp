@@ -1,5 +1,5 @@
 // The environment on the CPU: exact ray casting of the analytic room / sphere room and bilinear lookups of the
-// equirect image, written to match shaders/environment.glsl line by line (the GPU capture and background use that
+// equirect image (at infinity, or painted on its box or sphere proxy), written to match shaders/environment.glsl line by line (the GPU capture and background use that
 // file; tests compare the two).
 #pragma once
 
@@ -26,6 +26,7 @@ public:
 private:
     EnvironmentHit trace_room(Vec3 origin, Vec3 dir) const;
     EnvironmentHit trace_sphere_room(Vec3 origin, Vec3 dir) const;
+    EnvironmentHit trace_proxy(Vec3 origin, Vec3 dir) const;  // an equirect on its proxy
     RGB equirect_radiance(Vec3 dir) const;
 
     const Environment& environment_;
@@ -34,5 +35,11 @@ private:
 
 // Bilinear lookup in an equirect image (u wraps, v clamps), as the shader does it with texelFetch.
 RGB sample_equirect(const Image& image, Vec3 dir);
+// The unit direction of an equirect image's texel centre (x + ½, y + ½), the inverse of sample_equirect's mapping
+// (docs/scene.md, "Exact rules": u = 0.5 + atan2(d.x, −d.z)/2π, v = acos(d.y)/π).
+Vec3 equirect_direction(int x, int y, int width, int height);
+// The environment seen from `point` as a width × height equirect image (each texel centre's ray traced exactly): a
+// reflection probe of a procedural room, as an engine would capture one.
+Image capture_equirect(const EnvironmentTracer& environment, Vec3 point, int width, int height);
 
 }  // namespace metalfit::glpreview

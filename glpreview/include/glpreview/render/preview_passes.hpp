@@ -66,8 +66,8 @@ struct SceneInputs {
 };
 SceneInputs import_scene(graph::PassGraph& graph, const Scene& scene);
 
-// The environment a GPU frame reads: the cube captured from a procedural room, or the equirect texture of an image
-// at infinity (with its CPU image for the reference tracer).
+// The environment a GPU frame reads: the cube captured from a procedural room or an equirect on its proxy, and/or
+// the equirect texture of an image (with its CPU image for the reference tracer).
 struct EnvironmentInputs {
     std::optional<graph::Handle<EnvironmentCube>> cube;
     std::optional<graph::Handle<EquirectTexture>> equirect_texture;
@@ -100,8 +100,10 @@ PreviewHandles add_preview_passes(graph::PassGraph& graph, const Scene& scene, c
 void skip_unneeded_effects(graph::PassGraph& graph);
 
 // One pass each (preview_passes.cpp).
+// `equirect`: the image an equirect on its proxy paints on the proxy (the capture reads it).
 graph::Handle<EnvironmentCube> add_capture_environment_pass(graph::PassGraph&, const Scene&, const Features&,
-                                                            const SceneInputs&, PreviewRun*);
+                                                            const SceneInputs&, PreviewRun*,
+                                                            std::optional<graph::Handle<EquirectTexture>> equirect = {});
 std::pair<graph::Handle<EquirectTexture>, graph::Handle<Image>> add_load_equirect_pass(graph::PassGraph&, const Scene&,
                                                                                       PreviewRun*);
 graph::Handle<FresnelSet> add_reference_luts_pass(graph::PassGraph&, const Scene&, const SceneInputs&, PreviewRun*);

@@ -53,11 +53,25 @@ struct SphereRoom {
     RGB light{0.9, 0.8, 0.6}, dark{0.1, 0.15, 0.3};
 };
 
-// An equirectangular (latitude-longitude) HDR image at infinity; classic reflections only.
+// The geometry an equirect image is projected onto (a reflection probe's proxy, docs/scene.md): the image seen from
+// the reference point (the capture point) is painted on an axis-aligned box around it or on a sphere of `radius`
+// centred on it, so that reflections of it can be localized (box-parallax, distance impostor) and rough spheres can
+// be prefiltered from its captured cube.
+struct BoxProxy {
+    Vec3 min, max;  // world space; the reference point lies strictly inside
+};
+struct SphereProxy {
+    double radius = 0;  // around the reference point
+};
+using EnvironmentProxy = std::variant<BoxProxy, SphereProxy>;
+
+// An equirectangular (latitude-longitude) HDR image: at infinity (classic reflections only, mirrors only) or, with a
+// proxy, on the proxy's surface (captured into a cube map with the proxy's distances, like a procedural room).
 struct Equirect {
     std::filesystem::path file;  // resolved against the scene file's folder
     double intensity = 1;
     std::string colorspace;  // the OCIO colour space of the image's pixels; empty: the scene's space (untagged)
+    std::optional<EnvironmentProxy> proxy;  // none: at infinity
 };
 
 enum class EnvironmentType { room, sphere_room, equirect };
@@ -67,10 +81,15 @@ struct Environment {
     Room room;
     SphereRoom sphere_room;
     Equirect equirect;
-    std::optional<Vec3> reference_point;  // cube map centre; default: the room's centre
+    std::optional<Vec3> reference_point;  // cube map centre; default: the room's centre (else the origin)
     int cube_size = 256;                  // texels per cube face edge
 
     Vec3 reference() const;
+    // Captured into a cube map around the reference point (rooms, and an equirect with a proxy): reflections can be
+    // localized and rough spheres rendered; false only for an equirect at infinity.
+    bool captured() const { return type != EnvironmentType::equirect || equirect.proxy.has_value(); }
+    // The box a box-parallax lookup intersects: the room's, or an equirect's box proxy; none otherwise.
+    std::optional<BoxProxy> parallax_box() const;
 };
 
 enum class ReflectionMode { classic, distance_impostor, box_parallax };
