@@ -72,4 +72,11 @@ inline double node_power(const CurveNode& node, double e, double& d_de) {
     return value;
 }
 
+// Where a node power's derivative is NaN (m = 0, e < 1) the Jets' NaN reaches every derivative of the curve (their
+// e·m^(e−1) · 0 term): the gradient is set to NaN as a whole, as autodiff gives it.
+inline void spread_undefined_derivative(double d_de, double* gradient, int count) {
+    if (std::isnan(d_de))
+        for (int i = 0; i < count; ++i) gradient[i] = std::numeric_limits<double>::quiet_NaN();
+}
+
 }  // namespace metalfit::model_math

@@ -50,6 +50,7 @@ struct LazanyiComp {
         const double walpha = model_math::node_power(x, p[3], dalpha), a_mu = p[2] * x.mu;
         g[2] = -(x.mu * walpha);
         g[3] = -(a_mu * dalpha);
+        model_math::spread_undefined_derivative(dalpha, g, 4);
         return F - a_mu * walpha;
     }
 

@@ -45,6 +45,7 @@ struct SchlickComp {
         g[0] = 1.0 - w5;
         g[1] = -(x.mu * walpha);
         g[2] = -(a_mu * dalpha);
+        model_math::spread_undefined_derivative(dalpha, g, 3);
         return p[0] + (1.0 - p[0]) * w5 - a_mu * walpha;
     }
 

@@ -49,6 +49,8 @@ struct SchlickCompGeneral {
         g[1] = one_minus_F0 * dp;
         g[2] = -(x.mu * walpha);
         g[3] = -(a_mu * dalpha);
+        model_math::spread_undefined_derivative(dp, g, 4);
+        model_math::spread_undefined_derivative(dalpha, g, 4);
         return p[0] + one_minus_F0 * wp - a_mu * walpha;
     }
 
