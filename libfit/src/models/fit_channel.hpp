@@ -143,9 +143,9 @@ ChannelParameters clamp_to_bounds(ChannelParameters p) {
 // Start pruning of the plain fits (no --pin F0, no --gamut-fit): a start whose cost after kIteration iterations of
 // Levenberg–Marquardt is still above kFactor × the best final cost of the starts before it is abandoned. This is a
 // rule measured on the catalog's solver traces, not a bound: there the starts it abandons end in other valleys or
-// at the same optimum (then the record moves by the last bits: ≤ 1.3e-13 relative in cost), and it saves 52 % of
-// schlick-comp-general's iterations, 59 % of lazanyi-comp's, 21 % of rational's (docs/accuracy-vs-cost.md, "Fit
-// cost"); the FitOptimum tests hold the results to the independent optimum on the catalog and its alternate files.
+// at the same optimum reached a few ulps higher (then a record's rel_rms moves by ≤ 3.5e-12 relative), and it
+// saves 52 % of schlick-comp-general's iterations, 59 % of lazanyi-comp's, 21 % of rational's (docs/fitting.md,
+// "Fit cost"); the FitOptimum tests hold the results to the independent optimum on the catalog and its alternate files.
 class StartPruning final : public ceres::IterationCallback {
 public:
     static constexpr int kIteration = 5;
