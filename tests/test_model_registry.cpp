@@ -1,5 +1,6 @@
 // The model registry (libfit/models/registry.hpp): typed tests over every registered model, derived from the one
 // list, and the compile-time trait checks that make a model without an exporter's trait fail to build.
+#include <ceres/jet.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -52,6 +53,38 @@ TYPED_TEST(EveryModel, TheRuntimeModelIsTheStruct) {
         for (double mu : {0.0, 0.1, 0.5, 0.9, 1.0}) EXPECT_EQ(model.evaluate(std::span<const double>(p), mu), M::evaluate(p.data(), mu)) << mu;
     // Its GLSL defines the function the model names.
     EXPECT_NE(model.glsl_source().find("vec3 " + std::string(M::kGlslFunction) + "("), std::string::npos);
+}
+
+// Where a model gives its gradient in closed form (AnalyticGradient), the fits use it as their Jacobian instead of
+// autodiff: value and every derivative must be what Ceres's Jets compute, to the bit, so that the fits take the path
+// autodiff takes (NaN where the Jets give NaN: α < 1 at μ = 1).
+TYPED_TEST(EveryModel, AnalyticGradientIsAutodiffs) {
+    using M = TypeParam;
+    if constexpr (!AnalyticGradient<M>) {
+        GTEST_SKIP() << M::kId << " is fitted with autodiff";
+    } else {
+        constexpr int N = static_cast<int>(M::kParameters.size());
+        using Jet = ceres::Jet<double, N>;
+        const auto same = [](double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; };
+        std::vector<ChannelParameters> sets = sample_parameters<M>();
+        sets.push_back(ChannelParameters(N, 0.0));
+        for (int i = 0; i < N; ++i) sets.back()[i] = M::kParameters[i].lower;  // α at its lower bound 0.05 < 1
+        int checked = 0;
+        for (const ChannelParameters& p : sets)
+            for (double mu : {0.0, 1e-6, 0.013, 0.25, 0.5, 0.77, 0.999, 1.0, -0.1, 1.1}) {
+                std::array<Jet, N> q;
+                for (int i = 0; i < N; ++i) q[i] = Jet(p[i], i);
+                const Jet F = M::evaluate(q.data(), Jet(mu));
+                std::array<double, N> g{};
+                const double value = M::evaluate_with_gradient(p.data(), model_math::CurveNode::at(mu), g.data());
+                EXPECT_TRUE(same(value, F.a)) << M::kId << " mu=" << mu << ": " << value << " against " << F.a;
+                for (int i = 0; i < N; ++i)
+                    EXPECT_TRUE(same(g[i], F.v[i])) << M::kId << " d/d" << M::kParameters[i].name << " mu=" << mu
+                                                    << ": " << g[i] << " against " << F.v[i];
+                ++checked;
+            }
+        EXPECT_GT(checked, 0);
+    }
 }
 
 TYPED_TEST(EveryModel, GrazingIsOneAndFloatAgreesWithDouble) {

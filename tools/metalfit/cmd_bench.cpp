@@ -9,6 +9,8 @@
 #include "commands.hpp"
 #include "libfit/base/atomic_file.hpp"
 #include "metalfit_bench/bench_report.hpp"
+#include "metalfit_bench/environment.hpp"
+#include "metalfit_bench/scaling.hpp"
 #include "metalfit_bench/subprocess.hpp"
 
 namespace metalfit::cli {
@@ -21,7 +23,41 @@ struct BenchCommandOptions {
     std::filesystem::path output;
     std::string material = "Au";
     std::optional<std::filesystem::path> glpreview;
+    // --scaling: the scaling table instead of the report.
+    bool scaling = false;
+    std::vector<std::size_t> scaling_sizes;
+    std::vector<int> scaling_threads;
+    std::string scaling_models;
+    // The hidden child of --scaling: one cell measured in this process.
+    std::optional<std::size_t> scaling_cell;
+    int threads = 1;
 };
+
+std::vector<std::string> split_models(const std::string& list) {
+    std::vector<std::string> ids;
+    for (const Model* m : parse_model_list(list)) ids.emplace_back(m->id());
+    return ids;
+}
+
+void run_scaling_command(const BenchCommandOptions& o, const GlobalOptions& global) {
+    if (o.scaling_cell) {
+        const bench::Environment env = bench::Environment::load(global.data_dir, global.ocio_config);
+        emit(bench::to_json(bench::measure_scaling_cell(env, *o.scaling_cell, o.threads, split_models(o.scaling_models))).dump() + "\n",
+             o.output);
+        return;
+    }
+    bench::ScalingOptions options;
+    options.metalfit = std::filesystem::read_symlink("/proc/self/exe");
+    options.data_dir = global.data_dir;
+    options.ocio_config = global.ocio_config;
+    if (!o.scaling_sizes.empty()) options.sizes = o.scaling_sizes;
+    if (!o.scaling_threads.empty()) options.threads = o.scaling_threads;
+    if (!o.scaling_models.empty()) options.models = split_models(o.scaling_models);
+    options.command_line = "metalfit bench --scaling";
+    if (isatty(STDERR_FILENO)) options.progress = [](const std::string& line) { std::cerr << "metalfit bench: " << line << "\n"; };
+    const bench::ScalingTable table = bench::run_scaling(options);
+    emit(o.json ? bench::to_json(table).dump(2) + "\n" : bench::to_text(table), o.output);
+}
 
 std::string read_if_exists(const std::filesystem::path& file) {
     std::ifstream in(file);
@@ -31,6 +67,7 @@ std::string read_if_exists(const std::filesystem::path& file) {
 }
 
 void run_bench_command(const BenchCommandOptions& o, const GlobalOptions& global) {
+    if (o.scaling || o.scaling_cell) return run_scaling_command(o, global);
     bench::BenchOptions options;
     options.quick = o.quick;
     options.material = o.material;
@@ -58,6 +95,20 @@ std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions& glob
     app.add_option("--material", o->material, "Material whose fitted parameters the evaluation timings use (default: Au)");
     app.add_option("--glpreview", o->glpreview, "The glpreview executable for the GPU sections (default: next to metalfit)");
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout (- for stdout)");
+    app.add_flag("--scaling", o->scaling,
+                 "Only the scaling table: fit on 1, 29, 300, 3000 synthetic materials (catalog tables, n and k perturbed) on "
+                 "1 and 2 threads: wall, CPU, peak memory, fits per CPU second (minutes)");
+    app.add_option("--scaling-sizes", o->scaling_sizes, "Material counts of --scaling (default: 1,29,300,3000)")
+        ->delimiter(',')
+        ->check(CLI::PositiveNumber);
+    app.add_option("--scaling-threads", o->scaling_threads, "Thread counts of --scaling (default: 1,2)")
+        ->delimiter(',')
+        ->check(CLI::PositiveNumber);
+    app.add_option("--scaling-models", o->scaling_models,
+                   "Models of --scaling, comma-separated, or all (default: the first six, "
+                   "schlick,lazanyi,lazanyi-comp,f82-tint,conductor-rgb,gulbrandsen)");
+    app.add_option("--scaling-cell", o->scaling_cell)->group("");  // the child of --scaling
+    app.add_option("--threads", o->threads)->group("")->check(CLI::PositiveNumber);
     return [o, &global] { run_bench_command(*o, global); };
 }
 

@@ -21,16 +21,26 @@ struct CompensationCandidate {
 inline std::vector<CompensationCandidate> compensation_candidates(const ChannelTarget& t, const std::vector<double>& powers,
                                                                   double alpha_lo, double alpha_hi, int steps,
                                                                   double F0_lo, double F0_hi, double a_lo, double a_hi) {
+    // m^α at every node for every α of the grid, computed once rather than once per power (the same values).
+    const std::size_t n = t.mu.size();
+    std::vector<double> alphas, m_alpha;
+    for (int j = 0; j <= steps; ++j) {
+        const double alpha = alpha_lo * std::pow(alpha_hi / alpha_lo, double(j) / steps);
+        alphas.push_back(alpha);
+        for (std::size_t i = 0; i < n; ++i) m_alpha.push_back(std::pow(1.0 - t.mu[i], alpha));
+    }
     std::vector<CompensationCandidate> candidates;
-    for (double power : powers)
+    std::vector<double> m_power(n);
+    for (double power : powers) {
+        for (std::size_t i = 0; i < n; ++i) m_power[i] = std::pow(1.0 - t.mu[i], power);
         for (int j = 0; j <= steps; ++j) {
-            const double alpha = alpha_lo * std::pow(alpha_hi / alpha_lo, double(j) / steps);
+            const double alpha = alphas[j];
             std::vector<std::vector<double>> A(2);
             std::vector<double> y;
-            for (std::size_t i = 0; i < t.mu.size(); ++i) {
-                const double mu = t.mu[i], m = 1.0 - mu, w = std::pow(m, power), s = t.scale[i];
+            for (std::size_t i = 0; i < n; ++i) {
+                const double mu = t.mu[i], w = m_power[i], s = t.scale[i];
                 A[0].push_back(s * (1.0 - w));
-                A[1].push_back(-s * mu * std::pow(m, alpha));
+                A[1].push_back(-s * mu * m_alpha[j * n + i]);
                 y.push_back(s * (t.value[i] - w));
             }
             const auto x = linear_least_squares(A, y);
@@ -43,6 +53,7 @@ inline std::vector<CompensationCandidate> compensation_candidates(const ChannelT
             }
             candidates.push_back({cost, F0, power, a, alpha});
         }
+    }
     std::stable_sort(candidates.begin(), candidates.end(),
                      [](const CompensationCandidate& x, const CompensationCandidate& y) { return x.cost < y.cost; });
     return candidates;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 namespace metalfit::model_math {
 
@@ -46,6 +47,36 @@ T conductor_fresnel(const T& n, const T& k2, const T& nk, const T& mu) {
     const T Fs = (r - T(2) * a * mu + mu2) / (r + T(2) * a * mu + mu2);
     const T Fp = Fs * (mu2 * r - T(2) * a * s2 * mu + s2 * s2) / (mu2 * r + T(2) * a * s2 * mu + s2 * s2);
     return T(0.5) * (Fs + Fp);
+}
+
+// One node of a fit's target as the analytic gradients take it (evaluate_with_gradient): μ clamped, m = 1 − μ and
+// ln m, computed once per node rather than once per evaluation.
+struct CurveNode {
+    double mu, m, log_m;
+    static CurveNode at(double mu_in) {
+        const double mu = clamp_mu(mu_in), m = 1.0 - mu;
+        return {mu, m, std::log(m)};
+    }
+};
+
+// mᵉ of a node and its derivative in e, with the operations of Ceres's pow(Jet, Jet) for a constant base
+// (ceres/jet.h: value pow(m, e), derivative pow(m, e) · ln m; at m = 0: 0 and a zero derivative for e ≥ 1, NaN
+// below), so that an analytic Jacobian built from it is the one autodiff gives, bit for bit.
+inline double node_power(const CurveNode& node, double e, double& d_de) {
+    if (node.m == 0.0 && e >= 1.0) {
+        d_de = 0.0;
+        return e > 1.0 ? 0.0 : node.m;
+    }
+    const double value = std::pow(node.m, e);
+    d_de = node.m == 0.0 ? std::numeric_limits<double>::quiet_NaN() : value * node.log_m;
+    return value;
+}
+
+// Where a node power's derivative is NaN (m = 0, e < 1) the Jets' NaN reaches every derivative of the curve (their
+// e·m^(e−1) · 0 term): the gradient is set to NaN as a whole, as autodiff gives it.
+inline void spread_undefined_derivative(double d_de, double* gradient, int count) {
+    if (std::isnan(d_de))
+        for (int i = 0; i < count; ++i) gradient[i] = std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace metalfit::model_math

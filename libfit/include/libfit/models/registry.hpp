@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "libfit/models/model.hpp"
+#include "libfit/models/model_math.hpp"
 #include "libfit/models/model_headers.hpp"  // generated: the header of every model folder
 
 namespace metalfit {
@@ -75,6 +76,14 @@ template <class M>
 concept PinnableF0 = requires(const double* p, double F0) {
     { M::kPinnedParameter } -> std::convertible_to<std::size_t>;
     { M::pinned_value(p, F0) } -> std::same_as<double>;
+};
+
+// Whether M gives its curve's gradient in the parameters in closed form (optional): the fits then use it as the
+// Jacobian instead of autodiff. It must return what Ceres's Jets compute, value and derivatives, operation for
+// operation (EveryModel.AnalyticGradientIsAutodiffs checks equality): the fits then take the same path.
+template <class M>
+concept AnalyticGradient = requires(const double* p, const model_math::CurveNode& node, double* gradient) {
+    { M::evaluate_with_gradient(p, node, gradient) } -> std::same_as<double>;
 };
 
 // Whether M is an F82-tint curve: it maps its parameters to (F0, tint) of the same curve.

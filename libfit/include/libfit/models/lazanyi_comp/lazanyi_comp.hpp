@@ -37,6 +37,23 @@ struct LazanyiComp {
         return Lazanyi::evaluate(p, mu) - p[2] * mu * pow(T(1) - mu, p[3]);
     }
 
+    // The fits' Jacobian: evaluate's operations as Ceres's Jets carry them (F* = num / den as the Jets divide:
+    // num · (1 / den)), with ln m once per node.
+    static double evaluate_with_gradient(const double* p, const model_math::CurveNode& x, double* g) {
+        const double n = p[0], k = p[1], k2 = k * k, dk2 = k + k;
+        const double w5 = model_math::schlick_weight(x.mu);
+        const double num = (n - 1.0) * (n - 1.0) + k2 + 4.0 * n * w5, den = (n + 1.0) * (n + 1.0) + k2;
+        const double inverse = 1.0 / den, F = num * inverse;
+        g[0] = ((2.0 * (n - 1.0) + 4.0 * w5) - F * (2.0 * (n + 1.0))) * inverse;
+        g[1] = (dk2 - F * dk2) * inverse;
+        double dalpha;
+        const double walpha = model_math::node_power(x, p[3], dalpha), a_mu = p[2] * x.mu;
+        g[2] = -(x.mu * walpha);
+        g[3] = -(a_mu * dalpha);
+        model_math::spread_undefined_derivative(dalpha, g, 4);
+        return F - a_mu * walpha;
+    }
+
     // The thesis construction on top of each closed form of Lazanyi: a = −d/dμ [R − F*] at μ = 0 (one-sided,
     // second order), α from the match at μ = 0.15. Undefined where a = 0, the logarithm's argument is ≤ 0 or α leaves
     // its bounds (the construction diverges).

@@ -37,6 +37,18 @@ struct SchlickComp {
         return p[0] + (T(1) - p[0]) * model_math::schlick_weight(mu) - p[1] * mu * pow(T(1) - mu, p[2]);
     }
 
+    // The fits' Jacobian: evaluate's operations as Ceres's Jets carry them, with ln m once per node.
+    static double evaluate_with_gradient(const double* p, const model_math::CurveNode& x, double* g) {
+        double dalpha;
+        const double w5 = model_math::schlick_weight(x.mu), walpha = model_math::node_power(x, p[2], dalpha);
+        const double a_mu = p[1] * x.mu;
+        g[0] = 1.0 - w5;
+        g[1] = -(x.mu * walpha);
+        g[2] = -(a_mu * dalpha);
+        model_math::spread_undefined_derivative(dalpha, g, 3);
+        return p[0] + (1.0 - p[0]) * w5 - a_mu * walpha;
+    }
+
     // "r1": F0 = R(1), a = 0 (Schlick).
     static std::vector<ClosedForm> closed_forms(const ClosedFormInput& input);
     static std::vector<ChannelParameters> neutral_starts() { return {{0.5, 0.0, 6.0}, {0.9, 0.3, 2.0}}; }

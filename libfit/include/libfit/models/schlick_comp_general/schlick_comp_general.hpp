@@ -39,6 +39,21 @@ struct SchlickCompGeneral {
         return p[0] + (T(1) - p[0]) * pow(m, p[1]) - p[2] * mu * pow(m, p[3]);
     }
 
+    // The fits' Jacobian: evaluate's operations as Ceres's Jets carry them, with ln m once per node (mᵖ and m^α
+    // cost one pow each instead of the Jets' two pow and a log).
+    static double evaluate_with_gradient(const double* p, const model_math::CurveNode& x, double* g) {
+        double dp, dalpha;
+        const double wp = model_math::node_power(x, p[1], dp), walpha = model_math::node_power(x, p[3], dalpha);
+        const double one_minus_F0 = 1.0 - p[0], a_mu = p[2] * x.mu;
+        g[0] = 1.0 - wp;
+        g[1] = one_minus_F0 * dp;
+        g[2] = -(x.mu * walpha);
+        g[3] = -(a_mu * dalpha);
+        model_math::spread_undefined_derivative(dp, g, 4);
+        model_math::spread_undefined_derivative(dalpha, g, 4);
+        return p[0] + one_minus_F0 * wp - a_mu * walpha;
+    }
+
     // "r1": F0 = R(1), p = 5, a = 0 (Schlick).
     static std::vector<ClosedForm> closed_forms(const ClosedFormInput& input);
     static std::vector<ChannelParameters> neutral_starts() { return {{0.5, 5.0, 0.0, 6.0}, {0.9, 5.0, 0.3, 2.0}}; }

@@ -1,0 +1,76 @@
+// The scaling table of `metalfit bench --scaling`: `fit` on synthetic material sets of growing size (the catalog's
+// tables with n and k perturbed, deterministic) on 1 and 2 threads: wall, CPU and peak memory, each cell in a
+// process of its own (peak resident memory is a process's), and the fit throughput (materials × models per CPU second).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "libfit/io/catalog.hpp"
+#include "libfit/io/material.hpp"
+#include "metalfit_bench/environment.hpp"
+
+namespace metalfit::bench {
+
+inline constexpr std::uint64_t kScalingSeed = 20261201;
+
+// `count` synthetic materials: material i is catalog entry i mod E (its primary table) with n and k each scaled by a
+// factor 1 + 0.1 u, u uniform in [−1, 1] from a generator seeded with seed + i (the same set on every machine; a
+// curve given by a formula or a constant is kept as it is). Loaded on demand, as `fit --all` loads its files.
+std::vector<std::function<Material()>> synthetic_materials(const Catalog& catalog, std::size_t count,
+                                                           std::uint64_t seed = kScalingSeed);
+
+// One cell: what the child process measured.
+struct ScalingCell {
+    std::size_t materials = 0;
+    int threads = 0;
+    std::size_t fits = 0;   // material × model fits done (materials × models when every fit ran)
+    double wall_s = 0;      // the fits (fit_materials), wall clock
+    double cpu_s = 0;       // the fits, process CPU (user + system, every thread)
+    double peak_mib = 0;    // peak resident memory of the whole process (ru_maxrss)
+};
+
+// Fits `materials` synthetic materials with `models` on `threads` threads in this process and measures it
+// (`metalfit bench --scaling-cell`, the child of run_scaling).
+ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, int threads,
+                                 const std::vector<std::string>& models);
+nlohmann::json to_json(const ScalingCell& cell);
+ScalingCell scaling_cell_from_json(const nlohmann::json& j);
+
+struct ScalingOptions {
+    std::filesystem::path metalfit;  // the executable the cells run in (this one)
+    std::filesystem::path data_dir;
+    std::optional<std::filesystem::path> ocio_config;
+    std::vector<std::size_t> sizes{1, 29, 300, 3000};
+    std::vector<int> threads{1, 2};
+    std::vector<std::string> models{"schlick", "lazanyi", "lazanyi-comp", "f82-tint", "conductor-rgb", "gulbrandsen"};
+    std::string command_line;
+    std::function<void(const std::string&)> progress;
+};
+
+struct ScalingTable {
+    std::vector<std::string> models;
+    std::uint64_t seed = kScalingSeed;
+    std::vector<ScalingCell> cells;  // sizes × threads, in that order
+    std::string machine;             // CPU model, cores
+    std::string command_line;
+    // Fit throughput, materials × models per CPU second, of the largest 1-thread cell (its CPU time includes the
+    // reference curves every material needs).
+    double fits_per_cpu_second() const;
+};
+
+// Runs every cell as `metalfit bench --scaling-cell N --threads T --scaling-models LIST` and collects them. Throws
+// std::runtime_error naming the cell when a child fails.
+ScalingTable run_scaling(const ScalingOptions& options);
+
+nlohmann::json to_json(const ScalingTable& table);  // schema metalfit.bench-scaling/1 (docs/cli.md)
+std::string to_text(const ScalingTable& table);
+
+}  // namespace metalfit::bench

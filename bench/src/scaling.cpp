@@ -1,0 +1,170 @@
+#include "metalfit_bench/scaling.hpp"
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <memory>
+#include <random>
+#include <stdexcept>
+
+#include "libfit/fit/fit_batch.hpp"
+#include "libfit/models/model.hpp"
+#include "metalfit_bench/machine.hpp"
+#include "metalfit_bench/subprocess.hpp"
+
+namespace metalfit::bench {
+
+namespace {
+
+// A uniform number in [−1, 1] from 53 bits of the generator (std::uniform_real_distribution is not the same on
+// every standard library).
+double symmetric_unit(std::mt19937_64& generator) {
+    return 2.0 * static_cast<double>(generator() >> 11) * 0x1p-53 - 1.0;
+}
+
+SpectralCurve scaled(const SpectralCurve& curve, double factor) {
+    const Spectrum* table = curve.tabulated();
+    if (!table) return curve;
+    std::vector<SpectrumSample> samples;
+    for (std::size_t i = 0; i < table->size(); ++i) samples.push_back({table->wavelengths()[i], table->values()[i] * factor});
+    return Spectrum(std::move(samples));
+}
+
+double process_cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+std::string join_models(const std::vector<std::string>& models) {
+    std::string text;
+    for (const std::string& m : models) text += (text.empty() ? "" : ",") + m;
+    return text;
+}
+
+}  // namespace
+
+std::vector<std::function<Material()>> synthetic_materials(const Catalog& catalog, std::size_t count, std::uint64_t seed) {
+    // The catalog's tables are read once and shared by the loaders (a few hundred kB in all).
+    auto bases = std::make_shared<std::vector<Material>>();
+    for (const CatalogEntry& entry : catalog.entries()) bases->push_back(load_material(catalog, entry.id, ""));
+    if (bases->empty()) throw std::runtime_error("synthetic materials: the catalog is empty");
+    std::vector<std::function<Material()>> loaders;
+    for (std::size_t i = 0; i < count; ++i)
+        loaders.push_back([bases, i, seed] {
+            std::mt19937_64 generator(seed + i);
+            Material m = (*bases)[i % bases->size()];
+            const double n_factor = 1.0 + 0.1 * symmetric_unit(generator), k_factor = 1.0 + 0.1 * symmetric_unit(generator);
+            m.index.n = scaled(m.index.n, n_factor);
+            m.index.k = scaled(m.index.k, k_factor);
+            m.id = "synthetic-" + std::to_string(i) + "-" + m.id;
+            return m;
+        });
+    return loaders;
+}
+
+ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, int threads,
+                                 const std::vector<std::string>& models) {
+    std::vector<const Model*> chosen;
+    for (const std::string& id : models) chosen.push_back(&find_model(id));
+    const auto loaders = synthetic_materials(env.catalog, materials);
+    const MaterialFitRequest request{env.spectral, env.error, chosen};
+    const BatchColour colour{env.config, env.colorimetry, env.converter};
+    const double cpu0 = process_cpu_seconds();
+    const auto wall0 = std::chrono::steady_clock::now();
+    const std::vector<MaterialFit> fits = fit_materials(loaders, colour, request, threads);
+    ScalingCell cell;
+    cell.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    cell.cpu_s = process_cpu_seconds() - cpu0;
+    cell.materials = materials;
+    cell.threads = threads;
+    for (const MaterialFit& f : fits) cell.fits += f.models.size();
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    cell.peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;  // kB on Linux
+    return cell;
+}
+
+nlohmann::json to_json(const ScalingCell& c) {
+    return {{"materials", c.materials}, {"threads", c.threads}, {"fits", c.fits},
+            {"wall_s", c.wall_s},       {"cpu_s", c.cpu_s},     {"peak_mib", c.peak_mib}};
+}
+
+ScalingCell scaling_cell_from_json(const nlohmann::json& j) {
+    ScalingCell c;
+    c.materials = j.at("materials").get<std::size_t>();
+    c.threads = j.at("threads").get<int>();
+    c.fits = j.at("fits").get<std::size_t>();
+    c.wall_s = j.at("wall_s").get<double>();
+    c.cpu_s = j.at("cpu_s").get<double>();
+    c.peak_mib = j.at("peak_mib").get<double>();
+    return c;
+}
+
+double ScalingTable::fits_per_cpu_second() const {
+    const ScalingCell* largest = nullptr;
+    for (const ScalingCell& c : cells)
+        if (c.threads == 1 && (!largest || c.materials > largest->materials)) largest = &c;
+    if (!largest || !(largest->cpu_s > 0)) return 0;
+    return static_cast<double>(largest->fits) / largest->cpu_s;
+}
+
+ScalingTable run_scaling(const ScalingOptions& o) {
+    ScalingTable table;
+    table.models = o.models;
+    table.machine = Machine::describe().one_line();
+    table.command_line = o.command_line;
+    for (std::size_t size : o.sizes)
+        for (int threads : o.threads) {
+            std::vector<std::string> args{"--data-dir", o.data_dir.string()};
+            if (o.ocio_config) args.insert(args.end(), {"--ocio-config", o.ocio_config->string()});
+            args.insert(args.end(), {"bench", "--scaling-cell", std::to_string(size), "--threads", std::to_string(threads),
+                                     "--scaling-models", join_models(o.models)});
+            const std::string cell = std::to_string(size) + " materials on " + std::to_string(threads) + " threads";
+            if (o.progress) o.progress("scaling: " + cell);
+            const ProcessResult r = run_process(o.metalfit, args);
+            if (r.exit_code != 0) throw std::runtime_error("scaling cell " + cell + " failed: " + last_line(r.err));
+            try {
+                table.cells.push_back(scaling_cell_from_json(nlohmann::json::parse(r.out)));
+            } catch (const nlohmann::json::exception& e) {
+                throw std::runtime_error("scaling cell " + cell + ": unreadable output (" + e.what() + ")");
+            }
+        }
+    return table;
+}
+
+nlohmann::json to_json(const ScalingTable& t) {
+    nlohmann::json cells = nlohmann::json::array();
+    for (const ScalingCell& c : t.cells) cells.push_back(to_json(c));
+    return {{"schema", "metalfit.bench-scaling/1"},
+            {"command", t.command_line},
+            {"machine", t.machine},
+            {"models", t.models},
+            {"seed", t.seed},
+            {"cells", cells},
+            {"fits_per_cpu_second", t.fits_per_cpu_second()}};
+}
+
+std::string to_text(const ScalingTable& t) {
+    std::string text = "metalfit bench --scaling: fit on synthetic materials (catalog tables, n and k scaled by 1 ± 0.1, seed " +
+                       std::to_string(t.seed) + "), models " + join_models(t.models) + "\n" + t.machine + "\n";
+    char line[160];
+    std::snprintf(line, sizeof line, "| %9s | %7s | %9s | %9s | %9s | %13s | %11s |\n", "materials", "threads", "wall s",
+                  "CPU s", "peak MiB", "fits / CPU s", "wall / mat");
+    text += line;
+    text += "|----------:|--------:|----------:|----------:|----------:|--------------:|------------:|\n";
+    for (const ScalingCell& c : t.cells) {
+        std::snprintf(line, sizeof line, "| %9zu | %7d | %9.3f | %9.3f | %9.1f | %13.1f | %8.2f ms |\n", c.materials,
+                      c.threads, c.wall_s, c.cpu_s, c.peak_mib, c.cpu_s > 0 ? static_cast<double>(c.fits) / c.cpu_s : 0.0,
+                      c.materials ? 1e3 * c.wall_s / static_cast<double>(c.materials) : 0.0);
+        text += line;
+    }
+    std::snprintf(line, sizeof line, "fit throughput: %.1f materials x models per CPU second (largest 1-thread cell)\n",
+                  t.fits_per_cpu_second());
+    text += line;
+    return text;
+}
+
+}  // namespace metalfit::bench

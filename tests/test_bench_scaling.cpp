@@ -1,0 +1,87 @@
+// The scaling table of `metalfit bench --scaling` (bench/scaling): the synthetic materials and the table's schema.
+// Times and memory are never asserted, only that they were measured.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "metalfit_bench/scaling.hpp"
+#include "test_support.hpp"
+
+namespace {
+
+using metalfit::Catalog;
+using metalfit::Material;
+using nlohmann::json;
+
+TEST(BenchScaling, SyntheticMaterialsArePerturbedCatalogTablesAndTheSameOnEveryRun) {
+    const Catalog catalog = Catalog::load(metalfit::test::kData);
+    const std::size_t entries = catalog.entries().size();
+    const auto first = metalfit::bench::synthetic_materials(catalog, entries + 2);
+    const auto again = metalfit::bench::synthetic_materials(catalog, entries + 2);
+    const auto other_seed = metalfit::bench::synthetic_materials(catalog, 1, metalfit::bench::kScalingSeed + 7);
+    ASSERT_EQ(first.size(), entries + 2);
+    std::set<std::string> ids;
+    for (std::size_t i = 0; i < first.size(); ++i) {
+        const Material m = first[i](), m2 = again[i]();
+        const Material base = metalfit::load_material(catalog, catalog.entries()[i % entries].id, "");
+        ids.insert(m.id);
+        const double nm = 0.5 * (base.index.range().min_nm + base.index.range().max_nm);
+        const double n_ratio = m.index.n(nm, metalfit::Interpolation::linear, metalfit::OutOfRange::error) /
+                               base.index.n(nm, metalfit::Interpolation::linear, metalfit::OutOfRange::error);
+        EXPECT_EQ(m.index(nm), m2.index(nm)) << m.id;  // deterministic
+        if (base.index.n.tabulated()) {
+            EXPECT_GE(n_ratio, 0.9) << m.id;
+            EXPECT_LE(n_ratio, 1.1) << m.id;
+            EXPECT_NE(n_ratio, 1.0) << m.id;
+        }
+    }
+    EXPECT_EQ(ids.size(), first.size());  // every synthetic material has its own id
+    // Material i and material i + E share a table but not their perturbation; another seed is another set.
+    const double nm = 550;
+    EXPECT_NE(first[0]().index(nm), first[entries]().index(nm));
+    EXPECT_NE(first[0]().index(nm), other_seed[0]().index(nm));
+}
+
+TEST(BenchScaling, TheTableHasACellPerSizeAndThreadCountInOrder) {
+    metalfit::test::TempDir dir;
+    const auto r = metalfit::test::run_command(
+        METALFIT_EXE, "bench --scaling --scaling-sizes 1,3 --scaling-threads 1,2 --scaling-models schlick,f82-tint --json",
+        dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const json j = json::parse(r.out);
+    EXPECT_EQ(j.at("schema"), "metalfit.bench-scaling/1");
+    EXPECT_EQ(j.at("models"), json({"schlick", "f82-tint"}));
+    EXPECT_TRUE(j.at("seed").is_number_unsigned());
+    EXPECT_TRUE(j.at("machine").is_string());
+    const json& cells = j.at("cells");
+    ASSERT_EQ(cells.size(), 4u);
+    const int sizes[] = {1, 1, 3, 3}, threads[] = {1, 2, 1, 2};
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        const json& c = cells[i];
+        EXPECT_EQ(c.at("materials"), sizes[i]);
+        EXPECT_EQ(c.at("threads"), threads[i]);
+        EXPECT_EQ(c.at("fits"), 2 * sizes[i]);  // every material × model fitted
+        for (const char* key : {"wall_s", "cpu_s", "peak_mib"}) {
+            ASSERT_TRUE(c.at(key).is_number()) << key;
+            EXPECT_GT(c.at(key).get<double>(), 0.0) << key;
+        }
+    }
+    EXPECT_GT(j.at("fits_per_cpu_second").get<double>(), 0.0);
+
+    const auto text = metalfit::test::run_command(METALFIT_EXE, "bench --scaling --scaling-sizes 2 --scaling-threads 1 --scaling-models schlick", dir.path());
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    EXPECT_NE(text.out.find("| materials | threads |"), std::string::npos) << text.out;
+    EXPECT_NE(text.out.find("fit throughput:"), std::string::npos) << text.out;
+}
+
+TEST(BenchScaling, BadSizesAndModelsAreUsageErrors) {
+    metalfit::test::TempDir dir;
+    EXPECT_EQ(metalfit::test::run_command(METALFIT_EXE, "bench --scaling --scaling-sizes 0", dir.path()).exit_code, 2);
+    EXPECT_EQ(metalfit::test::run_command(METALFIT_EXE, "bench --scaling --scaling-models nonesuch --scaling-sizes 1", dir.path()).exit_code, 2);
+}
+
+}  // namespace
