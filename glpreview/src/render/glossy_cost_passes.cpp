@@ -176,23 +176,9 @@ Scene glossy_bench_scene(const std::filesystem::path& data_dir, bool quick, cons
 Handle<Json> add_glossy_cost_passes(PassGraph& graph, GpuBenchRun& run) {
     const int rounds = run.quick ? 3 : 9;
     const Scene base = glossy_bench_scene(run.options.data_dir, run.quick, glossy_bench_variants().front());
-    const Handle<const GpuBenchRun*> materials = graph.import<const GpuBenchRun*>("glossy-materials", &run);
-    struct FresnelData {
-        Handle<BenchFresnel> out;
-    };
     const Handle<BenchFresnel> fresnel =
-        graph
-            .add_pass<FresnelData>(
-                {"glossy-fresnel", "the bench sphere: its reference R_c(μ) from libfit", Processor::cpu},
-                [&](Builder& b, FresnelData& d) {
-                    b.read(materials);
-                    d.out = b.produce<BenchFresnel>("glossy-fresnel");
-                },
-                [&run, base](const FresnelData& d, Resources& r) {
-                    FresnelLibrary& library = run.glossy_library.emplace(run.options.data_dir, run.options.ocio, base.space, base.file);
-                    r.emplace(d.out, &library.get(base.spheres.at(0), "spheres[0]"));
-                })
-            .out;
+        add_bench_fresnel_pass(graph, "glossy-fresnel", "the bench sphere: its reference R_c(μ) from libfit", run,
+                               run.glossy_library, [base]() -> const Scene& { return base; });
     struct ReferenceData {
         Handle<References> out;
     };

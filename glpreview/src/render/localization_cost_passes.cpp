@@ -102,24 +102,9 @@ std::vector<LocalizationRoom> localization_rooms(const std::filesystem::path& da
 
 Handle<Json> add_localization_cost_passes(PassGraph& graph, GpuBenchRun& run) {
     const int rounds = run.quick ? 3 : 7;
-    const Handle<const GpuBenchRun*> materials = graph.import<const GpuBenchRun*>("bench-materials", &run);
-    struct FresnelData {
-        Handle<BenchFresnel> out;
-    };
-    const Handle<BenchFresnel> fresnel =
-        graph
-            .add_pass<FresnelData>(
-                {"bench-fresnel", "the rooms' sphere: its reference R_c(μ) LUT from libfit", Processor::cpu},
-                [&](Builder& b, FresnelData& d) {
-                    b.read(materials);
-                    d.out = b.produce<BenchFresnel>("bench-fresnel");
-                },
-                [&run](const FresnelData& d, Resources& r) {
-                    const LocalizationRoom& first = run.rooms.front();
-                    FresnelLibrary& library = run.library.emplace(run.options.data_dir, run.options.ocio, first.scene.space, first.scene.file);
-                    r.emplace(d.out, &library.get(first.scene.spheres.at(0), "spheres[0]"));
-                })
-            .out;
+    const Handle<BenchFresnel> fresnel = add_bench_fresnel_pass(
+        graph, "bench-fresnel", "the rooms' sphere: its reference R_c(μ) LUT from libfit", run, run.library,
+        [&run]() -> const Scene& { return run.rooms.front().scene; });
 
     std::vector<Handle<Json>> room_rows;
     for (LocalizationRoom& room : run.rooms) {
