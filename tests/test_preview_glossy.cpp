@@ -3,6 +3,9 @@
 // furnace test, the limit roughness → 0, byte-identical mirrors.
 #include <gtest/gtest.h>
 
+#include <OpenImageIO/imageio.h>
+#include <stdlib.h>
+
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -306,14 +309,19 @@ TEST(PreviewGlossy, RoughnessZeroGivesTodaysImagesByteForByte) {
         return run_preview(scene, options, &gl());
     };
     test::TempDir dir;
+    ::setenv("SOURCE_DATE_EPOCH", "1764547200", 1);  // the EXRs' capture date (2025-12-01), so that bytes can be equal
     const PreviewResult today = run(spheres, (dir.path() / "a").string());
     const PreviewResult zero = run(with_key, (dir.path() / "b").string());
+    ::unsetenv("SOURCE_DATE_EPOCH");
     ASSERT_TRUE(today.beauty && zero.beauty && today.reference && zero.reference);
     EXPECT_EQ(today.beauty->rgb, zero.beauty->rgb);
     EXPECT_EQ(today.reference->image.rgb, zero.reference->image.rgb);
-    // The files hold the same pixels (the EXR header carries the time it was written, so not the same bytes).
+    // The files are the same bytes: the pixels, and the headers (the capture date is $SOURCE_DATE_EPOCH's).
     for (const char* file : {"beauty.exr", "beauty.png", "reference.exr", "reference.png", "difference.exr", "difference.png"})
-        EXPECT_TRUE(read_image(dir.path() / "a" / file).rgb == read_image(dir.path() / "b" / file).rgb) << file;
+        EXPECT_EQ(test::read_file(dir.path() / "a" / file), test::read_file(dir.path() / "b" / file)) << file;
+    const auto exr = OIIO::ImageInput::open((dir.path() / "b" / "beauty.exr").string());
+    ASSERT_TRUE(exr);
+    EXPECT_EQ(exr->spec().get_string_attribute("DateTime"), "2025:12:01 00:00:00");
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "b" / "reference-stderr.exr"));
     EXPECT_FALSE(zero.reference_standard_error);
     EXPECT_EQ(zero.metrics["spheres"][1]["roughness"], 0.0);

@@ -5,7 +5,10 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <ctime>
 #include <memory>
 #include <system_error>
 
@@ -64,6 +67,25 @@ std::unique_ptr<OIIO::ImageInput> open_checked(const std::filesystem::path& file
     return in;
 }
 
+// The EXR header's capture date (OpenImageIO's "DateTime", written as OpenEXR's `capDate`): the time given by
+// $SOURCE_DATE_EPOCH (reproducible-builds.org's convention: seconds since 1970 UTC) when it is set, so that a rerun
+// writes the same bytes; else OpenImageIO's own (the time of writing).
+void set_capture_date(OIIO::ImageSpec& spec) {
+    const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+    if (epoch == nullptr) return;
+    const std::string_view text(epoch);
+    long long seconds = -1;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seconds);
+    std::tm utc{};
+    const std::time_t t = static_cast<std::time_t>(seconds);
+    if (error != std::errc() || end != text.data() + text.size() || seconds < 0 || ::gmtime_r(&t, &utc) == nullptr)
+        throw UsageError("SOURCE_DATE_EPOCH: expected seconds since 1970-01-01 UTC, a non-negative integer (got '" +
+                         std::string(text.substr(0, 40)) + "')");
+    char date[32];
+    std::strftime(date, sizeof date, "%Y:%m:%d %H:%M:%S", &utc);
+    spec.attribute("DateTime", date);
+}
+
 }  // namespace
 
 Image read_image(const std::filesystem::path& file) {
@@ -85,6 +107,7 @@ void write_exr(const std::filesystem::path& file, const Image& image, const ExrC
     OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::HALF);
     spec.channelnames = {"R", "G", "B"};
     spec.attribute("compression", "zip");
+    set_capture_date(spec);
     if (colour) {
         const Chromaticities& c = colour->chromaticities;
         const float xy[8] = {static_cast<float>(c.red[0]),   static_cast<float>(c.red[1]),
