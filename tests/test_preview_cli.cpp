@@ -37,6 +37,48 @@ TEST(PreviewCli, UnknownMaterialNamesTheField) {
     EXPECT_TRUE(Contains(run.err, "spheres[0].material"));
 }
 
+TEST(PreviewCli, BatchRendersEveryScenesFilesAsSeparateRunsDo) {
+    TempDir dir;
+    const fs::path room = dir.write("room.json", R"({"image": {"width": 40, "height": 30},
+        "spheres": [{"center": [0, 1, 0], "radius": 0.5, "material": "Cu", "fresnel": "schlick"}]})");
+    const fs::path rough = dir.write("rough.json", R"({"image": {"width": 32, "height": 24},
+        "spheres": [{"center": [0, 1, 0], "radius": 0.5, "roughness": 0.4}], "outputs": {"reference_samples": 8}})");
+    const CommandRun batch = glpreview("--batch " + room.string() + " " + rough.string() + " -o " + (dir.path() / "batch").string(), dir);
+    ASSERT_EQ(batch.exit_code, 0) << batch.err;
+    for (const char* stem : {"room", "rough"}) {
+        const CommandRun single = glpreview((dir.path() / (std::string(stem) + ".json")).string() + " -o " +
+                                                (dir.path() / "single" / stem).string(), dir);
+        ASSERT_EQ(single.exit_code, 0) << single.err;
+        // One GL context for both scenes changes nothing in what each writes (PNGs carry no date).
+        for (const char* file : {"beauty.png", "reference.png", "difference.png"})
+            EXPECT_EQ(read_file(dir.path() / "batch" / stem / file), read_file(dir.path() / "single" / stem / file))
+                << stem << "/" << file;
+        EXPECT_TRUE(Contains(batch.out, (dir.path() / "batch" / stem / "beauty.png").string()));
+    }
+}
+
+TEST(PreviewCli, BatchChecksEverySceneFirstAndRefusesWhatItCannotDo) {
+    TempDir dir;
+    const fs::path good = dir.write("good.json", R"({"spheres": [{"center": [0, 1, 0]}]})");
+    const fs::path bad = dir.write("bad.json", R"({"spheres": [{"center": [0, 1, 0], "roughness": 2}]})");
+    fs::create_directories(dir.path() / "other");
+    const fs::path same_stem = dir.write("other/good.json", R"({"spheres": [{"center": [0, 1, 0]}]})");
+    const std::string out = " -o " + (dir.path() / "out").string();
+    const CommandRun broken = glpreview("--batch " + good.string() + " " + bad.string() + out, dir);
+    EXPECT_EQ(broken.exit_code, 3);
+    EXPECT_TRUE(Contains(broken.err, "bad.json: spheres[0].roughness")) << broken.err;
+    EXPECT_FALSE(fs::exists(dir.path() / "out")) << "the good scene was rendered before the bad one was read";
+    const CommandRun twice = glpreview("--batch " + good.string() + " " + same_stem.string() + out, dir);
+    EXPECT_EQ(twice.exit_code, 2);
+    EXPECT_TRUE(Contains(twice.err, "two scenes named 'good'")) << twice.err;
+    const CommandRun without = glpreview(good.string() + " " + same_stem.string() + out, dir);
+    EXPECT_EQ(without.exit_code, 2);
+    EXPECT_TRUE(Contains(without.err, "several scene files need --batch")) << without.err;
+    const CommandRun sheet = glpreview("--batch --sheet Au " + good.string() + out, dir);
+    EXPECT_EQ(sheet.exit_code, 2);
+    EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
 TEST(PreviewCli, ExplainPrintsThePlanAndRendersNothing) {
     TempDir dir;
     const fs::path scene = dir.write("s.json", R"({"spheres": [{"center": [0, 1, 0], "reflection": "classic"}],

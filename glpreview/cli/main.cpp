@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "glpreview/gl/gl_context.hpp"
@@ -53,18 +54,55 @@ double parse_roughness(const std::string& text) {
 
 namespace {
 
+// --size WxH over the scene's image size (nothing when empty).
+void apply_size(metalfit::glpreview::Scene& scene, const std::string& size) {
+    using namespace metalfit::glpreview;
+    if (size.empty()) return;
+    std::smatch m;
+    if (!std::regex_match(size, m, std::regex(R"((\d{1,4})x(\d{1,4}))")) || std::stoi(m[1]) < 1 || std::stoi(m[2]) < 1 ||
+        std::stoi(m[1]) > kMaxImageEdge || std::stoi(m[2]) > kMaxImageEdge ||
+        static_cast<long long>(std::stoi(m[1])) * std::stoi(m[2]) > kMaxImagePixels)
+        throw metalfit::UsageError("--size: expected WxH with each side in [1, " + std::to_string(kMaxImageEdge) +
+                                   "] and at most " + std::to_string(kMaxImagePixels) + " pixels, e.g. 512x512 (got '" +
+                                   size.substr(0, 40) + "')");
+    scene.width = std::stoi(m[1]);
+    scene.height = std::stoi(m[2]);
+}
+
+// The files a preview wrote, its frame time and each sphere's error, one line each.
+void print_preview(const metalfit::glpreview::PreviewResult& result) {
+    if (!result.renderer.empty()) std::cerr << "glpreview: renderer " << result.renderer << "\n";
+    for (const auto& file : result.written) std::cout << file.string() << "\n";
+    if (result.metrics.is_null()) return;
+    std::printf("ms per frame (median of %zu): %.2f\n", result.frame_ms.size(), result.metrics["ms_per_frame"].get<double>());
+    for (const auto& s : result.metrics["spheres"]) {
+        std::printf("sphere %d %-12s %-13s %-18s ", s["sphere"].get<int>(), s["material"].get<std::string>().c_str(),
+                    s["fresnel"].get<std::string>().c_str(), s["mode"].get<std::string>().c_str());
+        if (s["pixels"].get<std::size_t>() == 0) std::printf("not visible (no pixel shows it)\n");
+        else if (s["mean_iterations"].is_null())
+            std::printf("rmse %.5f mean_abs %.5f\n", s["rmse"].get<double>(), s["mean_abs"].get<double>());
+        else
+            std::printf("rmse %.5f mean_abs %.5f mean steps %.2f\n", s["rmse"].get<double>(), s["mean_abs"].get<double>(),
+                        s["mean_iterations"].get<double>());
+    }
+}
+
 int run_glpreview(int argc, char** argv) {
     using namespace metalfit;
     using namespace metalfit::glpreview;
 
     CLI::App app{"glpreview: metal spheres, exact vs fitted Fresnel, under localized environment maps (headless EGL)"};
     app.set_version_flag("--version", std::string("glpreview (metalfit ") + METALFIT_VERSION + ")");
-    std::filesystem::path scene_file, output_dir = "preview";
+    std::vector<std::filesystem::path> scene_files;
+    std::filesystem::path output_dir = "preview";
     std::string size;
     bool explain_only = false;
     std::filesystem::path data_dir = default_data_dir();
     std::optional<std::filesystem::path> ocio_config;
-    app.add_option("scene", scene_file, "Scene JSON (docs/scene.md)");
+    app.add_option("scene", scene_files, "Scene JSON (docs/scene.md); several with --batch");
+    bool batch = false;
+    app.add_flag("--batch", batch,
+                 "Render every scene given, each into OUTPUT/<scene file's stem>/, in one process and one GL context");
     bool bench_shader_cost = false, bench_localization_cost = false, bench_glossy_cost = false, quick = false, json = false;
     app.add_flag("--bench-shaders", bench_shader_cost,
                  "Benchmark: full-screen 1024² pass per libfit model, ratio to the exact conductor-rgb pass (JSON with --json)");
@@ -152,20 +190,33 @@ int run_glpreview(int argc, char** argv) {
                                     r["ratio_to_classic"].get<double>(), r["ratio_noise"].get<double>(), r["rmse"].get<double>());
             return ok;
         }
-        if (scene_file.empty()) throw UsageError("a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy)");
-        Scene scene = load_scene(scene_file);
-        confine_scene_paths(scene, {data_dir, allow_paths_outside});
-        if (!size.empty()) {
-            std::smatch m;
-            if (!std::regex_match(size, m, std::regex(R"((\d{1,4})x(\d{1,4}))")) || std::stoi(m[1]) < 1 || std::stoi(m[2]) < 1 ||
-                std::stoi(m[1]) > kMaxImageEdge || std::stoi(m[2]) > kMaxImageEdge ||
-                static_cast<long long>(std::stoi(m[1])) * std::stoi(m[2]) > kMaxImagePixels)
-                throw UsageError("--size: expected WxH with each side in [1, " + std::to_string(kMaxImageEdge) + "] and at most " +
-                                 std::to_string(kMaxImagePixels) + " pixels, e.g. 512x512 (got '" + size.substr(0, 40) + "')");
-            scene.width = std::stoi(m[1]);
-            scene.height = std::stoi(m[2]);
+        if (scene_files.empty()) throw UsageError("a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy)");
+        if (scene_files.size() > 1 && !batch) throw UsageError("several scene files need --batch");
+        if (batch && (!sheet.empty() || explain_only)) throw UsageError("--batch renders scenes: --sheet and --explain take one scene");
+        const auto load = [&](const std::filesystem::path& scene_file) {
+            Scene scene = load_scene(scene_file);
+            confine_scene_paths(scene, {data_dir, allow_paths_outside});
+            apply_size(scene, size);
+            for (const std::string& warning : scene.warnings)
+                std::cerr << "glpreview: warning: " << scene_file.string() << ": " << warning << "\n";
+            return scene;
+        };
+        if (batch) {
+            // Every scene is read and checked before anything is rendered; the stems name the output folders.
+            std::vector<Scene> scenes;
+            std::set<std::string> stems;
+            for (const auto& file : scene_files) {
+                if (!stems.insert(file.stem().string()).second)
+                    throw UsageError("--batch: two scenes named '" + file.stem().string() + "' would write the same folder");
+                scenes.push_back(load(file));
+            }
+            const OcioConfigChoice ocio = choose_ocio_config(ocio_config, data_dir, "--ocio-config");
+            GlContext context = GlContext::create();
+            for (std::size_t i = 0; i < scenes.size(); ++i)
+                print_preview(run_preview(scenes[i], {data_dir, ocio, output_dir / scene_files[i].stem(), 0}, &context));
+            return ok;
         }
-        for (const std::string& warning : scene.warnings) std::cerr << "glpreview: warning: " << warning << "\n";
+        Scene scene = load(scene_files.front());
         // --sheet materials given as files are the user's paths: relative to the current folder, not to the scene's.
         SheetRequest sheet_request;
         for (const std::string& m : split_list(sheet))
@@ -196,22 +247,7 @@ int run_glpreview(int argc, char** argv) {
             std::cout << (output_dir / "sheet.png").string() << "\n";
             return ok;
         }
-        const PreviewResult result = run_preview(scene, options);
-        if (!result.renderer.empty()) std::cerr << "glpreview: renderer " << result.renderer << "\n";
-        for (const auto& file : result.written) std::cout << file.string() << "\n";
-        if (!result.metrics.is_null()) {
-            std::printf("ms per frame (median of %zu): %.2f\n", result.frame_ms.size(), result.metrics["ms_per_frame"].get<double>());
-            for (const auto& s : result.metrics["spheres"]) {
-                std::printf("sphere %d %-12s %-13s %-18s ", s["sphere"].get<int>(), s["material"].get<std::string>().c_str(),
-                            s["fresnel"].get<std::string>().c_str(), s["mode"].get<std::string>().c_str());
-                if (s["pixels"].get<std::size_t>() == 0) std::printf("not visible (no pixel shows it)\n");
-                else if (s["mean_iterations"].is_null())
-                    std::printf("rmse %.5f mean_abs %.5f\n", s["rmse"].get<double>(), s["mean_abs"].get<double>());
-                else
-                    std::printf("rmse %.5f mean_abs %.5f mean steps %.2f\n", s["rmse"].get<double>(), s["mean_abs"].get<double>(),
-                                s["mean_iterations"].get<double>());
-            }
-        }
+        print_preview(run_preview(scene, options));
         return ok;
     } catch (const GlError& e) {
         std::cerr << "glpreview: " << e.what() << "\n";
