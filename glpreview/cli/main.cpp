@@ -197,8 +197,7 @@ int run_glpreview(int argc, char** argv) {
             Scene scene = load_scene(scene_file);
             confine_scene_paths(scene, {data_dir, allow_paths_outside});
             apply_size(scene, size);
-            for (const std::string& warning : scene.warnings)
-                std::cerr << "glpreview: warning: " << scene_file.string() << ": " << warning << "\n";
+            for (const std::string& warning : scene.warnings) std::cerr << "glpreview: warning: " << warning << "\n";
             return scene;
         };
         if (batch) {
