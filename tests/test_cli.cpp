@@ -787,6 +787,67 @@ TEST_F(Cli, TableGivesF0AndTintOfEveryMetalWithHexAndCaveat) {
     EXPECT_EQ(run("table --format xml").exit_code, 2);
 }
 
+// `metalfit table --format physicallybased` (physicallybased.info's shape): whatever --space says, the srgb-linear
+// F0 and F82 tint are `table`'s in Linear Rec.709 and the acescg ones `table --space ACEScg`'s; n, k give back F0
+// through the exact Fresnel at normal incidence and R(1/7) = tint · Schlick(F0, 1/7) through the exact conductor
+// Fresnel at 1/7 (both written out here), where Gulbrandsen's r and g stay inside [0, 0.99999] and (0, 1).
+TEST_F(Cli, TablePhysicallyBasedHoldsBothSpacesAndNkThatGiveBackF0AndF82) {
+    const Result r = run("table --format physicallybased --space ACEScg");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto doc = nlohmann::json::parse(r.out);
+    EXPECT_EQ(doc["header"]["schemaVersion"], 2.1);
+    const auto rec709 = nlohmann::json::parse(run("table --format json --space lin_rec709").out);
+    const auto acescg = nlohmann::json::parse(run("table --format json --space ACEScg").out);
+    EXPECT_EQ(rec709["space"], "Linear Rec.709 (sRGB)");
+    ASSERT_EQ(doc["data"].size(), metalfit::test::catalog_material_count());
+    const auto conductor = [](double n, double k, double mu) {  // unpolarized, from air
+        const double s2 = 1 - mu * mu, t = std::sqrt(s2) / mu;
+        const double w = n * n - k * k - s2, root = std::sqrt(w * w + 4 * n * n * k * k);
+        const double a = std::sqrt(0.5 * (root + w));
+        const double rs = (root - 2 * a * mu + mu * mu) / (root + 2 * a * mu + mu * mu);
+        const double q = std::sqrt(s2) * t;
+        const double rp = rs * (root - 2 * a * q + q * q) / (root + 2 * a * q + q * q);
+        return 0.5 * (rs + rp);
+    };
+    int matched_82 = 0, bound_channels = 0;
+    for (std::size_t i = 0; i < doc["data"].size(); ++i) {
+        const auto& m = doc["data"][i];
+        EXPECT_EQ(m["name"], rec709["materials"][i]["name"]);
+        EXPECT_EQ(m["category"], nlohmann::json::array({"Metal"}));
+        ASSERT_GE(m["references"].size(), 2U);
+        for (int s = 0; s < 2; ++s) {
+            const auto& table = s == 0 ? rec709["materials"][i] : acescg["materials"][i];
+            const char* space = s == 0 ? "srgb-linear" : "acescg";
+            ASSERT_EQ(m["color"][s]["colorSpace"], space);
+            ASSERT_EQ(m["specularColor"][0]["format"][0], "F82");
+            ASSERT_EQ(m["specularColor"][1]["format"][0], "Gulbrandsen");
+            ASSERT_EQ(m["complexIor"][s]["colorSpace"], space);
+            for (int c = 0; c < 3; ++c) {
+                const double f0 = m["color"][s]["color"][c], tint = m["specularColor"][0]["color"][s]["color"][c];
+                const double g = m["specularColor"][1]["color"][s]["color"][c];
+                const double n = m["complexIor"][s]["n"][c], k = m["complexIor"][s]["k"][c];
+                const std::string where = m["name"].get<std::string>() + " " + space + " channel " + std::to_string(c);
+                EXPECT_NEAR(f0, table["F0"]["linear"][c].get<double>(), 1e-12) << where;
+                EXPECT_NEAR(tint, table["F82_tint"]["linear"][c].get<double>(), 1e-12) << where;
+                const double r = std::clamp(f0, 0.0, 0.99999);  // Gulbrandsen's r; F0 kept as it is in color
+                EXPECT_NEAR(((n - 1) * (n - 1) + k * k) / ((n + 1) * (n + 1) + k * k), r, 1e-9 * std::max(1.0, n)) << where;
+                EXPECT_GE(g, 0.0);
+                EXPECT_LE(g, 1.0);
+                if (r != f0 || g <= 0.0 || g >= 1.0) {
+                    ++bound_channels;
+                    continue;
+                }
+                const double f82 = tint * (f0 + (1 - f0) * std::pow(1 - 1.0 / 7, 5));
+                EXPECT_NEAR(conductor(n, k, 1.0 / 7), f82, 1e-9) << where;
+                ++matched_82;
+            }
+        }
+    }
+    // Gold's red in Rec.709 (F0 > 1) and the alkali metals' edge tints at g = 1 are the exceptions, not the rule.
+    EXPECT_GT(matched_82, 20 * bound_channels);
+    EXPECT_GT(bound_channels, 0);  // gold's red F0 > 1 in Rec.709 is kept (the check above covers it)
+}
+
 // ---- stdout write errors (issue 13, item 5) ---------------------------------------------------------------------
 
 TEST(CliStdout, AFullStdoutIsAnErrorNotASilentSuccess) {
