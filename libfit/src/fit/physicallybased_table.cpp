@@ -27,7 +27,6 @@ PhysicallyBasedLook look_of(const ReferenceCurve& curve) {
         const double f0 = look.f0[c];
         look.f82_tint[c] = f82[c] / models::Schlick::evaluate(&f0, kMuF82);
         const double r = std::clamp(f0, 0.0, r_max);
-        look.clamped[static_cast<std::size_t>(c)] = r != f0;
         look.edge_tint[c] = gulbrandsen_edge_tint_at_f82(r, f82[c]);
         look.eta[static_cast<std::size_t>(c)] = models::Gulbrandsen::to_nk(r, look.edge_tint[c]);
     }

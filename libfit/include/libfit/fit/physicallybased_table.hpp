@@ -8,7 +8,7 @@
 // (bisection on g ∈ [0, 1]: both published angles hit exactly), and n, k are Gulbrandsen's mapping of that (r, g):
 // their exact Fresnel at normal incidence ((n−1)² + k²)/((n+1)² + k²) is F0 itself. Gulbrandsen's r lies in
 // [0, 0.99999]: an F0 outside it (gold's red in Rec.709 is above 1) stays in `color` as it is, and r is held at the
-// bound for the edge tint and n, k of that channel (`clamped`).
+// bound for the edge tint and n, k of that channel.
 #pragma once
 
 #include <array>
@@ -34,7 +34,6 @@ inline constexpr const char* kPhysicallyBasedAcescg = "ACEScg";
 struct PhysicallyBasedLook {
     RGB f0, f82_tint, edge_tint;                 // edge_tint: Gulbrandsen's g
     std::array<std::complex<double>, 3> eta{};   // n + i k per channel
-    std::array<bool, 3> clamped{};               // F0 outside Gulbrandsen's [0, 0.99999]: r held at the bound
 };
 
 struct PhysicallyBasedRow {
