@@ -868,7 +868,8 @@ TEST_F(Cli, TablePhysicallyBasedHoldsBothSpacesAndNkThatGiveBackF0AndF82) {
             double expected = 0;
             for (int j = 0; j < 3; ++j) expected += rec709_to_acescg[c][j] * m["color"][0]["color"][j].get<double>();
             // Not exact: R_c divides by each space's RGB of the colorimetry's white (reference_curve), whose
-            // chromaticity is the nominal D65's to about 1e-5 (at most 2.1e-5, gold's red); without the adaptation the matrix is off by up to 0.078.
+            // chromaticity is the nominal D65's to about 1e-5 (at most 2.1e-5, gold's red); without the adaptation
+            // the matrix is off by up to 0.078.
             EXPECT_NEAR(m["color"][1]["color"][c].get<double>(), expected, 5e-5) << m["name"] << " ACEScg channel " << c;
         }
         EXPECT_EQ(m["name"], rec709["materials"][i]["name"]);
