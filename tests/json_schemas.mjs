@@ -4,7 +4,8 @@
 //
 // Each file given is validated against the schema its `schema` member names (`metalfit.fit/1` → urn:metalfit:schema:fit);
 // `metalfit_export.json` against the export schema (the fit record with `export` in every model); a `.gltf` by the
-// `extras.metalfit` of each material (metalfit.gltf/1). A record naming no known schema fails: every record metalfit
+// `extras.metalfit` of each material (metalfit.gltf/1); a `{header, data}` document (physicallybased.info's shape,
+// `table --format physicallybased`) against urn:metalfit:schema:physicallybased. A record naming no known schema fails: every record metalfit
 // writes has one.
 //
 // --broken: instead, every file must be valid and every deliberately broken copy of it must be refused: the `schema`
@@ -39,6 +40,9 @@ function recordsOf(file, json) {
   if (file.endsWith(".gltf"))
     return (json.materials ?? []).map((m, i) => [`${file} materials[${i}].extras.metalfit`, m.extras?.metalfit, "urn:metalfit:schema:gltf"]);
   if (path.basename(file) === "metalfit_export.json") return [[file, json, "urn:metalfit:schema:export"]];
+  // physicallybased.info's shape has no `schema` member: known by its header and data.
+  if (json?.header?.schemaVersion !== undefined && Array.isArray(json?.data))
+    return [[file, json, "urn:metalfit:schema:physicallybased"]];
   const m = /^metalfit\.([a-z-]+)\/1$/.exec(json?.schema ?? "");
   return [[file, json, m ? `urn:metalfit:schema:${m[1]}` : null]];
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # ctest json_schemas.records: writes every kind of JSON record
 # metalfit writes (fit --json plain, pinned and with a budget; metalfit_export.json of the catalog export and of two
-# exports merged into one folder; openpbr/*.json; the glTF extras; show --json; table --format json; report.json;
+# exports merged into one folder; openpbr/*.json; the glTF extras; show --json; table --format json and physicallybased; report.json;
 # bench --json; glpreview's metrics.json when glpreview is given) and validates each against schemas/ with Ajv
 # (json_schemas.mjs); then has json_schemas.mjs --broken break each record in many ways and checks that every broken
 # copy is refused (the schemas can fail).
@@ -20,6 +20,7 @@ export OCIO=
 "$metalfit" show Au --json > "$dir/show.json"
 "$metalfit" show Zn --space ACEScg --json > "$dir/show-acescg.json"
 "$metalfit" table --format json -o "$dir/table.json"
+"$metalfit" table --format physicallybased -o "$dir/physicallybased.json"
 "$metalfit" report Au,Cu --renders off -o "$dir/report" > /dev/null
 # The GPU sections of bench need glpreview: without one they are skipped, which the schema describes too.
 "$metalfit" bench --quick --json --glpreview "$dir/no-glpreview" -o "$dir/bench.json" 2>/dev/null

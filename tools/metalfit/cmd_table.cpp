@@ -1,11 +1,13 @@
 // metalfit table: F0 and F82 tint of every catalog metal, linear and as 8-bit display values / hex, with the source
-// and caveat (libfit's metal_table), as CSV, JSON or Markdown.
+// and caveat (libfit's metal_table), as CSV, JSON or Markdown; or, in srgb-linear and ACEScg at once, in
+// physicallybased.info's material shape (libfit's physicallybased_table).
 #include <nlohmann/json.hpp>
 
 #include "colour_options.hpp"
 #include "commands.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/fit/metal_table.hpp"
+#include "libfit/fit/physicallybased_table.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -21,11 +23,21 @@ struct TableOptions {
 std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<TableOptions>();
     add_colour_options(app, o->colour);
-    app.add_option("--format", o->format, "csv, json or md (Markdown; default md)")->check(CLI::IsMember({"csv", "json", "md"}));
+    app.add_option("--format", o->format, "csv, json, md (Markdown; default md) or physicallybased (physicallybased.info's "
+                   "material JSON, srgb-linear and ACEScg whatever --space says)")
+        ->check(CLI::IsMember({"csv", "json", "md", "physicallybased"}));
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
     return [o, &global] {
         const Catalog catalog = Catalog::load(global.data_dir);
         const ColourSetup setup = resolve_colour_options(o->colour, global);
+        if (o->format == "physicallybased") {
+            const ColorSpaceConverter srgb_linear = ColorSpaceConverter::create(setup.config, kPhysicallyBasedSrgbLinear, o->colour.xyz_space);
+            const ColorSpaceConverter acescg = ColorSpaceConverter::create(setup.config, kPhysicallyBasedAcescg, o->colour.xyz_space);
+            const PhysicallyBasedTable table =
+                physicallybased_table(catalog, {setup.colorimetry, srgb_linear, acescg, setup.spectral});
+            emit(physicallybased_json(table).dump(2) + "\n", o->output);
+            return;
+        }
         const ColorSpaceConverter scene_linear = ColorSpaceConverter::create(setup.config);
         const DisplayTransform display = DisplayTransform::create(setup.config);
         const MetalTable table =
