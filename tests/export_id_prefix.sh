@@ -33,6 +33,18 @@ files=$(cd "$dir/default" && find . -type f | sort)
 expected=$(echo "$files" | sed -E '/metalfit_(models\.(glsl|hlsl|hpp)|export\.json)$/!s#/metalfit_#/studio_#' | sort)
 actual=$(cd "$dir/studio" && find . -type f | sort)
 [ "$expected" = "$actual" ] || { diff <(echo "$expected") <(echo "$actual") | head; fail "the studio files are not the default ones renamed"; }
+# File for file the same text but for the per-material names (and the record's id_prefix): nothing else moved.
+python3 - "$dir/default" "$dir/studio" <<'PY' || fail "a studio file differs from its default one by more than the names"
+import pathlib, re, sys
+default, studio = map(pathlib.Path, sys.argv[1:])
+rename = lambda t: re.sub(r"METALFIT_(AU|CU_ZN)_", r"STUDIO_\1_", re.sub(r"metalfit_(au_|cu_zn_|materials)", r"studio_\1", t))
+for f in default.rglob("*"):
+    if not f.is_file(): continue
+    g = studio / rename(str(f.relative_to(default)))
+    want = rename(f.read_text())
+    if f.name == "metalfit_export.json": want = want[:want.rindex("}")].rstrip() + ',\n  "id_prefix": "studio"\n}\n'
+    if g.read_text() != want: sys.exit(f"{g} is not {f} renamed")
+PY
 for f in glsl/metalfit_models.glsl hlsl/metalfit_models.hlsl cpp/metalfit_models.hpp; do
   cmp -s "$dir/default/$f" "$dir/studio/$f" || fail "$f differs between the default and the studio export"
 done
