@@ -106,7 +106,7 @@ std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& glo
                    "OpenPBR's specular_roughness, MaterialX alpha = R^2); default " + std::string(kDefaultRoughnessText));
     app.add_option("--id-prefix", o->id_prefix,
                    "Prefix of every per-material identifier and file (<prefix>_<material>_<model>, <prefix>_materials; "
-                   "the shared model functions keep theirs): [a-z][a-z0-9_]{0,30}; default " + std::string(kDefaultIdPrefix));
+                   "the shared model functions keep theirs): [a-z][a-z0-9_]{0,30}");
     add_colour_options(app, o->colour);
     app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
     app.add_option("-o,--output", o->output, "Output directory (created if missing)")->required();
