@@ -17,6 +17,7 @@ export OCIO=
 "$metalfit" fit Cu,Al --model all --budget 0.5% --json -o "$dir/fit-budget.json"
 "$metalfit" export Au --model all --format json,openpbr,gltf -o "$dir/ex" 2>/dev/null
 "$metalfit" export Cu --model f82-tint,conductor-rgb --format json,openpbr,gltf --params closed --gamut scale --roughness 0.05 -o "$dir/ex" 2>/dev/null
+"$metalfit" export Ag --model f82-tint --format json,openpbr,gltf --id-prefix studio -o "$dir/ex-studio" 2>/dev/null
 "$metalfit" show Au --json > "$dir/show.json"
 "$metalfit" show Zn --space ACEScg --json > "$dir/show-acescg.json"
 "$metalfit" table --format json -o "$dir/table.json"
@@ -26,6 +27,7 @@ export OCIO=
 "$metalfit" bench --quick --json --glpreview "$dir/no-glpreview" -o "$dir/bench.json" 2>/dev/null
 # The catalog export of the build (every material and model) and its OpenPBR and glTF files of the materials a…
 files=("$dir"/*.json "$dir/ex/metalfit_export.json" "$dir"/ex/openpbr/*.json "$dir"/ex/gltf/*.gltf "$dir/report/report.json"
+       "$dir/ex-studio/metalfit_export.json" "$dir"/ex-studio/openpbr/*.json "$dir"/ex-studio/gltf/*.gltf
        "$catalog_export/metalfit_export.json" "$catalog_export"/openpbr/metalfit_a*.json "$catalog_export"/gltf/metalfit_a*.gltf)
 if [ "$glpreview" != - ]; then
   cat > "$dir/scene.json" <<'EOF'

@@ -26,6 +26,7 @@ struct ExportOptions {
     std::string gamut = "keep";
     bool gamut_fit = false;
     std::string roughness;  // empty: kDefaultRoughness
+    std::string id_prefix = kDefaultIdPrefix;
     ColourOptions colour;
     int jobs = 0;  // 0: all cores
     std::filesystem::path output;
@@ -49,7 +50,8 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     }
     ExportRequest request{parse_export_formats(o.formats), best ? parse_model_list("all") : parse_model_list(o.models),
                           parse_parameter_source(o.params), parse_gamut_policy(o.gamut),
-                          o.roughness.empty() ? kDefaultRoughness : parse_roughness(o.roughness)};
+                          o.roughness.empty() ? kDefaultRoughness : parse_roughness(o.roughness),
+                          parse_id_prefix(o.id_prefix)};
     const CostTable costs = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
     const Catalog catalog = Catalog::load(global.data_dir);
     const auto loaders = o.selection.loaders(catalog, "export");
@@ -102,6 +104,9 @@ std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& glo
     app.add_option("--roughness", o->roughness,
                    "Surface roughness R in [0, 1] written with the Fresnel parameters (MaterialX, OpenPBR, JSON; "
                    "OpenPBR's specular_roughness, MaterialX alpha = R^2); default " + std::string(kDefaultRoughnessText));
+    app.add_option("--id-prefix", o->id_prefix,
+                   "Prefix of every per-material identifier and file (<prefix>_<material>_<model>, <prefix>_materials; "
+                   "the shared model functions keep theirs): [a-z][a-z0-9_]{0,30}");
     add_colour_options(app, o->colour);
     app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
     app.add_option("-o,--output", o->output, "Output directory (created if missing)")->required();

@@ -115,7 +115,8 @@ std::string_view cpp_glsl_prelude() { return kCppPrelude; }
 
 namespace detail {
 
-std::string cpp_materials_index(const std::vector<CppIndexEntry>& entries) {
+std::string cpp_materials_index(const std::vector<CppIndexEntry>& entries, std::string_view id_prefix) {
+    const std::string name = cpp_index_name(id_prefix);
     std::string umbrella = "// metalfit " METALFIT_VERSION " exports: every material and model of this export, and one table of them.\n"
                            "#pragma once\n\n#include <array>\n\n";
     std::string table;
@@ -123,11 +124,11 @@ std::string cpp_materials_index(const std::vector<CppIndexEntry>& entries) {
         umbrella += e.include + "\n";
         table += e.row + "\n";
     }
-    umbrella += "\nnamespace metalfit_materials {\n\nstruct Entry {\n    const char* material;\n    const char* model;\n"
+    umbrella += "\nnamespace " + name + " {\n\nstruct Entry {\n    const char* material;\n    const char* model;\n"
                 "    metalfit_shader::vec3 (*evaluate)(float mu);\n    int parameter_count;\n"
                 "    std::array<const std::array<double, 3>*, 4> parameters;  // in the order of `metalfit models`\n};\n\n"
                 "inline const std::array<Entry, " + std::to_string(entries.size()) + "> all{{\n" + table +
-                "}};\n\n}  // namespace metalfit_materials\n";
+                "}};\n\n}  // namespace " + name + "\n";
     return umbrella;
 }
 
@@ -161,7 +162,7 @@ std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials,
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models) {
             const WrittenParameters& w = e.written;
-            const std::string stem = file_stem(m.fit->material.id, w.model->id());
+            const std::string stem = file_stem(context.request.id_prefix, m.fit->material.id, w.model->id());
             std::string text = comment_header(m, w, context, "// ");
             text += "#pragma once\n\n#include <array>\n\n#include \"metalfit_models.hpp\"\n\nnamespace " + stem + " {\n\n";
             text += "inline constexpr const char* material = \"" + m.fit->material.id + "\";\n";
@@ -183,7 +184,7 @@ std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials,
                              "    {\"" + m.fit->material.id + "\", \"" + std::string(w.model->id()) + "\", &" + stem +
                                  "::evaluate, " + std::to_string(parameters.size()) + ", {" + pointers + "}},"});
         }
-    files.push_back({"cpp/metalfit_materials.hpp", cpp_materials_index(index)});
+    files.push_back({cpp_index_path(context.request.id_prefix), cpp_materials_index(index, context.request.id_prefix)});
     return files;
 }
 

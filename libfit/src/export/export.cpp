@@ -170,17 +170,20 @@ std::vector<const Model*> models_to_fit(const ExportRequest& request) {
 
 namespace detail {
 
-std::string identifier(const std::string& material_id, std::string_view model_id) {
-    std::string s = material_id + "_" + std::string(model_id);
-    for (char& ch : s) ch = std::isalnum(static_cast<unsigned char>(ch)) ? static_cast<char>(std::toupper(static_cast<unsigned char>(ch))) : '_';
-    return s;
-}
-
-std::string file_stem(const std::string& material_id, std::string_view model_id) {
-    std::string s = "metalfit_" + material_id + "_" + std::string(model_id);
+std::string file_stem(std::string_view id_prefix, const std::string& material_id, std::string_view model_id) {
+    std::string s = std::string(id_prefix) + "_" + material_id + "_" + std::string(model_id);
     for (char& ch : s) ch = std::isalnum(static_cast<unsigned char>(ch)) ? static_cast<char>(std::tolower(static_cast<unsigned char>(ch))) : '_';
     return s;
 }
+
+std::string constant_stem(std::string_view id_prefix, const std::string& material_id, std::string_view model_id) {
+    std::string s = file_stem(id_prefix, material_id, model_id);
+    for (char& ch : s) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    return s;
+}
+
+std::string cpp_index_name(std::string_view id_prefix) { return std::string(id_prefix) + "_materials"; }
+std::string cpp_index_path(std::string_view id_prefix) { return "cpp/" + cpp_index_name(id_prefix) + ".hpp"; }
 
 std::string number(double v) {
     char text[40];
@@ -315,6 +318,46 @@ std::string untagged_materialx_warning(const std::string& ocio_space) {
 
 }  // namespace detail
 
+std::string parse_id_prefix(const std::string& text) {
+    // Keywords and reserved words of C++20, GLSL 4.60 / ES 3.00 and HLSL (Shader Model 6) that match the pattern.
+    static const std::set<std::string_view> reserved{
+        "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break", "case", "catch",
+        "char", "char8_t", "char16_t", "char32_t", "class", "compl", "concept", "const", "consteval", "constexpr",
+        "constinit", "const_cast", "continue", "co_await", "co_return", "co_yield", "decltype", "default", "delete",
+        "do", "double", "dynamic_cast", "else", "enum", "explicit", "export", "extern", "false", "float", "for",
+        "friend", "goto", "if", "inline", "int", "long", "mutable", "namespace", "new", "noexcept", "not", "not_eq",
+        "nullptr", "operator", "or", "or_eq", "private", "protected", "public", "register", "reinterpret_cast",
+        "requires", "return", "short", "signed", "sizeof", "static", "static_assert", "static_cast", "struct",
+        "switch", "template", "this", "thread_local", "throw", "true", "try", "typedef", "typeid", "typename",
+        "union", "unsigned", "using", "virtual", "void", "volatile", "wchar_t", "while", "xor", "xor_eq",
+        // GLSL
+        "attribute", "uniform", "varying", "buffer", "shared", "coherent", "restrict", "readonly", "writeonly",
+        "layout", "centroid", "flat", "smooth", "noperspective", "patch", "sample", "subroutine", "in", "out",
+        "inout", "invariant", "precise", "discard", "uint", "lowp", "mediump", "highp", "precision", "vec2", "vec3",
+        "vec4", "ivec2", "ivec3", "ivec4", "uvec2", "uvec3", "uvec4", "bvec2", "bvec3", "bvec4", "dvec2", "dvec3",
+        "dvec4", "mat2", "mat3", "mat4", "common", "partition", "active", "filter", "input", "output",
+        "superp", "fixed", "half", "hvec2", "hvec3", "hvec4", "fvec2", "fvec3", "fvec4", "cast", "interface",
+        "noinline", "external", "resource",
+        // HLSL
+        "bool2", "bool3", "bool4", "cbuffer", "tbuffer", "column_major", "row_major", "compile",
+        "dword", "float2", "float3", "float4", "groupshared", "half2", "half3", "half4", "int2", "int3", "int4",
+        "line", "lineadj", "linear", "matrix", "nointerpolation", "packoffset", "pass", "pixelfragment", "point",
+        "sampler", "sampler_state", "snorm", "stateblock", "technique", "texture", "triangle", "triangleadj",
+        "unorm", "vector", "vertexfragment", "min16float", "min10float", "min16int", "min12int",
+        "min16uint", "uint2", "uint3", "uint4"};
+    const auto fail = [&](const std::string& why) -> std::string {
+        throw UsageError("--id-prefix '" + text + "': " + why);
+    };
+    if (text.empty() || text.size() > 31 || !(text[0] >= 'a' && text[0] <= 'z') ||
+        !std::all_of(text.begin(), text.end(), [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; }))
+        return fail("expected [a-z][a-z0-9_]{0,30} (a lower-case letter, then up to 30 letters, digits or '_')");
+    if (text.find("__") != std::string::npos || text.back() == '_')
+        return fail("the identifiers would hold \"__\", which C++ and GLSL reserve");
+    if (text == "gl") return fail("GLSL reserves identifiers starting with gl_");
+    if (reserved.contains(text)) return fail("a C++, GLSL or HLSL keyword");
+    return text;
+}
+
 double parse_roughness(const std::string& text) {
     double value = 0.0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -436,7 +479,8 @@ std::string merge_index(const std::filesystem::path& dir, const std::filesystem:
     const std::string name = relative.generic_string();
     try {
         if (name == "metalfit_export.json") return detail::merge_json_record(existing, mine);
-        if (name == "cpp/metalfit_materials.hpp") {
+        if (name.starts_with("cpp/") && name.ends_with("_materials.hpp")) {  // cpp_index_path of the export's prefix
+            const std::string prefix = name.substr(4, name.size() - 4 - std::string_view("_materials.hpp").size());
             std::vector<detail::CppIndexEntry> entries = detail::parse_cpp_materials_index(existing);
             for (const detail::CppIndexEntry& e : detail::parse_cpp_materials_index(mine)) {
                 const auto same = std::find_if(entries.begin(), entries.end(),
@@ -444,7 +488,7 @@ std::string merge_index(const std::filesystem::path& dir, const std::filesystem:
                 if (same != entries.end()) *same = e;
                 else entries.push_back(e);
             }
-            return detail::cpp_materials_index(entries);
+            return detail::cpp_materials_index(entries, prefix);
         }
         if (name == "glsl/metalfit_models.glsl" || name == "hlsl/metalfit_models.hlsl" || name == "cpp/metalfit_models.hpp") {
             std::vector<const Model*> models = models_defined_in(existing);

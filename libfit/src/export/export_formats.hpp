@@ -30,10 +30,14 @@ struct ExportContext {
     std::string materialx_colorspace;  // MaterialX's name of record.space, empty when it has none
 };
 
-// "Au", "f82-tint" → "AU_F82_TINT" (upper case, every other character '_'): constant names.
-std::string identifier(const std::string& material_id, std::string_view model_id);
-// "Au", "f82-tint" → "metalfit_au_f82_tint": file stems and function names.
-std::string file_stem(const std::string& material_id, std::string_view model_id);
+// "metalfit", "Au", "f82-tint" → "metalfit_au_f82_tint" (lower case, every other character '_'): the one name every
+// per-material identifier is made of (file stems, function names, namespaces, MaterialX / glTF names).
+std::string file_stem(std::string_view id_prefix, const std::string& material_id, std::string_view model_id);
+// The same in upper case ("METALFIT_AU_F82_TINT"): shader constants and include guards.
+std::string constant_stem(std::string_view id_prefix, const std::string& material_id, std::string_view model_id);
+// "metalfit" → "cpp/metalfit_materials.hpp", and its namespace "metalfit_materials".
+std::string cpp_index_name(std::string_view id_prefix);
+std::string cpp_index_path(std::string_view id_prefix);
 
 // Shortest text that reads back as the same double ("%.17g"), always with a '.' or an exponent.
 std::string number(double v);
@@ -75,7 +79,7 @@ struct CppIndexEntry {
     std::string include;  // #include "<stem>.hpp"
     std::string row;      // {"Au", "f82-tint", &<stem>::evaluate, …},
 };
-std::string cpp_materials_index(const std::vector<CppIndexEntry>& entries);
+std::string cpp_materials_index(const std::vector<CppIndexEntry>& entries, std::string_view id_prefix);
 // The entries of a file cpp_materials_index wrote; std::invalid_argument when it is not one.
 std::vector<CppIndexEntry> parse_cpp_materials_index(std::string_view text);
 

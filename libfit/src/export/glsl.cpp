@@ -10,25 +10,26 @@ namespace metalfit::detail {
 std::string shader_constants(const MaterialExport& material, const ModelExport& model, const ExportContext& context,
                              const ShaderSyntax& syntax) {
     const WrittenParameters& w = model.written;
-    const std::string id = identifier(material.fit->material.id, w.model->id());
+    const std::string& prefix = context.request.id_prefix;
+    const std::string id = constant_stem(prefix, material.fit->material.id, w.model->id());
     std::string text = comment_header(material, w, context, "// ");
     text += "// Needs " + std::string(syntax.models_file) + " before this file; F(mu), mu = cos(theta), per RGB channel.\n";
     text += "// " + std::string(syntax.language) + ". Constants: the float nearest each fitted value (at most 9 significant\n"
             "// digits, the float's shortest round trip); the figures above are of the fitted doubles.\n";
     text += half_precision_note(w, "// ");
-    const std::string guard = "METALFIT_" + id + "_" + std::string(syntax.extension);
+    const std::string guard = id + "_" + std::string(syntax.extension);
     text += "#ifndef " + guard + "  // the file may be included more than once\n#define " + guard + "\n";
     std::string args;
     const auto parameters = w.model->parameters();
     for (std::size_t i = 0; i < parameters.size(); ++i) {
         std::string name(parameters[i].name);
         for (char& ch : name) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-        const std::string constant = "METALFIT_" + id + "_" + name;
+        const std::string constant = id + "_" + name;
         text += std::string(syntax.constant) + " " + constant + " = " + std::string(syntax.vector) + "(" +
                 shader_channel_list(w.params, i) + ");\n";
         args += constant + ", ";
     }
-    text += std::string(syntax.vector) + " " + file_stem(material.fit->material.id, w.model->id()) + "(float mu) {\n    return " +
+    text += std::string(syntax.vector) + " " + file_stem(prefix, material.fit->material.id, w.model->id()) + "(float mu) {\n    return " +
             std::string(w.model->glsl_function()) + "(" + args + "mu);\n}\n#endif  // " + guard + "\n";
     return text;
 }
@@ -49,7 +50,7 @@ std::vector<ExportFile> export_glsl(const std::vector<MaterialExport>& materials
     files.push_back({"glsl/metalfit_models.glsl", glsl_models_file(context.request.models)});
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models)
-            files.push_back({"glsl/" + file_stem(m.fit->material.id, e.written.model->id()) + ".glsl",
+            files.push_back({"glsl/" + file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id()) + ".glsl",
                              shader_constants(m, e, context, kGlsl)});
     return files;
 }

@@ -135,7 +135,7 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
     std::vector<ExportFile> files;
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models) {
-            const std::string stem = file_stem(m.fit->material.id, e.written.model->id());
+            const std::string stem = file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id());
             const WrittenParameters& w = e.written;
             const GltfBaseColor base = gltf_base_color(w, context.request.gamut);
             const Metrics& mt = w.metrics;

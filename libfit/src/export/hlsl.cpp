@@ -97,7 +97,7 @@ std::vector<ExportFile> export_hlsl(const std::vector<MaterialExport>& materials
     files.push_back({"hlsl/metalfit_models.hlsl", hlsl_models_file(context.request.models)});
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models)
-            files.push_back({"hlsl/" + file_stem(m.fit->material.id, e.written.model->id()) + ".hlsl",
+            files.push_back({"hlsl/" + file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id()) + ".hlsl",
                              shader_constants(m, e, context, kHlsl)});
     return files;
 }

@@ -31,6 +31,8 @@ std::vector<ExportFile> export_json(const std::vector<MaterialExport>& materials
         for (const ModelExport& e : m.models)
             record["materials"][m.fit->material.id]["models"][std::string(e.written.model->id())]["export"] =
                 written_json(e.written, context.request.gamut, context.request.roughness);
+    // Only a prefix other than the default is recorded, so that a default export is what it was before --id-prefix.
+    if (context.request.id_prefix != kDefaultIdPrefix) record["id_prefix"] = context.request.id_prefix;
     return {{"metalfit_export.json", record.dump(2) + "\n"}};
 }
 
@@ -45,6 +47,12 @@ std::string merge_json_record(const std::string& existing, const std::string& mi
     if (!old_record.is_object() || old_record.value("schema", "") != new_record["schema"] ||
         !old_record.contains("materials") || !old_record["materials"].is_object())
         throw std::invalid_argument("not a " + new_record["schema"].get<std::string>() + " record");
+    // One folder, one prefix: its record and index describe the identifiers of one prefix.
+    const std::string old_prefix = old_record.value("id_prefix", std::string(kDefaultIdPrefix));
+    const std::string new_prefix = new_record.value("id_prefix", std::string(kDefaultIdPrefix));
+    if (old_prefix != new_prefix)
+        throw std::invalid_argument("its identifiers have --id-prefix \"" + old_prefix + "\", this export's \"" + new_prefix +
+                                    "\": one folder holds one prefix");
     for (const auto& [key, value] : new_record.items())
         if (key != "materials" && old_record[key] != value) {
             std::string differs;

@@ -66,7 +66,7 @@ pugi::xml_node append_bsdf(pugi::xml_node root, const char* category, const std:
 
 std::string document(const MaterialExport& m, const ModelExport& e, const ExportContext& context) {
     const std::string& ocio_space = context.record.space;
-    const std::string stem = file_stem(m.fit->material.id, e.written.model->id());
+    const std::string stem = file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id());
     std::string extra;
     const WrittenParameters w = materialx_parameters(m, e, extra);
     if (context.materialx_colorspace.empty())
@@ -182,7 +182,7 @@ std::vector<ExportFile> export_mtlx(const std::vector<MaterialExport>& materials
     std::vector<ExportFile> files;
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models)
-            files.push_back({"mtlx/" + file_stem(m.fit->material.id, e.written.model->id()) + ".mtlx", document(m, e, context)});
+            files.push_back({"mtlx/" + file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id()) + ".mtlx", document(m, e, context)});
     return files;
 }
 

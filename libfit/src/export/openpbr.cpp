@@ -23,7 +23,7 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
     std::vector<ExportFile> files;
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models) {
-            const std::string stem = file_stem(m.fit->material.id, e.written.model->id());
+            const std::string stem = file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id());
             std::optional<WrittenParameters> f82 = as_f82_tint(e.written, *m.fit->reference);
             std::string note;
             if (!f82) {

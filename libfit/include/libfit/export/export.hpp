@@ -52,12 +52,21 @@ inline constexpr const char* kDefaultRoughnessText = "0.3";  // as --help and th
 // "0.25" → 0.25; UsageError naming the value when it is not a number in [0, 1].
 double parse_roughness(const std::string& text);
 
+// The prefix of every per-material identifier an export writes (file stems, shader functions and constants, include
+// guards, C++ namespaces and the index, MaterialX / OpenPBR / glTF names): `<prefix>_<material>_<model>`. The shared
+// model functions (metalfit_f82_tint, …) keep their names. Written in metalfit_export.json only when not the default.
+inline constexpr const char* kDefaultIdPrefix = "metalfit";
+// "studio" → "studio"; UsageError naming the value unless it matches [a-z][a-z0-9_]{0,30}, has no "__", does not end
+// in '_', is not "gl" (GLSL reserves gl_…) and is not a C++, GLSL or HLSL keyword.
+std::string parse_id_prefix(const std::string& text);
+
 struct ExportRequest {
     std::vector<ExportFormat> formats;
     std::vector<const Model*> models;  // the models exported, in order
     ParameterSource source = ParameterSource::fit;
     GamutPolicy gamut = GamutPolicy::keep;
     double roughness = kDefaultRoughness;
+    std::string id_prefix = kDefaultIdPrefix;
 };
 
 // The model the MaterialX and OpenPBR exports use where a model has no native equivalent (lazanyi-comp in MaterialX;
