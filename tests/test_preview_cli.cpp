@@ -8,6 +8,8 @@
 #include <sys/stat.h>
 
 #include "glpreview/io/image_io.hpp"
+#include "glpreview/render/environment.hpp"
+#include "glpreview/scene/scene.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/models/model.hpp"
 #include "test_support.hpp"
@@ -240,6 +242,64 @@ TEST(PreviewCli, SheetRendersUnderAnEquirectEnvironment) {
     const auto record = nlohmann::json::parse(read_file(dir.path() / "out" / "sheet.json"));
     ASSERT_EQ(record.size(), 1u);
     EXPECT_EQ(record[0]["material"], "gold");
+}
+
+// --capture-probe: the room seen from its reference point as an equirect, and the scene that renders it on the room's
+// box; what each texel holds is what the CPU tracer sees along that texel's direction.
+TEST(PreviewCli, CaptureProbeWritesTheRoomAsAnEquirectOnItsOwnBox) {
+    TempDir dir;
+    const fs::path room = dir.write("room.json", R"({"environment": {"type": "room", "min": [-2, 0, -3], "max": [4, 2.5, 3],
+        "ceiling": [0.3, 0.4, 0.5], "panels": [], "wall_x_max": [0.1, 0.2, 0.7], "reference_point": [0.5, 1.25, 0.25], "cube_size": 64},
+        "spheres": [{"center": [0, 1, 0], "radius": 0.5, "material": "Cu", "roughness": 0.3}]})");
+    const CommandRun run = glpreview(room.string() + " --capture-probe 64x32 -o " + (dir.path() / "out").string(), dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_TRUE(Contains(run.out, (dir.path() / "out" / "probe.exr").string()));
+    const glpreview::Scene source = glpreview::load_scene(room);
+    const glpreview::Scene probe = glpreview::load_scene(dir.path() / "out" / "probe.json");
+    ASSERT_EQ(probe.environment.type, glpreview::EnvironmentType::equirect);
+    ASSERT_TRUE(probe.environment.equirect.proxy.has_value());
+    const auto* box = std::get_if<glpreview::BoxProxy>(&*probe.environment.equirect.proxy);
+    ASSERT_NE(box, nullptr);
+    EXPECT_EQ(box->min.x, -2);
+    EXPECT_EQ(box->max.x, 4);
+    EXPECT_EQ(box->max.y, 2.5);
+    EXPECT_EQ(probe.environment.reference().x, 0.5);
+    EXPECT_EQ(probe.environment.reference().z, 0.25);
+    EXPECT_EQ(probe.environment.cube_size, 64);
+    EXPECT_EQ(probe.environment.equirect.colorspace, "Linear Rec.709 (sRGB)");
+    ASSERT_EQ(probe.spheres.size(), 1u);
+    EXPECT_EQ(probe.spheres[0].roughness, 0.3);
+
+    const glpreview::Image image = glpreview::read_image(dir.path() / "out" / "probe.exr");
+    ASSERT_EQ(image.width, 64);
+    ASSERT_EQ(image.height, 32);
+    const glpreview::EnvironmentTracer tracer(source.environment);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const RGB seen = tracer.trace(source.environment.reference(), glpreview::equirect_direction(x, y, 64, 32)).radiance;
+            ASSERT_NEAR(image.at(x, y).b, seen.b, 1e-3 * seen.b + 1e-6) << x << "," << y;  // half floats
+        }
+    // Independent of the tracer: the top row looks at the plain ceiling, the texel at u = 0.75 on the middle rows at
+    // the +x wall (its checker shades by 1 or 0.75).
+    EXPECT_NEAR(image.at(5, 0).g, 0.4, 1e-3);
+    const double wall = image.at(48, 15).b;
+    EXPECT_TRUE(std::abs(wall - 0.7) < 1e-3 || std::abs(wall - 0.525) < 1e-3) << wall;
+
+    // A sphere room gives its sphere; an image at infinity has no proxy; the size is checked.
+    const fs::path sphere_room = dir.write("sphere-room.json", R"({"environment": {"type": "sphere-room", "radius": 6},
+        "spheres": [{"center": [0, 0, 0], "radius": 0.5}]})");
+    ASSERT_EQ(glpreview(sphere_room.string() + " --capture-probe 16x8 -o " + (dir.path() / "sphere").string(), dir).exit_code, 0);
+    const glpreview::Scene sphere_probe = glpreview::load_scene(dir.path() / "sphere" / "probe.json");
+    EXPECT_EQ(std::get<glpreview::SphereProxy>(*sphere_probe.environment.equirect.proxy).radius, 6);
+    const CommandRun infinity = glpreview(write_equirect_sheet_scene(dir).string() + " --capture-probe 16x8 -o " +
+                                              (dir.path() / "sky").string(), dir);
+    EXPECT_EQ(infinity.exit_code, 2);
+    EXPECT_TRUE(Contains(infinity.err, "image at infinity")) << infinity.err;
+    EXPECT_EQ(std::count(infinity.err.begin(), infinity.err.end(), '\n'), 1) << infinity.err;
+    EXPECT_FALSE(fs::exists(dir.path() / "sky"));
+    const CommandRun size = glpreview(room.string() + " --capture-probe 0x8 -o " + (dir.path() / "bad").string(), dir);
+    EXPECT_EQ(size.exit_code, 2);
+    EXPECT_TRUE(Contains(size.err, "--capture-probe: expected WxH")) << size.err;
 }
 
 TEST(PreviewCli, ExplainWithSheetPrintsTheSheetsPlan) {

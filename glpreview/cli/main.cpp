@@ -15,6 +15,7 @@
 #include "glpreview/render/sphere_sheet.hpp"
 #include "glpreview/render/plan.hpp"
 #include "glpreview/render/preview.hpp"
+#include "glpreview/render/reflection_probe.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
@@ -54,19 +55,23 @@ double parse_roughness(const std::string& text) {
 
 namespace {
 
-// --size WxH over the scene's image size (nothing when empty).
-void apply_size(metalfit::glpreview::Scene& scene, const std::string& size) {
+// An image size WxH given to `option` (--size, --capture-probe).
+std::pair<int, int> parse_size(const std::string& option, const std::string& size, const char* example) {
     using namespace metalfit::glpreview;
-    if (size.empty()) return;
     std::smatch m;
     if (!std::regex_match(size, m, std::regex(R"((\d{1,4})x(\d{1,4}))")) || std::stoi(m[1]) < 1 || std::stoi(m[2]) < 1 ||
         std::stoi(m[1]) > kMaxImageEdge || std::stoi(m[2]) > kMaxImageEdge ||
         static_cast<long long>(std::stoi(m[1])) * std::stoi(m[2]) > kMaxImagePixels)
-        throw metalfit::UsageError("--size: expected WxH with each side in [1, " + std::to_string(kMaxImageEdge) +
-                                   "] and at most " + std::to_string(kMaxImagePixels) + " pixels, e.g. 512x512 (got '" +
-                                   size.substr(0, 40) + "')");
-    scene.width = std::stoi(m[1]);
-    scene.height = std::stoi(m[2]);
+        throw metalfit::UsageError(option + ": expected WxH with each side in [1, " + std::to_string(kMaxImageEdge) +
+                                   "] and at most " + std::to_string(kMaxImagePixels) + " pixels, e.g. " + example +
+                                   " (got '" + size.substr(0, 40) + "')");
+    return {std::stoi(m[1]), std::stoi(m[2])};
+}
+
+// --size WxH over the scene's image size (nothing when empty).
+void apply_size(metalfit::glpreview::Scene& scene, const std::string& size) {
+    if (size.empty()) return;
+    std::tie(scene.width, scene.height) = parse_size("--size", size, "512x512");
 }
 
 // The files a preview wrote, its frame time and each sphere's error, one line each.
@@ -132,6 +137,10 @@ int run_glpreview(int argc, char** argv) {
                    "sphere's)");
     app.add_option("--sheet-labels", sheet_labels, "Sheet: material, model, roughness and error drawn on sheet.png (on|off)")
         ->capture_default_str();
+    std::string capture_probe_size;
+    app.add_option("--capture-probe", capture_probe_size,
+                   "Capture the scene's environment from its reference point as a WxH equirect reflection probe: "
+                   "OUTPUT/probe.exr and OUTPUT/probe.json (the scene with that image on the matching proxy)");
     app.add_flag("--explain", explain_only, "Print the plan (passes, why they run, what is skipped) and render nothing");
     app.add_option("--data-dir", data_dir, "Built-in database folder")->check(CLI::ExistingDirectory);
     app.add_option("--ocio-config", ocio_config, "OCIO config when $OCIO is not set (default: data/ocio/config.ocio)");
@@ -192,7 +201,10 @@ int run_glpreview(int argc, char** argv) {
         }
         if (scene_files.empty()) throw UsageError("a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy)");
         if (scene_files.size() > 1 && !batch) throw UsageError("several scene files need --batch");
-        if (batch && (!sheet.empty() || explain_only)) throw UsageError("--batch renders scenes: --sheet and --explain take one scene");
+        if (batch && (!sheet.empty() || explain_only || !capture_probe_size.empty()))
+            throw UsageError("--batch renders scenes: --sheet, --explain and --capture-probe take one scene");
+        if (!capture_probe_size.empty() && (!sheet.empty() || explain_only || !size.empty()))
+            throw UsageError("--capture-probe renders nothing else: not with --sheet, --explain or --size");
         const auto load = [&](const std::filesystem::path& scene_file) {
             Scene scene = load_scene(scene_file);
             confine_scene_paths(scene, {data_dir, allow_paths_outside});
@@ -216,6 +228,13 @@ int run_glpreview(int argc, char** argv) {
             return ok;
         }
         Scene scene = load(scene_files.front());
+        if (!capture_probe_size.empty()) {
+            const auto [width, height] = parse_size("--capture-probe", capture_probe_size, "1024x512");
+            const ReflectionProbe probe =
+                capture_probe(scene, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), width, height);
+            for (const auto& file : write_probe(probe, output_dir)) std::cout << file.string() << "\n";
+            return ok;
+        }
         // --sheet materials given as files are the user's paths: relative to the current folder, not to the scene's.
         SheetRequest sheet_request;
         for (const std::string& m : split_list(sheet))
