@@ -9,56 +9,11 @@
 #include "libfit/models/registry.hpp"
 #include "metalfit_bench/reference_lut.hpp"
 #include "exact_real_kernel.hpp"
+#include "model_kernels.hpp"
 #include "opaque.hpp"
 
 namespace metalfit::bench {
 namespace {
-
-// The most parameters any registered model has.
-constexpr std::size_t kMaxParameters = [] {
-    std::size_t most = 0;
-    for_each_model(Registry{}, [&]<class M>() { most = std::max(most, M::kParameters.size()); });
-    return most;
-}();
-using FloatParams = std::array<std::array<float, kMaxParameters>, 3>;
-
-FloatParams to_float(const ModelParameters& p) {
-    FloatParams f{};
-    for (int c = 0; c < 3; ++c)
-        std::transform(p[c].begin(), p[c].begin() + static_cast<std::ptrdiff_t>(std::min(p[c].size(), kMaxParameters)),
-                       f[c].begin(), [](double v) { return static_cast<float>(v); });
-    return f;
-}
-
-template <class M>
-EvalKernel model_kernel(const PreparedMaterial& material) {
-    static_assert(M::kParameters.size() <= kMaxParameters);
-    const FloatParams p = to_float(material.params(M::kId));
-    EvalKernel k;
-    k.id = std::string(M::kId);
-    k.kind = "model";
-    k.description = std::string(M::kTitle) + ", float, fitted parameters";
-    k.params_per_channel = static_cast<int>(M::kParameters.size());
-    k.scalar = [p](std::span<const float> mu, std::span<float> out) {
-        for (std::size_t i = 0; i < mu.size(); ++i) {
-            float m = mu[i];
-            opaque(m);
-            out[3 * i + 0] = M::evaluate(p[0].data(), m);
-            out[3 * i + 1] = M::evaluate(p[1].data(), m);
-            out[3 * i + 2] = M::evaluate(p[2].data(), m);
-        }
-    };
-    k.array = [p](std::span<const float> mu, std::span<float> out) {
-        const std::size_t n = mu.size();
-        const float* in = mu.data();
-        for (int c = 0; c < 3; ++c) {
-            const std::array<float, kMaxParameters> q = p[c];
-            float* o = out.data() + c * n;
-            for (std::size_t i = 0; i < n; ++i) o[i] = M::evaluate(q.data(), in[i]);
-        }
-    };
-    return k;
-}
 
 EvalKernel exact_complex_kernel(const PreparedMaterial& material) {
     const ModelParameters& nk = material.params(models::ConductorRgb::kId);
@@ -136,8 +91,7 @@ EvalKernel spectral_kernel(const PreparedMaterial& material) {
 }  // namespace
 
 std::vector<EvalKernel> eval_kernels(const PreparedMaterial& material) {
-    std::vector<EvalKernel> kernels;
-    for_each_model(Registry{}, [&]<class M>() { kernels.push_back(model_kernel<M>(material)); });
+    std::vector<EvalKernel> kernels = model_kernels(material);
     kernels.push_back(exact_complex_kernel(material));
     kernels.push_back(exact_real_kernel(material));
     kernels.push_back(lut_kernel(material, 64));
