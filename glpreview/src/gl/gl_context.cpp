@@ -1,5 +1,7 @@
 #include "glpreview/gl/gl_context.hpp"
 
+#include "glpreview/gl/program_cache.hpp"
+
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
@@ -53,8 +55,12 @@ struct GlContext::Impl {
     EGLDisplay display = EGL_NO_DISPLAY;
     EGLContext context = EGL_NO_CONTEXT;
     std::string platform;
+    ProgramCache programs;  // deleted while the context is still current (below)
 
-    ~Impl() { release(); }
+    ~Impl() {
+        programs = ProgramCache();
+        release();
+    }
 
     // Initialises `dpy` and makes a GL 4.5 core context current on it; returns "" or why it failed.
     std::string make_current(EGLDisplay dpy) {
@@ -132,6 +138,7 @@ GlContext& GlContext::operator=(GlContext&&) noexcept = default;
 GlContext::~GlContext() = default;
 
 const std::string& GlContext::platform() const { return impl_->platform; }
+ProgramCache& GlContext::programs() { return impl_->programs; }
 
 std::string GlContext::renderer() const {
     const auto* text = reinterpret_cast<const char*>(glGetString(GL_RENDERER));

@@ -42,8 +42,13 @@ void set_model_parameters(GLuint program, const Model& model, const ModelParamet
 }
 
 GpuRenderer::GpuRenderer(const Scene& scene, const Features& features, std::vector<const SphereFresnel*> fresnel,
-                         const Image* equirect)
-    : scene_(scene), features_(features), fresnel_(std::move(fresnel)), vao_(gl::create_vertex_array()) {
+                         const Image* equirect, ProgramCache* programs)
+    : scene_(scene),
+      features_(features),
+      fresnel_(std::move(fresnel)),
+      own_programs_(programs ? std::nullopt : std::optional<ProgramCache>(std::in_place)),
+      program_cache_(programs ? programs : &*own_programs_),
+      vao_(gl::create_vertex_array()) {
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     if (equirect) {
         own_equirect_.emplace(std::make_shared<const Image>(*equirect));
@@ -84,7 +89,7 @@ void GpuRenderer::set_fresnel(std::size_t sphere, const SphereFresnel* fresnel) 
 GLuint GpuRenderer::program(const std::string& kind, const std::vector<std::string>& defines, const std::string& fresnel_call) {
     std::string key = kind;
     for (const auto& d : defines) key += " " + d;
-    if (auto it = programs_.find(key); it != programs_.end()) return it->second.id();
+    if (auto it = programs_.find(key); it != programs_.end()) return it->second;
 
     std::string header = "#version 450 core\n";
     for (const auto& d : defines) header += define_line(d);
@@ -104,10 +109,11 @@ GLuint GpuRenderer::program(const std::string& kind, const std::vector<std::stri
         if (kind == "sphere") body += std::string(shader_text("camera.glsl")) + std::string(shader_text("sphere.frag"));
         else body += shader_text("probe.comp");
     }
-    gl::Program linked = kind == "probe" ? compile_compute_program(header + body, key)
-                                         : link_program({fullscreen_vertex_stage(), {GL_FRAGMENT_SHADER, header + body}}, key);
-    const GLuint id = linked.id();
-    programs_.emplace(key, std::move(linked));
+    // Linked once per context (another scene's renderer may have linked the same source); this scene's uniforms set
+    // on its first use here.
+    const GLuint id = kind == "probe" ? program_cache_->program({{GL_COMPUTE_SHADER, header + body}}, key)
+                                      : program_cache_->program({fullscreen_vertex_stage(), {GL_FRAGMENT_SHADER, header + body}}, key);
+    programs_.emplace(key, id);
     // What does not change while the renderer lives is set once here (uniforms a shader lacks are ignored).
     set_environment_uniforms(id);
     set_camera_uniforms(id);

@@ -20,6 +20,8 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+class ProgramCache;
+
 class GlContext {
 public:
     // Creates the context and makes it current on the calling thread. Throws GlError naming what failed on every
@@ -33,6 +35,8 @@ public:
     const std::string& platform() const;  // "EGL surfaceless (Mesa)" or "EGL device"
     std::string renderer() const;         // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
     std::string version() const;          // GL_VERSION
+    // The programs linked in this context, shared by every renderer made in it (glpreview/gl/program_cache.hpp).
+    ProgramCache& programs();
 
 private:
     struct Impl;

@@ -12,6 +12,7 @@
 
 #include "glpreview/gl/gl_context.hpp"
 #include "glpreview/gl/objects.hpp"
+#include "glpreview/gl/program_cache.hpp"
 #include "glpreview/render/dfg_table.hpp"
 #include "glpreview/render/gpu_resources.hpp"
 #include "glpreview/io/image.hpp"
@@ -40,8 +41,10 @@ public:
     // The scene's environment, camera and image size are read when the renderer is made and when a shader variant
     // is first compiled (their uniforms are set once then); the spheres are read at every frame, so they may move
     // or change their reflection settings and Fresnel kind between frames.
+    // `programs`: where its GL programs are linked and kept (the context's, shared with the other renderers made in
+    // it); none: a cache of its own.
     GpuRenderer(const Scene& scene, const Features& features, std::vector<const SphereFresnel*> fresnel,
-                const Image* equirect);
+                const Image* equirect, ProgramCache* programs = nullptr);
     GpuRenderer(const GpuRenderer&) = delete;
     GpuRenderer& operator=(const GpuRenderer&) = delete;
 
@@ -100,7 +103,9 @@ private:
     const Scene& scene_;
     Features features_;
     std::vector<const SphereFresnel*> fresnel_;
-    std::map<std::string, gl::Program> programs_;  // shader variants, compiled on first use
+    std::optional<ProgramCache> own_programs_;
+    ProgramCache* program_cache_;
+    std::map<std::string, GLuint> programs_;  // shader variants (in program_cache_), this scene's uniforms set
     gl::VertexArray vao_;
     std::optional<EnvironmentCube> own_cube_;
     std::optional<EquirectTexture> own_equirect_;
