@@ -64,6 +64,13 @@ TEST(PreviewImageIo, AnExrCarriesHalfPixelsChromaticitiesAndTypedAttributesAsOpe
     in.readPixels(0, image.height - 1);
     for (std::size_t i = 0; i < read.size(); ++i) EXPECT_EQ(read[i].bits(), Imath::half(image.rgb[i]).bits()) << i;
 
+    // Without $SOURCE_DATE_EPOCH, the capture date is the time of writing.
+    glpreview::write_exr(dir.path() / "now.exr", image);
+    const Imf::InputFile now((dir.path() / "now.exr").c_str());
+    ASSERT_TRUE(Imf::hasCapDate(now.header()));
+    EXPECT_EQ(Imf::capDate(now.header()).size(), 19u) << Imf::capDate(now.header());
+    EXPECT_FALSE(Imf::hasChromaticities(now.header()));
+
     // glpreview's own readers give the same back.
     const Image back = glpreview::read_image(dir.path() / "a.exr");
     for (std::size_t i = 0; i < read.size(); ++i) EXPECT_EQ(back.rgb[i], static_cast<float>(read[i])) << i;

@@ -42,11 +42,19 @@ auto with_exr(const std::filesystem::path& file, Read read) {
 }
 
 // The EXR header's capture date (OpenEXR's `capDate`, "YYYY:MM:DD hh:mm:ss"): the time given by $SOURCE_DATE_EPOCH
-// (reproducible-builds.org's convention: seconds since 1970 UTC) when it is set, so that a rerun writes the same
-// bytes; else none, as OpenImageIO wrote it.
+// (reproducible-builds.org's convention: seconds since 1970 UTC, written as UTC) when it is set, so that a rerun
+// writes the same bytes; else the local time of writing, as OpenImageIO wrote it.
 void add_capture_date(Imf::Header& header) {
     const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
-    if (epoch == nullptr) return;
+    char date[32];
+    if (epoch == nullptr) {
+        const std::time_t now = std::time(nullptr);
+        std::tm local{};
+        if (::localtime_r(&now, &local) == nullptr) return;
+        std::strftime(date, sizeof date, "%Y:%m:%d %H:%M:%S", &local);
+        Imf::addCapDate(header, date);
+        return;
+    }
     const std::string_view text(epoch);
     long long seconds = -1;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seconds);
@@ -55,7 +63,6 @@ void add_capture_date(Imf::Header& header) {
     if (error != std::errc() || end != text.data() + text.size() || seconds < 0 || ::gmtime_r(&t, &utc) == nullptr)
         throw UsageError("SOURCE_DATE_EPOCH: expected seconds since 1970-01-01 UTC, a non-negative integer (got '" +
                          std::string(text.substr(0, 40)) + "')");
-    char date[32];
     std::strftime(date, sizeof date, "%Y:%m:%d %H:%M:%S", &utc);
     Imf::addCapDate(header, date);
 }
@@ -97,8 +104,8 @@ Image read_exr(const std::filesystem::path& file) {
 }
 
 void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour, const ExrMetadata& metadata) {
-    // The attributes OpenImageIO 2.4 wrote (the header's defaults, ZIP compression, half R G B, capDate when
-    // $SOURCE_DATE_EPOCH is set, chromaticities and colorSpace, then the metadata as string, float or int).
+    // The attributes OpenImageIO 2.4 wrote (the header's defaults, ZIP compression, half R G B, capDate,
+    // chromaticities and colorSpace, then the metadata as string, float or int).
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
     for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::HALF));

@@ -1,5 +1,5 @@
-// Which files are read, and what an image header may claim before any pixel is allocated (kMaxInputImageSide, kMaxInputImagePixels of
-// glpreview/io/image_io.hpp), shared by the EXR reader, the PNG reader and the OpenImageIO module.
+// Which files are read, and what an image header may claim before any pixel is allocated (kMaxInputImageSide,
+// kMaxInputImagePixels of glpreview/io/image_io.hpp), shared by the EXR reader, the PNG reader and the OpenImageIO module.
 #pragma once
 
 #include <sys/stat.h>

@@ -2,10 +2,12 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <mutex>
 #include <stdexcept>
 #include <system_error>
+#include <vector>
 
 namespace metalfit::glpreview {
 namespace {
@@ -20,8 +22,12 @@ std::filesystem::path executable_dir() {
 
 const OiioModuleApi* load() {
     std::string tried;
-    for (const std::filesystem::path& dir : {executable_dir(), std::filesystem::path(METALFIT_OIIO_MODULE_INSTALL_DIR)}) {
-        if (dir.empty()) continue;
+    const std::filesystem::path beside = executable_dir();
+    std::vector<std::filesystem::path> dirs;
+    if (!beside.empty()) dirs = {beside, (beside / METALFIT_OIIO_MODULE_RELATIVE_DIR).lexically_normal()};
+    if (std::find(dirs.begin(), dirs.end(), METALFIT_OIIO_MODULE_INSTALL_DIR) == dirs.end())
+        dirs.emplace_back(METALFIT_OIIO_MODULE_INSTALL_DIR);
+    for (const std::filesystem::path& dir : dirs) {
         const std::filesystem::path file = dir / kModuleFile;
         std::error_code error;
         if (!std::filesystem::exists(file, error)) {

@@ -26,8 +26,8 @@ struct OiioModuleApi {
 // The entry point's name in the module: extern "C" const OiioModuleApi* metalfit_glpreview_oiio_module().
 inline constexpr const char* kOiioModuleEntry = "metalfit_glpreview_oiio_module";
 
-// The module, loaded on the first call: beside the running executable (the build tree's bin/), else in the
-// install's library folder (METALFIT_OIIO_MODULE_INSTALL_DIR). Throws std::runtime_error (exit code 1), one line
+// The module, loaded on the first call: beside the running executable (the build tree's bin/), else in
+// <bindir>/../<libdir>/metalfit relative to it (an install, also moved), else in the install's <libdir>/metalfit. Throws std::runtime_error (exit code 1), one line
 // naming the places looked at, when it is missing or does not load.
 const OiioModuleApi& oiio_module();
 

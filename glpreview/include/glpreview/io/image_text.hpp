@@ -1,6 +1,7 @@
 // Text drawn into a linear image with OpenImageIO's ImageBufAlgo::render_text (FreeType; in the OpenImageIO module,
 // loaded on first use: src/io/oiio_module.hpp) in DejaVu Sans, the font of Debian's fonts-dejavu-core
-// (scripts/install-deps.sh), found by OpenImageIO's own font search ($OPENIMAGEIO_FONTS, $HOME/fonts, /usr/share/fonts, ... searched recursively): nothing is downloaded.
+// (scripts/install-deps.sh), found by OpenImageIO's own font search ($OPENIMAGEIO_FONTS, $HOME/fonts,
+// /usr/share/fonts, ... searched recursively): nothing is downloaded.
 #pragma once
 
 #include <string>
