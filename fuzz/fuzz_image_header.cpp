@@ -1,5 +1,5 @@
-// libFuzzer target: HDR and EXR environment images through OpenImageIO (glpreview/io read_image: the header check,
-// then the pixels). The first byte picks the extension, so both readers are reached.
+// libFuzzer target: HDR and EXR environment images (glpreview/io read_image: the header check, then the pixels;
+// OpenEXR for a file with EXR's magic number, the OpenImageIO module for the rest). The first byte picks the extension.
 #include "fuzz_input.hpp"
 #include "glpreview/io/image_io.hpp"
 

@@ -8,7 +8,8 @@ PACKAGES=(
   libgtest-dev                         # tests
   libceres-dev libeigen3-dev           # fitting, linear algebra
   libopencolorio-dev opencolorio-tools # colour management (ociocheck is used by a test)
-  libopenimageio-dev libopenexr-dev    # images
+  libopenexr-dev libpng-dev            # glpreview's EXR and PNG files
+  libopenimageio-dev                   # glpreview's OpenImageIO module: other environment formats, the sheet's labels
   nlohmann-json3-dev                   # JSON
   libyaml-cpp-dev                      # refractiveindex.info YAML
   libcli11-dev                         # command line

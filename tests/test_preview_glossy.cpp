@@ -3,7 +3,8 @@
 // furnace test, the limit roughness → 0, byte-identical mirrors.
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/imageio.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
 #include <stdlib.h>
 
 #include <cmath>
@@ -319,9 +320,9 @@ TEST(PreviewGlossy, RoughnessZeroGivesTodaysImagesByteForByte) {
     // The files are the same bytes: the pixels, and the headers (the capture date is $SOURCE_DATE_EPOCH's).
     for (const char* file : {"beauty.exr", "beauty.png", "reference.exr", "reference.png", "difference.exr", "difference.png"})
         EXPECT_EQ(test::read_file(dir.path() / "a" / file), test::read_file(dir.path() / "b" / file)) << file;
-    const auto exr = OIIO::ImageInput::open((dir.path() / "b" / "beauty.exr").string());
-    ASSERT_TRUE(exr);
-    EXPECT_EQ(exr->spec().get_string_attribute("DateTime"), "2025:12:01 00:00:00");
+    const Imf::InputFile exr((dir.path() / "b" / "beauty.exr").c_str());
+    ASSERT_TRUE(Imf::hasCapDate(exr.header()));
+    EXPECT_EQ(Imf::capDate(exr.header()), "2025:12:01 00:00:00");
     EXPECT_FALSE(std::filesystem::exists(dir.path() / "b" / "reference-stderr.exr"));
     EXPECT_FALSE(zero.reference_standard_error);
     EXPECT_EQ(zero.metrics["spheres"][1]["roughness"], 0.0);

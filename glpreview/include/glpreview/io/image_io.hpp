@@ -1,5 +1,6 @@
-// Image files through OpenImageIO: linear EXR (half float) and 8-bit PNG through libfit's OCIO display transform;
-// reading HDR/EXR environment images. Files are written to a temporary name beside the target and renamed.
+// Image files: linear EXR (half float, through OpenEXR) and 8-bit PNG through libfit's OCIO display transform (through
+// libpng); environment images read as EXR, or in any other format through the OpenImageIO module loaded on first use
+// (src/io/oiio_module.hpp). Files are written to a temporary name beside the target and renamed.
 #pragma once
 
 #include <filesystem>
@@ -19,7 +20,9 @@ namespace metalfit::glpreview {
 inline constexpr int kMaxInputImageSide = 16384;
 inline constexpr long long kMaxInputImagePixels = 1LL << 27;
 
-// Any OpenImageIO file (a regular file: FIFOs and devices are refused); RGB (a grey image is expanded, alpha dropped). Throws InputError naming the file.
+// An EXR (recognised by its magic number) or any file OpenImageIO reads (a regular file: FIFOs and devices are
+// refused); RGB (a grey image is expanded, alpha dropped). Throws InputError naming the file; std::runtime_error when
+// a non-EXR file needs the OpenImageIO module and it is missing.
 Image read_image(const std::filesystem::path& file);
 
 // What an EXR says about its pixels besides them (docs/preview.md, "Outputs"): the working space's primaries and
@@ -40,7 +43,7 @@ using ExrMetadata = std::vector<ExrAttribute>;
 // file carries no chromaticities (readers then assume Rec.709); `metadata` goes into the header as it is.
 void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour = nullptr,
                const ExrMetadata& metadata = {});
-// Every header attribute of an image whose name starts with `prefix`, as OpenImageIO reads it back.
+// Every string, float and int header attribute of an EXR whose name starts with `prefix`.
 ExrMetadata read_image_metadata(const std::filesystem::path& file, const std::string& prefix);
 // The chromaticities and colour space an EXR says it holds (nothing when it carries no `chromaticities`).
 std::optional<ExrColour> read_exr_colour(const std::filesystem::path& file);

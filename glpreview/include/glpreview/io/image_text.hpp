@@ -1,6 +1,7 @@
-// Text drawn into a linear image with OpenImageIO's ImageBufAlgo::render_text (FreeType) in DejaVu Sans, the font
-// of Debian's fonts-dejavu-core (scripts/install-deps.sh), found by OpenImageIO's own font search
-// ($OPENIMAGEIO_FONTS, $HOME/fonts, /usr/share/fonts, ... searched recursively): nothing is downloaded.
+// Text drawn into a linear image with OpenImageIO's ImageBufAlgo::render_text (FreeType; in the OpenImageIO module,
+// loaded on first use: src/io/oiio_module.hpp) in DejaVu Sans, the font of Debian's fonts-dejavu-core
+// (scripts/install-deps.sh), found by OpenImageIO's own font search ($OPENIMAGEIO_FONTS, $HOME/fonts,
+// /usr/share/fonts, ... searched recursively): nothing is downloaded.
 #pragma once
 
 #include <string>
@@ -20,7 +21,8 @@ struct TextBox {
     int font_size = 12;
 };
 
-// Throws InputError naming the font when OpenImageIO cannot find or load it (the package is missing).
+// Throws InputError naming the font when OpenImageIO cannot find or load it (the package is missing);
+// std::runtime_error when the OpenImageIO module is missing. No boxes: nothing is loaded.
 void draw_text(Image& image, const std::vector<TextBox>& boxes);
 
 }  // namespace metalfit::glpreview
