@@ -56,6 +56,9 @@ struct Lazanyi {
     // An n, k with the given F0: n = 1, k = 2 sqrt(F0 / (1 − F0)); F0 ≥ 1 (out of gamut) goes to the corner of the
     // bounds nearest it (n lowest, k highest), where k no longer moves F0 and a solver started lower would stall.
     static ChannelParameters nk_with_F0(double F0);
+    // An n, k with the given F0 keeping n where some k ≥ 0 allows it; otherwise k = 0 and the dielectric n nearest
+    // it; F0 ≥ 1 and F0 ≤ 0 as nk_with_F0.
+    static ChannelParameters nk_near(double F0, double n);
 };
 
 }  // namespace metalfit::models
