@@ -295,19 +295,25 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                 const ChannelParameters x = clamp_to_bounds<M>(starts[s].params);
                 Nonlinear z;
                 for (std::size_t i = 0; i < z.size(); ++i) z[i] = x[kNonlinear[i]];
-                if (std::find(tried.begin(), tried.end(), z) != tried.end()) continue;
-                tried.push_back(z);
-                ceres::Problem problem;
-                problem.AddResidualBlock(
-                    new ceres::AutoDiffCostFunction<ProjectedResidual<M>, ceres::DYNAMIC, static_cast<int>(kNonlinear.size())>(
-                        new ProjectedResidual<M>{&projection}, static_cast<int>(projection.residuals())),
-                    nullptr, z.data());
-                for (std::size_t i = 0; i < z.size(); ++i) {
-                    problem.SetParameterLowerBound(z.data(), static_cast<int>(i), M::kParameters[kNonlinear[i]].lower);
-                    problem.SetParameterUpperBound(z.data(), static_cast<int>(i), M::kParameters[kNonlinear[i]].upper);
-                }
                 ceres::Solver::Summary projected;
-                ceres::Solve(projected_options, &problem, &projected);
+                if constexpr (kNonlinear.size() > 0) {
+                    if (std::find(tried.begin(), tried.end(), z) != tried.end()) continue;
+                    tried.push_back(z);
+                    ceres::Problem problem;
+                    problem.AddResidualBlock(
+                        new ceres::AutoDiffCostFunction<ProjectedResidual<M>, ceres::DYNAMIC, static_cast<int>(kNonlinear.size())>(
+                            new ProjectedResidual<M>{&projection}, static_cast<int>(projection.residuals())),
+                        nullptr, z.data());
+                    for (std::size_t i = 0; i < z.size(); ++i) {
+                        problem.SetParameterLowerBound(z.data(), static_cast<int>(i), M::kParameters[kNonlinear[i]].lower);
+                        problem.SetParameterUpperBound(z.data(), static_cast<int>(i), M::kParameters[kNonlinear[i]].upper);
+                    }
+                    ceres::Solve(projected_options, &problem, &projected);
+                } else {
+                    // Nothing non-linear: the projection is the solution (no iteration; the start's n is what differs).
+                    projected.termination_type = ceres::CONVERGENCE;
+                    projected.iterations.resize(1);
+                }
                 const ChannelParameters full = clamp_to_bounds<M>(projection.parameters(z.data(), x));
                 double final_cost = 0;
                 for (std::size_t i = 0; i < target.mu.size(); ++i) {
@@ -319,7 +325,7 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                 best.solver.start = starts[s].name;
                 best.solver.iterations = static_cast<int>(projected.iterations.size()) - 1;
                 best.solver.termination = ceres::TerminationTypeToString(projected.termination_type);
-                best.solver.initial_cost = projected.initial_cost;
+                best.solver.initial_cost = kNonlinear.size() > 0 ? projected.initial_cost : final_cost;
                 best.solver.final_cost = final_cost;
             }
             best.solver.starts = static_cast<int>(starts.size());
