@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/quadrature.hpp"
+#include "libfit/models/lazanyi_comp/lazanyi_comp.hpp"
 #include "libfit/optics/fresnel.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/models/registry.hpp"
@@ -167,6 +169,77 @@ TEST(ModelLazanyiComp, MatchesThesisEquation) {
                     for (double mu : mu_grid())
                         EXPECT_NEAR(eval(m, {n, k, a, alpha}, mu), lazanyi_comp(n, k, a, alpha, mu), 1e-13)
                             << "n=" << n << " k=" << k << " a=" << a << " alpha=" << alpha << " mu=" << mu;
+}
+
+// The fit's variable projection: for a fixed α, F0 and a are the least-squares solution (a target built from a known
+// curve comes back exactly; elsewhere moving F0 or a raises the cost), the residuals are the full curve's at the
+// parameters it returns, and the Jets' derivative in α is the finite difference of the residuals.
+namespace {
+ChannelTarget lazanyi_comp_target(const std::array<double, 4>& p) {
+    ChannelTarget t;
+    for (const QuadratureNode& q : gauss_legendre_unit(64)) {
+        t.mu.push_back(q.mu);
+        t.value.push_back(models::LazanyiComp::evaluate(p.data(), q.mu));
+        t.scale.push_back(std::sqrt(q.weight) / t.value.back());
+    }
+    return t;
+}
+double projected_cost(const ChannelTarget& t, const ChannelParameters& p) {
+    double cost = 0;
+    for (std::size_t i = 0; i < t.mu.size(); ++i) {
+        const double r = t.scale[i] * (models::LazanyiComp::evaluate(p.data(), t.mu[i]) - t.value[i]);
+        cost += 0.5 * r * r;
+    }
+    return cost;
+}
+}  // namespace
+
+TEST(ModelLazanyiComp, ProjectionSolvesF0AndAmplitudeExactly) {
+    const std::array<double, 4> truth{0.4, 3.0, 0.25, 5.0};
+    const ChannelTarget t = lazanyi_comp_target(truth);
+    const models::LazanyiComp::Projection projection(t);
+    ASSERT_EQ(projection.residuals(), t.mu.size());
+    const double alpha = truth[3];
+    const ChannelParameters p = projection.parameters(&alpha, {0.4, 1.0, 0.0, 1.0});
+    const auto F0 = [](const ChannelParameters& q) {
+        return ((q[0] - 1) * (q[0] - 1) + q[1] * q[1]) / ((q[0] + 1) * (q[0] + 1) + q[1] * q[1]);
+    };
+    EXPECT_NEAR(F0(p), F0({truth[0], truth[1]}), 1e-12);
+    EXPECT_DOUBLE_EQ(p[0], 0.4);  // the start's n kept (some k gives that F0)
+    EXPECT_NEAR(p[2], truth[2], 1e-10);
+    EXPECT_EQ(p[3], alpha);
+    EXPECT_LT(projected_cost(t, p), 1e-24);
+}
+
+TEST(ModelLazanyiComp, ProjectionIsTheLeastSquaresOptimumAtEachAlpha) {
+    const ChannelTarget t = lazanyi_comp_target({0.4, 3.0, 0.25, 5.0});
+    const models::LazanyiComp::Projection projection(t);
+    for (double alpha : {0.5, 2.0, 9.0, 30.0}) {
+        const ChannelParameters p = projection.parameters(&alpha, {1.0, 3.0, 0.0, 1.0});
+        std::vector<double> r(projection.residuals());
+        projection(&alpha, r.data());
+        double cost = 0;
+        for (double v : r) cost += 0.5 * v * v;
+        EXPECT_NEAR(cost, projected_cost(t, p), 1e-12 * cost) << alpha;
+        ASSERT_GT(cost, 0) << alpha;
+        for (double dn : {-1e-3, 1e-3}) {  // F0 moves through n; a directly
+            EXPECT_GT(projected_cost(t, {p[0] + dn, p[1], p[2], p[3]}), cost) << alpha;
+            EXPECT_GT(projected_cost(t, {p[0], p[1], p[2] + dn, p[3]}), cost) << alpha;
+        }
+        // d residual / d alpha through the Jets against central differences of the projected residuals.
+        using J = ceres::Jet<double, 1>;
+        const J alpha_jet(alpha, 0);
+        std::vector<J> rj(projection.residuals());
+        projection(&alpha_jet, rj.data());
+        const double h = 1e-6 * alpha, up = alpha + h, down = alpha - h;
+        std::vector<double> r_up(r.size()), r_down(r.size());
+        projection(&up, r_up.data());
+        projection(&down, r_down.data());
+        for (std::size_t i = 0; i < r.size(); ++i) {
+            EXPECT_NEAR(rj[i].a, r[i], 1e-12 * std::abs(r[i]));  // the Jets divide as a product with the reciprocal
+            EXPECT_NEAR(rj[i].v[0], (r_up[i] - r_down[i]) / (2 * h), 1e-6 * (std::abs(rj[i].v[0]) + 1e-3)) << alpha << " " << i;
+        }
+    }
 }
 
 // ---- 4. F82-tint ----

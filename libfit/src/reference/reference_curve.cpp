@@ -77,18 +77,26 @@ struct SpectralColumns {
 };
 
 // Σ_λ F(μ_j, λ) w(λ) for kLanes values of μ. On x86-64 GCC also builds an AVX2 clone, chosen at load time (ifunc);
-// both clones use the same IEEE operations (no FMA), so the values do not depend on the machine.
+// both clones use the same IEEE operations (no FMA), so the values do not depend on the machine. The sums are kept
+// in local arrays (the compiler cannot keep sums behind pointers in registers: they might alias the columns) and μ is
+// clamped once, so that the loop over the lanes compiles to vector operations without branches.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-void integrate_lanes(const SpectralColumns& s, const double* m, double* x, double* y, double* z) {
-    for (std::size_t i = 0; i < s.size; ++i)
+void integrate_lanes(const SpectralColumns& s, const double* mu, double* x_out, double* y_out, double* z_out) {
+    double m[kLanes], x[kLanes] = {}, y[kLanes] = {}, z[kLanes] = {};
+    for (std::size_t j = 0; j < kLanes; ++j) m[j] = fresnel_real_detail::min_of(fresnel_real_detail::max_of(mu[j], 0.0), 1.0);
+    for (std::size_t i = 0; i < s.size; ++i) {
+        const double re = s.re[i], re1 = s.re1[i], im = s.im[i], norm2 = s.norm2[i];
+        const double wx = s.wx[i], wy = s.wy[i], wz = s.wz[i];
         for (std::size_t j = 0; j < kLanes; ++j) {
-            const double f = fresnel_real(m[j], s.re[i], s.re1[i], s.im[i], s.norm2[i]);
-            x[j] += f * s.wx[i];  // Σ_λ F(λ) w(λ) in grid order, as sum_of_products
-            y[j] += f * s.wy[i];
-            z[j] += f * s.wz[i];
+            const double f = fresnel_real(m[j], re, re1, im, norm2);
+            x[j] += f * wx;  // Σ_λ F(λ) w(λ) in grid order, as sum_of_products
+            y[j] += f * wy;
+            z[j] += f * wz;
         }
+    }
+    for (std::size_t j = 0; j < kLanes; ++j) x_out[j] = x[j], y_out[j] = y[j], z_out[j] = z[j];
 }
 
 }  // namespace
@@ -99,7 +107,7 @@ std::vector<XYZ> ReferenceCurve::xyz(std::span<const double> mu) const {
                                   weight_x_.data(), weight_y_.data(), weight_z_.data(), eta2_re_.size()};
     for (std::size_t first = 0; first < mu.size(); first += kLanes) {
         const std::size_t count = std::min(kLanes, mu.size() - first);
-        double m[kLanes], x[kLanes] = {}, y[kLanes] = {}, z[kLanes] = {};
+        double m[kLanes], x[kLanes], y[kLanes], z[kLanes];
         for (std::size_t j = 0; j < kLanes; ++j) m[j] = mu[first + std::min(j, count - 1)];  // padded with the last μ
         integrate_lanes(columns, m, x, y, z);
         for (std::size_t j = 0; j < count; ++j) out[first + j] = XYZ{x[j], y[j], z[j]};

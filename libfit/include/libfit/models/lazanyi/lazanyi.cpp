@@ -29,6 +29,15 @@ ChannelParameters Lazanyi::nk_with_F0(double F0) {
     return {1.0, 2.0 * std::sqrt(F0 / (1.0 - F0))};
 }
 
+ChannelParameters Lazanyi::nk_near(double F0, double n) {
+    if (!(F0 < 1.0 - 1e-12) || !(F0 > 0.0)) return nk_with_F0(F0);
+    const double k2 = (F0 * (n + 1.0) * (n + 1.0) - (n - 1.0) * (n - 1.0)) / (1.0 - F0);
+    if (k2 >= 0.0) return {n, std::sqrt(k2)};
+    const double s = std::sqrt(F0);
+    const double above = (1.0 + s) / (1.0 - s), below = (1.0 - s) / (1.0 + s);
+    return {std::abs(above - n) < std::abs(below - n) ? above : below, 0.0};
+}
+
 std::vector<ChannelParameters> Lazanyi::target_starts(const ChannelTarget& t) {
     // residual_i = s_i (F0 (1 − w_i) − (R_i − w_i)), w = (1 − μ)^5.
     double xx = 0.0, xy = 0.0;

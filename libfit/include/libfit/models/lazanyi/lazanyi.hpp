@@ -3,12 +3,14 @@
 // n, k are one point of a one-dimensional family (the one nearest the start). GLSL: lazanyi.glsl beside this header.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <string_view>
 #include <vector>
 
 #include "libfit/models/model.hpp"
 #include "libfit/models/model_math.hpp"
+#include "libfit/reference/channel_target.hpp"
 
 namespace metalfit::models {
 
@@ -56,6 +58,33 @@ struct Lazanyi {
     // An n, k with the given F0: n = 1, k = 2 sqrt(F0 / (1 − F0)); F0 ≥ 1 (out of gamut) goes to the corner of the
     // bounds nearest it (n lowest, k highest), where k no longer moves F0 and a solver started lower would stall.
     static ChannelParameters nk_with_F0(double F0);
+    // The fit by variable projection (ProjectedFit): F* = w + F0 (1 − w) (w = (1 − μ)⁵) is linear in F0 alone, so no
+    // parameter is left for Ceres: F0 is the least-squares solution in [0, 1] and n, k come from it keeping each
+    // start's n where some k allows it (the first start wins ties).
+    class Projection {
+    public:
+        static constexpr std::array<std::size_t, 0> kNonlinearParameters{};
+        explicit Projection(const ChannelTarget& t) : residuals_(t.mu.size()) {
+            double xx = 0.0, xy = 0.0;
+            for (std::size_t i = 0; i < t.mu.size(); ++i) {
+                const double w = model_math::schlick_weight(t.mu[i]);
+                const double x = t.scale[i] * (1.0 - w), y = t.scale[i] * (t.value[i] - w);
+                xx += x * x;
+                xy += x * y;
+            }
+            F0_ = xx > 0.0 ? std::clamp(xy / xx, 0.0, 1.0) : 0.0;
+        }
+        std::size_t residuals() const { return residuals_; }
+        ChannelParameters parameters(const double*, const ChannelParameters& start) const { return nk_near(F0_, start[0]); }
+
+    private:
+        std::size_t residuals_;
+        double F0_ = 0;
+    };
+
+    // An n, k with the given F0 keeping n where some k ≥ 0 allows it; otherwise k = 0 and the dielectric n nearest
+    // it; F0 ≥ 1 and F0 ≤ 0 as nk_with_F0.
+    static ChannelParameters nk_near(double F0, double n);
 };
 
 }  // namespace metalfit::models

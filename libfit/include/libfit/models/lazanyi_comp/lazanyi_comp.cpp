@@ -12,13 +12,22 @@ namespace {
 constexpr double kMatchMu = 0.15;  // where the thesis matches the compensation to the error
 constexpr double kSlopeStep = 1e-3;
 
+// R at the μ the construction looks at (μ = 0, kSlopeStep, 2 kSlopeStep, kMatchMu), evaluated once for every form
+// and channel.
+struct ReferenceSamples {
+    RGB at0, at1, at2, at_match;
+    explicit ReferenceSamples(const ClosedFormInput& input)
+        : at0(input.reference(0.0)), at1(input.reference(kSlopeStep)), at2(input.reference(2.0 * kSlopeStep)),
+          at_match(input.reference(kMatchMu)) {}
+};
+
 // The thesis construction on one channel of a rescaled Schlick F* = Lazanyi(n, k).
-ClosedFormChannel compensate(const ClosedFormInput& input, int c, const ChannelParameters& nk) {
-    const auto error = [&](double mu) { return input.reference(mu)[c] - Lazanyi::evaluate(nk.data(), mu); };
+ClosedFormChannel compensate(const ReferenceSamples& R, int c, const ChannelParameters& nk) {
+    const auto error = [&](const RGB& reference, double mu) { return reference[c] - Lazanyi::evaluate(nk.data(), mu); };
     // One-sided second-order slope at μ = 0; e(0) is not assumed to be 0.
-    const double e0 = error(0.0), e1 = error(kSlopeStep), e2 = error(2.0 * kSlopeStep);
+    const double e0 = error(R.at0, 0.0), e1 = error(R.at1, kSlopeStep), e2 = error(R.at2, 2.0 * kSlopeStep);
     const double a = -(-3.0 * e0 + 4.0 * e1 - e2) / (2.0 * kSlopeStep);
-    const double e_match = error(kMatchMu);
+    const double e_match = error(R.at_match, kMatchMu);
     const auto& a_bounds = LazanyiComp::kParameters[2];
     const auto& alpha_bounds = LazanyiComp::kParameters[3];
     if (a == 0.0) return {{}, "the error's slope at grazing is 0 (a = 0), alpha undefined"};
@@ -82,10 +91,11 @@ std::vector<ChannelParameters> LazanyiComp::target_starts(const ChannelTarget& t
 
 std::vector<ClosedForm> LazanyiComp::closed_forms(const ClosedFormInput& input) {
     std::vector<ClosedForm> forms;
+    const ReferenceSamples samples(input);
     for (const ClosedForm& base : Lazanyi::closed_forms(input)) {
         ClosedForm form{base.id, base.description + "; a from the error's slope at grazing, alpha from mu = 0.15", {}};
         for (int c = 0; c < 3; ++c)
-            form.channel[c] = base.channel[c].params ? compensate(input, c, *base.channel[c].params) : base.channel[c];
+            form.channel[c] = base.channel[c].params ? compensate(samples, c, *base.channel[c].params) : base.channel[c];
         forms.push_back(std::move(form));
     }
     return forms;

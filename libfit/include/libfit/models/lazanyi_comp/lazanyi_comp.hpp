@@ -3,11 +3,13 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <string_view>
 #include <vector>
 
 #include "libfit/models/model.hpp"
 #include "libfit/models/model_math.hpp"
+#include "libfit/reference/channel_target.hpp"
 #include "libfit/models/lazanyi/lazanyi.hpp"
 
 namespace metalfit::models {
@@ -62,6 +64,82 @@ struct LazanyiComp {
     // solved exactly (F0 capped at 1); the best few α become starts. Without them Levenberg–Marquardt from the
     // closed forms or neutral starts stops in local minima (gold blue: 1.41 % instead of 1.24 %).
     static std::vector<ChannelParameters> target_starts(const ChannelTarget& target);
+    // The fit by variable projection (ProjectedFit): for fixed α, F** = w + F0 (1 − w) − a μ m^α (w = m⁵, m = 1 − μ,
+    // F0 = F0(n, k)) is linear in F0 and a, so the fit's Ceres problem has α alone and F0 ∈ [0, 1], a ∈ its bounds are
+    // solved exactly at every evaluation; the Jets carry their derivatives in α into the residuals (Golub and Pereyra's
+    // full Jacobian of the projected problem). n, k then come from F0 keeping the start's n where some k allows it.
+    class Projection {
+    public:
+        static constexpr std::array<std::size_t, 1> kNonlinearParameters{3};  // α
+        explicit Projection(const ChannelTarget& t) {
+            for (std::size_t i = 0; i < t.mu.size(); ++i) {
+                const double mu = model_math::clamp_mu(t.mu[i]), w = model_math::schlick_weight(mu);
+                x1_.push_back(t.scale[i] * (1.0 - w));
+                y_.push_back(t.scale[i] * (t.value[i] - w));
+                scaled_mu_.push_back(t.scale[i] * mu);
+                log_m_.push_back(std::log(1.0 - mu));  // −∞ at μ = 1: m^α = 0 there (α > 0)
+                s11_ += x1_.back() * x1_.back();
+                s1y_ += x1_.back() * y_.back();
+            }
+        }
+        std::size_t residuals() const { return x1_.size(); }
+
+        // residual_i = x1_i F0 + x2_i a − y_i with x1 = s (1 − w), x2 = −s μ m^α, y = s (R − w).
+        template <class T>
+        bool operator()(const T* alpha, T* residuals) const {
+            T F0, a;
+            solve(alpha[0], F0, a, residuals);
+            return true;
+        }
+
+        // The full parameters at α: F0 and a solved, n, k from F0 (the start's n kept where some k ≥ 0 gives F0).
+        ChannelParameters parameters(const double* nonlinear, const ChannelParameters& start) const {
+            double F0 = 0, a = 0;
+            std::vector<double> r(residuals());
+            solve(nonlinear[0], F0, a, r.data());
+            ChannelParameters p = Lazanyi::nk_near(F0, start[0]);
+            p.push_back(a);
+            p.push_back(nonlinear[0]);
+            return p;
+        }
+
+    private:
+        template <class T>
+        void solve(const T& alpha, T& F0, T& a, T* residuals) const {
+            using std::exp;
+            const auto& a_bounds = kParameters[2];
+            const std::size_t n = x1_.size();
+            T s12(0.0), s22(0.0), s2y(0.0);
+            for (std::size_t i = 0; i < n; ++i) {
+                const T x2 = std::isinf(log_m_[i]) ? T(0.0) : T(-scaled_mu_[i]) * exp(alpha * log_m_[i]);
+                residuals[i] = x2;
+                s12 += x2 * x1_[i], s22 += x2 * x2, s2y += x2 * y_[i];
+            }
+            const T det = s11_ * s22 - s12 * s12;
+            if (det > T(0.0)) {
+                F0 = (s22 * s1y_ - s12 * s2y) / det;
+                a = (s11_ * s2y - s12 * s1y_) / det;
+            } else {
+                F0 = T(s1y_ / s11_), a = T(0.0);
+            }
+            // F0(n, k) ∈ [0, 1); a in its bounds: the bound held, the other solved again.
+            if (F0 > T(1.0) || F0 < T(0.0)) {
+                F0 = F0 > T(1.0) ? T(1.0) : T(0.0);
+                a = s22 > T(0.0) ? (s2y - s12 * F0) / s22 : T(0.0);
+            }
+            if (a > T(a_bounds.upper) || a < T(a_bounds.lower)) {
+                a = a > T(a_bounds.upper) ? T(a_bounds.upper) : T(a_bounds.lower);
+                F0 = (s1y_ - s12 * a) / s11_;
+                if (F0 > T(1.0)) F0 = T(1.0);
+                if (F0 < T(0.0)) F0 = T(0.0);
+            }
+            for (std::size_t i = 0; i < n; ++i) residuals[i] = x1_[i] * F0 + residuals[i] * a - y_[i];
+        }
+
+        std::vector<double> x1_, y_, scaled_mu_, log_m_;
+        double s11_ = 0, s1y_ = 0;
+    };
+
     static std::vector<ChannelParameters> neutral_starts() {
         return {{1.0, 3.0, 0.0, 6.0}, {1.0, 3.0, 0.3, 2.0}, {1.0, 3.0, -0.3, 2.0}, {1.0, 3.0, 0.3, 12.0}};
     }
