@@ -18,6 +18,7 @@
 #include "glpreview/render/dfg_table.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
+#include "glpreview/render/gpu_resources.hpp"
 #include "glpreview/render/monte_carlo_reference.hpp"
 #include "glpreview/render/preview.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
@@ -363,19 +364,18 @@ Scene localized(Scene scene, int m) {
     return scene;
 }
 
-// The issue asks for 1e-3; the thesis's sum reaches about 2e-3 on average (M = 16, roughness ≥ 0.75): the BRDF is
-// evaluated at each area light's centre and Δω* is the point-to-disc approximation. Measured by this test's printout.
-TEST(PreviewLocalizedGlossy, FurnaceApproachesTheDfgTablesIntegral) {
+// A white furnace, F ≡ 1: the localized sum equals the DFG table's integral within 1e-3 on average over the sphere
+// (and 1e-2 at its worst pixel, near the silhouette), at the roughness values and M it was tuned on (0.75–1, M = 8
+// and 16; 0.5 at M = 4, where the lobe is narrower than a light and the lights are subdivided) and at ones it was
+// not (0.55, 0.9; M = 4, 6, 12, where 64 source texels per edge do not divide into M blocks). The plain thesis sum
+// missed this by 1.1e-3–2.3e-3 at roughness 0.75–1 and by 0.049 at roughness 0.5, M = 4 (docs/preview.md).
+TEST(PreviewLocalizedGlossy, FurnaceEqualsTheDfgTablesIntegral) {
     gl();
     const DfgTable table = make_dfg_table(unit_fresnel());
-    struct Case {
-        double roughness;
-        int m;
-        double mean, worst;  // the bounds asserted
-    };
-    std::vector<std::pair<Case, double>> means;
-    for (const Case& k : {Case{0.5, 4, 1, 1}, Case{0.75, 16, 3e-3, 5e-3}, Case{1.0, 8, 2e-3, 4e-3}, Case{1.0, 16, 3e-3, 5e-3}}) {
-        const Scene scene = localized(furnace_scene(k.roughness), k.m);
+    for (const auto& [roughness, m] : {std::pair{0.5, 4}, std::pair{0.75, 16}, std::pair{1.0, 8}, std::pair{1.0, 16}, std::pair{0.55, 4},
+                                       std::pair{0.55, 6}, std::pair{0.55, 12}, std::pair{0.9, 4}, std::pair{0.9, 6}, std::pair{0.9, 12},
+                                       std::pair{0.75, 6}, std::pair{1.0, 12}}) {
+        const Scene scene = localized(furnace_scene(roughness), m);
         GpuRenderer gpu(scene, plan_features(scene), {&unit_fresnel()}, nullptr);
         gpu.capture_environment();
         const Image beauty = gpu.render();
@@ -386,19 +386,34 @@ TEST(PreviewLocalizedGlossy, FurnaceApproachesTheDfgTablesIntegral) {
             for (int x = 0; x < scene.width; ++x) {
                 const double c = mu[static_cast<std::size_t>(y) * scene.width + x];
                 if (c < 0.05) continue;
-                const double e = std::abs(beauty.at(x, y).r - table(c, k.roughness).r);
+                const double e = std::abs(beauty.at(x, y).r - table(c, roughness).r);
                 worst = std::max(worst, e);
                 sum += e;
                 ++n;
             }
         ASSERT_GT(n, 500);
-        std::printf("furnace, localized, roughness %.2f, M = %2d: mean |error| %.5f, worst %.5f\n", k.roughness, k.m, sum / n, worst);
-        EXPECT_LT(sum / n, k.mean) << k.roughness << " " << k.m;
-        EXPECT_LT(worst, k.worst) << k.roughness << " " << k.m;
-        means.push_back({k, sum / n});
+        std::printf("furnace, localized, roughness %.2f, M = %2d (k = %d): mean |error| %.5f, worst %.5f\n", roughness, m,
+                    localized_subdivisions(roughness, m), sum / n, worst);
+        EXPECT_LT(sum / n, 1e-3) << roughness << " " << m;
+        EXPECT_LT(worst, 1e-2) << roughness << " " << m;
     }
-    // Too few area lights for a narrow lobe: M = 4 at roughness 0.5 is far off (the sum can fail).
-    EXPECT_GT(means[0].second, 10 * means[1].second);
+}
+
+TEST(PreviewLocalizedGlossy, LightsAreSubdividedWhereTheLobeIsNarrowerThanALight) {
+    // k = ⌈6 / (α M)⌉ within [1, ⌈16 / M⌉]: one sample per light for a broad lobe, finer for a narrow one, never
+    // (much) finer than M = 16.
+    EXPECT_EQ(localized_subdivisions(1.0, 8), 1);
+    EXPECT_EQ(localized_subdivisions(1.0, 4), 2);
+    EXPECT_EQ(localized_subdivisions(0.5, 4), 4);
+    EXPECT_EQ(localized_subdivisions(0.5, 16), 1);
+    EXPECT_EQ(localized_subdivisions(0.05, 2), 8);
+    EXPECT_EQ(localized_subdivisions(0.05, 6), 3);
+    for (int m = 2; m <= 16; ++m)
+        for (double r : {0.01, 0.1, 0.3, 0.6, 1.0}) {
+            EXPECT_GE(localized_subdivisions(r, m), 1);
+            EXPECT_LT((localized_subdivisions(r, m) - 1) * m, 16);
+            EXPECT_GE(localized_subdivisions(r, m), localized_subdivisions(std::min(1.0, r + 0.1), m));
+        }
 }
 
 TEST(PreviewLocalizedGlossy, GrowingMApproachesTheMonteCarloReference) {

@@ -101,7 +101,8 @@ GLuint GpuRenderer::program(const std::string& kind, const std::vector<std::stri
                 const Model& model = find_model(d.substr(14));
                 body += model.glsl_source();
             }
-        if (kind == "sphere") body += std::string(shader_text("camera.glsl")) + std::string(shader_text("sphere.frag"));
+        if (kind == "sphere")
+            body += std::string(shader_text("camera.glsl")) + std::string(shader_text("cube_face.glsl")) + std::string(shader_text("sphere.frag"));
         else body += shader_text("probe.comp");
     }
     gl::Program linked = kind == "probe" ? compile_compute_program(header + body, key)
@@ -346,6 +347,7 @@ void GpuRenderer::draw_frame(bool diagnostics) {
             const auto it = downsampled_.find(sphere.localized_size);
             if (it == downsampled_.end()) throw std::logic_error("GpuRenderer: a localized sphere needs its downsampled cube");
             set(p, "u_roughness", static_cast<float>(sphere.roughness));
+            set(p, "u_localized_subdivisions", localized_subdivisions(sphere.roughness, sphere.localized_size));
             glBindTextureUnit(5, it->second->radiance.id());
             glBindTextureUnit(6, it->second->position.id());
         } else if (sphere.rough()) {
