@@ -400,7 +400,7 @@ TEST(PreviewLocalizedGlossy, FurnaceEqualsTheDfgTablesIntegral) {
 }
 
 TEST(PreviewLocalizedGlossy, LightsAreSubdividedWhereTheLobeIsNarrowerThanALight) {
-    // k = ⌈6 / (α M)⌉ within [1, ⌈16 / M⌉]: one sample per light for a broad lobe, finer for a narrow one, never
+    // k = 6 / (α M) rounded, within [1, ⌈16 / M⌉]: one sample per light for a broad lobe, finer for a narrow one, never
     // (much) finer than M = 16.
     EXPECT_EQ(localized_subdivisions(1.0, 8), 1);
     EXPECT_EQ(localized_subdivisions(1.0, 4), 2);

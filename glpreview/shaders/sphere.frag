@@ -93,18 +93,29 @@ vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
                     sum += L * fresnel(clamp(dot(V, normalize(V + l)), 0.0, 1.0)) * (lobe(N, V, l, a2, lambda_v, n_v) * dw);
                     continue;
                 }
+                // k × k sub-lights: the sub-rectangles' centre directions d at the light's distance, p = r d; their
+                // solid angles from o in proportion to 1 / |c|³ (c the unnormalised cube direction; equal areas in
+                // face coordinates), scaled to the light's exact Δω_i.
+                vec3 light_sum = vec3(0.0);
+                float light_total = 0.0, weights = 0.0;
                 for (int sj = 0; sj < k; ++sj)
                     for (int si = 0; si < k; ++si) {
-                        float a0 = s0 + float(si) * step_sub, b0 = t0 + float(sj) * step_sub;
-                        vec3 d = normalize(cube_direction(face, a0 + 0.5 * step_sub, b0 + 0.5 * step_sub));
+                        vec3 c = cube_direction(face, s0 + (float(si) + 0.5) * step_sub, t0 + (float(sj) + 0.5) * step_sub);
+                        float inverse_length = inversesqrt(dot(c, c));
+                        vec3 d = c * inverse_length;
+                        float w = inverse_length * inverse_length * inverse_length;
+                        weights += w;
                         vec3 to_light = r * d - x;
                         float r_star2 = dot(to_light, to_light);
                         vec3 l = to_light * inversesqrt(r_star2);
-                        float dw = rectangle_area(a0, a0 + step_sub, b0, b0 + step_sub) * (r * r / r_star2) * max(dot(d, l), 0.0);
-                        total += dw;
+                        float dw = w * (r * r / r_star2) * max(dot(d, l), 0.0);
+                        light_total += dw;
                         if (dot(N, l) <= 0.0) continue;
-                        sum += L * fresnel(clamp(dot(V, normalize(V + l)), 0.0, 1.0)) * (lobe(N, V, l, a2, lambda_v, n_v) * dw);
+                        light_sum += fresnel(clamp(dot(V, normalize(V + l)), 0.0, 1.0)) * (lobe(N, V, l, a2, lambda_v, n_v) * dw);
                     }
+                float scale = rectangle_area(s0, s0 + step_st, t0, t0 + step_st) / weights;
+                total += scale * light_total;
+                sum += L * (scale * light_sum);
             }
     return sum * (4.0 * LOCALIZED_PI / total);
 }

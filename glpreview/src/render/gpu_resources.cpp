@@ -50,7 +50,7 @@ int localized_subdivisions(double roughness, int m) {
     const double alpha = roughness * roughness;
     const int most = (16 + m - 1) / m;
     if (alpha <= 0) return most;
-    return static_cast<int>(std::clamp(std::ceil(6.0 / (alpha * m)), 1.0, static_cast<double>(most)));
+    return static_cast<int>(std::clamp(std::round(6.0 / (alpha * m)), 1.0, static_cast<double>(most)));
 }
 
 GLuint EquirectTexture::id() const {
