@@ -55,9 +55,8 @@ float smith_lambda(float cos_t, float a2) {
     float c2 = max(cos_t * cos_t, 1e-12);
     return 0.5 * (-1.0 + sqrt(1.0 + a2 * (1.0 - c2) / c2));
 }
-// f_r cos θ_i for light direction l, without the Fresnel: D G2 / (4 n·v).
-float lobe(vec3 N, vec3 V, vec3 l, float a2, float lambda_v, float n_v) {
-    vec3 H = normalize(V + l);
+// f_r cos θ_i for light direction l and half vector H, without the Fresnel: D G2 / (4 n·v).
+float lobe(vec3 N, vec3 H, vec3 l, float a2, float lambda_v, float n_v) {
     float n_h = dot(N, H);
     float d = n_h * n_h * (a2 - 1.0) + 1.0;
     float D = a2 / (LOCALIZED_PI * d * d);
@@ -81,26 +80,15 @@ vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
                 vec3 y = texelFetch(u_area_position, texel, 0).xyz;
                 float r = length(y);
                 float s0 = -1.0 + float(i) * step_st, t0 = -1.0 + float(j) * step_st;
-                if (k == 1) {
-                    // Δω_i(x) = Δω_i · r² / r*² · cos γ: the texel's exact solid angle from o (the cube's
-                    // rectangle), seen from x as a patch facing o at y_i.
-                    vec3 to_light = y - x;
-                    float r_star2 = dot(to_light, to_light);
-                    vec3 l = to_light * inversesqrt(r_star2);
-                    float dw = rectangle_area(s0, s0 + step_st, t0, t0 + step_st) * (r * r / r_star2) * max(dot(y, l) / r, 0.0);
-                    total += dw;
-                    if (dot(N, l) <= 0.0) continue;
-                    sum += L * fresnel(clamp(dot(V, normalize(V + l)), 0.0, 1.0)) * (lobe(N, V, l, a2, lambda_v, n_v) * dw);
-                    continue;
-                }
-                // k × k sub-lights: the sub-rectangles' centre directions d at the light's distance, p = r d; their
-                // solid angles from o in proportion to 1 / |c|³ (c the unnormalised cube direction; equal areas in
-                // face coordinates), scaled to the light's exact Δω_i.
+                // The light's samples: with k = 1 the light itself, p = y_i; else the k × k sub-rectangles' centre
+                // directions d at the light's distance, p = r d. Each is a patch facing o, its solid angle from o
+                // in proportion to 1 / |c|³ (c the unnormalised direction; equal areas in face coordinates) and
+                // scaled to the light's exact Δω_i; from x it subtends that · r² / r*² · cos γ.
                 vec3 light_sum = vec3(0.0);
                 float light_total = 0.0, weights = 0.0;
                 for (int sj = 0; sj < k; ++sj)
                     for (int si = 0; si < k; ++si) {
-                        vec3 c = cube_direction(face, s0 + (float(si) + 0.5) * step_sub, t0 + (float(sj) + 0.5) * step_sub);
+                        vec3 c = k == 1 ? y : cube_direction(face, s0 + (float(si) + 0.5) * step_sub, t0 + (float(sj) + 0.5) * step_sub);
                         float inverse_length = inversesqrt(dot(c, c));
                         vec3 d = c * inverse_length;
                         float w = inverse_length * inverse_length * inverse_length;
@@ -111,7 +99,8 @@ vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
                         float dw = w * (r * r / r_star2) * max(dot(d, l), 0.0);
                         light_total += dw;
                         if (dot(N, l) <= 0.0) continue;
-                        light_sum += fresnel(clamp(dot(V, normalize(V + l)), 0.0, 1.0)) * (lobe(N, V, l, a2, lambda_v, n_v) * dw);
+                        vec3 H = normalize(V + l);
+                        light_sum += fresnel(clamp(dot(V, H), 0.0, 1.0)) * (lobe(N, H, l, a2, lambda_v, n_v) * dw);
                     }
                 float scale = rectangle_area(s0, s0 + step_st, t0, t0 + step_st) / weights;
                 total += scale * light_total;
