@@ -6,6 +6,7 @@
 #include <OpenImageIO/imageio.h>
 #include <stdlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -18,7 +19,6 @@
 #include "glpreview/render/dfg_table.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
-#include "glpreview/render/gpu_resources.hpp"
 #include "glpreview/render/monte_carlo_reference.hpp"
 #include "glpreview/render/preview.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
@@ -408,6 +408,10 @@ TEST(PreviewLocalizedGlossy, LightsAreSubdividedWhereTheLobeIsNarrowerThanALight
     EXPECT_EQ(localized_subdivisions(0.5, 16), 1);
     EXPECT_EQ(localized_subdivisions(0.05, 2), 8);
     EXPECT_EQ(localized_subdivisions(0.05, 6), 3);
+    // The shader gets k as a compile-time constant.
+    const Scene scene = localized(furnace_scene(0.5), 4);
+    const std::vector<std::string> defines = sphere_defines(scene, scene.spheres[0]);
+    EXPECT_NE(std::find(defines.begin(), defines.end(), "LOCALIZED_SUBDIVISIONS 4"), defines.end());
     for (int m = 2; m <= 16; ++m)
         for (double r : {0.01, 0.1, 0.3, 0.6, 1.0}) {
             EXPECT_GE(localized_subdivisions(r, m), 1);

@@ -38,13 +38,12 @@ vec3 dfg(float mu, float roughness) {
 // measured in a white furnace): the light's solid angle from x is its texel's exact solid angle from o carried to
 // x as a patch facing o at distance r = |y_i| (Δω · r² / r*² · cos γ), not the point-to-disc Δω*, so that the lights
 // tile the sphere of directions; the solid angles are renormalised to sum to 4π; and where the lobe is narrower
-// than a light, each light is split into k × k sub-lights (u_localized_subdivisions; same L_i, in the directions
+// than a light, each light is split into k × k sub-lights (k = LOCALIZED_SUBDIVISIONS; same L_i, in the directions
 // of the sub-rectangles at the light's distance), which also integrates the BRDF over the light and splits the
 // lights that straddle the horizon. With k = 1 the sample point is y_i itself.
 uniform sampler2D u_area_radiance;  // 6M × M: average radiance
 uniform sampler2D u_area_position;  // 6M × M: average position relative to the reference point
 uniform float u_roughness;
-uniform int u_localized_subdivisions;  // k ≥ 1
 const float LOCALIZED_PI = 3.14159265358979;
 // Solid angle of the face rectangle [0, s] × [0, t] at distance 1 (the cube of edge 2), signed.
 float face_area(float s, float t) { return atan(s * t, sqrt(s * s + t * t + 1.0)); }
@@ -65,7 +64,7 @@ float lobe(vec3 N, vec3 H, vec3 l, float a2, float lambda_v, float n_v) {
 }
 vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
     int M = textureSize(u_area_radiance, 0).y;
-    int k = max(u_localized_subdivisions, 1);
+    const int k = LOCALIZED_SUBDIVISIONS;
     float a = u_roughness * u_roughness, a2 = a * a;
     float lambda_v = smith_lambda(mu, a2);
     float n_v = max(mu, 1e-4);
@@ -88,7 +87,11 @@ vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
                 float light_total = 0.0, weights = 0.0;
                 for (int sj = 0; sj < k; ++sj)
                     for (int si = 0; si < k; ++si) {
-                        vec3 c = k == 1 ? y : cube_direction(face, s0 + (float(si) + 0.5) * step_sub, t0 + (float(sj) + 0.5) * step_sub);
+#if LOCALIZED_SUBDIVISIONS == 1
+                        vec3 c = y;
+#else
+                        vec3 c = cube_direction(face, s0 + (float(si) + 0.5) * step_sub, t0 + (float(sj) + 0.5) * step_sub);
+#endif
                         float inverse_length = inversesqrt(dot(c, c));
                         vec3 d = c * inverse_length;
                         float w = inverse_length * inverse_length * inverse_length;

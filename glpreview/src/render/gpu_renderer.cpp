@@ -347,7 +347,6 @@ void GpuRenderer::draw_frame(bool diagnostics) {
             const auto it = downsampled_.find(sphere.localized_size);
             if (it == downsampled_.end()) throw std::logic_error("GpuRenderer: a localized sphere needs its downsampled cube");
             set(p, "u_roughness", static_cast<float>(sphere.roughness));
-            set(p, "u_localized_subdivisions", localized_subdivisions(sphere.roughness, sphere.localized_size));
             glBindTextureUnit(5, it->second->radiance.id());
             glBindTextureUnit(6, it->second->position.id());
         } else if (sphere.rough()) {

@@ -1,8 +1,5 @@
 #include "glpreview/render/gpu_resources.hpp"
 
-#include <algorithm>
-#include <cmath>
-
 #include "glpreview/gl/gl_context.hpp"
 
 namespace metalfit::glpreview {
@@ -44,13 +41,6 @@ DownsampledCube DownsampledCube::create(const Descriptor& d) {
     }
     check_gl("creating the downsampled cube");
     return cube;
-}
-
-int localized_subdivisions(double roughness, int m) {
-    const double alpha = roughness * roughness;
-    const int most = (16 + m - 1) / m;
-    if (alpha <= 0) return most;
-    return static_cast<int>(std::clamp(std::round(6.0 / (alpha * m)), 1.0, static_cast<double>(most)));
 }
 
 GLuint EquirectTexture::id() const {

@@ -53,12 +53,6 @@ struct DownsampledCube {
     int m = 0;
 };
 
-// The localized sum splits each of the 6 M² area lights into k × k sub-lights where the GGX lobe is narrower than a
-// light: k = 6 / (α M) rounded to the nearest integer (each sub-light about α/3 wide in face coordinates, which span
-// 2), α = roughness², clamped to [1, ⌈16 / M⌉] so that k M stays near the finest M a scene allows (16). Measured in
-// a white furnace (docs/preview.md, "Rough spheres").
-int localized_subdivisions(double roughness, int m);
-
 // An image environment at infinity as an RGB32F texture, uploaded from the loaded image on its first GPU use
 // (so that a scene with no GPU pass opens no GL context).
 class EquirectTexture {
