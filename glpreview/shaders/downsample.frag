@@ -1,7 +1,8 @@
 // The captured cube (radiance, distance in alpha) downsampled to M × M texels per face, thesis ch. 5 (István Zsolt
 // Lazányi, "Efficient Rendering of Realistic Metals", 2008; FORMULAS.md §6): output texel (face · M + i, j) of a
 // 6M × M target averages the source texels it covers — their radiance (out_radiance) and their position relative
-// to the reference point, direction × distance (out_position). Each becomes one area light of the localized sum.
+// to the reference point, direction × distance (out_position.xyz). Each becomes one area light of the localized sum;
+// out_position.a is its solid angle from the reference point, Δω_i (the rectangle below).
 // The light is the face rectangle [−1 + 2i/M, −1 + 2(i + 1)/M] × [−1 + 2j/M, −1 + 2(j + 1)/M] that the localized sum
 // takes its solid angle of: a source texel on its border (S not a multiple of M) counts with the fraction of it
 // that lies inside, so that the averages describe exactly that rectangle.
@@ -35,5 +36,7 @@ void main() {
             n += w;
         }
     out_radiance = vec4(radiance / n, 1.0);
-    out_position = vec4(position / n, 1.0);
+    float step_st = 2.0 / float(u_m);
+    float s0 = -1.0 + float(i) * step_st, t0 = -1.0 + float(j) * step_st;
+    out_position = vec4(position / n, face_rectangle_solid_angle(s0, s0 + step_st, t0, t0 + step_st));
 }

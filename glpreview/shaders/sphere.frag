@@ -42,14 +42,9 @@ vec3 dfg(float mu, float roughness) {
 // of the sub-rectangles at the light's distance), which also integrates the BRDF over the light and splits the
 // lights that straddle the horizon. With k = 1 the sample point is y_i itself.
 uniform sampler2D u_area_radiance;  // 6M × M: average radiance
-uniform sampler2D u_area_position;  // 6M × M: average position relative to the reference point
+uniform sampler2D u_area_position;  // 6M × M: average position relative to the reference point; a: Δω_i from o
 uniform float u_roughness;
 const float LOCALIZED_PI = 3.14159265358979;
-// Solid angle of the face rectangle [0, s] × [0, t] at distance 1 (the cube of edge 2), signed.
-float face_area(float s, float t) { return atan(s * t, sqrt(s * s + t * t + 1.0)); }
-float rectangle_area(float s0, float s1, float t0, float t1) {
-    return face_area(s1, t1) - face_area(s0, t1) - face_area(s1, t0) + face_area(s0, t0);
-}
 float smith_lambda(float cos_t, float a2) {
     float c2 = max(cos_t * cos_t, 1e-12);
     return 0.5 * (-1.0 + sqrt(1.0 + a2 * (1.0 - c2) / c2));
@@ -76,7 +71,8 @@ vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
             for (int i = 0; i < M; ++i) {
                 ivec2 texel = ivec2(face * M + i, j);
                 vec3 L = texelFetch(u_area_radiance, texel, 0).rgb;
-                vec3 y = texelFetch(u_area_position, texel, 0).xyz;
+                vec4 position = texelFetch(u_area_position, texel, 0);
+                vec3 y = position.xyz;
                 float r = length(y);
                 float s0 = -1.0 + float(i) * step_st, t0 = -1.0 + float(j) * step_st;
                 // The light's samples: with k = 1 the light itself, p = y_i; else the k × k sub-rectangles' centre
@@ -105,7 +101,7 @@ vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
                         vec3 H = normalize(V + l);
                         light_sum += fresnel(clamp(dot(V, H), 0.0, 1.0)) * (lobe(N, H, l, a2, lambda_v, n_v) * dw);
                     }
-                float scale = rectangle_area(s0, s0 + step_st, t0, t0 + step_st) / weights;
+                float scale = position.a / weights;  // Δω_i, the face rectangle's exact solid angle from o
                 total += scale * light_total;
                 sum += L * (scale * light_sum);
             }
