@@ -70,24 +70,31 @@ vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
         for (int j = 0; j < M; ++j)
             for (int i = 0; i < M; ++i) {
                 ivec2 texel = ivec2(face * M + i, j);
-                vec3 L = texelFetch(u_area_radiance, texel, 0).rgb;
                 vec4 position = texelFetch(u_area_position, texel, 0);
                 vec3 y = position.xyz;
                 float r = length(y);
+                // Each sample is a patch facing o at the light's distance r: from x it subtends its solid angle from
+                // o times r² / r*² · cos γ. With k = 1 the light itself, p = y_i, with Δω_i (position.a).
+#if LOCALIZED_SUBDIVISIONS == 1
+                vec3 to_light = y - x;
+                float r_star2 = dot(to_light, to_light);
+                vec3 l = to_light * inversesqrt(r_star2);
+                float dw = position.a * (r * r / r_star2) * max(dot(y, l) / r, 0.0);
+                total += dw;
+                if (dot(N, l) <= 0.0) continue;
+                vec3 H = normalize(V + l);
+                sum += texelFetch(u_area_radiance, texel, 0).rgb * fresnel(clamp(dot(V, H), 0.0, 1.0)) *
+                       (lobe(N, H, l, a2, lambda_v, n_v) * dw);
+#else
+                // k × k sub-lights: the sub-rectangles' centre directions d at the light's distance, p = r d; their
+                // solid angles from o in proportion to 1 / |c|³ (c the unnormalised direction; equal areas in face
+                // coordinates), scaled to sum to the light's Δω_i.
                 float s0 = -1.0 + float(i) * step_st, t0 = -1.0 + float(j) * step_st;
-                // The light's samples: with k = 1 the light itself, p = y_i; else the k × k sub-rectangles' centre
-                // directions d at the light's distance, p = r d. Each is a patch facing o, its solid angle from o
-                // in proportion to 1 / |c|³ (c the unnormalised direction; equal areas in face coordinates) and
-                // scaled to the light's exact Δω_i; from x it subtends that · r² / r*² · cos γ.
                 vec3 light_sum = vec3(0.0);
                 float light_total = 0.0, weights = 0.0;
                 for (int sj = 0; sj < k; ++sj)
                     for (int si = 0; si < k; ++si) {
-#if LOCALIZED_SUBDIVISIONS == 1
-                        vec3 c = y;
-#else
                         vec3 c = cube_direction(face, s0 + (float(si) + 0.5) * step_sub, t0 + (float(sj) + 0.5) * step_sub);
-#endif
                         float inverse_length = inversesqrt(dot(c, c));
                         vec3 d = c * inverse_length;
                         float w = inverse_length * inverse_length * inverse_length;
@@ -101,9 +108,10 @@ vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
                         vec3 H = normalize(V + l);
                         light_sum += fresnel(clamp(dot(V, H), 0.0, 1.0)) * (lobe(N, H, l, a2, lambda_v, n_v) * dw);
                     }
-                float scale = position.a / weights;  // Δω_i, the face rectangle's exact solid angle from o
+                float scale = position.a / weights;
                 total += scale * light_total;
-                sum += L * (scale * light_sum);
+                sum += texelFetch(u_area_radiance, texel, 0).rgb * (scale * light_sum);
+#endif
             }
     return sum * (4.0 * LOCALIZED_PI / total);
 }
