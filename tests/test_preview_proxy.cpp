@@ -50,6 +50,15 @@ TEST(PreviewProxy, TheProxyIsParsedAndMalformedOnesNameTheirField) {
         "spheres": [{"center": [0, 1, 0], "roughness": 0.5, "glossy": "localized"}]})", "s.json");
     EXPECT_EQ(std::get<SphereProxy>(*sphere.environment.equirect.proxy).radius, 50);
     EXPECT_FALSE(sphere.environment.parallax_box());
+    // A camera outside the box proxy sees the painted box from behind: one warning (none inside, none for a sphere).
+    EXPECT_TRUE(box.warnings.empty());
+    const std::string outside = R"({"camera": {"position": [0, 1, 4]}, "environment": {"type": "equirect", "file": "sky.hdr", "reference_point": [0, 1, 0],
+        "proxy": PROXY}, "spheres": [{"center": [0, 1, 0], "reflection": "box-parallax"}]})";
+    auto with_proxy = [&](const std::string& proxy) { return std::string(outside).replace(outside.find("PROXY"), 5, proxy); };
+    const Scene behind = parse_scene(with_proxy(R"({"box": {"min": [-3, 0, -3], "max": [3, 3, 3]}})"), "s.json");
+    ASSERT_EQ(behind.warnings.size(), 1u);
+    EXPECT_EQ(behind.warnings[0], "s.json: camera.position: outside the proxy box (environment.proxy.box: the view shows the painted box from behind)");
+    EXPECT_TRUE(parse_scene(with_proxy(R"({"box": {"min": [-3, 0, -3], "max": [3, 3, 5]}})"), "s.json").warnings.empty());
 
     const std::string sky = R"({"type": "equirect", "file": "sky.hdr", )";
     EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": 3})"), "environment.proxy: expected an object"));

@@ -1,6 +1,7 @@
 #include "glpreview/graph/features.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "libfit/base/text.hpp"
@@ -48,11 +49,22 @@ std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere
             defines.push_back("TOLERANCE " + glsl_float(sphere.tolerance));
             break;
     }
-    if (sphere.rough())
-        defines.push_back(sphere.glossy == GlossyMethod::localized ? "GLOSSY_LOCALIZED" : "GLOSSY_PREFILTERED");
+    if (sphere.rough() && sphere.glossy == GlossyMethod::localized) {
+        defines.push_back("GLOSSY_LOCALIZED");
+        defines.push_back("LOCALIZED_SUBDIVISIONS " + std::to_string(localized_subdivisions(sphere.roughness, sphere.localized_size)));
+    } else if (sphere.rough()) {
+        defines.push_back("GLOSSY_PREFILTERED");
+    }
     defines.push_back(shows_reference(sphere) ? "FRESNEL_REFERENCE" : "FRESNEL_MODEL " + fresnel_name(sphere.fresnel));
     std::sort(defines.begin(), defines.end());
     return defines;
+}
+
+int localized_subdivisions(double roughness, int m) {
+    const double alpha = roughness * roughness;
+    const int most = (16 + m - 1) / m;
+    if (alpha <= 0) return most;
+    return static_cast<int>(std::clamp(std::round(6.0 / (alpha * m)), 1.0, static_cast<double>(most)));
 }
 
 Features plan_features(const Scene& scene) {

@@ -106,7 +106,8 @@ GLuint GpuRenderer::program(const std::string& kind, const std::vector<std::stri
                 const Model& model = find_model(d.substr(14));
                 body += model.glsl_source();
             }
-        if (kind == "sphere") body += std::string(shader_text("camera.glsl")) + std::string(shader_text("sphere.frag"));
+        if (kind == "sphere")
+            body += std::string(shader_text("camera.glsl")) + std::string(shader_text("cube_face.glsl")) + std::string(shader_text("sphere.frag"));
         else body += shader_text("probe.comp");
     }
     // Linked once per context (another scene's renderer may have linked the same source); this scene's uniforms set

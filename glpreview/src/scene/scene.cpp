@@ -319,6 +319,16 @@ void check_image_size(const std::filesystem::path& file, const std::string& what
 
 std::vector<std::string> placement_warnings(const Scene& scene) {
     std::vector<std::string> warnings;
+    if (scene.environment.type == EnvironmentType::equirect) {
+        // The image painted on a box proxy: a camera outside it looks at the painted box from behind.
+        const auto* box = scene.environment.equirect.proxy ? std::get_if<BoxProxy>(&*scene.environment.equirect.proxy) : nullptr;
+        const Vec3 c = scene.camera.position;
+        bool inside = true;
+        for (int i = 0; box && i < 3; ++i) inside = inside && c[i] > box->min[i] && c[i] < box->max[i];
+        if (box && !inside && scene.camera_position_given)
+            warnings.push_back(scene.file.string() + ": camera.position: outside the proxy box (environment.proxy.box: the view shows the painted box from behind)");
+        return warnings;
+    }
     if (scene.environment.type != EnvironmentType::room) return warnings;
     const Room& room = scene.environment.room;
     const std::string file = scene.file.string() + ": ";

@@ -40,6 +40,11 @@ const char* environment_define(const Environment& environment);
 const char* strategy_define(Strategy strategy);
 // A GLSL float literal of `value` ("0.0001", "0.0", "1e-05").
 std::string glsl_float(double value);
+// The localized sum splits each of the 6 M² area lights into k × k sub-lights where the GGX lobe is narrower than a
+// light: k = 6 / (α M) rounded to the nearest integer (each sub-light about α/3 wide in face coordinates, which span
+// 2), α = roughness², clamped to [1, ⌈16 / M⌉] so that k M stays near the finest M a scene allows (16). Measured in
+// a white furnace (docs/preview.md, "Rough spheres").
+int localized_subdivisions(double roughness, int m);
 
 // The sphere shader's #defines for one sphere (sorted, one per line), e.g. "REFLECTION_DISTANCE_IMPOSTOR",
 // "STRATEGY_FALSE_POSITION", "NITER 4", "TOLERANCE 0.0001", "FRESNEL_MODEL f82-tint", "ENV_ROOM".
