@@ -74,13 +74,14 @@ ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, 
     const BatchColour colour{env.config, env.colorimetry, env.converter};
     const double cpu0 = process_cpu_seconds();
     const auto wall0 = std::chrono::steady_clock::now();
-    const std::vector<MaterialFit> fits = fit_materials(loaders, colour, request, threads);
+    // Streamed, as `metalfit fit --all` runs: each fit counted and let go in input order.
     ScalingCell cell;
+    fit_materials_in_order(loaders, colour, request, threads,
+                           [&cell](std::size_t, MaterialFit&& fit) { cell.fits += fit.models.size(); });
     cell.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     cell.cpu_s = process_cpu_seconds() - cpu0;
     cell.materials = materials;
     cell.threads = threads;
-    for (const MaterialFit& f : fits) cell.fits += f.models.size();
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     cell.peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;  // kB on Linux
