@@ -1,6 +1,7 @@
 #include "libfit/fit/fit_batch.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
@@ -32,7 +33,7 @@ std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, 
 
 void fit_materials_in_order(const std::vector<std::function<Material()>>& loaders, const BatchColour& colour,
                             const MaterialFitRequest& request, int jobs, const BatchSink& sink,
-                            const BatchProgress& progress, std::size_t window) {
+                            const BatchProgress& progress, std::size_t window, BatchStatistics* statistics) {
     const std::size_t count = loaders.size();
     const int threads = std::max(1, std::min<int>(jobs, static_cast<int>(count)));
     if (window == 0) window = kBatchWindowPerThread * static_cast<std::size_t>(threads);
@@ -55,7 +56,15 @@ void fit_materials_in_order(const std::vector<std::function<Material()>>& loader
     const auto worker = [&](const ColorSpaceConverter& converter) {
         std::unique_lock lock(mutex);
         for (;;) {
-            advanced.wait(lock, [&] { return stopped || next_to_start >= count || next_to_start < next_to_hand + window; });
+            const auto may_start = [&] { return stopped || next_to_start >= count || next_to_start < next_to_hand + window; };
+            if (!may_start()) {
+                const auto waiting_since = std::chrono::steady_clock::now();
+                advanced.wait(lock, may_start);
+                if (statistics) {
+                    ++statistics->window_waits;
+                    statistics->window_wait_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - waiting_since).count();
+                }
+            }
             if (stopped || next_to_start >= count) return;
             const std::size_t i = next_to_start++;
             lock.unlock();

@@ -44,9 +44,17 @@ inline constexpr std::size_t kBatchWindowPerThread = 8;
 // does not depend on the threads). Memory stays flat: at most `window` materials (0: kBatchWindowPerThread per
 // thread) are loaded and not yet handed to the sink at any time; a thread that would run further ahead waits. The
 // first error in input order stops the batch (the sink has received every material before it) and is rethrown.
+// How often and how long (wall clock, summed over the threads) threads waited at the reorder window for a slow
+// material ahead of them: what `metalfit bench --scaling` reports, never part of an output.
+struct BatchStatistics {
+    std::size_t window_waits = 0;
+    double window_wait_s = 0;
+};
+
 void fit_materials_in_order(const std::vector<std::function<Material()>>& loaders, const BatchColour& colour,
                             const MaterialFitRequest& request, int jobs, const BatchSink& sink,
-                            const BatchProgress& progress = {}, std::size_t window = 0);
+                            const BatchProgress& progress = {}, std::size_t window = 0,
+                            BatchStatistics* statistics = nullptr);
 
 // fit_materials_in_order into a vector: every material's fit, in input order, for callers that need them all.
 std::vector<MaterialFit> fit_materials(const std::vector<std::function<Material()>>& loaders, const BatchColour& colour,
