@@ -92,6 +92,64 @@ TEST(AtomicFile, ANonRegularTargetIsWrittenInPlaceNotReplaced) {
     EXPECT_THROW(write_file_atomically(dir.path(), "x"), metalfit::InputError);  // a directory is refused
 }
 
+TEST(StreamedOutputFile, PiecesAppearTogetherAtCommitAndNothingBefore) {
+    TempDir dir;
+    const fs::path target = dir.path() / "record.json";
+    write_file_atomically(target, "old");
+    {
+        StreamedOutputFile out(target);
+        out.write("{\n");
+        out.write(std::string(100000, 'x'));
+        out.write("\n}\n");
+        EXPECT_EQ(read_file(target), "old");  // the pieces are in the temporary beside it
+        EXPECT_EQ(list(dir.path()).size(), 2u) << join(list(dir.path()));
+        out.commit();
+    }
+    EXPECT_EQ(read_file(target), "{\n" + std::string(100000, 'x') + "\n}\n");
+    EXPECT_EQ(list(dir.path()), std::vector<std::string>{"record.json"});
+}
+
+TEST(StreamedOutputFile, WithoutCommitTheTargetStaysAsItWasAndNoTemporaryIsLeft) {
+    TempDir dir;
+    const fs::path target = dir.path() / "record.json";
+    write_file_atomically(target, "old");
+    try {
+        StreamedOutputFile out(target);
+        out.write("half a record");
+        throw std::runtime_error("a fit failed");
+    } catch (const std::runtime_error&) {
+    }
+    EXPECT_EQ(read_file(target), "old");
+    EXPECT_EQ(list(dir.path()), std::vector<std::string>{"record.json"});
+    { StreamedOutputFile never(dir.path() / "new.json"); }
+    EXPECT_EQ(list(dir.path()), std::vector<std::string>{"record.json"});
+}
+
+TEST(StreamedOutputFile, ABadTargetIsRefusedBeforeAnythingIsWritten) {
+    TempDir dir;
+    EXPECT_THROW(StreamedOutputFile(dir.path() / "no-such-dir" / "out.json"), InputError);
+    EXPECT_THROW(StreamedOutputFile(dir.path()), InputError);  // a directory
+    EXPECT_TRUE(list(dir.path()).empty()) << join(list(dir.path()));
+}
+
+TEST(StreamedOutputFile, ADeviceGetsTheWholeOutputAtCommit) {
+    TempDir dir;
+    const fs::path fifo = dir.path() / "pipe";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    StreamedOutputFile out(fifo);  // spooled: nothing opens the pipe before commit
+    out.write("through ");
+    out.write("the pipe");
+    std::string received;
+    std::thread reader([&] {
+        std::ifstream in(fifo, std::ios::binary);
+        received.assign(std::istreambuf_iterator<char>(in), {});
+    });
+    out.commit();
+    reader.join();
+    EXPECT_EQ(received, "through the pipe");
+    EXPECT_EQ(list(dir.path()), std::vector<std::string>{"pipe"});
+}
+
 TEST(AtomicFile, MissingDirectoryThrowsAndCreatesNothing) {
     TempDir dir;
     const fs::path target = dir.path() / "no-such-dir" / "out.txt";

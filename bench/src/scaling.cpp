@@ -6,10 +6,12 @@
 #include <cstdio>
 #include <ctime>
 #include <memory>
+#include <mutex>
 #include <random>
 #include <stdexcept>
 
 #include "libfit/fit/fit_batch.hpp"
+#include "libfit/fit/fit_record_stream.hpp"
 #include "libfit/models/model.hpp"
 #include "metalfit_bench/machine.hpp"
 #include "metalfit_bench/subprocess.hpp"
@@ -35,6 +37,12 @@ SpectralCurve scaled(const SpectralCurve& curve, double factor) {
 double process_cpu_seconds() {
     timespec t{};
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+double thread_cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
@@ -69,18 +77,49 @@ ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, 
                                  const std::vector<std::string>& models) {
     std::vector<const Model*> chosen;
     for (const std::string& id : models) chosen.push_back(&find_model(id));
-    const auto loaders = synthetic_materials(env.catalog, materials);
+    // Each loader's thread CPU summed (the loaders run on every worker thread).
+    std::mutex setup_mutex;
+    double setup_cpu = 0;
+    std::vector<std::function<Material()>> loaders;
+    for (std::function<Material()>& load : synthetic_materials(env.catalog, materials))
+        loaders.push_back([load = std::move(load), &setup_mutex, &setup_cpu] {
+            const double t0 = thread_cpu_seconds();
+            Material m = load();
+            const double spent = thread_cpu_seconds() - t0;
+            const std::lock_guard lock(setup_mutex);
+            setup_cpu += spent;
+            return m;
+        });
     const MaterialFitRequest request{env.spectral, env.error, chosen};
     const BatchColour colour{env.config, env.colorimetry, env.converter};
+    // The record as `metalfit fit --all --json` streams it, its text counted and let go.
+    const FitRecordContext context{env.config, env.converter.space(), Observer::cie1931_2deg, Illuminant::D65,
+                                   env.spectral, env.error};
+    std::size_t record_bytes = 0;
+    double record_cpu = 0;
+    FitRecordStream record(context, [&record_bytes](std::string_view text) { record_bytes += text.size(); });
+    ScalingCell cell;
+    BatchStatistics statistics;
     const double cpu0 = process_cpu_seconds();
     const auto wall0 = std::chrono::steady_clock::now();
-    const std::vector<MaterialFit> fits = fit_materials(loaders, colour, request, threads);
-    ScalingCell cell;
+    // Streamed, as `metalfit fit --all` runs: each fit counted, written and let go in input order.
+    fit_materials_in_order(loaders, colour, request, threads,
+                           [&](std::size_t, MaterialFit&& fit) {
+                               cell.fits += fit.models.size();
+                               const double t0 = thread_cpu_seconds();
+                               record.add(fit);
+                               record_cpu += thread_cpu_seconds() - t0;
+                           },
+                           {}, 0, &statistics);
+    record.finish();
+    cell.setup_cpu_s = setup_cpu;
+    cell.record_cpu_s = record_cpu;
+    cell.record_mib = static_cast<double>(record_bytes) / (1024.0 * 1024.0);
+    cell.window_wait_s = statistics.window_wait_s;
     cell.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     cell.cpu_s = process_cpu_seconds() - cpu0;
     cell.materials = materials;
     cell.threads = threads;
-    for (const MaterialFit& f : fits) cell.fits += f.models.size();
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     cell.peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;  // kB on Linux
@@ -88,8 +127,10 @@ ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, 
 }
 
 nlohmann::json to_json(const ScalingCell& c) {
-    return {{"materials", c.materials}, {"threads", c.threads}, {"fits", c.fits},
-            {"wall_s", c.wall_s},       {"cpu_s", c.cpu_s},     {"peak_mib", c.peak_mib}};
+    return {{"materials", c.materials},   {"threads", c.threads},           {"fits", c.fits},
+            {"wall_s", c.wall_s},         {"cpu_s", c.cpu_s},               {"peak_mib", c.peak_mib},
+            {"setup_cpu_s", c.setup_cpu_s}, {"record_cpu_s", c.record_cpu_s}, {"record_mib", c.record_mib},
+            {"window_wait_s", c.window_wait_s}};
 }
 
 ScalingCell scaling_cell_from_json(const nlohmann::json& j) {
@@ -100,6 +141,10 @@ ScalingCell scaling_cell_from_json(const nlohmann::json& j) {
     c.wall_s = j.at("wall_s").get<double>();
     c.cpu_s = j.at("cpu_s").get<double>();
     c.peak_mib = j.at("peak_mib").get<double>();
+    c.setup_cpu_s = j.at("setup_cpu_s").get<double>();
+    c.record_cpu_s = j.at("record_cpu_s").get<double>();
+    c.record_mib = j.at("record_mib").get<double>();
+    c.window_wait_s = j.at("window_wait_s").get<double>();
     return c;
 }
 
@@ -150,15 +195,20 @@ nlohmann::json to_json(const ScalingTable& t) {
 std::string to_text(const ScalingTable& t) {
     std::string text = "metalfit bench --scaling: fit on synthetic materials (catalog tables, n and k scaled by 1 ± 0.1, seed " +
                        std::to_string(t.seed) + "), models " + join_models(t.models) + "\n" + t.machine + "\n";
-    char line[160];
-    std::snprintf(line, sizeof line, "| %9s | %7s | %9s | %9s | %9s | %13s | %11s |\n", "materials", "threads", "wall s",
-                  "CPU s", "peak MiB", "fits / CPU s", "wall / mat");
+    char line[256];
+    std::snprintf(line, sizeof line, "| %9s | %7s | %9s | %9s | %9s | %13s | %11s | %11s | %12s | %10s | %13s |\n",
+                  "materials", "threads", "wall s", "CPU s", "peak MiB", "fits / CPU s", "wall / mat", "set-up CPU s",
+                  "record CPU s", "record MiB", "window wait s");
     text += line;
-    text += "|----------:|--------:|----------:|----------:|----------:|--------------:|------------:|\n";
+    text += "|----------:|--------:|----------:|----------:|----------:|--------------:|------------:|------------:|"
+            "-------------:|-----------:|--------------:|\n";
     for (const ScalingCell& c : t.cells) {
-        std::snprintf(line, sizeof line, "| %9zu | %7d | %9.3f | %9.3f | %9.1f | %13.1f | %8.2f ms |\n", c.materials,
-                      c.threads, c.wall_s, c.cpu_s, c.peak_mib, c.cpu_s > 0 ? static_cast<double>(c.fits) / c.cpu_s : 0.0,
-                      c.materials ? 1e3 * c.wall_s / static_cast<double>(c.materials) : 0.0);
+        std::snprintf(line, sizeof line,
+                      "| %9zu | %7d | %9.3f | %9.3f | %9.1f | %13.1f | %8.2f ms | %11.3f | %12.3f | %10.1f | %13.3f |\n",
+                      c.materials, c.threads, c.wall_s, c.cpu_s, c.peak_mib,
+                      c.cpu_s > 0 ? static_cast<double>(c.fits) / c.cpu_s : 0.0,
+                      c.materials ? 1e3 * c.wall_s / static_cast<double>(c.materials) : 0.0, c.setup_cpu_s, c.record_cpu_s,
+                      c.record_mib, c.window_wait_s);
         text += line;
     }
     std::snprintf(line, sizeof line, "fit throughput: %.1f materials x models per CPU second (largest 1-thread cell)\n",

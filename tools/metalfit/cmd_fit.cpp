@@ -15,12 +15,15 @@
 #include "material_selection.hpp"
 #include "progress.hpp"
 #include "libfit/io/catalog.hpp"
+#include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/fit/budget.hpp"
 #include "libfit/fit/fit.hpp"
 #include "libfit/fit/model_cost.hpp"
 #include "libfit/fit/catalog_summary.hpp"
+#include "libfit/fit/fit_batch.hpp"
 #include "libfit/fit/fit_record.hpp"
+#include "libfit/fit/fit_record_stream.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -116,15 +119,13 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
 // The split of the work between phases on stderr: CPU seconds from each fitting thread's own CPU clock, summed over
 // materials (their share of the work), and the wall seconds the phases took on their threads; then the run's wall
 // time and the process's CPU time (every thread, catalog loading and output included).
-void print_timings(const std::vector<MaterialFit>& fits, double wall_seconds, double process_cpu, int jobs) {
-    FitTimings sum;
-    for (const MaterialFit& f : fits) sum += f.timings;
+void print_timings(const FitTimings& sum, std::size_t materials, double wall_seconds, double process_cpu, int jobs) {
     const PhaseTime total = sum.total();
     const auto line = [&](const char* phase, const PhaseTime& t) {
         std::fprintf(stderr, "  %-44s %8.3f s  %5.1f %%  %8.3f s\n", phase, t.cpu, total.cpu > 0 ? 100 * t.cpu / total.cpu : 0.0,
                      t.wall);
     };
-    std::fprintf(stderr, "metalfit fit timings: %zu materials, %d threads, wall %.3f s, process CPU %.3f s\n", fits.size(), jobs,
+    std::fprintf(stderr, "metalfit fit timings: %zu materials, %d threads, wall %.3f s, process CPU %.3f s\n", materials, jobs,
                  wall_seconds, process_cpu);
     std::fprintf(stderr, "  %-44s %10s  %7s  %10s\n", "phase", "thread CPU", "share", "wall");
     line("reference curves (spectral integration + OCIO)", sum.reference);
@@ -154,34 +155,56 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
     const CostTable costs = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
     const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models), constraints};
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    const auto start = std::chrono::steady_clock::now();
-    const double cpu_start = process_cpu_seconds();
-    TerminalProgress progress;
-    const std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), request, jobs, progress.callback());
-    if (o.timings)
-        print_timings(fits, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                      process_cpu_seconds() - cpu_start, jobs);
-    for (const MaterialFit& f : fits)
-        for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
-
     FitRecordContext context = setup.record_context(error);
     context.constraints = constraints;
-    std::vector<BudgetChoice> choices;
-    if (budget)
-        for (const MaterialFit& f : fits) choices.push_back(choose_model(f.models, costs, *budget));
-    if (!o.summary.empty()) emit(catalog_summary_markdown(summarize_catalog(fits), context), o.summary);
-    if (o.json) {
-        emit(fit_record(fits, context, budget ? &choices : nullptr).dump(2) + "\n", o.output);
-        return;
+
+    // Streamed: each material's fit is written (record or tables) and let go as it comes, in input order; the
+    // output still appears as one unit when the run succeeded (docs/decisions.md, "Streamed fit output").
+    std::optional<StreamedOutputFile> out;
+    if (o.output.empty() || o.output == "-") out.emplace(StreamedOutputFile::StandardOutput{});
+    else out.emplace(o.output);
+    const auto write = [&out](std::string_view text) { out->write(text); };
+    std::optional<FitRecordStream> record;
+    if (o.json) record.emplace(context, write);
+    CatalogSummaryBuilder summary;
+    FitTimings timings;
+    std::vector<std::string> warnings;  // printed after the run, as before streaming
+    std::size_t materials = 0;
+    const auto sink = [&](std::size_t index, MaterialFit&& fit) {
+        ++materials;
+        if (o.timings) timings += fit.timings;
+        for (const std::string& w : fit.material.warnings) warnings.push_back(fit.material.id + ": " + w);
+        if (!o.summary.empty()) summary.add(fit);
+        std::optional<BudgetChoice> choice;
+        if (budget) choice = choose_model(fit.models, costs, *budget);
+        if (record) {
+            record->add(fit, choice ? &*choice : nullptr);
+            return;
+        }
+        std::string text = (index == 0 ? "" : "\n") + human_table(fit, context);
+        if (choice)
+            text += "  budget " + budget_text(*budget) + " in every channel: " + choice->summary() + "\n  cost table: " +
+                    choice->cost_source + "\n";
+        out->write(text);
+    };
+
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = process_cpu_seconds();
+    {
+        TerminalProgress progress;
+        fit_materials_in_order(loaders, setup.batch(), request, jobs, sink, progress.callback());
     }
-    std::string text;
-    for (std::size_t i = 0; i < fits.size(); ++i) {
-        text += (text.empty() ? "" : "\n") + human_table(fits[i], context);
-        if (budget)
-            text += "  budget " + budget_text(*budget) + " in every channel: " + choices[i].summary() + "\n  cost table: " +
-                    choices[i].cost_source + "\n";
+    if (o.timings)
+        print_timings(timings, materials, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                      process_cpu_seconds() - cpu_start, jobs);
+    for (const std::string& w : warnings) warn(w);
+
+    if (!o.summary.empty()) emit(catalog_summary_markdown(summary.summary(), context), o.summary);
+    if (record) {
+        record->finish();
+        out->write("\n");
     }
-    emit(text, o.output);
+    out->commit();
 }
 
 }  // namespace

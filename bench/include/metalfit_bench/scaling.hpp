@@ -35,6 +35,13 @@ struct ScalingCell {
     double wall_s = 0;      // the fits (fit_materials), wall clock
     double cpu_s = 0;       // the fits, process CPU (user + system, every thread)
     double peak_mib = 0;    // peak resident memory of the whole process (ru_maxrss)
+    // Where the CPU and wall go besides the fits, measured inside the same run: the synthetic materials' set-up (their
+    // loaders, thread CPU), the fit record streamed material by material as `fit --all --json` writes it (thread CPU;
+    // its text counted, not kept), and the wall time threads waited at the reorder window (summed over the threads).
+    double setup_cpu_s = 0;
+    double record_cpu_s = 0;
+    double record_mib = 0;
+    double window_wait_s = 0;
 };
 
 // Fits `materials` synthetic materials with `models` on `threads` threads in this process and measures it

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <iostream>
 #include <system_error>
 #include <vector>
 
@@ -113,6 +114,88 @@ void write_files_atomically(std::span<const OutputFile> files) {
         }
         if (!existed) renamed_new.push_back(files[i].path);
     }
+}
+
+StreamedOutputFile::StreamedOutputFile(const fs::path& target) : target_(target) {
+    const TargetKind kind = kind_of(target);
+    if (kind == TargetKind::written_in_place) {
+        spool_ = std::tmpfile();
+        if (!spool_) throw InputError({target}, "cannot write: no temporary file: " + detail::describe_errno(errno));
+        return;
+    }
+    check_target(target, kind);
+    deferred_.emplace();
+    int error = 0;
+    const auto temporary = detail::open_temporary_beside(target, error);
+    if (!temporary) {
+        deferred_.reset();
+        throw_cannot_write(target, error);
+    }
+    temporary_ = temporary->path;
+    fd_ = temporary->fd;
+}
+
+StreamedOutputFile::StreamedOutputFile(StandardOutput) : spool_(std::tmpfile()) {
+    if (!spool_) throw InputError({fs::path("<stdout>")}, "cannot write: no temporary file: " + detail::describe_errno(errno));
+}
+
+StreamedOutputFile::~StreamedOutputFile() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!temporary_.empty() && !committed_) ::unlink(temporary_.c_str());
+    if (spool_) std::fclose(spool_);
+}
+
+void StreamedOutputFile::write(std::string_view text) {
+    if (committed_) throw std::logic_error("StreamedOutputFile: written after commit");
+    if (spool_) {
+        if (std::fwrite(text.data(), 1, text.size(), spool_) != text.size())
+            throw InputError({target_.empty() ? fs::path("<stdout>") : target_},
+                             "cannot write: temporary file: " + detail::describe_errno(errno));
+        return;
+    }
+    DeferredSignals::throw_if_pending();
+    if (!detail::write_all(fd_, text)) throw InputError({target_}, "cannot write: " + detail::describe_errno(errno));
+}
+
+void StreamedOutputFile::commit() {
+    if (committed_) throw std::logic_error("StreamedOutputFile: committed twice");
+    if (spool_) {
+        // The anonymous temporary, copied out: to standard output through std::cout (its other text stays in order), or
+        // to the device in place.
+        if (std::fflush(spool_) != 0 || std::fseek(spool_, 0, SEEK_SET) != 0)
+            throw InputError({target_.empty() ? fs::path("<stdout>") : target_},
+                             "cannot write: temporary file: " + detail::describe_errno(errno));
+        int fd = -1;
+        if (!target_.empty()) {
+            fd = ::open(target_.c_str(), O_WRONLY | O_TRUNC | O_NOCTTY | O_CLOEXEC);
+            if (fd < 0) throw InputError({target_}, "cannot write: " + detail::describe_errno(errno));
+        }
+        char buffer[1 << 16];
+        int error = 0;
+        for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, spool_)) > 0;) {
+            if (fd < 0) std::cout.write(buffer, static_cast<std::streamsize>(n));
+            else if (!detail::write_all(fd, {buffer, n})) {
+                error = errno;
+                break;
+            }
+        }
+        if (std::ferror(spool_) && error == 0) error = errno ? errno : EIO;
+        if (fd < 0) std::cout.flush();
+        else if (::close(fd) != 0 && error == 0) error = errno;
+        committed_ = true;
+        if (error != 0)
+            throw InputError({target_.empty() ? fs::path("<stdout>") : target_}, "cannot write: " + detail::describe_errno(error));
+        return;
+    }
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) throw InputError({target_}, "cannot write: " + detail::describe_errno(errno));
+    if (DeferredSignals::pending() || ::rename(temporary_.c_str(), target_.c_str()) != 0) {
+        const int error = errno;
+        DeferredSignals::throw_if_pending();  // the destructor removes the temporary
+        throw InputError({target_}, "cannot rename temporary file into place: " + detail::describe_errno(error));
+    }
+    committed_ = true;
 }
 
 }  // namespace metalfit

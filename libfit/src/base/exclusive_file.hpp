@@ -57,16 +57,40 @@ inline int write_new_file(const std::filesystem::path& path, std::string_view co
     return error;
 }
 
+// The name of a temporary beside `target`: ".<target name>.<random>.tmp" in the same directory.
+inline std::filesystem::path temporary_name_beside(const std::filesystem::path& target) {
+    const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+    return dir / ("." + target.filename().string().substr(0, 200) + "." + unpredictable_suffix() + ".tmp");
+}
+
 // A new file beside `target` named ".<target name>.<random>.tmp" holding `contents`; the path on success, else
 // nullopt with `error` set (EEXIST is retried with another name).
 inline std::optional<std::filesystem::path> write_temporary_beside(const std::filesystem::path& target,
                                                                    std::string_view contents, int& error) {
-    const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
-    const std::string name = target.filename().string().substr(0, 200);
     for (int attempt = 0; attempt < 16; ++attempt) {
-        const std::filesystem::path temporary = dir / ("." + name + "." + unpredictable_suffix() + ".tmp");
+        const std::filesystem::path temporary = temporary_name_beside(target);
         error = write_new_file(temporary, contents);
         if (error == 0) return temporary;
+        if (error != EEXIST) return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+// An empty temporary beside `target`, created as write_new_file creates its files and left open for writing: its
+// path and descriptor, else nullopt with `error` set (EEXIST is retried with another name).
+struct OpenTemporary {
+    std::filesystem::path path;
+    int fd = -1;
+};
+inline std::optional<OpenTemporary> open_temporary_beside(const std::filesystem::path& target, int& error) {
+    for (int attempt = 0; attempt < 16; ++attempt) {
+        const std::filesystem::path temporary = temporary_name_beside(target);
+        const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd >= 0) {
+            error = 0;
+            return OpenTemporary{temporary, fd};
+        }
+        error = errno;
         if (error != EEXIST) return std::nullopt;
     }
     return std::nullopt;

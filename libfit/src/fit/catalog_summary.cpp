@@ -30,26 +30,33 @@ Spread spread_of_defined(const std::vector<double>& values) {
     return {median(defined), *std::max_element(defined.begin(), defined.end())};
 }
 
-CatalogSummary summarize_catalog(const std::vector<MaterialFit>& fits) {
-    CatalogSummary summary;
-    if (fits.empty()) return summary;
-    for (const ModelResult& r : fits.front().models) summary.models.push_back({r.model, {}, {}, {}});
-    for (const MaterialFit& f : fits) {
-        summary.materials.push_back(f.material.id);
-        if (f.models.size() != summary.models.size())
+void CatalogSummaryBuilder::add(const MaterialFit& f) {
+    if (summary_.materials.empty())
+        for (const ModelResult& r : f.models) summary_.models.push_back({r.model, {}, {}, {}});
+    summary_.materials.push_back(f.material.id);
+    if (f.models.size() != summary_.models.size())
+        throw std::logic_error("summarize_catalog: " + f.material.id + " was fitted with other models");
+    for (std::size_t m = 0; m < f.models.size(); ++m) {
+        const ModelResult& r = f.models[m];
+        if (r.model != summary_.models[m].model)
             throw std::logic_error("summarize_catalog: " + f.material.id + " was fitted with other models");
-        for (std::size_t m = 0; m < f.models.size(); ++m) {
-            const ModelResult& r = f.models[m];
-            if (r.model != summary.models[m].model)
-                throw std::logic_error("summarize_catalog: " + f.material.id + " was fitted with other models");
-            summary.models[m].fit_worst.push_back(worst_channel(r.fit.value.metrics.rel_rms));
-            summary.models[m].closed_worst.push_back(
-                r.best_closed ? worst_channel(r.closed_forms[*r.best_closed].value->metrics.rel_rms)
-                              : std::numeric_limits<double>::quiet_NaN());
-        }
+        summary_.models[m].fit_worst.push_back(worst_channel(r.fit.value.metrics.rel_rms));
+        summary_.models[m].closed_worst.push_back(
+            r.best_closed ? worst_channel(r.closed_forms[*r.best_closed].value->metrics.rel_rms)
+                          : std::numeric_limits<double>::quiet_NaN());
     }
+}
+
+CatalogSummary CatalogSummaryBuilder::summary() const {
+    CatalogSummary summary = summary_;
     for (ModelSummary& m : summary.models) m.fit = spread_of_defined(m.fit_worst);
     return summary;
+}
+
+CatalogSummary summarize_catalog(const std::vector<MaterialFit>& fits) {
+    CatalogSummaryBuilder builder;
+    for (const MaterialFit& f : fits) builder.add(f);
+    return builder.summary();
 }
 
 std::string catalog_summary_markdown(const CatalogSummary& summary, const FitRecordContext& context) {

@@ -1,7 +1,8 @@
 #include "libfit/fit/fit_batch.hpp"
 
 #include <algorithm>
-#include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <exception>
 #include <mutex>
 #include <optional>
@@ -30,29 +31,89 @@ std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, 
     return loaders;
 }
 
-std::vector<MaterialFit> fit_materials(const std::vector<std::function<Material()>>& loaders, const BatchColour& colour,
-                                       const MaterialFitRequest& request, int jobs, const BatchProgress& progress) {
+void fit_materials_in_order(const std::vector<std::function<Material()>>& loaders, const BatchColour& colour,
+                            const MaterialFitRequest& request, int jobs, const BatchSink& sink,
+                            const BatchProgress& progress, std::size_t window, BatchStatistics* statistics) {
     const std::size_t count = loaders.size();
-    std::vector<std::optional<MaterialFit>> results(count);
-    std::vector<std::exception_ptr> errors(count);
-    std::atomic<std::size_t> next{0}, done{0};
+    const int threads = std::max(1, std::min<int>(jobs, static_cast<int>(count)));
+    if (window == 0) window = kBatchWindowPerThread * static_cast<std::size_t>(threads);
+    // The reorder window: material i lives in slot i % window from its start until the sink has it. A material is
+    // started only while i < next_to_hand + window, so its slot is free.
+    struct Slot {
+        std::optional<MaterialFit> fit;
+        std::exception_ptr error;
+        bool ready = false;
+    };
+    std::vector<Slot> slots(window);
+    std::mutex mutex;                  // guards everything below and the slots
+    std::condition_variable advanced;  // next_to_hand moved on, or the batch stopped
+    std::size_t next_to_start = 0, next_to_hand = 0, finished = 0;
+    bool handing = false;  // a thread is calling the sink; the others leave their results in the window
+    bool stopped = false;
+    std::exception_ptr failure;
     std::mutex progress_mutex;
+
     const auto worker = [&](const ColorSpaceConverter& converter) {
-        for (std::size_t i = next++; i < count; i = next++) {
+        std::unique_lock lock(mutex);
+        for (;;) {
+            const auto may_start = [&] { return stopped || next_to_start >= count || next_to_start < next_to_hand + window; };
+            if (!may_start()) {
+                const auto waiting_since = std::chrono::steady_clock::now();
+                advanced.wait(lock, may_start);
+                if (statistics) {
+                    ++statistics->window_waits;
+                    statistics->window_wait_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - waiting_since).count();
+                }
+            }
+            if (stopped || next_to_start >= count) return;
+            const std::size_t i = next_to_start++;
+            lock.unlock();
+            Slot result;
             try {
                 const Material material = loaders[i]();
-                results[i] = fit_material(material, colour.colorimetry, converter, request);
+                result.fit = fit_material(material, colour.colorimetry, converter, request);
             } catch (...) {
-                errors[i] = std::current_exception();
+                result.error = std::current_exception();
             }
-            const std::size_t finished = ++done;
             if (progress) {
-                std::lock_guard lock(progress_mutex);
-                progress(finished, count);
+                std::lock_guard progress_lock(progress_mutex);
+                progress(++finished, count);
             }
+            lock.lock();
+            result.ready = true;
+            slots[i % window] = std::move(result);
+            if (handing) continue;  // the thread handing results on takes this one when its turn comes
+            // This thread hands on every result that is next in order, the sink called without the lock.
+            handing = true;
+            while (!stopped && slots[next_to_hand % window].ready) {
+                Slot next = std::move(slots[next_to_hand % window]);
+                slots[next_to_hand % window] = Slot{};
+                if (next.error) {
+                    failure = next.error;
+                    stopped = true;
+                    break;
+                }
+                lock.unlock();
+                std::exception_ptr sink_error;
+                try {
+                    sink(next_to_hand, std::move(*next.fit));
+                } catch (...) {
+                    sink_error = std::current_exception();
+                }
+                next.fit.reset();
+                lock.lock();
+                if (sink_error) {
+                    failure = sink_error;
+                    stopped = true;
+                    break;
+                }
+                ++next_to_hand;
+                advanced.notify_all();
+            }
+            handing = false;
+            if (stopped) advanced.notify_all();
         }
     };
-    const int threads = std::max(1, std::min<int>(jobs, static_cast<int>(count)));
     // One OCIO processor per thread: the calling thread uses the caller's; the others' are made here, before any thread
     // starts, so that a failure is an ordinary error and not an exception inside a thread.
     std::vector<ColorSpaceConverter> converters;
@@ -62,11 +123,15 @@ std::vector<MaterialFit> fit_materials(const std::vector<std::function<Material(
         for (const ColorSpaceConverter& converter : converters) pool.emplace_back(worker, std::cref(converter));
         worker(colour.converter);
     }
+    if (failure) std::rethrow_exception(failure);
+}
+
+std::vector<MaterialFit> fit_materials(const std::vector<std::function<Material()>>& loaders, const BatchColour& colour,
+                                       const MaterialFitRequest& request, int jobs, const BatchProgress& progress) {
     std::vector<MaterialFit> fits;
-    for (std::size_t i = 0; i < count; ++i) {
-        if (errors[i]) std::rethrow_exception(errors[i]);
-        fits.push_back(std::move(*results[i]));
-    }
+    fits.reserve(loaders.size());
+    fit_materials_in_order(loaders, colour, request, jobs, [&](std::size_t, MaterialFit&& fit) { fits.push_back(std::move(fit)); },
+                           progress);
     return fits;
 }
 

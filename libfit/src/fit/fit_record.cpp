@@ -131,28 +131,25 @@ Json budget_record(const BudgetChoice& choice) {
             {"candidates", candidates}};
 }
 
-Json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContext& context,
-                const std::vector<BudgetChoice>* budgets) {
-    if (budgets && budgets->size() != materials.size())
-        throw std::logic_error("fit_record: one budget choice per material");
-    Json materials_json = Json::object();
-    for (std::size_t index = 0; index < materials.size(); ++index) {
-        const MaterialFit& m = materials[index];
-        Json out_of_gamut = Json::array();
-        for (int c = 0; c < 3; ++c)
-            if (m.F0[c] > 1.0 || m.F0[c] < 0.0) out_of_gamut.push_back(kChannelNames[c]);
-        Json models = Json::object();
-        for (const ModelResult& r : m.models) models[std::string(r.model->id())] = model_record(r);
-        materials_json[m.material.id] = {{"name", m.material.name},
-                                         {"source", m.material.source},
-                                         {"data", data_provenance(m.material)},
-                                         {"F0", rgb_json(m.F0)},
-                                         {"out_of_gamut_F0", out_of_gamut},
-                                         {"white_raw_rgb", rgb_json(m.raw_white)},
-                                         {"warnings", m.material.warnings},
-                                         {"models", models}};
-        if (budgets) materials_json[m.material.id]["budget"] = budget_record((*budgets)[index]);
-    }
+Json material_record(const MaterialFit& m, const BudgetChoice* budget) {
+    Json out_of_gamut = Json::array();
+    for (int c = 0; c < 3; ++c)
+        if (m.F0[c] > 1.0 || m.F0[c] < 0.0) out_of_gamut.push_back(kChannelNames[c]);
+    Json models = Json::object();
+    for (const ModelResult& r : m.models) models[std::string(r.model->id())] = model_record(r);
+    Json record = {{"name", m.material.name},
+                   {"source", m.material.source},
+                   {"data", data_provenance(m.material)},
+                   {"F0", rgb_json(m.F0)},
+                   {"out_of_gamut_F0", out_of_gamut},
+                   {"white_raw_rgb", rgb_json(m.raw_white)},
+                   {"warnings", m.material.warnings},
+                   {"models", models}};
+    if (budget) record["budget"] = budget_record(*budget);
+    return record;
+}
+
+Json fit_record_without_materials(const FitRecordContext& context, const BudgetChoice* first_budget) {
     const ErrorSettings& e = context.error;
     Json record = {{"schema", kFitRecordSchema},
             {"provenance",
@@ -174,14 +171,26 @@ Json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContex
               {"max_grid", kDenseIntervals + 1},
               {"metric", to_string(e.metric)},
               {"weight", to_string(e.weight)}}},
-            {"materials", materials_json}};
+            {"materials", Json::object()}};
     // Only when a constraint is on, so that unconstrained records keep their keys.
     if (context.constraints.pin_f0) record["provenance"]["constraints"]["pin_f0"] = true;
     if (context.constraints.gamut_fit) record["provenance"]["constraints"]["gamut_fit"] = true;
-    if (budgets && !budgets->empty())
-        record["provenance"]["budget"] = {{"metric", to_string(budgets->front().budget.metric)},
-                                          {"limit", budgets->front().budget.limit},
-                                          {"cost_table", budgets->front().cost_source}};
+    if (first_budget)
+        record["provenance"]["budget"] = {{"metric", to_string(first_budget->budget.metric)},
+                                          {"limit", first_budget->budget.limit},
+                                          {"cost_table", first_budget->cost_source}};
+    return record;
+}
+
+Json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContext& context,
+                const std::vector<BudgetChoice>* budgets) {
+    if (budgets && budgets->size() != materials.size())
+        throw std::logic_error("fit_record: one budget choice per material");
+    Json record = fit_record_without_materials(context, budgets && !budgets->empty() ? &budgets->front() : nullptr);
+    Json& materials_json = record["materials"];
+    for (std::size_t index = 0; index < materials.size(); ++index)
+        materials_json[materials[index].material.id] =
+            material_record(materials[index], budgets ? &(*budgets)[index] : nullptr);
     return record;
 }
 

@@ -31,6 +31,17 @@ struct CatalogSummary {
     std::vector<ModelSummary> models;    // in the order of the first material's models
 };
 
+// The summary built one material at a time (as fit_materials_in_order hands them on), keeping only the ids and
+// the worst-channel values. Every fit must hold the same models in the same order (as fit_materials gives them).
+class CatalogSummaryBuilder {
+public:
+    void add(const MaterialFit& fit);
+    CatalogSummary summary() const;  // with the spreads over the materials added so far
+
+private:
+    CatalogSummary summary_;
+};
+
 // Every fit must hold the same models in the same order (as fit_materials gives them).
 CatalogSummary summarize_catalog(const std::vector<MaterialFit>& fits);
 

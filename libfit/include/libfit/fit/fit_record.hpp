@@ -36,6 +36,15 @@ struct FitRecordContext {
 nlohmann::ordered_json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContext& context,
                                   const std::vector<BudgetChoice>* budgets = nullptr);
 
+// The record with an empty "materials" object: schema and provenance, with the budget's provenance taken from
+// `first_budget` (the first material's choice; every material has the same budget and cost table) when given.
+nlohmann::ordered_json fit_record_without_materials(const FitRecordContext& context,
+                                                    const BudgetChoice* first_budget = nullptr);
+
+// One material's record (the value under materials.<id>): name, source, data, F0, ..., models, and its "budget"
+// when `budget` is given.
+nlohmann::ordered_json material_record(const MaterialFit& fit, const BudgetChoice* budget = nullptr);
+
 // {"metric", "limit", "cost_table", "cost_unit", "chosen": id or null, "summary", "candidates": [{"model", "cost",
 // "value", "qualifies", "reason"}]} (docs/fit-record.md).
 nlohmann::ordered_json budget_record(const BudgetChoice& choice);
