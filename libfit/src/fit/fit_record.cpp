@@ -35,7 +35,10 @@ Json solver_json(const FitResult& fit) {
         starts.push_back(s.starts);
         fallback.push_back(fit.fallback[c].empty() ? Json(nullptr) : Json(fit.fallback[c]));
     }
-    return {{"solver", "Ceres Levenberg-Marquardt, dense QR, bounds"},
+    // One method for the three channels (the same model and constraints); a summary without one (no parameter free,
+    // no start: SolverSummary's defaults) is the plain solve's.
+    const std::string& method = fit.solver[0].method;
+    return {{"solver", method.empty() ? std::string(kCeresSolve) : method},
             {"start", start},
             {"iterations", iterations},
             {"termination", termination},

@@ -322,6 +322,7 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                 }
                 if (!std::isfinite(final_cost) || !(final_cost < best.solver.final_cost)) continue;
                 best.params = full;
+                best.solver.method = kNonlinear.size() > 0 ? kCeresProjectedSolve : kLinearSolve;
                 best.solver.start = starts[s].name;
                 best.solver.iterations = static_cast<int>(projected.iterations.size()) - 1;
                 best.solver.termination = ceres::TerminationTypeToString(projected.termination_type);
@@ -373,6 +374,7 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
             if (pinned >= 0) x[M::kPinnedParameter] = M::pinned_value(x.data(), *constraints.pinned_f0);
         if (final_cost < best.solver.final_cost) {
             best.params = x;
+            best.solver.method = kCeresSolve;
             best.solver.start = starts[s].name;
             best.solver.iterations = iterations;
             best.solver.termination = ceres::TerminationTypeToString(summary.termination_type);

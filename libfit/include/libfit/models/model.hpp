@@ -90,6 +90,7 @@ struct ClosedForm {
 };
 
 struct SolverSummary {
+    std::string method;       // how the parameters were solved (the record's `solver.solver`; kCeresSolve, ...)
     std::string start;        // which start won ("closed r1", "neutral 2", ...)
     int iterations = 0;       // of the winning start
     std::string termination;  // Ceres termination type
@@ -97,6 +98,12 @@ struct SolverSummary {
     double final_cost = 0;
     int starts = 0;           // how many starts were tried
 };
+
+// The methods a fit's parameters are solved by (docs/fit-record.md, `solver.solver`).
+inline constexpr const char* kCeresSolve = "Ceres Levenberg-Marquardt, dense QR, bounds";
+inline constexpr const char* kCeresProjectedSolve =
+    "Ceres Levenberg-Marquardt, dense QR, bounds, on the non-linear parameters; the linear ones by variable projection";
+inline constexpr const char* kLinearSolve = "linear least squares (variable projection): no iterative solve";
 
 struct ChannelFit {
     ChannelParameters params;
