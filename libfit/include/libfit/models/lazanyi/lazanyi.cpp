@@ -38,7 +38,9 @@ ChannelParameters Lazanyi::nk_near(double F0, double n) {
     return {std::abs(above - n) < std::abs(below - n) ? above : below, 0.0};
 }
 
-std::vector<ChannelParameters> Lazanyi::target_starts(const ChannelTarget& t) {
+std::vector<ChannelParameters> Lazanyi::target_starts(const ChannelTarget& t) { return {nk_with_F0(least_squares_F0(t))}; }
+
+double Lazanyi::least_squares_F0(const ChannelTarget& t) {
     // residual_i = s_i (F0 (1 − w_i) − (R_i − w_i)), w = (1 − μ)^5.
     double xx = 0.0, xy = 0.0;
     for (std::size_t i = 0; i < t.mu.size(); ++i) {
@@ -47,7 +49,7 @@ std::vector<ChannelParameters> Lazanyi::target_starts(const ChannelTarget& t) {
         xx += x * x;
         xy += x * y;
     }
-    return {nk_with_F0(xy / xx)};
+    return xy / xx;
 }
 
 std::vector<ClosedForm> Lazanyi::closed_forms(const ClosedFormInput& input) {

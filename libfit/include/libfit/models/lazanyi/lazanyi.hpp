@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <string_view>
 #include <vector>
 
@@ -54,6 +55,8 @@ struct Lazanyi {
     static std::vector<ChannelParameters> neutral_starts() { return {{1.0, 3.0}}; }
     // The least-squares F0 of the target (F* is linear in F0), as n, k.
     static std::vector<ChannelParameters> target_starts(const ChannelTarget& target);
+    // That F0, unbounded (NaN for a target without weight).
+    static double least_squares_F0(const ChannelTarget& target);
 
     // An n, k with the given F0: n = 1, k = 2 sqrt(F0 / (1 − F0)); F0 ≥ 1 (out of gamut) goes to the corner of the
     // bounds nearest it (n lowest, k highest), where k no longer moves F0 and a solver started lower would stall.
@@ -65,14 +68,8 @@ struct Lazanyi {
     public:
         static constexpr std::array<std::size_t, 0> kNonlinearParameters{};
         explicit Projection(const ChannelTarget& t) : residuals_(t.mu.size()) {
-            double xx = 0.0, xy = 0.0;
-            for (std::size_t i = 0; i < t.mu.size(); ++i) {
-                const double w = model_math::schlick_weight(t.mu[i]);
-                const double x = t.scale[i] * (1.0 - w), y = t.scale[i] * (t.value[i] - w);
-                xx += x * x;
-                xy += x * y;
-            }
-            F0_ = xx > 0.0 ? std::clamp(xy / xx, 0.0, 1.0) : 0.0;
+            const double F0 = least_squares_F0(t);
+            F0_ = std::isfinite(F0) ? std::clamp(F0, 0.0, 1.0) : 0.0;
         }
         std::size_t residuals() const { return residuals_; }
         ChannelParameters parameters(const double*, const ChannelParameters& start) const { return nk_near(F0_, start[0]); }
