@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "frame_timing.hpp"
-#include "glpreview/io/image_io.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/monte_carlo_reference.hpp"
+#include "glpreview/render/scene_colour.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
 #include "gpu_bench_passes.hpp"
 
@@ -130,7 +130,7 @@ Json time_mirror_scenes(const GpuBenchRun& run, int frames) {
         for (std::size_t i = 0; i < scene.spheres.size(); ++i)
             fresnel.push_back(&library.get(scene.spheres[i], "spheres[" + std::to_string(i) + "]"));
         std::optional<Image> equirect;
-        if (scene.environment.type == EnvironmentType::equirect) equirect = read_image(scene.environment.equirect.file);
+        if (scene.environment.type == EnvironmentType::equirect) equirect = read_environment_image(scene, run.options.ocio);
         GpuRenderer gpu(scene, plan_features(scene), fresnel, equirect ? &*equirect : nullptr);
         gpu.capture_environment();
         const std::vector<double> ms = gpu.time_frames(frames);

@@ -203,11 +203,7 @@ std::pair<Handle<EquirectTexture>, Handle<Image>> add_load_equirect_pass(PassGra
             d.image = b.produce<Image>("equirect-image");
         },
         [&scene, run](const Data& d, Resources& r) {
-            Image pixels = read_image(scene.environment.equirect.file);
-            if (!scene.environment.equirect.colorspace.empty())
-                scene_space_conversion(scene, run->ocio, scene.environment.equirect.colorspace, "environment.colorspace")
-                    .apply(pixels.rgb);
-            const Image& image = r.emplace(d.image, std::move(pixels));
+            const Image& image = r.emplace(d.image, read_environment_image(scene, run->ocio));
             r.emplace(d.texture, std::make_shared<const Image>(image));
         });
     return {d.texture, d.image};

@@ -41,12 +41,7 @@ ReflectionProbe capture_probe(const Scene& scene, const OcioConfigChoice& ocio, 
     const ColorSpaceConverter space = scene_converter(ocio, scene.space, scene.file);
     probe.colour = ExrColour{chromaticities_of(space), space.space()};
     // An equirect on a proxy is traced as the renderer sees it: its pixels converted into the scene's space.
-    Image equirect;
-    if (environment.type == EnvironmentType::equirect) {
-        equirect = read_image(environment.equirect.file);
-        if (!environment.equirect.colorspace.empty())
-            scene_space_conversion(scene, ocio, environment.equirect.colorspace, "environment.colorspace").apply(equirect.rgb);
-    }
+    const Image equirect = environment.type == EnvironmentType::equirect ? read_environment_image(scene, ocio) : Image();
     const EnvironmentTracer tracer(environment, &equirect);
     const Vec3 capture_point = environment.reference();
     probe.image = capture_equirect(tracer, capture_point, width, height);

@@ -1,5 +1,6 @@
 #include "glpreview/render/scene_colour.hpp"
 
+#include "glpreview/io/image_io.hpp"
 #include "libfit/base/errors.hpp"
 
 namespace metalfit::glpreview {
@@ -27,6 +28,13 @@ RgbConversion scene_space_conversion(const Scene& scene, const OcioConfigChoice&
     } catch (const ColorConfigError& e) {
         throw InputError(InputLocation(scene.file, 0, field), e.what());
     }
+}
+
+Image read_environment_image(const Scene& scene, const OcioConfigChoice& config) {
+    Image pixels = read_image(scene.environment.equirect.file);
+    if (!scene.environment.equirect.colorspace.empty())
+        scene_space_conversion(scene, config, scene.environment.equirect.colorspace, "environment.colorspace").apply(pixels.rgb);
+    return pixels;
 }
 
 }  // namespace metalfit::glpreview

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "glpreview/io/image.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/rgb_conversion.hpp"
@@ -18,5 +19,10 @@ ColorSpaceConverter scene_converter(const OcioConfigChoice& config, const std::s
 // Pixels in `from` → the scene's space. Throws InputError naming `field` (or `space`, when the scene's is missing).
 RgbConversion scene_space_conversion(const Scene& scene, const OcioConfigChoice& config, const std::string& from,
                                      const std::string& field);
+
+// The scene's equirect environment image in the scene's space: read, then converted from its `colorspace` when it
+// names one (before `intensity`, which the shaders and the CPU tracer apply). Throws InputError naming the file or
+// the field.
+Image read_environment_image(const Scene& scene, const OcioConfigChoice& config);
 
 }  // namespace metalfit::glpreview
