@@ -173,7 +173,7 @@ TEST(ModelLazanyiComp, MatchesThesisEquation) {
 
 // The fit's variable projection: for a fixed α, F0 and a are the least-squares solution (a target built from a known
 // curve comes back exactly; elsewhere moving F0 or a raises the cost), the residuals are the full curve's at the
-// parameters it returns, and the Jets' derivative in α is the finite difference of the residuals.
+// parameters it returns, and the derivative of the projected cost in α is its finite difference.
 namespace {
 ChannelTarget lazanyi_comp_target(const std::array<double, 4>& p) {
     ChannelTarget t;
@@ -213,32 +213,40 @@ TEST(ModelLazanyiComp, ProjectionSolvesF0AndAmplitudeExactly) {
 
 TEST(ModelLazanyiComp, ProjectionIsTheLeastSquaresOptimumAtEachAlpha) {
     const ChannelTarget t = lazanyi_comp_target({0.4, 3.0, 0.25, 5.0});
-    const models::LazanyiComp::Projection projection(t);
+    models::LazanyiComp::Projection projection(t);
     for (double alpha : {0.5, 2.0, 9.0, 30.0}) {
         const ChannelParameters p = projection.parameters(&alpha, {1.0, 3.0, 0.0, 1.0});
         std::vector<double> r(projection.residuals());
-        projection(&alpha, r.data());
+        projection.residuals(alpha, r.data());
         double cost = 0;
         for (double v : r) cost += 0.5 * v * v;
         EXPECT_NEAR(cost, projected_cost(t, p), 1e-12 * cost) << alpha;
+        EXPECT_NEAR(projection.at(alpha).cost, cost, 1e-14 * cost) << alpha;
         ASSERT_GT(cost, 0) << alpha;
         for (double dn : {-1e-3, 1e-3}) {  // F0 moves through n; a directly
             EXPECT_GT(projected_cost(t, {p[0] + dn, p[1], p[2], p[3]}), cost) << alpha;
             EXPECT_GT(projected_cost(t, {p[0], p[1], p[2] + dn, p[3]}), cost) << alpha;
         }
-        // d residual / d alpha through the Jets against central differences of the projected residuals.
-        using J = ceres::Jet<double, 1>;
-        const J alpha_jet(alpha, 0);
-        std::vector<J> rj(projection.residuals());
-        projection(&alpha_jet, rj.data());
-        const double h = 1e-6 * alpha, up = alpha + h, down = alpha - h;
-        std::vector<double> r_up(r.size()), r_down(r.size());
-        projection(&up, r_up.data());
-        projection(&down, r_down.data());
-        for (std::size_t i = 0; i < r.size(); ++i) {
-            EXPECT_NEAR(rj[i].a, r[i], 1e-12 * std::abs(r[i]));  // the Jets divide as a product with the reciprocal
-            EXPECT_NEAR(rj[i].v[0], (r_up[i] - r_down[i]) / (2 * h), 1e-6 * (std::abs(rj[i].v[0]) + 1e-3)) << alpha << " " << i;
-        }
+        // d cost / d alpha (the partial derivative at the linear solution) against central differences of the
+        // projected cost, F0 and a solved again at each side.
+        const double h = 1e-5 * alpha;
+        const double central = (projection.at(alpha + h).cost - projection.at(alpha - h).cost) / (2 * h);
+        EXPECT_NEAR(projection.at(alpha).slope, central, 1e-6 * std::abs(central) + 1e-12 * cost) << alpha;
+        EXPECT_NE(central, 0) << alpha;
+    }
+}
+
+// With a bound held (a at its upper bound, the other solved again) the derivative is still that of the projected cost.
+TEST(ModelLazanyiComp, ProjectionDerivativeHoldsWithTheAmplitudeOnItsBound) {
+    const ChannelTarget t = lazanyi_comp_target({0.4, 3.0, 25.0, 40.0});  // a beyond its bound
+    models::LazanyiComp::Projection projection(t);
+    for (double alpha : {36.0, 44.0}) {
+        const ChannelParameters p = projection.parameters(&alpha, {1.0, 3.0, 0.0, 1.0});
+        ASSERT_EQ(p[2], models::LazanyiComp::kParameters[2].upper) << alpha;
+        const double h = 1e-5 * alpha;
+        const double central = (projection.at(alpha + h).cost - projection.at(alpha - h).cost) / (2 * h);
+        EXPECT_NEAR(projection.at(alpha).slope, central, 1e-6 * std::abs(central)) << alpha;
+        EXPECT_NE(central, 0) << alpha;
     }
 }
 

@@ -17,6 +17,7 @@
 #include "libfit/models/model.hpp"
 #include "libfit/models/model_math.hpp"
 #include "libfit/models/registry.hpp"
+#include "models/line_minimum.hpp"
 #include <vector>
 
 namespace metalfit::detail {
@@ -164,21 +165,15 @@ private:
     bool pruned_ = false;
 };
 
-// Models fitted by variable projection (M::Projection, e.g. LazanyiComp): the Ceres problem has only the non-linear
-// parameters (Projection::kNonlinearParameters); the Projection functor solves the linear ones exactly inside every
-// residual evaluation and gives the full parameters at its solution.
+// Models fitted by variable projection (M::Projection, e.g. LazanyiComp): the linear parameters are solved exactly
+// for given non-linear ones (Projection::kNonlinearParameters, none or one); with one, the projected cost is minimised
+// in it by line_minimum (Projection::at gives the cost and its derivative), and the Projection gives the full
+// parameters at its solution.
 template <class M>
 concept ProjectedFit = requires(const typename M::Projection& p, const double* z, const ChannelParameters& start) {
     { M::Projection::kNonlinearParameters.size() } -> std::convertible_to<std::size_t>;
     { p.residuals() } -> std::convertible_to<std::size_t>;
     { p.parameters(z, start) } -> std::same_as<ChannelParameters>;
-};
-
-template <class M>
-struct ProjectedResidual {
-    const typename M::Projection* projection;
-    template <class T>
-    bool operator()(const T* nonlinear, T* residuals) const { return (*projection)(nonlinear, residuals); }
 };
 
 // Fits from every start and keeps the lowest final cost (the first one on ties, so the result does not depend
@@ -280,39 +275,37 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
     ChannelFit best;
     best.solver.final_cost = std::numeric_limits<double>::infinity();
     if constexpr (ProjectedFit<M>) {
-        // Plain fits: each start's non-linear parameters solved with the linear ones projected out (its linear
+        // Plain fits: each start's non-linear parameter minimised with the linear ones projected out (its linear
         // parameters are not used); the cost compared and kept is that of the full parameters returned. Starts with
-        // the same non-linear parameters take the same path: skipped. The bounds of a one-parameter problem are met by
-        // the projection of each step alone: no line search along them (docs/decisions.md).
+        // the same non-linear parameter take the same path: skipped (docs/decisions.md).
         if (!constraints.unit_range && !constraints.pinned_f0) {
             constexpr auto kNonlinear = M::Projection::kNonlinearParameters;
-            using Nonlinear = std::array<double, kNonlinear.size()>;
-            const typename M::Projection projection(target);
-            ceres::Solver::Options projected_options = options;
-            projected_options.max_num_line_search_step_size_iterations = 0;
-            std::vector<Nonlinear> tried;
+            static_assert(kNonlinear.size() <= 1, "variable projection leaves at most one non-linear parameter");
+            typename M::Projection projection(target);
+            std::vector<double> tried, minima;  // the starts' non-linear parameter; the minima found from them
             for (std::size_t s = 0; s < starts.size(); ++s) {
                 const ChannelParameters x = clamp_to_bounds<M>(starts[s].params);
-                Nonlinear z;
-                for (std::size_t i = 0; i < z.size(); ++i) z[i] = x[kNonlinear[i]];
-                ceres::Solver::Summary projected;
-                if constexpr (kNonlinear.size() > 0) {
-                    if (std::find(tried.begin(), tried.end(), z) != tried.end()) continue;
-                    tried.push_back(z);
-                    ceres::Problem problem;
-                    problem.AddResidualBlock(
-                        new ceres::AutoDiffCostFunction<ProjectedResidual<M>, ceres::DYNAMIC, static_cast<int>(kNonlinear.size())>(
-                            new ProjectedResidual<M>{&projection}, static_cast<int>(projection.residuals())),
-                        nullptr, z.data());
-                    for (std::size_t i = 0; i < z.size(); ++i) {
-                        problem.SetParameterLowerBound(z.data(), static_cast<int>(i), M::kParameters[kNonlinear[i]].lower);
-                        problem.SetParameterUpperBound(z.data(), static_cast<int>(i), M::kParameters[kNonlinear[i]].upper);
-                    }
-                    ceres::Solve(projected_options, &problem, &projected);
-                } else {
-                    // Nothing non-linear: the projection is the solution (no iteration; the start's n is what differs).
-                    projected.termination_type = ceres::CONVERGENCE;
-                    projected.iterations.resize(1);
+                std::array<double, kNonlinear.size()> z;
+                int iterations = 0;
+                bool converged = true;
+                double initial_cost = 0;
+                if constexpr (kNonlinear.size() == 1) {
+                    z[0] = x[kNonlinear[0]];
+                    if (std::find(tried.begin(), tried.end(), z[0]) != tried.end()) continue;
+                    tried.push_back(z[0]);
+                    const Parameter& bounds = M::kParameters[kNonlinear[0]];
+                    const LineMinimum m = line_minimum(
+                        [&projection](double alpha) {
+                            const auto p = projection.at(alpha);
+                            return LinePoint{alpha, p.cost, p.slope};
+                        },
+                        z[0], bounds.lower, bounds.upper, minima);
+                    if (m.same_as >= 0) continue;  // the valley of an earlier start: its minimum, and ties keep the first
+                    z[0] = m.minimum.x;
+                    minima.push_back(z[0]);
+                    iterations = m.evaluations;
+                    converged = m.converged;
+                    initial_cost = m.start.value;
                 }
                 const ChannelParameters full = clamp_to_bounds<M>(projection.parameters(z.data(), x));
                 double final_cost = 0;
@@ -322,11 +315,12 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                 }
                 if (!std::isfinite(final_cost) || !(final_cost < best.solver.final_cost)) continue;
                 best.params = full;
-                best.solver.method = kNonlinear.size() > 0 ? kCeresProjectedSolve : kLinearSolve;
+                best.solver.method = kNonlinear.size() > 0 ? kProjectedLineSolve : kLinearSolve;
                 best.solver.start = starts[s].name;
-                best.solver.iterations = static_cast<int>(projected.iterations.size()) - 1;
-                best.solver.termination = ceres::TerminationTypeToString(projected.termination_type);
-                best.solver.initial_cost = kNonlinear.size() > 0 ? projected.initial_cost : final_cost;
+                best.solver.iterations = iterations;
+                // Nothing non-linear: the projection is the solution (no iteration; the start's n is what differs).
+                best.solver.termination = ceres::TerminationTypeToString(converged ? ceres::CONVERGENCE : ceres::NO_CONVERGENCE);
+                best.solver.initial_cost = kNonlinear.size() > 0 ? initial_cost : final_cost;
                 best.solver.final_cost = final_cost;
             }
             best.solver.starts = static_cast<int>(starts.size());

@@ -101,8 +101,9 @@ struct SolverSummary {
 
 // The methods a fit's parameters are solved by (docs/fit-record.md, `solver.solver`).
 inline constexpr const char* kCeresSolve = "Ceres Levenberg-Marquardt, dense QR, bounds";
-inline constexpr const char* kCeresProjectedSolve =
-    "Ceres Levenberg-Marquardt, dense QR, bounds, on the non-linear parameters; the linear ones by variable projection";
+inline constexpr const char* kProjectedLineSolve =
+    "bounded line minimisation of the non-linear parameter (bracketing, then Brent's root search on the derivative); "
+    "the linear ones by variable projection";
 inline constexpr const char* kLinearSolve = "linear least squares (variable projection): no iterative solve";
 
 struct ChannelFit {

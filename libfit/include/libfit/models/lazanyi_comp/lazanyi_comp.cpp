@@ -57,16 +57,25 @@ std::vector<ChannelParameters> LazanyiComp::target_starts(const ChannelTarget& t
         double cost, F0, a, alpha;
     };
     std::vector<Candidate> candidates;
+    // residual_i = x1_i F0 + x2_i a − y_i with x1 = s (1 − w), x2 = −s μ (1 − μ)^α, y = s (R − w): what does not
+    // depend on α once, (1 − μ)^α as exp(α ln(1 − μ)) (0 at μ = 1).
+    const std::size_t n = t.mu.size();
+    std::vector<double> x1(n), y(n), scaled_mu(n), log_m(n);
+    double s11 = 0, s1y = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double w = model_math::schlick_weight(t.mu[i]);
+        x1[i] = t.scale[i] * (1.0 - w);
+        y[i] = t.scale[i] * (t.value[i] - w);
+        scaled_mu[i] = t.scale[i] * t.mu[i];
+        log_m[i] = std::log(1.0 - t.mu[i]);
+        s11 += x1[i] * x1[i], s1y += x1[i] * y[i];
+    }
     for (int j = 0; j <= kAlphaSteps; ++j) {
         const double alpha = alpha_bounds.lower * std::pow(alpha_bounds.upper / alpha_bounds.lower, double(j) / kAlphaSteps);
-        // residual_i = x1_i F0 + x2_i a − y_i with x1 = s (1 − w), x2 = −s μ (1 − μ)^α, y = s (R − w).
-        double s11 = 0, s12 = 0, s22 = 0, s1y = 0, s2y = 0;
-        for (std::size_t i = 0; i < t.mu.size(); ++i) {
-            const double w = model_math::schlick_weight(t.mu[i]);
-            const double x1 = t.scale[i] * (1.0 - w);
-            const double x2 = -t.scale[i] * t.mu[i] * std::pow(1.0 - t.mu[i], alpha);
-            const double y = t.scale[i] * (t.value[i] - w);
-            s11 += x1 * x1, s12 += x1 * x2, s22 += x2 * x2, s1y += x1 * y, s2y += x2 * y;
+        double s12 = 0, s22 = 0, s2y = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double x2 = std::isinf(log_m[i]) ? 0.0 : -scaled_mu[i] * std::exp(alpha * log_m[i]);
+            s12 += x1[i] * x2, s22 += x2 * x2, s2y += x2 * y[i];
         }
         const double det = s11 * s22 - s12 * s12;
         if (!(std::abs(det) > 1e-300)) continue;

@@ -2,6 +2,7 @@
 // GLSL: lazanyi_comp.glsl beside this header (calls ../lazanyi/lazanyi.glsl).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string_view>
@@ -65,9 +66,11 @@ struct LazanyiComp {
     // closed forms or neutral starts stops in local minima (gold blue: 1.41 % instead of 1.24 %).
     static std::vector<ChannelParameters> target_starts(const ChannelTarget& target);
     // The fit by variable projection (ProjectedFit): for fixed α, F** = w + F0 (1 − w) − a μ m^α (w = m⁵, m = 1 − μ,
-    // F0 = F0(n, k)) is linear in F0 and a, so the fit's Ceres problem has α alone and F0 ∈ [0, 1], a ∈ its bounds are
-    // solved exactly at every evaluation; the Jets carry their derivatives in α into the residuals (Golub and Pereyra's
-    // full Jacobian of the projected problem). n, k then come from F0 keeping the start's n where some k allows it.
+    // F0 = F0(n, k)) is linear in F0 and a, so F0 ∈ [0, 1] and a ∈ its bounds are solved exactly for every α and
+    // the fit is a bounded minimisation of the projected cost in α alone (detail::line_minimum), with its derivative
+    // (Golub and Pereyra: at the linear solution the cost is stationary in F0 and a, or they sit on a bound, so
+    // dcost/dα is the partial derivative at fixed F0, a). n, k then come from F0 keeping the start's n where some k
+    // allows it.
     class Projection {
     public:
         static constexpr std::array<std::size_t, 1> kNonlinearParameters{3};  // α
@@ -81,22 +84,38 @@ struct LazanyiComp {
                 s11_ += x1_.back() * x1_.back();
                 s1y_ += x1_.back() * y_.back();
             }
+            x2_.resize(x1_.size());
+            r_.resize(x1_.size());
         }
         std::size_t residuals() const { return x1_.size(); }
 
-        // residual_i = x1_i F0 + x2_i a − y_i with x1 = s (1 − w), x2 = −s μ m^α, y = s (R − w).
-        template <class T>
-        bool operator()(const T* alpha, T* residuals) const {
-            T F0, a;
-            solve(alpha[0], F0, a, residuals);
-            return true;
+        // residual_i = x1_i F0 + x2_i a − y_i with x1 = s (1 − w), x2 = −s μ m^α, y = s (R − w), at the solution.
+        void residuals(double alpha, double* r) const {
+            double F0, a;
+            std::vector<double> x2(residuals());
+            solve(alpha, F0, a, x2.data(), r);
+        }
+
+        // The projected cost ½ Σ r² at α and its derivative: a Σ r_i ∂x2_i/∂α = a Σ r_i x2_i ln m_i.
+        struct Point {
+            double cost, slope;
+        };
+        Point at(double alpha) {
+            double F0, a;
+            solve(alpha, F0, a, x2_.data(), r_.data());
+            double cost = 0, slope = 0;
+            for (std::size_t i = 0; i < r_.size(); ++i) {
+                cost += 0.5 * r_[i] * r_[i];
+                if (!std::isinf(log_m_[i])) slope += r_[i] * x2_[i] * log_m_[i];
+            }
+            return {cost, a * slope};
         }
 
         // The full parameters at α: F0 and a solved, n, k from F0 (the start's n kept where some k ≥ 0 gives F0).
         ChannelParameters parameters(const double* nonlinear, const ChannelParameters& start) const {
             double F0 = 0, a = 0;
-            std::vector<double> r(residuals());
-            solve(nonlinear[0], F0, a, r.data());
+            std::vector<double> x2(residuals()), r(residuals());
+            solve(nonlinear[0], F0, a, x2.data(), r.data());
             ChannelParameters p = Lazanyi::nk_near(F0, start[0]);
             p.push_back(a);
             p.push_back(nonlinear[0]);
@@ -104,39 +123,35 @@ struct LazanyiComp {
         }
 
     private:
-        template <class T>
-        void solve(const T& alpha, T& F0, T& a, T* residuals) const {
-            using std::exp;
+        void solve(double alpha, double& F0, double& a, double* x2, double* residuals) const {
             const auto& a_bounds = kParameters[2];
             const std::size_t n = x1_.size();
-            T s12(0.0), s22(0.0), s2y(0.0);
+            double s12 = 0.0, s22 = 0.0, s2y = 0.0;
             for (std::size_t i = 0; i < n; ++i) {
-                const T x2 = std::isinf(log_m_[i]) ? T(0.0) : T(-scaled_mu_[i]) * exp(alpha * log_m_[i]);
-                residuals[i] = x2;
-                s12 += x2 * x1_[i], s22 += x2 * x2, s2y += x2 * y_[i];
+                x2[i] = std::isinf(log_m_[i]) ? 0.0 : -scaled_mu_[i] * std::exp(alpha * log_m_[i]);
+                s12 += x2[i] * x1_[i], s22 += x2[i] * x2[i], s2y += x2[i] * y_[i];
             }
-            const T det = s11_ * s22 - s12 * s12;
-            if (det > T(0.0)) {
+            const double det = s11_ * s22 - s12 * s12;
+            if (det > 0.0) {
                 F0 = (s22 * s1y_ - s12 * s2y) / det;
                 a = (s11_ * s2y - s12 * s1y_) / det;
             } else {
-                F0 = T(s1y_ / s11_), a = T(0.0);
+                F0 = s1y_ / s11_, a = 0.0;
             }
             // F0(n, k) ∈ [0, 1); a in its bounds: the bound held, the other solved again.
-            if (F0 > T(1.0) || F0 < T(0.0)) {
-                F0 = F0 > T(1.0) ? T(1.0) : T(0.0);
-                a = s22 > T(0.0) ? (s2y - s12 * F0) / s22 : T(0.0);
+            if (F0 > 1.0 || F0 < 0.0) {
+                F0 = F0 > 1.0 ? 1.0 : 0.0;
+                a = s22 > 0.0 ? (s2y - s12 * F0) / s22 : 0.0;
             }
-            if (a > T(a_bounds.upper) || a < T(a_bounds.lower)) {
-                a = a > T(a_bounds.upper) ? T(a_bounds.upper) : T(a_bounds.lower);
-                F0 = (s1y_ - s12 * a) / s11_;
-                if (F0 > T(1.0)) F0 = T(1.0);
-                if (F0 < T(0.0)) F0 = T(0.0);
+            if (a > a_bounds.upper || a < a_bounds.lower) {
+                a = a > a_bounds.upper ? a_bounds.upper : a_bounds.lower;
+                F0 = std::clamp((s1y_ - s12 * a) / s11_, 0.0, 1.0);
             }
-            for (std::size_t i = 0; i < n; ++i) residuals[i] = x1_[i] * F0 + residuals[i] * a - y_[i];
+            for (std::size_t i = 0; i < n; ++i) residuals[i] = x1_[i] * F0 + x2[i] * a - y_[i];
         }
 
         std::vector<double> x1_, y_, scaled_mu_, log_m_;
+        std::vector<double> x2_, r_;  // at(): scratch
         double s11_ = 0, s1y_ = 0;
     };
 
