@@ -16,8 +16,8 @@
 
 #include "libfit/models/model.hpp"
 #include "libfit/models/model_math.hpp"
+#include "libfit/base/line_minimum.hpp"
 #include "libfit/models/registry.hpp"
-#include "models/line_minimum.hpp"
 #include <vector>
 
 namespace metalfit::detail {

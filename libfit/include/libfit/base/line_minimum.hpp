@@ -1,8 +1,8 @@
 // The local minimum of a smooth function of one bounded, positive parameter, from a start, with the function's
-// derivative (internal): what the variable-projection fits solve when one non-linear parameter is left (lazanyi-comp's
-// α). Downhill from the start in steps growing geometrically until the derivative changes sign or a bound is reached,
-// then Brent's root search (zeroin: bisection safeguarding secant and inverse quadratic steps) on the derivative
-// inside that bracket.
+// derivative: what the variable-projection fits solve when one non-linear parameter is left (lazanyi-comp's α).
+// Downhill from the start in steps growing geometrically (halved where the function rose: the start's valley) until
+// the derivative changes sign or a bound is reached, then Brent's root search (zeroin: bisection safeguarding secant
+// and inverse quadratic steps) on the derivative inside that bracket.
 #pragma once
 
 #include <algorithm>
@@ -10,7 +10,7 @@
 #include <limits>
 #include <span>
 
-namespace metalfit::detail {
+namespace metalfit {
 
 struct LinePoint {
     double x = 0, value = 0, slope = 0;  // the function and its derivative at x
@@ -25,10 +25,11 @@ struct LineMinimum {
 };
 
 // f(x) → LinePoint for x ∈ [lower, upper], 0 < lower < upper. `known`: minima found before (from other starts); a
-// bracket that holds one of them is not refined (the same valley, the same minimum: same_as says which). The steps are taken in ln x (the scale of an exponent):
-// the first kFirstStep, then each up to kGrowth times the last, where the secant of the derivative predicts its zero
-// (a little beyond it). The search ends where the bracket is narrower than kRelativeTolerance · x (plus Brent's 4 ε |x|), where
-// the derivative is exactly 0, or on a bound the derivative points out of.
+// bracket that holds one of them is not refined (the same valley, the same minimum: same_as says which). The steps
+// are taken in ln x (the scale of an exponent): the first kFirstStep, then where the secant of the derivative
+// predicts its zero (a little beyond), between half the last step (at least kShortestStep) and kGrowth times it. The
+// search ends where the bracket is narrower than kRelativeTolerance · x (plus Brent's 4 ε |x|), where the derivative
+// is exactly 0, or on a bound the derivative points out of.
 struct LineSearchSettings {
     static constexpr double kFirstStep = 0.1;
     static constexpr double kGrowth = 4.0;
@@ -76,6 +77,10 @@ LineMinimum line_minimum(F&& f, double x0, double lower, double upper, std::span
             return result;
         }
         if (next.slope * direction >= 0) break;  // a sign change (or 0): a minimum in [previous, next]
+        if (next.value > previous.value) {  // higher, the slope pointing on: a ridge stepped over; stay in this valley
+            step = 0.5 * std::abs(std::log(next.x) - std::log(previous.x));
+            continue;
+        }
         // The secant of the slope in ln x: where it predicts 0, a little beyond, within [step / 2, kGrowth step]
         // (and no shorter than kShortestStep).
         const double last = std::abs(std::log(next.x) - std::log(previous.x));
@@ -156,4 +161,4 @@ LineMinimum line_minimum(F&& f, double x0, double lower, double upper, std::span
     }
 }
 
-}  // namespace metalfit::detail
+}  // namespace metalfit
