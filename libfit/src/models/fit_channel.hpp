@@ -277,7 +277,8 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
     if constexpr (ProjectedFit<M>) {
         // Plain fits: each start's non-linear parameter minimised with the linear ones projected out (its linear
         // parameters are not used); the cost compared and kept is that of the full parameters returned. Starts with
-        // the same non-linear parameter take the same path: skipped (docs/decisions.md).
+        // the same non-linear parameter take the same path, and a start whose bracket holds the minimum of an earlier
+        // one ends there: both skipped, ties keep the first (docs/decisions.md).
         if (!constraints.unit_range && !constraints.pinned_f0) {
             constexpr auto kNonlinear = M::Projection::kNonlinearParameters;
             static_assert(kNonlinear.size() <= 1, "variable projection leaves at most one non-linear parameter");
@@ -286,6 +287,7 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
             for (std::size_t s = 0; s < starts.size(); ++s) {
                 const ChannelParameters x = clamp_to_bounds<M>(starts[s].params);
                 std::array<double, kNonlinear.size()> z;
+                // Nothing non-linear: the projection is the solution (no iteration; the start's n is what differs).
                 int iterations = 0;
                 bool converged = true;
                 double initial_cost = 0;
@@ -318,7 +320,6 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                 best.solver.method = kNonlinear.size() > 0 ? kProjectedLineSolve : kLinearSolve;
                 best.solver.start = starts[s].name;
                 best.solver.iterations = iterations;
-                // Nothing non-linear: the projection is the solution (no iteration; the start's n is what differs).
                 best.solver.termination = ceres::TerminationTypeToString(converged ? ceres::CONVERGENCE : ceres::NO_CONVERGENCE);
                 best.solver.initial_cost = kNonlinear.size() > 0 ? initial_cost : final_cost;
                 best.solver.final_cost = final_cost;
