@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
+#include <vector>
 
 namespace metalfit {
 
@@ -13,14 +15,28 @@ double worst_channel(const PerChannel& values) {
 }
 
 Metrics compute_metrics(const Model& model, const ModelParameters& params, const SampledReference& reference) {
+    // The model at every sample at once (nodes, then the dense grid: reference.mu()), and the colours of all of them
+    // through one OCIO apply; then the sums in the samples' order.
+    const std::span<const double> mu = reference.mu();
+    std::array<std::vector<double>, 3> curve;
+    for (int c = 0; c < 3; ++c) {
+        curve[c].resize(mu.size());
+        model.evaluate(std::span<const double>(params[c]), mu, curve[c]);
+    }
+    std::vector<RGB> values;
+    values.reserve(mu.size());
+    for (std::size_t i = 0; i < mu.size(); ++i) values.emplace_back(curve[0][i], curve[1][i], curve[2][i]);
+    const std::vector<Lab> labs = reference.lab(std::span<const RGB>(values));
+
     const bool rel_defined = !reference.rel_undefined();
     Metrics m;
     PerChannel rel_sum{}, abs_sum{};
     const auto keep_max = [](double value, double mu, double& max, double& max_mu) {
         if (value > max) max = value, max_mu = mu;
     };
+    std::size_t next = 0;
     const auto visit = [&](const SampledReference::Sample& s) {
-        const RGB M = model.evaluate(params, s.mu);
+        const RGB& M = values[next];
         for (int c = 0; c < 3; ++c) {
             const double d = M[c] - s.value[c];
             abs_sum[c] += s.weight * d * d;
@@ -32,7 +48,7 @@ Metrics compute_metrics(const Model& model, const ModelParameters& params, const
                 keep_max(std::abs(r), s.mu, m.max_rel[c], m.max_rel_mu[c]);
             }
         }
-        const double de = ciede2000(s.lab, reference.lab(M));
+        const double de = ciede2000(s.lab, labs[next++]);
         m.de2000_mean += s.weight * de;
         keep_max(de, s.mu, m.de2000_max, m.de2000_max_mu);
     };
@@ -45,9 +61,9 @@ Metrics compute_metrics(const Model& model, const ModelParameters& params, const
         m.rel_rms[c] = rel_defined ? std::sqrt(rel_sum[c]) : nan;
         if (!rel_defined) m.max_rel[c] = m.max_rel_mu[c] = nan;
     }
-    // The dense grid ends at μ = 1 exactly (SampledReference).
+    // The dense grid ends at μ = 1 exactly (SampledReference): the last value is the model at normal incidence.
     const SampledReference::Sample& normal = reference.dense().back();
-    const RGB at_normal = model.evaluate(params, normal.mu);
+    const RGB& at_normal = values.back();
     for (int c = 0; c < 3; ++c)
         m.err_f0[c] = normal.value[c] > 0.0 ? at_normal[c] / normal.value[c] - 1.0 : nan;
     return m;
