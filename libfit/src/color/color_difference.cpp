@@ -14,6 +14,12 @@ constexpr double kKappa = 24389.0 / 27.0;     // (29/3)³
 double lab_f(double t) { return t > kEpsilon ? std::cbrt(t) : (kKappa * t + 16.0) / 116.0; }
 
 constexpr double kDegree = std::numbers::pi / 180.0;
+// cos and sin of the angles in T (eq. 15), and cos 116° (where the rotation term is left out); the doubles nearest
+// them (computed with cosl, sinl in long double).
+constexpr double kCos30 = 0.8660254037844386, kSin30 = 0.5;
+constexpr double kCos6 = 0.99452189536827329, kSin6 = 0.10452846326765347;
+constexpr double kCos63 = 0.4539904997395468, kSin63 = 0.8910065241883679;
+constexpr double kCos116 = -0.4383711467890774;
 
 // Hue angle in [0°, 360°); 0 for the achromatic a' = b = 0 (eq. 4).
 double hue_deg(double b, double a_prime) {
@@ -115,10 +121,6 @@ double ciede2000(const Lab& reference, const Lab& sample) {
 
     // Eqs. 12–13, 15–20: means and weighting functions. T's cosines of multiples of h̄' follow from cos h̄', sin h̄'
     // (double, triple and quadruple angles).
-    static const double kCos30 = std::cos(30.0 * kDegree), kSin30 = std::sin(30.0 * kDegree);
-    static const double kCos6 = std::cos(6.0 * kDegree), kSin6 = std::sin(6.0 * kDegree);
-    static const double kCos63 = std::cos(63.0 * kDegree), kSin63 = std::sin(63.0 * kDegree);
-    static const double kCos116 = std::cos(116.0 * kDegree);
     const double c = hue_terms.cos_mean, s = hue_terms.sin_mean;
     const double cos2 = c * c - s * s, sin2 = 2.0 * s * c;
     const double cos3 = cos2 * c - sin2 * s, sin3 = sin2 * c + cos2 * s;

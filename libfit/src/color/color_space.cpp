@@ -110,10 +110,12 @@ XYZ ColorSpaceConverter::to_xyz(const RGB& rgb) const {
 }
 
 std::vector<XYZ> ColorSpaceConverter::to_xyz(std::span<const RGB> rgb) const {
-    std::vector<float> pixels;
-    pixels.reserve(3 * rgb.size());
-    for (const RGB& c : rgb)
-        for (const double v : {c.r, c.g, c.b}) pixels.push_back(static_cast<float>(v));
+    std::vector<float> pixels(3 * rgb.size());
+    for (std::size_t i = 0; i < rgb.size(); ++i) {
+        pixels[3 * i] = static_cast<float>(rgb[i].r);
+        pixels[3 * i + 1] = static_cast<float>(rgb[i].g);
+        pixels[3 * i + 2] = static_cast<float>(rgb[i].b);
+    }
     if (!rgb.empty()) {
         OCIO::PackedImageDesc image(pixels.data(), static_cast<long>(rgb.size()), 1, 3);
         impl_->inverse->apply(image);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -18,14 +19,12 @@ Metrics compute_metrics(const Model& model, const ModelParameters& params, const
     // The model at every sample at once (nodes, then the dense grid: reference.mu()), and the colours of all of them
     // through one OCIO apply; then the sums in the samples' order.
     const std::span<const double> mu = reference.mu();
-    std::array<std::vector<double>, 3> curve;
-    for (int c = 0; c < 3; ++c) {
-        curve[c].resize(mu.size());
-        model.evaluate(std::span<const double>(params[c]), mu, curve[c]);
-    }
+    const std::size_t n = mu.size();
+    const auto curves = std::make_unique_for_overwrite<double[]>(3 * n);  // each written in full by evaluate
+    for (int c = 0; c < 3; ++c) model.evaluate(std::span<const double>(params[c]), mu, std::span<double>(&curves[c * n], n));
     std::vector<RGB> values;
-    values.reserve(mu.size());
-    for (std::size_t i = 0; i < mu.size(); ++i) values.emplace_back(curve[0][i], curve[1][i], curve[2][i]);
+    values.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) values.emplace_back(curves[i], curves[n + i], curves[2 * n + i]);
     const std::vector<Lab> labs = reference.lab(std::span<const RGB>(values));
 
     const bool rel_defined = !reference.rel_undefined();
