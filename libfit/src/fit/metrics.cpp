@@ -35,14 +35,16 @@ Metrics compute_metrics(const Model& model, const ModelParameters& params, const
     };
     std::size_t next = 0;
     const auto visit = [&](const SampledReference::Sample& s) {
-        const RGB& M = values[next];
+        // The channels as plain arrays (RGB's operator[] checks its index on every access).
+        const double M[3] = {values[next].r, values[next].g, values[next].b};
+        const double R[3] = {s.value.r, s.value.g, s.value.b};
         for (int c = 0; c < 3; ++c) {
-            const double d = M[c] - s.value[c];
+            const double d = M[c] - R[c];
             abs_sum[c] += s.weight * d * d;
             m.albedo_err[c] += s.albedo_weight * d;
             keep_max(std::abs(d), s.mu, m.max_abs[c], m.max_abs_mu[c]);
             if (rel_defined) {
-                const double r = d / s.value[c];
+                const double r = d / R[c];
                 rel_sum[c] += s.weight * r * r;
                 keep_max(std::abs(r), s.mu, m.max_rel[c], m.max_rel_mu[c]);
             }
