@@ -2,8 +2,13 @@
 // L*a*b* anchors (white, 18 % grey, neutrals, the ε branch point).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <limits>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <random>
 
 #include "libfit/color/color_difference.hpp"
 
@@ -62,6 +67,175 @@ TEST(Ciede2000, MatchesSharmaWuDalalTestData) {
         const auto& p = kSharma[i];
         EXPECT_NEAR(ciede2000(p.first, p.second), p.delta_e00, 1e-4) << "pair " << i + 1;
     }
+}
+
+
+// ---- the textbook form, the independent check of ciede2000's shorter one ----
+
+// Sharma, Wu and Dalal's eqs. 1–21 step by step with the hue angles in degrees (atan2, two hypots each side, the four
+// cosines of T): what color_difference.cpp computed before it took the hue terms from the (a', b) vectors. In
+// double it is the form the records were written with; in long double (64-bit significand on x86-64) it is the
+// exact value to ~1e-18 wherever the formula is continuous.
+// edge, where given, receives the pair's distance in degrees from the formula's jumps: hues 180° apart (T and the
+// mean hue jump) and the mean hue at 0°/360° (the rotation term jumps).
+template <class T>
+T textbook_ciede2000(const Lab& first, const Lab& second, T* edge = nullptr) {
+    using std::abs, std::atan2, std::cos, std::exp, std::hypot, std::sin, std::sqrt;
+    const T degree = std::numbers::pi_v<T> / 180;
+    const T L1 = first.L, a1 = first.a, b1 = first.b, L2 = second.L, a2 = second.a, b2 = second.b;
+    const auto pow7 = [](T x) { return x * x * x * x * x * x * x; };
+    const auto hue = [&](T b, T a) -> T {
+        if (a == 0 && b == 0) return 0;
+        const T h = atan2(b, a) / degree;
+        return h < 0 ? h + 360 : h;
+    };
+    const T k25_7 = 6103515625.0L;
+    const T C1 = hypot(a1, b1), C2 = hypot(a2, b2);
+    const T C_mean7 = pow7((C1 + C2) / 2);
+    const T G = (1 - sqrt(C_mean7 / (C_mean7 + k25_7))) / 2;
+    const T a1p = (1 + G) * a1, a2p = (1 + G) * a2;
+    const T C1p = hypot(a1p, b1), C2p = hypot(a2p, b2);
+    const T h1p = hue(b1, a1p), h2p = hue(b2, a2p);
+    const T dLp = L2 - L1, dCp = C2p - C1p, C_product = C1p * C2p;
+    T dhp = 0;
+    if (C_product != 0) {
+        dhp = h2p - h1p;
+        if (dhp > 180) dhp -= 360;
+        else if (dhp < -180) dhp += 360;
+    }
+    const T dHp = 2 * sqrt(C_product) * sin(dhp / 2 * degree);
+    const T L_mean = (L1 + L2) / 2, Cp_mean = (C1p + C2p) / 2;
+    T hp_mean = h1p + h2p;
+    if (C_product != 0) {
+        if (abs(h1p - h2p) <= 180) hp_mean = (h1p + h2p) / 2;
+        else if (h1p + h2p < 360) hp_mean = (h1p + h2p + 360) / 2;
+        else hp_mean = (h1p + h2p - 360) / 2;
+    }
+    if (edge) *edge = C_product == 0 ? T(360) : std::min({abs(abs(h1p - h2p) - 180), hp_mean, 360 - hp_mean});
+    const T T_ = 1 - T(0.17) * cos((hp_mean - 30) * degree) + T(0.24) * cos(2 * hp_mean * degree) +
+                 T(0.32) * cos((3 * hp_mean + 6) * degree) - T(0.20) * cos((4 * hp_mean - 63) * degree);
+    const T offset = (hp_mean - 275) / 25;
+    const T d_theta = 30 * exp(-offset * offset);
+    const T Cp_mean7 = pow7(Cp_mean);
+    const T R_C = 2 * sqrt(Cp_mean7 / (Cp_mean7 + k25_7));
+    const T L_offset2 = (L_mean - 50) * (L_mean - 50);
+    const T S_L = 1 + T(0.015) * L_offset2 / sqrt(20 + L_offset2);
+    const T S_C = 1 + T(0.045) * Cp_mean, S_H = 1 + T(0.015) * Cp_mean * T_;
+    const T R_T = -sin(2 * d_theta * degree) * R_C;
+    const T l = dLp / S_L, c = dCp / S_C, h = dHp / S_H;
+    return sqrt(l * l + c * c + h * h + R_T * c * h);
+}
+
+Lab lab_at(double L, double chroma, double hue_degrees) {
+    const double r = hue_degrees * std::numbers::pi / 180.0;
+    return {L, chroma * std::cos(r), chroma * std::sin(r)};
+}
+
+// The rounding error of either double form: the hue angles (360°·2^-53 each) and C1', C2' carry errors of order
+// 2^-53·C', so ΔE00 is known to ~2^-53·(L̄ + C̄') absolute, whatever its size: this absolute allowance (with a factor
+// 8) is added to the relative 1e-12, for differences small next to the colours (the textbook form in double uses up
+// to a quarter of it against the exact value).
+double rounding_allowance(const Lab& x, const Lab& y) {
+    const double chroma = std::hypot(x.a, x.b) + std::hypot(y.a, y.b);
+    return 8.0 * std::numeric_limits<double>::epsilon() * (1.0 + chroma + 0.5 * (x.L + y.L));
+}
+
+TEST(Ciede2000, AgreesWithTheTextbookFormOnADenseRandomSet) {
+    // Pairs as the metrics meet them (a colour and a close one: ΔE from 1e-4 to 10) and far apart, over neutral,
+    // moderate and saturated chromas and every hue; the textbook form in double and the exact value (long double).
+    std::mt19937_64 random(2000);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double worst_relative = 0.0, worst_exact = 0.0, worst_textbook_exact = 0.0;
+    int compared = 0, within_relative = 0;
+    for (int i = 0; i < 400'000; ++i) {
+        const double chroma_scale = std::array{0.5, 5.0, 40.0, 130.0}[i % 4];
+        const Lab x = lab_at(100.0 * unit(random), chroma_scale * unit(random), 360.0 * unit(random));
+        Lab y;
+        if (i % 5 == 4) {
+            y = lab_at(100.0 * unit(random), chroma_scale * unit(random), 360.0 * unit(random));
+        } else {
+            const double step = std::pow(10.0, -4.0 + 5.0 * unit(random));
+            y = {x.L + step * (2.0 * unit(random) - 1.0), x.a + step * (2.0 * unit(random) - 1.0),
+                 x.b + step * (2.0 * unit(random) - 1.0)};
+        }
+        const double got = ciede2000(x, y);
+        const double book = textbook_ciede2000<double>(x, y);
+        long double edge = 0;
+        const long double exact = textbook_ciede2000<long double>(x, y, &edge);
+        // At the formula's own jumps the two forms' roundings can fall on either side: pairs within 1e-7° of them are
+        // the edge-case tests' business (below).
+        if (edge < 1e-7L) continue;
+        const double allowance = rounding_allowance(x, y);
+        const double difference = std::abs(got - book);
+        ASSERT_LE(difference, 1e-12 * book + allowance) << i << ": " << got << " against " << book;
+        worst_relative = std::max(worst_relative, difference / book);
+        within_relative += difference <= 1e-12 * book;
+        ASSERT_LE(std::abs(got - exact), 1e-13L * exact + allowance) << i << ": " << got << " against " << double(exact);
+        worst_exact = std::max(worst_exact, double(std::abs(got - exact) / (1e-12L * exact + allowance)));
+        worst_textbook_exact = std::max(worst_textbook_exact, double(std::abs(book - exact) / (1e-12L * exact + allowance)));
+        ++compared;
+    }
+    std::printf("ciede2000 against the textbook form: %d pairs, %d within 1e-12 relative, largest relative %.3g; "
+                "against the exact value: %.3g (new), %.3g (textbook) of the allowance\n",
+                compared, within_relative, worst_relative, worst_exact, worst_textbook_exact);
+    EXPECT_GT(compared, 399'000);
+}
+
+// Within tolerance of the textbook form in double (relative 1e-12, or the rounding allowance).
+::testing::AssertionResult near_textbook(const Lab& x, const Lab& y) {
+    const double got = ciede2000(x, y), book = textbook_ciede2000<double>(x, y);
+    if (std::abs(got - book) <= 1e-12 * book + rounding_allowance(x, y)) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "(" << x.L << ", " << x.a << ", " << x.b << ") (" << y.L << ", " << y.a
+                                         << ", " << y.b << "): " << got << " against the textbook's " << book;
+}
+
+// At a jump of the formula: one of its one-sided values (those of the pair with y's hue turned by ±1e-9°, exact).
+::testing::AssertionResult one_of_the_sides(const Lab& x, const Lab& y) {
+    const double got = ciede2000(x, y);
+    const double chroma = std::hypot(y.a, y.b), hue = std::atan2(y.b, y.a) * 180.0 / std::numbers::pi;
+    for (const double turn : {-1e-9, 1e-9}) {
+        const long double side = textbook_ciede2000<long double>(x, lab_at(y.L, chroma, hue + turn));
+        if (std::abs(got - side) <= 1e-9L * side) return ::testing::AssertionSuccess();
+    }
+    return ::testing::AssertionFailure() << "(" << x.L << ", " << x.a << ", " << x.b << ") (" << y.L << ", " << y.a
+                                         << ", " << y.b << "): " << got << " is neither side's value";
+}
+
+TEST(Ciede2000, EdgeCasesOfSharmaWuDalal) {
+    // C1'·C2' = 0: Δh' = 0 and the mean hue is the other colour's (h' = 0 for a neutral), also with both neutral.
+    for (double hue = 0.0; hue < 360.0; hue += 7.5)
+        for (double chroma : {1e-6, 0.01, 2.0, 30.0, 120.0}) {
+            EXPECT_TRUE(near_textbook({50.0, 0.0, 0.0}, lab_at(55.0, chroma, hue)));
+            EXPECT_TRUE(near_textbook(lab_at(20.0, chroma, hue), {21.0, 0.0, 0.0}));
+        }
+    EXPECT_TRUE(near_textbook({50.0, 0.0, 0.0}, {60.0, 0.0, 0.0}));
+    EXPECT_TRUE(near_textbook({0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}));
+    // Hues exactly opposite ((a, b) and −s·(a, b), s a power of 2: a2' = −s·a1' exactly): |Δh'| = 180°, where T and the
+    // mean hue jump; the value is one of the two sides'. Close to it the formula is continuous again.
+    for (double hue = 0.0; hue < 360.0; hue += 11.0)
+        for (double s : {0.5, 1.0, 4.0}) {
+            const Lab x = lab_at(40.0, 20.0, hue);
+            EXPECT_TRUE(one_of_the_sides(x, {45.0, -s * x.a, -s * x.b}));
+            for (double off : {-1e-5, 1e-5, -0.5, 0.5}) EXPECT_TRUE(near_textbook(x, lab_at(45.0, 20.0 * s, hue + 180.0 + off)));
+        }
+    // The mean hue at the 0°/360° seam: hues mirrored about 0° (b2 = −b1 exactly) have their mean at 0° itself,
+    // where the rotation term jumps (exp(−(85/25)²) at 360°, nothing at 0°); around it the textbook's own values.
+    for (double half : {0.5, 5.0, 30.0, 80.0}) {
+        const Lab x = lab_at(60.0, 25.0, half);
+        EXPECT_TRUE(one_of_the_sides(x, {62.0, x.a, -x.b}));
+        for (double off : {-1e-4, 1e-4, -0.1, 0.1}) EXPECT_TRUE(near_textbook(x, lab_at(62.0, 25.0, -half + off)));
+    }
+    // |Δh'| = 90° exactly (dot = 0: where the mean hue is taken from the chord instead of the sum) and around it.
+    for (double hue = 0.0; hue < 360.0; hue += 15.0)
+        for (double off : {0.0, -1e-9, 1e-9, -1e-3, 1e-3}) {
+            EXPECT_TRUE(near_textbook(lab_at(50.0, 10.0, hue), lab_at(52.0, 12.0, hue + 90.0 + off)));
+            EXPECT_TRUE(near_textbook(lab_at(50.0, 10.0, hue), lab_at(52.0, 12.0, hue - 90.0 + off)));
+        }
+    EXPECT_TRUE(near_textbook({50.0, 10.0, 0.0}, {50.0, 0.0, 12.0}));
+    // Where the rotation term is left out (mean hue up to 116.9°) and just beyond, and where it is largest (275°).
+    for (double mean = 100.0; mean <= 130.0; mean += 0.25)
+        for (double half : {0.01, 3.0}) EXPECT_TRUE(near_textbook(lab_at(50.0, 30.0, mean - half), lab_at(50.0, 33.0, mean + half)));
+    for (double half : {0.01, 3.0, 40.0}) EXPECT_TRUE(near_textbook(lab_at(50.0, 30.0, 275.0 - half), lab_at(55.0, 33.0, 275.0 + half)));
 }
 
 TEST(Ciede2000, IsSymmetricOnTheTestData) {

@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <random>
+#include <vector>
 
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
@@ -81,6 +83,35 @@ TEST(ColorSpace, PerfectReflectorUnderD65IsWhiteInEverySpace) {
 TEST(ColorSpace, AliasesAndRolesResolve) {
     EXPECT_EQ(ColorSpaceConverter::create(kShipped, "lin_rec2020").space(), "Linear Rec.2020");
     EXPECT_EQ(ColorSpaceConverter::create(kShipped, "compositing_linear").space(), "ACEScg");
+}
+
+TEST(ColorSpace, ManyColoursAtOnceAreTheValuesOfOneAtATime) {
+    // to_xyz over a span applies OCIO once to a packed image (OCIO works through it in blocks of pixels); the result
+    // must be what one applyRGB per colour gives, bit for bit, whatever the count (blocks and their remainders).
+    std::mt19937_64 random(19);
+    std::uniform_real_distribution<double> in_gamut(0.0, 1.0), wide(-0.5, 2.5);
+    std::uniform_int_distribution<int> exponent(-30, 4);
+    std::vector<RGB> colours;
+    for (int i = 0; i < 5000; ++i) {
+        if (i % 3 == 0) colours.emplace_back(wide(random), wide(random), wide(random));
+        else if (i % 3 == 1) colours.emplace_back(in_gamut(random), in_gamut(random), in_gamut(random));
+        else colours.emplace_back(std::ldexp(in_gamut(random), exponent(random)), std::ldexp(in_gamut(random), exponent(random)),
+                                  std::ldexp(in_gamut(random), exponent(random)));
+    }
+    for (const char* space : {"Linear Rec.709 (sRGB)", "ACEScg", "ACES2065-1", "Linear P3-D65", "Linear Rec.2020"}) {
+        const auto convert = ColorSpaceConverter::create(kShipped, space);
+        for (const std::size_t count : {std::size_t{0}, std::size_t{1}, std::size_t{3}, std::size_t{127}, std::size_t{1153},
+                                        colours.size()}) {
+            const std::vector<XYZ> many = convert.to_xyz(std::span<const RGB>(colours.data(), count));
+            ASSERT_EQ(many.size(), count);
+            for (std::size_t i = 0; i < count; ++i) {
+                const XYZ one = convert.to_xyz(colours[i]);
+                ASSERT_TRUE(many[i] == one) << space << " count " << count << " colour " << i << ": " << many[i].X << " "
+                                            << many[i].Y << " " << many[i].Z << " against " << one.X << " " << one.Y << " "
+                                            << one.Z;
+            }
+        }
+    }
 }
 
 std::filesystem::path write_temp_config(const std::string& name, const std::string& text) {

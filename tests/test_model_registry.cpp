@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,19 @@ TYPED_TEST(EveryModel, TheRuntimeModelIsTheStruct) {
     EXPECT_EQ(model.is_f82_tint_curve(), F82TintCurve<M>);
     for (const ChannelParameters& p : sample_parameters<M>())
         for (double mu : {0.0, 0.1, 0.5, 0.9, 1.0}) EXPECT_EQ(model.evaluate(std::span<const double>(p), mu), M::evaluate(p.data(), mu)) << mu;
+    // Over an array of μ (what the metrics evaluate): the values one at a time, bit for bit.
+    std::vector<double> mu{-0.1, 0.0, 1e-9, 1.0 / 3.0, 0.999, 1.0, 1.5};
+    for (int i = 0; i <= 1024; ++i) mu.push_back(i / 1024.0);
+    for (const ChannelParameters& p : sample_parameters<M>()) {
+        std::vector<double> out(mu.size(), -7.0);
+        model.evaluate(std::span<const double>(p), mu, out);
+        for (std::size_t i = 0; i < mu.size(); ++i) {
+            const double one = M::evaluate(p.data(), mu[i]);
+            EXPECT_TRUE(out[i] == one || (std::isnan(out[i]) && std::isnan(one))) << "mu=" << mu[i];
+        }
+    }
+    std::vector<double> short_out(2);
+    EXPECT_THROW(model.evaluate(std::span<const double>(sample_parameters<M>()[0]), mu, short_out), std::logic_error);
     // Its GLSL defines the function the model names.
     EXPECT_NE(model.glsl_source().find("vec3 " + std::string(M::kGlslFunction) + "("), std::string::npos);
 }

@@ -109,6 +109,23 @@ XYZ ColorSpaceConverter::to_xyz(const RGB& rgb) const {
     return {pixel[0], pixel[1], pixel[2]};
 }
 
+std::vector<XYZ> ColorSpaceConverter::to_xyz(std::span<const RGB> rgb) const {
+    std::vector<float> pixels(3 * rgb.size());
+    for (std::size_t i = 0; i < rgb.size(); ++i) {
+        pixels[3 * i] = static_cast<float>(rgb[i].r);
+        pixels[3 * i + 1] = static_cast<float>(rgb[i].g);
+        pixels[3 * i + 2] = static_cast<float>(rgb[i].b);
+    }
+    if (!rgb.empty()) {
+        OCIO::PackedImageDesc image(pixels.data(), static_cast<long>(rgb.size()), 1, 3);
+        impl_->inverse->apply(image);
+    }
+    std::vector<XYZ> xyz;
+    xyz.reserve(rgb.size());
+    for (std::size_t i = 0; i < rgb.size(); ++i) xyz.emplace_back(pixels[3 * i], pixels[3 * i + 1], pixels[3 * i + 2]);
+    return xyz;
+}
+
 std::vector<std::string> ColorSpaceConverter::available_spaces() const {
     std::vector<std::string> names;
     const auto& config = impl_->config;

@@ -22,6 +22,12 @@ public:
     std::span<const Parameter> parameters() const override { return M::kParameters; }
     double evaluate(std::span<const double> p, double mu) const override { return M::evaluate(p.data(), mu); }
     float evaluate(std::span<const float> p, float mu) const override { return M::evaluate(p.data(), mu); }
+    void evaluate(std::span<const double> p, std::span<const double> mu, std::span<double> out) const override {
+        if (out.size() != mu.size())
+            throw std::logic_error(std::string(M::kId) + ": " + std::to_string(mu.size()) + " values of mu, room for " +
+                                   std::to_string(out.size()));
+        for (std::size_t i = 0; i < mu.size(); ++i) out[i] = M::evaluate(p.data(), mu[i]);
+    }
     std::vector<ClosedForm> closed_forms(const ClosedFormInput& input) const override {
         return M::closed_forms(input);
     }

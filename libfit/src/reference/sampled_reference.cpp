@@ -35,15 +35,15 @@ SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSetti
     }
     for (int i = 0; i <= kDenseIntervals; ++i) dense_.push_back(Sample{double(i) / kDenseIntervals, 0.0, 0.0, {}, {}});
     // Every μ in one batch (the curve evaluates them together, with the same values as one at a time).
-    std::vector<double> mu;
     for (const auto* samples : {&nodes_, &dense_})
-        for (const Sample& s : *samples) mu.push_back(s.mu);
-    const std::vector<RGB> values = curve(std::span<const double>(mu));
+        for (const Sample& s : *samples) mu_.push_back(s.mu);
+    const std::vector<RGB> values = curve(std::span<const double>(mu_));
+    const std::vector<Lab> labs = lab(values);
     std::size_t next = 0;
     for (auto* samples : {&nodes_, &dense_})
         for (Sample& s : *samples) {
-            s.value = values[next++];
-            s.lab = lab(s.value);
+            s.value = values[next];
+            s.lab = labs[next++];
         }
 
     for (const auto* samples : {&nodes_, &dense_})
@@ -60,6 +60,16 @@ SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSetti
 Lab SampledReference::lab(const RGB& balanced) const {
     const RGB raw{balanced.r * raw_white_.r, balanced.g * raw_white_.g, balanced.b * raw_white_.b};
     return xyz_to_lab(converter_.to_xyz(raw), white_);
+}
+
+std::vector<Lab> SampledReference::lab(std::span<const RGB> balanced) const {
+    std::vector<RGB> raw;
+    raw.reserve(balanced.size());
+    for (const RGB& c : balanced) raw.emplace_back(c.r * raw_white_.r, c.g * raw_white_.g, c.b * raw_white_.b);
+    std::vector<Lab> labs;
+    labs.reserve(balanced.size());
+    for (const XYZ& xyz : converter_.to_xyz(std::span<const RGB>(raw))) labs.push_back(xyz_to_lab(xyz, white_));
+    return labs;
 }
 
 ChannelTarget SampledReference::target(int channel) const {

@@ -181,11 +181,8 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
         mu.push_back(mu_of_degrees(theta.back()));
     }
     std::vector<RGB> exact;
-    std::vector<Lab> exact_lab;
-    for (double m : mu) {
-        exact.push_back(curve(m));
-        exact_lab.push_back(reference.lab(exact.back()));
-    }
+    for (double m : mu) exact.push_back(curve(m));
+    const std::vector<Lab> exact_lab = reference.lab(std::span<const RGB>(exact));
     Json mu_json = Json::array();
     for (double m : mu) mu_json.push_back(plotted(m));
 
@@ -195,11 +192,10 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
     for (const ModelResult& r : fit.models) {
         const Model& model = *r.model;
         std::vector<RGB> values;
+        for (double m : mu) values.push_back(model.evaluate(r.fit.value.params, m));
+        const std::vector<Lab> labs = reference.lab(std::span<const RGB>(values));
         Json de = Json::array();
-        for (std::size_t i = 0; i < mu.size(); ++i) {
-            values.push_back(model.evaluate(r.fit.value.params, mu[i]));
-            de.push_back(plotted(ciede2000(exact_lab[i], reference.lab(values.back()))));
-        }
+        for (std::size_t i = 0; i < mu.size(); ++i) de.push_back(plotted(ciede2000(exact_lab[i], labs[i])));
         const RGB m0 = model.evaluate(r.fit.value.params, 1.0), m82 = model.evaluate(r.fit.value.params, kMuF82);
         Json j = model_record(r);
         j["worst_rel_rms"] = worst_channel(r.fit.value.metrics.rel_rms);

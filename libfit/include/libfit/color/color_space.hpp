@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ public:
     RGB operator()(const XYZ& xyz) const;
     // The inverse, RGB of the target space → XYZ (for colour differences of model colours).
     XYZ to_xyz(const RGB& rgb) const;
+    // The same for many colours in one OCIO apply over a packed image (how OCIO converts images): the values of to_xyz
+    // one at a time, bit for bit (OCIO runs the same per-pixel operations either way; ColorSpace tests check it).
+    std::vector<XYZ> to_xyz(std::span<const RGB> rgb) const;
 
     const std::string& space() const { return space_; }          // resolved colour space name
     const std::string& xyz_space() const { return xyz_space_; }  // the colour space XYZ is read from

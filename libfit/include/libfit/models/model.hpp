@@ -136,6 +136,9 @@ public:
 
     virtual double evaluate(std::span<const double> params, double mu) const = 0;
     virtual float evaluate(std::span<const float> params, float mu) const = 0;
+    // The curve at every μ of mu into out (out[i] = evaluate(params, mu[i]), bit for bit): the model's own definition
+    // in one loop, one virtual call for all of them. Requires out.size() == mu.size().
+    virtual void evaluate(std::span<const double> params, std::span<const double> mu, std::span<double> out) const = 0;
     RGB evaluate(const ModelParameters& params, double mu) const;
 
     // Every closed form of the model (defined or not), in a fixed order.

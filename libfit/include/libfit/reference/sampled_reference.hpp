@@ -47,11 +47,15 @@ public:
 
     std::span<const Sample> nodes() const { return nodes_; }
     std::span<const Sample> dense() const { return dense_; }
+    // Every sample's μ: the nodes', then the dense grid's (one array for curves evaluated over all of them at once).
+    std::span<const double> mu() const { return mu_; }
     const ErrorSettings& settings() const { return settings_; }
 
     // L*a*b* of a white-balanced RGB of the curve's space (the perfect reflector (1, 1, 1) has L* = 100), through
     // the OCIO inverse of the curve's transform.
     Lab lab(const RGB& balanced) const;
+    // The same for many colours, through one OCIO apply: lab(balanced[i]) for each, bit for bit.
+    std::vector<Lab> lab(std::span<const RGB> balanced) const;
 
     // Why the relative metric is undefined (a channel of R_c is ≤ 0 somewhere on [0, 1]), if it is.
     const std::optional<std::string>& rel_undefined() const { return rel_undefined_; }
@@ -66,6 +70,7 @@ private:
     ErrorSettings settings_;
     std::vector<Sample> nodes_;
     std::vector<Sample> dense_;
+    std::vector<double> mu_;
     std::optional<std::string> rel_undefined_;
 };
 
