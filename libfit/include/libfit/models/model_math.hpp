@@ -38,6 +38,26 @@ T sqrt_or_zero(const T& x) {
     }
 }
 
+// The smallest normal number of float, or of double for double and Jets.
+template <class T>
+T smallest_normal() {
+    if constexpr (std::is_same_v<T, float>)
+        return std::numeric_limits<float>::min();
+    else
+        return T(std::numeric_limits<double>::min());
+}
+
+// √x of an x that is ≥ 0 by construction (a sum of squares): the plain root for float and double (nothing to
+// select), sqrt_or_zero for Jets (so that x = 0 has a zero derivative, not 1/(2√0)).
+template <class T>
+T nonnegative_sqrt(const T& x) {
+    using std::sqrt;
+    if constexpr (std::is_floating_point_v<T>)
+        return sqrt(x);
+    else
+        return sqrt_or_zero(x);
+}
+
 // Exact unpolarised Fresnel reflectance of η = n + i k from vacuum, in the thesis's real form (eq. 1.5–1.6)
 // rearranged so that nothing is divided by μ and nothing cancels for large k: t = n² − k² − s², r = sqrt(t² + 4n²k²) =
 // |η² − s²|, a = Re sqrt(η² − s²), s² = 1 − μ²,
@@ -47,23 +67,28 @@ T sqrt_or_zero(const T& x) {
 // t < 0, both ratios are multiplied through by den, and F_s + F_p has the common factor F_s, so one division is left:
 //   N_s = den (r + μ²) − 2 num μ,  D_s = den (r + μ²) + 2 num μ,  D_p = den (μ²r + s⁴) + 2 num s² μ,
 //   F = N_s · den (μ²r + s⁴) / (D_s D_p)   (= ½ N_s (D_p + N_p) / (D_s D_p), N_p = D_p − 4 num s² μ).
-// Every factor is ≥ 0 and the products grow as k⁶ (t < 0: den ≈ k, r ≈ k²), as n⁴ where t ≥ 0: float holds them to
-// k ≈ 2·10⁶ (the models' bounds stop at 10⁴), double far beyond. Where t < 0, den = p ≥ sqrt(|t|) > 0 (so no guard);
-// k = 0 with t < 0 (a dielectric's total reflection) has num = 0 and gives exactly 1; η = 1 gives N_s = 0 to rounding.
+// t = (n² − k² − 1) + μ² (not n² − k² − s²: η = 1 gives t = μ² exactly, so N_s = 0 and F = 0 at every μ). Every
+// factor is ≥ 0 and the products grow as k⁶ (t < 0: den ≈ k, r ≈ k²), as n⁴ where t ≥ 0: float holds them to
+// k ≈ 2·10⁶ (the models' bounds stop at 10⁴), double far beyond. Where t < 0, den = p ≥ sqrt(|t|) > 0. k = 0 with
+// t < 0 (a dielectric's total reflection) has num = 0 and gives exactly 1. At μ = 0, N_s = D_s and den Q = D_p, so
+// F = 1 exactly (its derivatives exactly 0), except η = 1, where D_s D_p = 0: the denominator is held at the smallest
+// normal number, which gives F = 0 there (no interface), without a select on μ.
 // Takes k² (r uses 4n²k²) and nk (only where t < 0), so that Gulbrandsen's k² = 0 keeps its derivative.
 //
 // Branch-free: both sides of every case are computed and selected (blends for float and double, so that an array
 // loop over it vectorises when built without errno, docs/fitting.md), the same values and Jet derivatives as taking
 // one side. The GLSL function, line for line (conductor_rgb.glsl, metalfit_conductor_fresnel; the C++ export is that
-// GLSL): s2, t, r, p; num and den selected on t ≥ 0; X = r + μ², Q = μ²r + s⁴; N_s, D_s, D_p, F and the grazing select.
+// GLSL): mu2, s2, t, r, p; num and den selected on t ≥ 0; X = r + μ², Q = μ²r + s⁴; N_s, D_s, D_p, B and F (the
+// GLSL writes |t| as max(t, −t) and holds B at 1e-30, a float that no GPU flushes to zero).
 template <class T>
 T conductor_fresnel(const T& n, const T& k2, const T& nk, const T& mu) {
     using std::abs;
+    const T tiny = smallest_normal<T>();
     const T mu2 = mu * mu;
     const T s2 = T(1) - mu2;
     const T t = n * n - k2 - T(1) + mu2;
-    const T r = sqrt_or_zero(t * t + T(4) * n * n * k2);
-    const T p = sqrt_or_zero(T(0.5) * (r + abs(t)));
+    const T r = nonnegative_sqrt(t * t + T(4) * n * n * k2);
+    const T p = nonnegative_sqrt(T(0.5) * (r + abs(t)));
     const bool t_positive = t >= T(0);
     const T num = t_positive ? p : nk;
     const T den = t_positive ? T(1) : p;
@@ -73,16 +98,15 @@ T conductor_fresnel(const T& n, const T& k2, const T& nk, const T& mu) {
     const T Ns = den * X - two_num_mu;
     const T Ds = den * X + two_num_mu;
     const T Dp = den * Q + two_num_mu * s2;
-    const T F = Ns * (den * Q) / (Ds * Dp);
-    const T grazing = r > T(0) ? T(1) : T(0);  // F(0) = 1; η = 1 has no interface (there F is 0/0 and not taken)
-    return mu > T(0) ? F : grazing;
+    const T B = Ds * Dp;
+    return Ns * (den * Q) / (B > tiny ? B : tiny);
 }
 
 // conductor_fresnel's value and its derivatives in its three inputs n, k² and nk, taken as independent (each model
 // applies its own chain rule: conductor-rgb's k² = k·k and nk, gulbrandsen's map of (r, g)). In closed form, not
 // the Jets' operations: the derivatives agree with autodiff's to rounding (tests/test_conductor_gradient.cpp), at a
-// fraction of the cost. The value is conductor_fresnel's, bit for bit. Where a square root's argument is ≤ 0 its
-// derivative is 0, as sqrt_or_zero gives Jets; at μ ≤ 0 every derivative is 0 (F is the constant grazing value).
+// fraction of the cost. The value is conductor_fresnel's, bit for bit. Where a square root's argument is 0 its
+// derivative is 0, as sqrt_or_zero gives Jets; at μ = 0 every derivative is 0 (F = 1 there for every η ≠ 1).
 struct ConductorFresnelGradient {
     double value, d_n, d_k2, d_nk;
 };
@@ -91,8 +115,8 @@ inline ConductorFresnelGradient conductor_fresnel_gradient(double n, double k2, 
     const double mu2 = mu * mu;
     const double s2 = 1.0 - mu2;
     const double t = n * n - k2 - 1.0 + mu2;
-    const double r = sqrt_or_zero(t * t + 4.0 * n * n * k2);
-    const double p = sqrt_or_zero(0.5 * (r + std::abs(t)));
+    const double r = nonnegative_sqrt(t * t + 4.0 * n * n * k2);
+    const double p = nonnegative_sqrt(0.5 * (r + std::abs(t)));
     const bool t_positive = t >= 0.0;
     const double num = t_positive ? p : nk;
     const double den = t_positive ? 1.0 : p;
@@ -104,8 +128,8 @@ inline ConductorFresnelGradient conductor_fresnel_gradient(double n, double k2, 
     const double Dp = den * Q + two_num_mu * s2;
     const double w = den * Q;
     const double B = Ds * Dp;
-    const double F = Ns * w / B;
-    if (!(mu > 0.0)) return {r > 0.0 ? 1.0 : 0.0, 0.0, 0.0, 0.0};
+    const double F = Ns * w / (B > smallest_normal<double>() ? B : smallest_normal<double>());
+    if (!(mu > 0.0)) return {F, 0.0, 0.0, 0.0};
     // With u = den X, v = 2 num μ (N_s = u − v, D_s = u + v), w = den Q, z = 2 num s² μ (D_p = w + z), F = N_s w / (D_s D_p)
     // and ln F = ln(N_s / D_s) + ln w − ln D_p give dF = [2 w D_p (v du − u dv) + N_s D_s (z dw − w dz)] / (D_s D_p)²:
     // in r, num and den each a sum of terms of one sign, so nothing cancels (not even as μ → 0, where the Jets'
