@@ -9,6 +9,18 @@
 
 namespace metalfit::bench {
 
+namespace {
+
+// One channel over an array of μ, with an AVX2 clone as the model kernels have (model_kernels.cpp).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void evaluate_channel(SquaredIndex<float> e, const float* mu, float* out, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) out[i] = fresnel_real(mu[i], e.re, e.re_minus_1, e.im, e.norm2);
+}
+
+}  // namespace
+
 EvalKernel exact_real_kernel(const PreparedMaterial& material) {
     const ModelParameters& nk = material.params(models::ConductorRgb::kId);
     std::array<SquaredIndex<float>, 3> eta2;
@@ -28,11 +40,7 @@ EvalKernel exact_real_kernel(const PreparedMaterial& material) {
     k.array = [eta2](std::span<const float> mu, std::span<float> out) {
         const std::size_t n = mu.size();
         const float* in = mu.data();
-        for (int c = 0; c < 3; ++c) {
-            const SquaredIndex<float> e = eta2[c];
-            float* o = out.data() + c * n;
-            for (std::size_t i = 0; i < n; ++i) o[i] = fresnel_real(in[i], e.re, e.re_minus_1, e.im, e.norm2);
-        }
+        for (int c = 0; c < 3; ++c) evaluate_channel(eta2[c], in, out.data() + c * n, n);
     };
     return k;
 }

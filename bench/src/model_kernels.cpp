@@ -25,6 +25,19 @@ FloatParams to_float(const ModelParameters& p) {
     return f;
 }
 
+// One channel of M over an array of μ: the loop the compiler vectorises (with -fno-math-errno -fno-trapping-math,
+// bench/CMakeLists.txt), M's per-channel constants hoisted out of it. On x86-64 GCC also builds an AVX2 clone, chosen
+// at load time (ifunc), for every model alike so that the ratios compare like with like; both clones use the same
+// IEEE operations (no FMA), so the values do not depend on the machine (as the reference curve's lanes,
+// libfit/src/reference/reference_curve.cpp). The parameters by value: a local copy no store can alias.
+template <class M>
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void evaluate_channel(std::array<float, kMaxParameters> parameters, const float* mu, float* out, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) out[i] = M::evaluate(parameters.data(), mu[i]);
+}
+
 template <class M>
 EvalKernel model_kernel(const PreparedMaterial& material) {
     static_assert(M::kParameters.size() <= kMaxParameters);
@@ -46,11 +59,7 @@ EvalKernel model_kernel(const PreparedMaterial& material) {
     k.array = [p](std::span<const float> mu, std::span<float> out) {
         const std::size_t n = mu.size();
         const float* in = mu.data();
-        for (int c = 0; c < 3; ++c) {
-            const std::array<float, kMaxParameters> q = p[c];
-            float* o = out.data() + c * n;
-            for (std::size_t i = 0; i < n; ++i) o[i] = M::evaluate(q.data(), in[i]);
-        }
+        for (int c = 0; c < 3; ++c) evaluate_channel<M>(p[c], in, out.data() + c * n, n);
     };
     return k;
 }

@@ -47,33 +47,109 @@ T smallest_normal() {
         return T(std::numeric_limits<double>::min());
 }
 
+// √x of an x that is ≥ 0 by construction (a sum of squares): the plain root for float and double (nothing to
+// select), sqrt_or_zero for Jets (so that x = 0 has a zero derivative, not 1/(2√0)).
+template <class T>
+T nonnegative_sqrt(const T& x) {
+    using std::sqrt;
+    if constexpr (std::is_floating_point_v<T>)
+        return sqrt(x);
+    else
+        return sqrt_or_zero(x);
+}
+
 // Exact unpolarised Fresnel reflectance of η = n + i k from vacuum, in the thesis's real form (eq. 1.5–1.6)
 // rearranged so that nothing is divided by μ and nothing cancels for large k: t = n² − k² − s², r = sqrt(t² + 4n²k²) =
-// |η² − s²|, a = Re sqrt(η² − s²), s² = 1 − μ². p = sqrt((r + |t|)/2) is a where t ≥ 0 and b = Im sqrt(η² − s²) where
-// t < 0, and there a = nk / b (ab = nk), not sqrt((r + t)/2), which cancels for large k.
+// |η² − s²|, a = Re sqrt(η² − s²), s² = 1 − μ²,
+//   F_s = (r − 2aμ + μ²) / (r + 2aμ + μ²),  F_p = F_s (μ²r − 2as²μ + s⁴) / (μ²r + 2as²μ + s⁴),  F = (F_s + F_p)/2.
+// p = sqrt((r + |t|)/2) is a where t ≥ 0 and b = Im sqrt(η² − s²) where t < 0, and there a = nk / b (ab = nk), not
+// sqrt((r + t)/2), which cancels for large k. With a = num/den, (num, den) = (p, 1) where t ≥ 0 and (nk, p) where
+// t < 0, both ratios are multiplied through by den, and F_s + F_p has the common factor F_s, so one division is left:
+//   N_s = den (r + μ²) − 2 num μ,  D_s = den (r + μ²) + 2 num μ,  D_p = den (μ²r + s⁴) + 2 num s² μ,
+//   F = N_s · den (μ²r + s⁴) / (D_s D_p)   (= ½ N_s (D_p + N_p) / (D_s D_p), N_p = D_p − 4 num s² μ).
+// t = (n² − k² − 1) + μ² (not n² − k² − s²: η = 1 gives t = μ² exactly, so N_s = 0 and F = 0 at every μ). Every
+// factor is ≥ 0 and the products grow as k⁶ (t < 0: den ≈ k, r ≈ k²), as n⁴ where t ≥ 0: float holds them to
+// k ≈ 2·10⁶ (the models' bounds stop at 10⁴), double far beyond. Where t < 0, den = p ≥ sqrt(|t|) > 0. k = 0 with
+// t < 0 (a dielectric's total reflection) has num = 0 and gives exactly 1. At μ = 0, N_s = D_s and den Q = D_p, so
+// F = 1 exactly (its derivatives exactly 0), except η = 1, where D_s D_p = 0: the denominator is held at the smallest
+// normal number, which gives F = 0 there (no interface), without a select on μ.
 // Takes k² (r uses 4n²k²) and nk (only where t < 0), so that Gulbrandsen's k² = 0 keeps its derivative.
 //
 // Branch-free: both sides of every case are computed and selected (blends for float and double, so that an array
 // loop over it vectorises when built without errno, docs/fitting.md), the same values and Jet derivatives as taking
 // one side. The GLSL function, line for line (conductor_rgb.glsl, metalfit_conductor_fresnel; the C++ export is that
-// GLSL): s2, t, r; p is its a_pos where t ≥ 0 and its b_neg where t < 0; a is its mix(nk / max(b_neg, 1e-30), a_pos,
-// t ≥ 0) (the guard is never reached where that side is taken: b ≥ sqrt(|t|)); Fs, Fp, F and the grazing select.
+// GLSL): mu2, s2, t, r, p; num and den selected on t ≥ 0; X = r + μ², Q = μ²r + s⁴; N_s, D_s, D_p, B and F (the
+// GLSL writes |t| as max(t, −t) and holds B at 1e-30, a float that no GPU flushes to zero).
 template <class T>
 T conductor_fresnel(const T& n, const T& k2, const T& nk, const T& mu) {
     using std::abs;
     const T tiny = smallest_normal<T>();
-    const T s2 = T(1) - mu * mu;
-    const T t = n * n - k2 - s2;
-    const T r = sqrt_or_zero(t * t + T(4) * n * n * k2);
-    const T p = sqrt_or_zero(T(0.5) * (r + abs(t)));
-    const T a_of_b = nk / (p > tiny ? p : tiny);  // computed on both sides: a select, not a branch around a division
-    const T a = t >= T(0) ? p : a_of_b;
     const T mu2 = mu * mu;
-    const T Fs = (r - T(2) * a * mu + mu2) / (r + T(2) * a * mu + mu2);
-    const T Fp = Fs * (mu2 * r - T(2) * a * s2 * mu + s2 * s2) / (mu2 * r + T(2) * a * s2 * mu + s2 * s2);
-    const T F = T(0.5) * (Fs + Fp);
-    const T grazing = r > T(0) ? T(1) : T(0);  // F(0) = 1; η = 1 has no interface (there F is 0/0 and not taken)
-    return mu > T(0) ? F : grazing;
+    const T s2 = T(1) - mu2;
+    const T t = n * n - k2 - T(1) + mu2;
+    const T r = nonnegative_sqrt(t * t + T(4) * n * n * k2);
+    const T p = nonnegative_sqrt(T(0.5) * (r + abs(t)));
+    const bool t_positive = t >= T(0);
+    const T num = t_positive ? p : nk;
+    const T den = t_positive ? T(1) : p;
+    const T X = r + mu2;
+    const T Q = mu2 * r + s2 * s2;
+    const T two_num_mu = T(2) * num * mu;
+    const T Ns = den * X - two_num_mu;
+    const T Ds = den * X + two_num_mu;
+    const T Dp = den * Q + two_num_mu * s2;
+    const T B = Ds * Dp;
+    return Ns * (den * Q) / (B > tiny ? B : tiny);
+}
+
+// conductor_fresnel's value and its derivatives in its three inputs n, k² and nk, taken as independent (each model
+// applies its own chain rule: conductor-rgb's k² = k·k and nk, gulbrandsen's map of (r, g)). In closed form, not
+// the Jets' operations: the derivatives agree with autodiff's to rounding (tests/test_conductor_gradient.cpp), at a
+// fraction of the cost. The value is conductor_fresnel's, bit for bit. Where a square root's argument is 0 its
+// derivative is 0, as sqrt_or_zero gives Jets; at μ = 0 every derivative is 0 (F = 1 there for every η ≠ 1).
+struct ConductorFresnelGradient {
+    double value, d_n, d_k2, d_nk;
+};
+
+inline ConductorFresnelGradient conductor_fresnel_gradient(double n, double k2, double nk, double mu) {
+    const double mu2 = mu * mu;
+    const double s2 = 1.0 - mu2;
+    const double t = n * n - k2 - 1.0 + mu2;
+    const double r = nonnegative_sqrt(t * t + 4.0 * n * n * k2);
+    const double p = nonnegative_sqrt(0.5 * (r + std::abs(t)));
+    const bool t_positive = t >= 0.0;
+    const double num = t_positive ? p : nk;
+    const double den = t_positive ? 1.0 : p;
+    const double X = r + mu2;
+    const double Q = mu2 * r + s2 * s2;
+    const double two_num_mu = 2.0 * num * mu;
+    const double Ns = den * X - two_num_mu;
+    const double Ds = den * X + two_num_mu;
+    const double Dp = den * Q + two_num_mu * s2;
+    const double w = den * Q;
+    const double B = Ds * Dp;
+    const double F = Ns * w / (B > smallest_normal<double>() ? B : smallest_normal<double>());
+    if (!(mu > 0.0)) return {F, 0.0, 0.0, 0.0};
+    // With u = den X, v = 2 num μ (N_s = u − v, D_s = u + v), w = den Q, z = 2 num s² μ (D_p = w + z), F = N_s w / (D_s D_p)
+    // and ln F = ln(N_s / D_s) + ln w − ln D_p give dF = [2 w D_p (v du − u dv) + N_s D_s (z dw − w dz)] / (D_s D_p)²:
+    // in r, num and den each a sum of terms of one sign, so nothing cancels (not even as μ → 0, where the Jets'
+    // (dA − F dB) / B loses digits). The parts F_r, F_num, F_den are taken with num and den fixed.
+    const double v = two_num_mu, z = two_num_mu * s2, u = den * X;
+    const double inv_B2 = 1.0 / (B * B);
+    const double w_Dp = w * Dp, Ns_Ds = Ns * Ds;
+    const double F_r = den * (2.0 * w_Dp * v + Ns_Ds * z * mu2) * inv_B2;
+    const double F_num = -2.0 * mu * w * (2.0 * Dp * u + s2 * Ns_Ds) * inv_B2;
+    const double F_den = (2.0 * w_Dp * v * X + Ns_Ds * z * Q) * inv_B2;
+    // r² = t² + 4n²k², t = n² − k² − s²: dr/dn = 2n (t + 2k²) / r, dr/dk² = (2n² − t) / r.
+    const double inv_r = r > 0.0 ? 1.0 / r : 0.0;
+    const double r_n = 2.0 * n * (t + 2.0 * k2) * inv_r, r_k2 = (2.0 * n * n - t) * inv_r;
+    // p² = (r + |t|) / 2: dp = (dr + sign(t) dt) / 4p, dt/dn = 2n, dt/dk² = −1.
+    const double sign_t = std::copysign(1.0, t);  // abs's derivative as the Jets take it
+    const double inv_4p = p > 0.0 ? 0.25 / p : 0.0;
+    const double p_n = (r_n + sign_t * 2.0 * n) * inv_4p, p_k2 = (r_k2 - sign_t) * inv_4p;
+    // t ≥ 0: num = p, den = 1; t < 0: num = nk, den = p.
+    const double F_p = t_positive ? F_num : F_den;
+    return {F, F_r * r_n + F_p * p_n, F_r * r_k2 + F_p * p_k2, t_positive ? 0.0 : F_num};
 }
 
 // One node of a fit's target as the analytic gradients take it (evaluate_with_gradient): μ clamped, m = 1 − μ and

@@ -80,7 +80,9 @@ concept PinnableF0 = requires(const double* p, double F0) {
 
 // Whether M gives its curve's gradient in the parameters in closed form (optional): the fits then use it as the
 // Jacobian instead of autodiff. It must return what Ceres's Jets compute, value and derivatives, operation for
-// operation (EveryModel.AnalyticGradientIsAutodiffs checks equality): the fits then take the same path.
+// operation (EveryModel.AnalyticGradientIsAutodiffs checks equality): the fits then take the same path. A model whose
+// gradient is a closed form of its own (conductor-rgb, gulbrandsen) states kGradientTolerance instead: its
+// derivatives agree with the Jets' to that fraction of the gradient's largest component, its value is evaluate's.
 template <class M>
 concept AnalyticGradient = requires(const double* p, const model_math::CurveNode& node, double* gradient) {
     { M::evaluate_with_gradient(p, node, gradient) } -> std::same_as<double>;

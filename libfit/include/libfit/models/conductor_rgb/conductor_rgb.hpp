@@ -37,6 +37,17 @@ struct ConductorRgb {
         return model_math::conductor_fresnel(p[0], p[1] * p[1], p[0] * p[1], mu);
     }
 
+    // The fits' Jacobian: conductor_fresnel's closed-form gradient in (n, k², nk) with k² = k·k and nk; it agrees
+    // with the Jets to rounding, not bit for bit (kGradientTolerance, tests/test_conductor_gradient.cpp).
+    static constexpr double kGradientTolerance = 1e-12;
+    static double evaluate_with_gradient(const double* p, const model_math::CurveNode& x, double* g) {
+        const double n = p[0], k = p[1];
+        const model_math::ConductorFresnelGradient F = model_math::conductor_fresnel_gradient(n, k * k, n * k, x.mu);
+        g[0] = F.d_n + F.d_nk * k;
+        g[1] = F.d_k2 * (2.0 * k) + F.d_nk * n;
+        return F.value;
+    }
+
     // "nk-650-550-450" and "nk-700-550-435": n, k of the data sampled at three wavelengths.
     static std::vector<ClosedForm> closed_forms(const ClosedFormInput& input);
     static std::vector<ChannelParameters> neutral_starts() { return {{1.0, 3.0}, {0.2, 3.0}}; }

@@ -54,6 +54,36 @@ struct Gulbrandsen {
         return model_math::conductor_fresnel(n, k2, n * model_math::sqrt_or_zero(k2), mu);
     }
 
+    // The fits' Jacobian: n_of, k2_of and nk = n √k² with their derivatives in (r, g), then conductor_fresnel's
+    // closed-form gradient; the same values as evaluate, the derivatives of the Jets to rounding (kGradientTolerance,
+    // tests/test_conductor_gradient.cpp). Where a square root's argument or the unclamped k² is ≤ 0 or < 0, its
+    // derivative is 0, as the Jets take sqrt_or_zero and the clamp.
+    static constexpr double kGradientTolerance = 1e-12;
+    static double evaluate_with_gradient(const double* p, const model_math::CurveNode& x, double* grad) {
+        const double r = p[0], g = p[1];
+        const double sr = model_math::sqrt_or_zero(r);
+        const double sr_r = sr > 0.0 ? 0.5 / sr : 0.0;
+        const double n_min = (1.0 - r) / (1.0 + r), n_max = (1.0 + sr) / (1.0 - sr), n_minus = (1.0 - sr) / (1.0 + sr);
+        const double n_min_r = -2.0 / ((1.0 + r) * (1.0 + r));
+        const double n_max_r = 2.0 / ((1.0 - sr) * (1.0 - sr)) * sr_r;
+        const double n_minus_r = -2.0 / ((1.0 + sr) * (1.0 + sr)) * sr_r;
+        const double n = g * n_min + (1.0 - g) * n_max;  // n_of
+        const double n_r = g * n_min_r + (1.0 - g) * n_max_r, n_g = n_min - n_max;
+        const double k2_unclamped = g * (n_max - n_min) * (n - n_minus);  // k2_of
+        const bool k2_held = !(k2_unclamped >= 0.0);
+        const double k2 = k2_held ? 0.0 : k2_unclamped;
+        const double k2_r = k2_held ? 0.0 : g * ((n_max_r - n_min_r) * (n - n_minus) + (n_max - n_min) * (n_r - n_minus_r));
+        const double k2_g = k2_held ? 0.0 : (n_max - n_min) * (n - n_minus) + g * (n_max - n_min) * n_g;
+        const double k = model_math::sqrt_or_zero(k2);
+        const double k_of_k2 = k > 0.0 ? 0.5 / k : 0.0;  // dk/dk²
+        const double nk = n * k;
+        const double nk_r = n_r * k + n * k_of_k2 * k2_r, nk_g = n_g * k + n * k_of_k2 * k2_g;
+        const model_math::ConductorFresnelGradient F = model_math::conductor_fresnel_gradient(n, k2, nk, x.mu);
+        grad[0] = F.d_n * n_r + F.d_k2 * k2_r + F.d_nk * nk_r;
+        grad[1] = F.d_n * n_g + F.d_k2 * k2_g + F.d_nk * nk_g;
+        return F.value;
+    }
+
     // The inverse: r = ((n − 1)² + k²)/((n + 1)² + k²), g = (n_max − n)/(n_max − n_min) (g = 0 when r = 0).
     static std::array<double, 2> from_nk(std::complex<double> eta);
     static std::complex<double> to_nk(double r, double g);
