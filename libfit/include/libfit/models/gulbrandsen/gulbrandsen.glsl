@@ -1,7 +1,7 @@
 // Gulbrandsen (2014) artist-friendly metallic Fresnel: reflectivity r and edge tint g mapped to n, k, then the exact
 // conductor Fresnel. n_min = (1 − r)/(1 + r), n_max = (1 + √r)/(1 − √r), n = g n_min + (1 − g) n_max,
 // k² = (r (n + 1)² − (n − 1)²) / (1 − r), factored as g (n_max − n_min)(n − n₋) with n₋ = (1 − √r)/(1 + √r), which is
-// exactly 0 at g = 0 (see libfit/include/libfit/models/gulbrandsen.hpp).
+// exactly 0 at g = 0 (see libfit/include/libfit/models/gulbrandsen/gulbrandsen.hpp).
 #ifndef METALFIT_GULBRANDSEN_GLSL  // the file may be included more than once
 #define METALFIT_GULBRANDSEN_GLSL
 vec3 metalfit_gulbrandsen_n(vec3 r, vec3 g) {
