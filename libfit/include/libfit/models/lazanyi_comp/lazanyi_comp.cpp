@@ -57,26 +57,13 @@ std::vector<ChannelParameters> LazanyiComp::target_starts(const ChannelTarget& t
         double cost, F0, a, alpha;
     };
     std::vector<Candidate> candidates;
-    // residual_i = x1_i F0 + x2_i a − y_i with x1 = s (1 − w), x2 = −s μ (1 − μ)^α, y = s (R − w): what does not
-    // depend on α once, (1 − μ)^α as exp(α ln(1 − μ)) (0 at μ = 1).
-    const std::size_t n = t.mu.size();
-    std::vector<double> x1(n), y(n), scaled_mu(n), log_m(n);
-    double s11 = 0, s1y = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double w = model_math::schlick_weight(t.mu[i]);
-        x1[i] = t.scale[i] * (1.0 - w);
-        y[i] = t.scale[i] * (t.value[i] - w);
-        scaled_mu[i] = t.scale[i] * t.mu[i];
-        log_m[i] = std::log(1.0 - t.mu[i]);
-        s11 += x1[i] * x1[i], s1y += x1[i] * y[i];
-    }
+    // The projection's normal equations of F0 and a at each α of the grid (residual_i = x1_i F0 + x2_i a − y_i), solved
+    // here with F0 capped at 1 and a clamped.
+    const Projection projection(t);
+    std::vector<double> x2(projection.residuals());
     for (int j = 0; j <= kAlphaSteps; ++j) {
         const double alpha = alpha_bounds.lower * std::pow(alpha_bounds.upper / alpha_bounds.lower, double(j) / kAlphaSteps);
-        double s12 = 0, s22 = 0, s2y = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            const double x2 = std::isinf(log_m[i]) ? 0.0 : -scaled_mu[i] * std::exp(alpha * log_m[i]);
-            s12 += x1[i] * x2, s22 += x2 * x2, s2y += x2 * y[i];
-        }
+        const auto [s11, s12, s22, s1y, s2y] = projection.normal_equations(alpha, x2.data());
         const double det = s11 * s22 - s12 * s12;
         if (!(std::abs(det) > 1e-300)) continue;
         double F0 = (s22 * s1y - s12 * s2y) / det;

@@ -111,6 +111,20 @@ struct LazanyiComp {
             return {cost, a * slope};
         }
 
+        // The normal equations of F0 and a at α: Σ x1², Σ x1 x2, Σ x2², Σ x1 y, Σ x2 y (x2 written into x2, one
+        // value a residual). Also what target_starts solves on its grid of α.
+        struct NormalEquations {
+            double s11, s12, s22, s1y, s2y;
+        };
+        NormalEquations normal_equations(double alpha, double* x2) const {
+            double s12 = 0.0, s22 = 0.0, s2y = 0.0;
+            for (std::size_t i = 0; i < x1_.size(); ++i) {
+                x2[i] = std::isinf(log_m_[i]) ? 0.0 : -scaled_mu_[i] * std::exp(alpha * log_m_[i]);
+                s12 += x2[i] * x1_[i], s22 += x2[i] * x2[i], s2y += x2[i] * y_[i];
+            }
+            return {s11_, s12, s22, s1y_, s2y};
+        }
+
         // The full parameters at α: F0 and a solved, n, k from F0 (the start's n kept where some k ≥ 0 gives F0).
         ChannelParameters parameters(const double* nonlinear, const ChannelParameters& start) const {
             double F0 = 0, a = 0;
@@ -125,18 +139,13 @@ struct LazanyiComp {
     private:
         void solve(double alpha, double& F0, double& a, double* x2, double* residuals) const {
             const auto& a_bounds = kParameters[2];
-            const std::size_t n = x1_.size();
-            double s12 = 0.0, s22 = 0.0, s2y = 0.0;
-            for (std::size_t i = 0; i < n; ++i) {
-                x2[i] = std::isinf(log_m_[i]) ? 0.0 : -scaled_mu_[i] * std::exp(alpha * log_m_[i]);
-                s12 += x2[i] * x1_[i], s22 += x2[i] * x2[i], s2y += x2[i] * y_[i];
-            }
-            const double det = s11_ * s22 - s12 * s12;
+            const auto [s11, s12, s22, s1y, s2y] = normal_equations(alpha, x2);
+            const double det = s11 * s22 - s12 * s12;
             if (det > 0.0) {
-                F0 = (s22 * s1y_ - s12 * s2y) / det;
-                a = (s11_ * s2y - s12 * s1y_) / det;
+                F0 = (s22 * s1y - s12 * s2y) / det;
+                a = (s11 * s2y - s12 * s1y) / det;
             } else {
-                F0 = s1y_ / s11_, a = 0.0;
+                F0 = s1y / s11, a = 0.0;
             }
             // F0(n, k) ∈ [0, 1); a in its bounds: the bound held, the other solved again.
             if (F0 > 1.0 || F0 < 0.0) {
@@ -145,9 +154,9 @@ struct LazanyiComp {
             }
             if (a > a_bounds.upper || a < a_bounds.lower) {
                 a = a > a_bounds.upper ? a_bounds.upper : a_bounds.lower;
-                F0 = std::clamp((s1y_ - s12 * a) / s11_, 0.0, 1.0);
+                F0 = std::clamp((s1y - s12 * a) / s11, 0.0, 1.0);
             }
-            for (std::size_t i = 0; i < n; ++i) residuals[i] = x1_[i] * F0 + x2[i] * a - y_[i];
+            for (std::size_t i = 0; i < x1_.size(); ++i) residuals[i] = x1_[i] * F0 + x2[i] * a - y_[i];
         }
 
         std::vector<double> x1_, y_, scaled_mu_, log_m_;
