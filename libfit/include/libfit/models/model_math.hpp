@@ -81,25 +81,43 @@ T nonnegative_sqrt(const T& x) {
 // GLSL): mu2, s2, t, r, p; num and den selected on t ≥ 0; X = r + μ², Q = μ²r + s⁴; N_s, D_s, D_p, B and F (the
 // GLSL writes |t| as max(t, −t) and holds B at 1e-30, a float that no GPU flushes to zero).
 template <class T>
-T conductor_fresnel(const T& n, const T& k2, const T& nk, const T& mu) {
+struct ConductorFresnelTerms {
+    T mu2, s2, t, r, p;
+    bool t_positive;
+    T num, den, X, Q, two_num_mu, Ns, Ds, Dp, B;
+    T value() const {  // F = N_s den Q / (D_s D_p), the denominator held at the smallest normal
+        const T tiny = smallest_normal<T>();
+        return Ns * (den * Q) / (B > tiny ? B : tiny);
+    }
+};
+
+// The terms above of one evaluation, in that order: conductor_fresnel's value and conductor_fresnel_gradient's
+// derivatives are both taken from them.
+template <class T>
+ConductorFresnelTerms<T> conductor_fresnel_terms(const T& n, const T& k2, const T& nk, const T& mu) {
     using std::abs;
-    const T tiny = smallest_normal<T>();
-    const T mu2 = mu * mu;
-    const T s2 = T(1) - mu2;
-    const T t = n * n - k2 - T(1) + mu2;
-    const T r = nonnegative_sqrt(t * t + T(4) * n * n * k2);
-    const T p = nonnegative_sqrt(T(0.5) * (r + abs(t)));
-    const bool t_positive = t >= T(0);
-    const T num = t_positive ? p : nk;
-    const T den = t_positive ? T(1) : p;
-    const T X = r + mu2;
-    const T Q = mu2 * r + s2 * s2;
-    const T two_num_mu = T(2) * num * mu;
-    const T Ns = den * X - two_num_mu;
-    const T Ds = den * X + two_num_mu;
-    const T Dp = den * Q + two_num_mu * s2;
-    const T B = Ds * Dp;
-    return Ns * (den * Q) / (B > tiny ? B : tiny);
+    ConductorFresnelTerms<T> c;
+    c.mu2 = mu * mu;
+    c.s2 = T(1) - c.mu2;
+    c.t = n * n - k2 - T(1) + c.mu2;
+    c.r = nonnegative_sqrt(c.t * c.t + T(4) * n * n * k2);
+    c.p = nonnegative_sqrt(T(0.5) * (c.r + abs(c.t)));
+    c.t_positive = c.t >= T(0);
+    c.num = c.t_positive ? c.p : nk;
+    c.den = c.t_positive ? T(1) : c.p;
+    c.X = c.r + c.mu2;
+    c.Q = c.mu2 * c.r + c.s2 * c.s2;
+    c.two_num_mu = T(2) * c.num * mu;
+    c.Ns = c.den * c.X - c.two_num_mu;
+    c.Ds = c.den * c.X + c.two_num_mu;
+    c.Dp = c.den * c.Q + c.two_num_mu * c.s2;
+    c.B = c.Ds * c.Dp;
+    return c;
+}
+
+template <class T>
+T conductor_fresnel(const T& n, const T& k2, const T& nk, const T& mu) {
+    return conductor_fresnel_terms(n, k2, nk, mu).value();
 }
 
 // conductor_fresnel's value and its derivatives in its three inputs n, k² and nk, taken as independent (each model
@@ -112,23 +130,10 @@ struct ConductorFresnelGradient {
 };
 
 inline ConductorFresnelGradient conductor_fresnel_gradient(double n, double k2, double nk, double mu) {
-    const double mu2 = mu * mu;
-    const double s2 = 1.0 - mu2;
-    const double t = n * n - k2 - 1.0 + mu2;
-    const double r = nonnegative_sqrt(t * t + 4.0 * n * n * k2);
-    const double p = nonnegative_sqrt(0.5 * (r + std::abs(t)));
-    const bool t_positive = t >= 0.0;
-    const double num = t_positive ? p : nk;
-    const double den = t_positive ? 1.0 : p;
-    const double X = r + mu2;
-    const double Q = mu2 * r + s2 * s2;
-    const double two_num_mu = 2.0 * num * mu;
-    const double Ns = den * X - two_num_mu;
-    const double Ds = den * X + two_num_mu;
-    const double Dp = den * Q + two_num_mu * s2;
+    const ConductorFresnelTerms<double> c = conductor_fresnel_terms(n, k2, nk, mu);
+    const auto& [mu2, s2, t, r, p, t_positive, num, den, X, Q, two_num_mu, Ns, Ds, Dp, B] = c;
+    const double F = c.value();
     const double w = den * Q;
-    const double B = Ds * Dp;
-    const double F = Ns * w / (B > smallest_normal<double>() ? B : smallest_normal<double>());
     if (!(mu > 0.0)) return {F, 0.0, 0.0, 0.0};
     // With u = den X, v = 2 num μ (N_s = u − v, D_s = u + v), w = den Q, z = 2 num s² μ (D_p = w + z), F = N_s w / (D_s D_p)
     // and ln F = ln(N_s / D_s) + ln w − ln D_p give dF = [2 w D_p (v du − u dv) + N_s D_s (z dw − w dz)] / (D_s D_p)²:
