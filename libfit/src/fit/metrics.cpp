@@ -25,7 +25,7 @@ Metrics compute_metrics(const Model& model, const ModelParameters& params, const
     std::vector<RGB> values;
     values.reserve(n);
     for (std::size_t i = 0; i < n; ++i) values.emplace_back(curves[i], curves[n + i], curves[2 * n + i]);
-    const std::vector<Lab> labs = reference.lab(std::span<const RGB>(values));
+    const std::vector<Lab> labs = reference.lab(values);
 
     const bool rel_defined = !reference.rel_undefined();
     Metrics m;

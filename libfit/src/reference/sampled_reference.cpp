@@ -57,11 +57,6 @@ SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSetti
                 }
 }
 
-Lab SampledReference::lab(const RGB& balanced) const {
-    const RGB raw{balanced.r * raw_white_.r, balanced.g * raw_white_.g, balanced.b * raw_white_.b};
-    return xyz_to_lab(converter_.to_xyz(raw), white_);
-}
-
 std::vector<Lab> SampledReference::lab(std::span<const RGB> balanced) const {
     std::vector<RGB> raw;
     raw.reserve(balanced.size());

@@ -182,7 +182,7 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
     }
     std::vector<RGB> exact;
     for (double m : mu) exact.push_back(curve(m));
-    const std::vector<Lab> exact_lab = reference.lab(std::span<const RGB>(exact));
+    const std::vector<Lab> exact_lab = reference.lab(exact);
     Json mu_json = Json::array();
     for (double m : mu) mu_json.push_back(plotted(m));
 
@@ -193,7 +193,7 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
         const Model& model = *r.model;
         std::vector<RGB> values;
         for (double m : mu) values.push_back(model.evaluate(r.fit.value.params, m));
-        const std::vector<Lab> labs = reference.lab(std::span<const RGB>(values));
+        const std::vector<Lab> labs = reference.lab(values);
         Json de = Json::array();
         for (std::size_t i = 0; i < mu.size(); ++i) de.push_back(plotted(ciede2000(exact_lab[i], labs[i])));
         const RGB m0 = model.evaluate(r.fit.value.params, 1.0), m82 = model.evaluate(r.fit.value.params, kMuF82);

@@ -51,10 +51,8 @@ public:
     std::span<const double> mu() const { return mu_; }
     const ErrorSettings& settings() const { return settings_; }
 
-    // L*a*b* of a white-balanced RGB of the curve's space (the perfect reflector (1, 1, 1) has L* = 100), through
-    // the OCIO inverse of the curve's transform.
-    Lab lab(const RGB& balanced) const;
-    // The same for many colours, through one OCIO apply: lab(balanced[i]) for each, bit for bit.
+    // L*a*b* of white-balanced RGBs of the curve's space (the perfect reflector (1, 1, 1) has L* = 100), through
+    // the OCIO inverse of the curve's transform, in one OCIO apply (the values of one colour at a time, bit for bit).
     std::vector<Lab> lab(std::span<const RGB> balanced) const;
 
     // Why the relative metric is undefined (a channel of R_c is ≤ 0 somewhere on [0, 1]), if it is.
