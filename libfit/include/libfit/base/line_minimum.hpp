@@ -46,13 +46,15 @@ LineMinimum line_minimum(F&& f, double x0, double lower, double upper, std::span
         ++result.evaluations;
         return f(x);
     };
+    // The search's end: where, and whether it converged there (else the evaluation limit or a non-finite slope).
+    const auto end_at = [&result](const LinePoint& at, bool converged) {
+        result.minimum = at;
+        result.converged = converged;
+        return result;
+    };
     LinePoint p = f(std::clamp(x0, lower, upper));
     result.start = p;
-    result.minimum = p;
-    if (!std::isfinite(p.slope) || p.slope == 0) {
-        result.converged = std::isfinite(p.slope);
-        return result;
-    }
+    if (!std::isfinite(p.slope) || p.slope == 0) return end_at(p, std::isfinite(p.slope));
     // Bracketing: walk downhill until the slope changes sign.
     const double direction = p.slope < 0 ? 1.0 : -1.0;
     const double bound = direction > 0 ? upper : lower;
@@ -60,22 +62,13 @@ LineMinimum line_minimum(F&& f, double x0, double lower, double upper, std::span
     LinePoint previous = p;
     LinePoint next = p;
     for (;;) {
-        if (previous.x == bound) {  // the minimum on the bound: the slope points out of the interval
-            result.minimum = previous;
-            result.converged = true;
-            return result;
-        }
-        if (result.evaluations >= S::kMaxEvaluations) {
-            result.minimum = previous;
-            return result;
-        }
+        // The minimum on the bound: the slope points out of the interval.
+        if (previous.x == bound) return end_at(previous, true);
+        if (result.evaluations >= S::kMaxEvaluations) return end_at(previous, false);
         const double t = std::log(previous.x) + direction * step;
         const double x = direction > 0 ? std::min(std::exp(t), upper) : std::max(std::exp(t), lower);
         next = evaluate(x);
-        if (!std::isfinite(next.slope)) {  // stop short of what cannot be evaluated
-            result.minimum = previous;
-            return result;
-        }
+        if (!std::isfinite(next.slope)) return end_at(previous, false);  // stop short of what cannot be evaluated
         if (next.slope * direction >= 0) break;  // a sign change (or 0): a minimum in [previous, next]
         if (next.value > previous.value) {  // higher, the slope pointing on: a ridge stepped over; stay in this valley
             step = 0.5 * std::abs(std::log(next.x) - std::log(previous.x));
@@ -89,17 +82,11 @@ LineMinimum line_minimum(F&& f, double x0, double lower, double upper, std::span
                          : S::kGrowth * last;
         previous = next;
     }
-    if (next.slope == 0) {
-        result.minimum = next;
-        result.converged = true;
-        return result;
-    }
+    if (next.slope == 0) return end_at(next, true);
     for (std::size_t k = 0; k < known.size(); ++k)
         if (known[k] >= std::min(previous.x, next.x) && known[k] <= std::max(previous.x, next.x)) {
-            result.minimum = previous.value <= next.value ? previous : next;
-            result.converged = true;
             result.same_as = static_cast<int>(k);
-            return result;
+            return end_at(previous.value <= next.value ? previous : next, true);
         }
     // Brent's zeroin on the slope in [previous, next] (R. P. Brent, "Algorithms for Minimization without Derivatives",
     // 1973, chapter 4), b the best point so far.
@@ -118,15 +105,8 @@ LineMinimum line_minimum(F&& f, double x0, double lower, double upper, std::span
         }
         const double tolerance = 2 * kEpsilon * std::abs(b.x) + 0.5 * S::kRelativeTolerance * std::abs(b.x);
         const double half = 0.5 * (c.x - b.x);
-        if (std::abs(half) <= tolerance || b.slope == 0) {
-            result.minimum = b;
-            result.converged = true;
-            return result;
-        }
-        if (result.evaluations >= S::kMaxEvaluations) {
-            result.minimum = b;
-            return result;
-        }
+        if (std::abs(half) <= tolerance || b.slope == 0) return end_at(b, true);
+        if (result.evaluations >= S::kMaxEvaluations) return end_at(b, false);
         if (std::abs(e) >= tolerance && std::abs(a.slope) > std::abs(b.slope)) {
             const double s = b.slope / a.slope;
             double p, q;
@@ -154,10 +134,7 @@ LineMinimum line_minimum(F&& f, double x0, double lower, double upper, std::span
         a = b;
         const double x = b.x + (std::abs(d) > tolerance ? d : std::copysign(tolerance, half));
         b = evaluate(std::clamp(x, lower, upper));
-        if (!std::isfinite(b.slope)) {
-            result.minimum = a;
-            return result;
-        }
+        if (!std::isfinite(b.slope)) return end_at(a, false);
     }
 }
 
