@@ -5,6 +5,7 @@
 #include <cctype>
 
 #include "export/export_formats.hpp"
+#include "libfit/base/names.hpp"
 #include "libfit/base/version.hpp"
 
 namespace metalfit {
@@ -165,7 +166,7 @@ std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials,
             const std::string stem = file_stem(context.request.id_prefix, m.fit->material.id, w.model->id());
             std::string text = comment_header(m, w, context, "// ");
             text += "#pragma once\n\n#include <array>\n\n#include \"metalfit_models.hpp\"\n\nnamespace " + stem + " {\n\n";
-            text += "inline constexpr const char* material = \"" + m.fit->material.id + "\";\n";
+            text += "inline constexpr const char* material = " + c_string_literal(m.fit->material.id) + ";\n";
             text += "inline constexpr const char* model = \"" + std::string(w.model->id()) + "\";\n";
             std::string args, pointers;
             const auto parameters = w.model->parameters();
@@ -181,7 +182,7 @@ std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials,
                     stem + "\n";
             files.push_back({"cpp/" + stem + ".hpp", text});
             index.push_back({"#include \"" + stem + ".hpp\"",
-                             "    {\"" + m.fit->material.id + "\", \"" + std::string(w.model->id()) + "\", &" + stem +
+                             "    {" + c_string_literal(m.fit->material.id) + ", \"" + std::string(w.model->id()) + "\", &" + stem +
                                  "::evaluate, " + std::to_string(parameters.size()) + ", {" + pointers + "}},"});
         }
     files.push_back({cpp_index_path(context.request.id_prefix), cpp_materials_index(index, context.request.id_prefix)});

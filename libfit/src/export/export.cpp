@@ -18,6 +18,7 @@
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/staged_folder.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/names.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/color/ocio_config_contents.hpp"
 #include "libfit/models/registry.hpp"
@@ -266,7 +267,9 @@ std::string comment_header(const MaterialExport& material, const WrittenParamete
     const FitRecordContext& r = context.record;
     const Metrics& e = written.metrics;
     std::ostringstream s;
-    const auto line = [&](const std::string& text) { s << prefix << text << "\n"; };
+    // Every line as data (names, file names and references come from inputs): no line break, control or
+    // direction-changing character, no backslash that would continue a line comment (libfit/base/names.hpp).
+    const auto line = [&](const std::string& text) { s << prefix << comment_text(text) << "\n"; };
     line("metalfit " METALFIT_VERSION " export: " + m.name + " (" + m.id + ")");
     for (const std::string& provenance : header_provenance_lines(m, r)) line(provenance);
     line("model: " + std::string(written.model->id()) + " - " + std::string(written.model->title()));

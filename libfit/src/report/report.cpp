@@ -15,11 +15,14 @@ std::vector<ReportFile> report_files(const std::vector<MaterialFit>& fits, const
         for (std::size_t j = 0; j < i; ++j)
             if (fits[i].material.id == fits[j].material.id)
                 throw UsageError("report: material " + fits[i].material.id + " is named twice (one page each)");
+            else if (report_detail::material_page_file(fits[i].material) == report_detail::material_page_file(fits[j].material))
+                throw UsageError("report: materials " + fits[j].material.id + " and " + fits[i].material.id +
+                                 " would share one page (" + report_detail::material_page_file(fits[i].material) + ")");
     const std::string record = report_record(fits, inputs).dump(1) + "\n";
     std::vector<ReportFile> files;
     files.push_back({"index.html", report_detail::catalog_page()});
     for (const MaterialFit& fit : fits)
-        files.push_back({"materials/" + fit.material.id + ".html", report_detail::material_page(fit.material)});
+        files.push_back({report_detail::material_page_file(fit.material), report_detail::material_page(fit.material)});
     files.push_back({"report.json", record});
     // The same bytes as report.json, as a script: pages opened from file:// cannot fetch a JSON file.
     files.push_back({"assets/report-data.js", "metalfitReport(" + record + ");\n"});

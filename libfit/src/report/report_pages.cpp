@@ -1,5 +1,7 @@
 #include "report/report_pages.hpp"
 
+#include "libfit/base/names.hpp"
+
 namespace metalfit::report_detail {
 namespace {
 
@@ -37,5 +39,7 @@ std::string material_page(const Material& material) {
     return page("metalfit report: " + material.name + " (" + material.id + ")",
                 "data-page=\"material\" data-material=\"" + escaped(material.id) + "\"", "..");
 }
+
+std::string material_page_file(const Material& material) { return "materials/" + path_component(material.id) + ".html"; }
 
 }  // namespace metalfit::report_detail

@@ -10,5 +10,8 @@ namespace metalfit::report_detail {
 
 std::string catalog_page();
 std::string material_page(const Material& material);
+// The material page's path in the report folder: "materials/<id as a path component>.html" (libfit/base/names.hpp),
+// also its link in report.json; an id like "../../x" stays inside the folder.
+std::string material_page_file(const Material& material);
 
 }  // namespace metalfit::report_detail

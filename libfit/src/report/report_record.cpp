@@ -12,6 +12,7 @@
 #include "libfit/fit/catalog_summary.hpp"
 #include "libfit/optics/fresnel.hpp"
 #include "libfit/reference/reference_curve.hpp"
+#include "report/report_pages.hpp"
 #include "libfit/report/report.hpp"
 #include "report/report_charts.hpp"
 
@@ -216,7 +217,7 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
     return {{"id", material.id},
             {"name", material.name},
             {"source", material.source},
-            {"page", "materials/" + material.id + ".html"},
+            {"page", report_detail::material_page_file(material)},
             {"provenance", provenance_json(fit, in)},
             {"warnings", material.warnings},
             {"F0", rgb_json(f0)},
