@@ -168,12 +168,23 @@ TEST(CatalogPaths, LooksLikePath) {
     EXPECT_FALSE(looks_like_path("gold.xlsx"));  // not existing, no separator, other extension
 }
 
-TEST(CatalogPaths, AnExistingFileLooksLikeAPath) {
+TEST_F(CatalogTest, AFileInTheCurrentFolderNeverShadowsACatalogName) {
     TempDir dir;
     dir.write("gold", "not a catalog name here\n");
+    dir.write("mytable", "wavelength_nm,n,k\n500,0.9,1.9\n600,0.2,3.0\n");
     ScopedCwd cwd(dir.path());
-    EXPECT_TRUE(looks_like_path("gold"));
-    EXPECT_FALSE(looks_like_path("silver"));
+    EXPECT_FALSE(looks_like_path("gold"));
+    EXPECT_TRUE(looks_like_path("./gold"));
+    // "gold" is the catalog's gold although a file of that name is here; "./gold" is the file (which is no table).
+    EXPECT_EQ(load_material(catalog(), "gold").id, "Au");
+    EXPECT_THROW((void)load_material(catalog(), "./gold"), InputError);
+    // A bare name that is no catalog material but a file here is refused, and the message says how to name the file.
+    try {
+        (void)load_material(catalog(), "mytable");
+        ADD_FAILURE() << "a bare file name was taken as a path";
+    } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find("./mytable"), std::string::npos) << e.what();
+    }
 }
 
 // The coverage written into the catalog (scripts/catalog-coverage.py; what `metalfit list` prints without parsing

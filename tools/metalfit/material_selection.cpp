@@ -24,7 +24,8 @@ std::vector<std::string> MaterialSelection::materials() const {
     std::vector<std::string> names;
     for (const std::string& argument : arguments) {
         std::error_code error;
-        if (argument.find(',') == std::string::npos || std::filesystem::is_regular_file(argument, error)) {
+        // A file's path with a comma in it stays whole; a bare name is a list however the current folder's files are named.
+        if (argument.find(',') == std::string::npos || (looks_like_path(argument) && std::filesystem::is_regular_file(argument, error))) {
             names.push_back(argument);
             continue;
         }

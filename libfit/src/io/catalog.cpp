@@ -122,9 +122,7 @@ bool looks_like_path(std::string_view argument) {
     const std::filesystem::path p(argument);
     std::string ext = p.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext == ".yml" || ext == ".yaml" || ext == ".csv" || ext == ".tsv" || ext == ".txt" || ext == ".dat") return true;
-    std::error_code ec;
-    return std::filesystem::is_regular_file(p, ec);
+    return ext == ".yml" || ext == ".yaml" || ext == ".csv" || ext == ".tsv" || ext == ".txt" || ext == ".dat";
 }
 
 Material load_material(const Catalog& catalog, std::string_view material_or_path, std::string_view source,
@@ -149,6 +147,10 @@ Material load_material(const Catalog& catalog, std::string_view material_or_path
         if (!labels.reference.empty()) m.provenance.references = labels.reference;
         return m;
     }
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(std::filesystem::path(material_or_path), ec))
+        throw UsageError("unknown material '" + std::string(material_or_path) + "': a file of that name is here; give it as a path, ./" +
+                         std::string(material_or_path) + " (see `metalfit list` for the catalog's names)");
     throw UsageError("unknown material '" + std::string(material_or_path) + "' (see `metalfit list`, or give a .yml/.csv path)");
 }
 

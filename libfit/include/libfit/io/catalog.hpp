@@ -57,8 +57,9 @@ private:
     std::vector<CatalogEntry> entries_;
 };
 
-// True when `argument` names a file rather than a catalog material (it contains a path separator,
-// has a .yml/.yaml/.csv/.tsv/.txt/.dat extension, or exists).
+// True when `argument` names a file rather than a catalog material: it contains a path separator or has a
+// .yml/.yaml/.csv/.tsv/.txt/.dat extension. Whether a file of that name exists plays no part, so a file named "Au" in
+// the current folder never shadows the catalog's gold: a path must look like a path ("./Au").
 bool looks_like_path(std::string_view argument);
 
 // What a user says about a file of their own (`--name`, `--reference`): shown and exported instead of the file stem
