@@ -45,7 +45,7 @@ if [ "$glpreview" != - ]; then
 }
 EOF
   "$glpreview" "$dir/scene.json" -o "$dir/preview" > /dev/null
-  files+=("$dir/preview/metrics.json")
+  files+=("$dir/preview/metrics.json" "$dir/preview/timings.json")
 fi
 "$node" "$here/json_schemas.mjs" "$modules" "$schemas" "${files[@]}"
 "$node" "$here/json_schemas.mjs" "$modules" "$schemas" --broken "${files[@]}"

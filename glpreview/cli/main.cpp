@@ -20,6 +20,7 @@
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/library_logging.hpp"
+#include "libfit/base/sample_statistics.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/io/catalog.hpp"
 
@@ -79,7 +80,8 @@ void print_preview(const metalfit::glpreview::PreviewResult& result) {
     if (!result.renderer.empty()) std::cerr << "glpreview: renderer " << result.renderer << "\n";
     for (const auto& file : result.written) std::cout << file.string() << "\n";
     if (result.metrics.is_null()) return;
-    std::printf("ms per frame (median of %zu): %.2f\n", result.frame_ms.size(), result.metrics["ms_per_frame"].get<double>());
+    std::printf("ms per frame (median of %zu): %.2f\n", result.frame_ms.size(),
+                result.frame_ms.empty() ? 0.0 : metalfit::median(result.frame_ms));
     for (const auto& s : result.metrics["spheres"]) {
         std::printf("sphere %d %-12s %-13s %-18s ", s["sphere"].get<int>(), s["material"].get<std::string>().c_str(),
                     s["fresnel"].get<std::string>().c_str(), s["mode"].get<std::string>().c_str());
@@ -208,6 +210,7 @@ int run_glpreview(int argc, char** argv) {
         const auto load = [&](const std::filesystem::path& scene_file) {
             Scene scene = load_scene(scene_file);
             confine_scene_paths(scene, {data_dir, allow_paths_outside});
+            scene.paths = PathPolicy{data_dir, allow_paths_outside};  // checked again on each file's descriptor
             apply_size(scene, size);
             for (const std::string& warning : scene.warnings) std::cerr << "glpreview: warning: " << warning << "\n";
             return scene;

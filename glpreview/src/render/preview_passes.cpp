@@ -45,8 +45,20 @@ void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, 
         });
 }
 
+// The frame times: apart from metrics.json, which is then the same bytes on every run of the same scene.
+Json timings_json(const PreviewRun& run, const FrameTimes& frame_ms) {
+    Json j;
+    j["schema"] = "metalfit.preview-timings/1";
+    j["scene"] = run.scene.file.filename().string();
+    j["renderer"] = run.renderer_name;
+    j["size"] = {run.scene.width, run.scene.height};
+    j["ms_per_frame"] = frame_ms.empty() ? 0.0 : median(frame_ms);
+    j["frame_ms"] = frame_ms;
+    return j;
+}
+
 Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRender& reference, const Image& localization,
-                  const FrameTimes& frame_ms, const Image* standard_error) {
+                  const Image* standard_error) {
     const Scene& scene = run.scene;
     Json j;
     j["schema"] = "metalfit.preview-metrics/1";
@@ -54,8 +66,6 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
     j["renderer"] = run.renderer_name;
     j["size"] = {scene.width, scene.height};
     j["space"] = scene.space.empty() ? std::string("scene_linear") : scene.space;  // as the scene names it
-    j["ms_per_frame"] = frame_ms.empty() ? 0.0 : median(frame_ms);
-    j["frame_ms"] = frame_ms;
     const auto errors = sphere_errors(beauty, reference, scene.spheres.size());
     const auto effort = sphere_localization(localization, reference, scene.spheres.size());
     const auto noise = standard_error ? sphere_reference_noise(*standard_error, reference, scene.spheres.size())
@@ -494,12 +504,11 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
                             b.read(h.beauty);
                             b.read(h.reference);
                             b.read(h.localization);
-                            b.read(h.frame_times);
                             if (h.reference_standard_error) b.read(*h.reference_standard_error);
                             d.out = b.produce<Json>("metrics");
                         },
                         [run, h](const Out<Json>& d, Resources& r) {
-                            r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.localization), r.get(h.frame_times),
+                            r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.localization),
                                                         h.reference_standard_error ? &r.get(*h.reference_standard_error) : nullptr));
                         })
                     .out;
@@ -518,7 +527,19 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
     if (o.reference && h.reference_standard_error)
         add_image_file_pass(graph, "reference-stderr.exr", *h.reference_standard_error, run);
     if (o.localization) add_image_file_pass(graph, "localization.exr", h.localization, run);
-    if (o.metrics) add_json_file_pass(graph, "metrics.json", "asked for", h.metrics, run);
+    if (o.metrics) {
+        add_json_file_pass(graph, "metrics.json", "asked for", h.metrics, run);
+        graph.add_pass<Empty>(
+            {"write timings.json", "asked for (metrics: the frame times, apart from metrics.json)", Processor::cpu},
+            [frame_times = h.frame_times](Builder& b, Empty&) {
+                b.read(frame_times);
+                b.write_file("timings.json");
+            },
+            [run, frame_times = h.frame_times](const Empty&, Resources& r) {
+                if (run->output_dir.empty()) return;
+                write_file_atomically(run->output_file("timings.json"), timings_json(*run, r.get(frame_times)).dump(2) + "\n");
+            });
+    }
     return h;
 }
 
