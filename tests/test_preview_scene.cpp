@@ -1,5 +1,6 @@
 // glpreview without GL: strict scene parsing, the plan (features and culled passes), the CPU environment tracer.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/gpu_bench.hpp"
 #include "glpreview/render/plan.hpp"
+#include "glpreview/scene/confined_file.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/color/display_transform.hpp"
@@ -154,6 +156,49 @@ TEST(PreviewScene, ScenePathsStayInTheScenesFolderOrTheDatabase) {
     const Scene sky = parse_scene(R"({"environment": {"type": "equirect", "file": "../sky.hdr"},
                                       "spheres": [{"center": [0, 1, 0], "reflection": "classic"}]})", scene_file);
     EXPECT_THROW(confine_scene_paths(sky, policy), InputError);
+}
+
+// The second check, on the open descriptor (ConfinedFile): what the readers read is the file that was checked, even
+// when the path is swapped for a link leading outside after the check; a link outside is refused on the descriptor
+// itself; a FIFO is refused without waiting for a writer; messages name the scene, the field and the file as given.
+TEST(PreviewScene, ScenePathsAreCheckedOnTheOpenDescriptorAndReadThroughIt) {
+    test::TempDir dir;
+    std::filesystem::create_directories(dir.path() / "scenes");
+    const auto scene_file = dir.write("scenes/s.json", "{}");
+    dir.write("outside.csv", "outside\n");
+    dir.write("scenes/mine.csv", "inside\n");
+    const std::optional<PathPolicy> policy = PathPolicy{test::kData, false};
+    {
+        const ConfinedFile file = ConfinedFile::open(scene_file, policy, "mine.csv", "spheres[0].material");
+        EXPECT_EQ(file.original(), dir.path() / "scenes" / "mine.csv");
+        EXPECT_EQ(file.path().filename(), "mine.csv");  // readers keep choosing the format by the extension
+        // The race: after the check, mine.csv becomes a link to a file outside. The reader still gets the checked file.
+        std::filesystem::remove(dir.path() / "scenes" / "mine.csv");
+        std::filesystem::create_symlink(dir.path() / "outside.csv", dir.path() / "scenes" / "mine.csv");
+        EXPECT_EQ(test::read_file(file.path()), "inside\n");
+        EXPECT_EQ(file.in_original_terms("x " + file.path().string() + ":3: bad"), "x " + file.original().string() + ":3: bad");
+    }
+    // Now mine.csv is a link leading outside: refused on the descriptor, whatever the path looked like.
+    try {
+        (void)ConfinedFile::open(scene_file, policy, "mine.csv", "spheres[0].material");
+        ADD_FAILURE() << "a link leading outside was opened";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(test::Contains(e.what(), "s.json: spheres[0].material: a path outside the scene's folder")) << e.what();
+    }
+    // Allowed outside, or no policy (library use): read.
+    EXPECT_EQ(test::read_file(ConfinedFile::open(scene_file, PathPolicy{test::kData, true}, "mine.csv", "f").path()), "outside\n");
+    EXPECT_EQ(test::read_file(ConfinedFile::open(scene_file, std::nullopt, "mine.csv", "f").path()), "outside\n");
+    // A FIFO beside the scene: refused at once (opening it for reading would wait for a writer), a missing file named.
+    ASSERT_EQ(::mkfifo((dir.path() / "scenes" / "pipe.hdr").c_str(), 0600), 0);
+    for (const auto& [name, why] : {std::pair{"pipe.hdr", "not a regular file"}, std::pair{"missing.hdr", "cannot open it"}}) {
+        try {
+            (void)ConfinedFile::open(scene_file, policy, name, "environment.file");
+            ADD_FAILURE() << name << " opened";
+        } catch (const InputError& e) {
+            EXPECT_TRUE(test::Contains(e.what(), "s.json: environment.file: " + (dir.path() / "scenes" / name).string() + ": " + why))
+                << e.what();
+        }
+    }
 }
 
 TEST(PreviewPlan, FeaturesFollowTheScene) {

@@ -125,7 +125,7 @@ Json time_mirror_scenes(const GpuBenchRun& run, int frames) {
             scene.width = 128;
             scene.height = 96;
         }
-        FresnelLibrary library(run.options.data_dir, run.options.ocio, scene.space, scene.file);
+        FresnelLibrary library(run.options.data_dir, run.options.ocio, scene.space, scene.file, scene.paths);
         std::vector<const SphereFresnel*> fresnel;
         for (std::size_t i = 0; i < scene.spheres.size(); ++i)
             fresnel.push_back(&library.get(scene.spheres[i], "spheres[" + std::to_string(i) + "]"));

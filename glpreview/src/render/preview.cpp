@@ -10,7 +10,7 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     PreviewResult result;
     // The materials are the graph's import: resolved (and fitted) before any pass runs, in sphere order, so that a
     // bad material is reported as before any file is touched.
-    FresnelLibrary library(options.data_dir, options.ocio, scene.space, scene.file);
+    FresnelLibrary library(options.data_dir, options.ocio, scene.space, scene.file, scene.paths);
     PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, {}, {}, {}};
     run.exr_colour = ExrColour{chromaticities_of(library.converter()), library.converter().space()};
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)

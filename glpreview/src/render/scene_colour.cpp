@@ -1,6 +1,7 @@
 #include "glpreview/render/scene_colour.hpp"
 
 #include "glpreview/io/image_io.hpp"
+#include "glpreview/scene/confined_file.hpp"
 #include "libfit/base/errors.hpp"
 
 namespace metalfit::glpreview {
@@ -31,7 +32,14 @@ RgbConversion scene_space_conversion(const Scene& scene, const OcioConfigChoice&
 }
 
 Image read_environment_image(const Scene& scene, const OcioConfigChoice& config) {
-    Image pixels = read_image(scene.environment.equirect.file);
+    // Opened once, checked on its descriptor and read through it; its errors name the scene and the field.
+    const ConfinedFile file = ConfinedFile::open(scene, scene.environment.equirect.file, "environment.file");
+    Image pixels;
+    try {
+        pixels = read_image(file.path());
+    } catch (const InputError& e) {
+        throw InputError(InputLocation(scene.file, 0, "environment.file"), file.in_original_terms(e.what()));
+    }
     if (!scene.environment.equirect.colorspace.empty())
         scene_space_conversion(scene, config, scene.environment.equirect.colorspace, "environment.colorspace").apply(pixels.rgb);
     return pixels;

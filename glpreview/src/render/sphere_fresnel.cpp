@@ -1,5 +1,7 @@
 #include "glpreview/render/sphere_fresnel.hpp"
 
+#include "glpreview/scene/confined_file.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -31,11 +33,13 @@ RGB SphereFresnel::operator()(double mu) const {
 }
 
 FresnelLibrary::FresnelLibrary(const std::filesystem::path& data_dir, const OcioConfigChoice& config,
-                               const std::string& space, const std::filesystem::path& scene_file)
+                               const std::string& space, const std::filesystem::path& scene_file,
+                               std::optional<PathPolicy> paths)
     : catalog_(Catalog::load(data_dir)),
       colorimetry_(Colorimetry::load(data_dir, Observer::cie1931_2deg, Illuminant::D65)),
       converter_(scene_converter(config, space, scene_file)),
-      scene_file_(scene_file) {}
+      scene_file_(scene_file),
+      paths_(std::move(paths)) {}
 
 namespace {
 
@@ -71,14 +75,21 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
     const std::string key = cache_key(sphere.material, sphere.source, sphere.fresnel);
     if (auto it = cache_.find(key); it != cache_.end()) return *it->second;
 
-    std::string material_argument = sphere.material;
-    if (looks_like_path(material_argument) && std::filesystem::path(material_argument).is_relative())
-        material_argument = (scene_file_.parent_path() / material_argument).string();
+    // A file is opened once, checked on its descriptor and read through it (ConfinedFile); its errors name the scene,
+    // the field and the file as the scene gave it.
+    std::optional<ConfinedFile> file;
+    if (looks_like_path(sphere.material)) file.emplace(ConfinedFile::open(scene_file_, paths_, sphere.material, field + ".material"));
     Material material;
     try {
-        material = load_material(catalog_, material_argument, sphere.source);
+        material = load_material(catalog_, file ? file->path().string() : sphere.material, sphere.source);
     } catch (const UsageError& e) {
-        throw InputError(InputLocation(scene_file_, 0, field + ".material"), e.what());
+        throw InputError(InputLocation(scene_file_, 0, field + ".material"), file ? file->in_original_terms(e.what()) : e.what());
+    } catch (const InputError& e) {
+        throw InputError(InputLocation(scene_file_, 0, field + ".material"), file ? file->in_original_terms(e.what()) : e.what());
+    }
+    if (file) {
+        material.provenance.file = file->original();
+        for (std::string& warning : material.warnings) warning = file->in_original_terms(warning);
     }
     const SpectralOptions spectral{};
     std::unique_ptr<SphereFresnel> result;

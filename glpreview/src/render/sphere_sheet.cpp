@@ -218,6 +218,8 @@ SphereSheet render_sphere_sheet(const Scene& base, const SheetRequest& request, 
                                 GlContext* context) {
     check_sheet_scene(base);
     check_sheet_request(request);
+    // The sheet's materials are the command line's (relative to the current folder), not files the scene names: no
+    // scene-path policy for them (the environment the scene names is still read under it).
     FresnelLibrary library(options.data_dir, options.ocio, base.space, base.file);
     Scene scene = base;
     PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, {}, {}, {}};

@@ -41,8 +41,9 @@ class FresnelLibrary {
 public:
     // `space`: the scene's colour space (empty: scene_linear). `scene_file`: named in errors; relative material
     // files are looked up beside it.
+    // `paths`: the scene's policy (Scene::paths); material files are checked again on their open descriptor.
     FresnelLibrary(const std::filesystem::path& data_dir, const OcioConfigChoice& config, const std::string& space,
-                   const std::filesystem::path& scene_file);
+                   const std::filesystem::path& scene_file, std::optional<PathPolicy> paths = {});
 
     // Throws InputError naming the field (`field`, e.g. "spheres[2].material") for unknown materials/models.
     const SphereFresnel& get(const Sphere& sphere, const std::string& field);
@@ -61,6 +62,7 @@ private:
     Colorimetry colorimetry_;
     ColorSpaceConverter converter_;
     std::filesystem::path scene_file_;
+    std::optional<PathPolicy> paths_;
     std::map<std::string, std::unique_ptr<SphereFresnel>> cache_;
 };
 

@@ -153,6 +153,12 @@ struct Outputs {
     int reference_samples = 256;  // Monte-Carlo samples per pixel of the reference on rough spheres
 };
 
+// Where a scene may read files from: its own folder and the database, unless paths outside are allowed.
+struct PathPolicy {
+    std::filesystem::path data_dir;  // empty: the scene's folder only
+    bool allow_outside = false;
+};
+
 struct Scene {
     std::filesystem::path file;  // where it was read from (for messages and relative paths)
     int width = 512, height = 512;
@@ -166,13 +172,12 @@ struct Scene {
     Outputs outputs;
     bool camera_position_given = false;  // the default camera (z = 3.5) stands outside the default room: no warning
     std::vector<std::string> warnings;  // settings that are accepted but mean nothing or look wrong, one line each
+    // Set by the CLI after confine_scene_paths: every file the scene names is then opened once and the policy checked
+    // again on the open descriptor (ConfinedFile), so a link swapped in after the first check leads nowhere outside.
+    // Unset (library use): no confinement.
+    std::optional<PathPolicy> paths;
 };
 
-// Where a scene may read files from: its own folder and the database, unless paths outside are allowed.
-struct PathPolicy {
-    std::filesystem::path data_dir;  // empty: the scene's folder only
-    bool allow_outside = false;
-};
 // Every file the scene names (material files, the equirect image), resolved with links followed, must lie in the
 // scene's folder or the database unless policy.allow_outside; throws InputError naming the field.
 void confine_scene_paths(const Scene& scene, const PathPolicy& policy);
