@@ -149,8 +149,9 @@ Material load_material(const Catalog& catalog, std::string_view material_or_path
     }
     std::error_code ec;
     if (std::filesystem::is_regular_file(std::filesystem::path(material_or_path), ec))
-        throw UsageError("unknown material '" + std::string(material_or_path) + "': a file of that name is here; give it as a path, ./" +
-                         std::string(material_or_path) + " (see `metalfit list` for the catalog's names)");
+        throw UsageError("unknown material '" + std::string(material_or_path) +
+                         "' (see `metalfit list`); a file of that name is here, but files are read by their extension "
+                         "(.yml, .yaml, .csv, .tsv, .txt or .dat): rename it, or give it as a path with one");
     throw UsageError("unknown material '" + std::string(material_or_path) + "' (see `metalfit list`, or give a .yml/.csv path)");
 }
 
