@@ -154,6 +154,17 @@ TEST(HostileInputs, AnOcioConfigOfAliasesToAliases) {
     expect_refused(metalfit_with_config(dir, f), 4, f.string());
 }
 
+TEST(HostileInputs, AnOcioConfigOfTooManyColourSpaces) {  // OCIO took 22 s to load 9,000
+    TempDir dir;
+    std::string text = shipped_config();
+    std::string spaces;
+    for (int i = 0; i < 9000; ++i)
+        spaces += "  - !<ColorSpace>\n    name: cs" + std::to_string(i) + "\n    from_scene_reference: !<MatrixTransform> {}\n";
+    text.insert(text.find("\ncolorspaces:\n") + 14, spaces);
+    const fs::path f = dir.write("many.ocio", text);
+    expect_refused(metalfit_with_config(dir, f), 4, f.string() + ": more than 2000 colour spaces");
+}
+
 // The shipped config with one more colour space whose transform is a LUT at `lut`.
 fs::path config_with_lut(const TempDir& dir, const std::string& lut) {
     std::string text = shipped_config();

@@ -83,6 +83,8 @@ public:
         }
     }
 
+    YamlShape shape() const { return {nodes_, aliases_}; }
+
 private:
     [[noreturn]] void fail(const std::string& why) const { throw InputError({file_, line_}, why); }
 
@@ -182,6 +184,7 @@ private:
         const auto found = anchors_.find(name);
         if (found == anchors_.end()) return;  // yaml-cpp reports the unknown anchor
         if (found->second.open) fail("alias *" + name + " inside the node its anchor marks (refused before parsing)");
+        ++aliases_;
         const std::size_t weight = found->second.weight;
         alias_bytes_ += weight;
         for (const std::string& o : open_) anchors_[o].weight += weight;
@@ -223,12 +226,17 @@ private:
     std::vector<int> indents_;
     std::size_t nodes_ = 0;
     std::size_t alias_bytes_ = 0;
+    std::size_t aliases_ = 0;
     std::unordered_map<std::string, Anchor> anchors_;
     std::vector<std::string> open_;
 };
 
 }  // namespace
 
-void check_yaml_structure(std::string_view text, const std::filesystem::path& file) { Scan(text, file).run(); }
+YamlShape check_yaml_structure(std::string_view text, const std::filesystem::path& file) {
+    Scan scan(text, file);
+    scan.run();
+    return scan.shape();
+}
 
 }  // namespace metalfit::detail

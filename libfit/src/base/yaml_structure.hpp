@@ -19,9 +19,15 @@ inline constexpr std::size_t kMaxYamlNodes = 200000;
 // the sum may not exceed this (so no alias chain grows a file beyond twice the input limit when expanded).
 inline constexpr std::size_t kMaxYamlAliasBytes = std::size_t{16} << 20;
 
+// What the scan counted (for limits of a format of its own, as OCIO's number of colour spaces).
+struct YamlShape {
+    std::size_t nodes = 0;
+    std::size_t aliases = 0;  // aliases to anchors seen before them
+};
+
 // Throws InputError({file, line}, why) when `text` nests deeper than kMaxYamlDepth, holds more than kMaxYamlNodes
 // nodes, or its aliases expand beyond kMaxYamlAliasBytes (or refer to an anchor that contains them). Otherwise
-// returns; whether the text is valid YAML is yaml-cpp's to say.
-void check_yaml_structure(std::string_view text, const std::filesystem::path& file);
+// returns what it counted; whether the text is valid YAML is yaml-cpp's to say.
+YamlShape check_yaml_structure(std::string_view text, const std::filesystem::path& file);
 
 }  // namespace metalfit::detail

@@ -79,7 +79,16 @@ OCIO::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice) {
         // The same checks as every input (regular file, size), then the YAML's shape, before OCIO reads it. OCIO
         // then opens the path again (so that its working folder and search path are the file's): the file could be
         // swapped in between only by someone who can write it anyway.
-        detail::check_yaml_structure(read_input_file(choice.path), choice.path);
+        const std::string text = read_input_file(choice.path);
+        const detail::YamlShape shape = detail::check_yaml_structure(text, choice.path);
+        // OCIO's loading is quadratic in its entries (4,000 colour spaces take 2 s, 9,000 take 22 s): each colour
+        // space, look, view transform or named transform is a tagged node, or an alias standing for one.
+        std::size_t entries = shape.aliases;
+        for (const char* tag : {"!<ColorSpace>", "!<Look>", "!<ViewTransform>", "!<NamedTransform>"})
+            for (std::size_t at = text.find(tag); at != std::string::npos; at = text.find(tag, at + 1)) ++entries;
+        if (entries > kMaxOcioEntries)
+            throw InputError({choice.path}, "more than " + std::to_string(kMaxOcioEntries) + " colour spaces, looks, view "
+                             "transforms, named transforms and aliases (" + std::to_string(entries) + ")");
     } catch (const InputError& e) {
         throw ColorConfigError(std::string("OCIO config ") + e.what() + " (" + choice.origin + ")");
     }

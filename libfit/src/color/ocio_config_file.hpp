@@ -6,9 +6,15 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
+#include <cstddef>
+
 #include "libfit/color/color_space.hpp"
 
 namespace metalfit {
+
+// The most colour spaces, looks, view transforms and named transforms (with the aliases that could stand for them)
+// a config may hold: OCIO 2.1 loads them in quadratic time (2,000 in about 0.5 s on this project's machines).
+inline constexpr std::size_t kMaxOcioEntries = 2000;
 
 // The config of `choice`; ColorConfigError (exit code 4), one line naming the config file (and the LUT file, for a
 // file transform), when it is refused or OCIO cannot load it.
