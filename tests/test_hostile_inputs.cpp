@@ -236,6 +236,29 @@ TEST(HostileInputs, ARadianceHeaderDeclaringTheLargestImage) {
     expect_refused(glpreview_on(dir, "env.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8192 +X 16384\n"), 3, "env.hdr");
 }
 
+// A flat Radiance image, run-length coded: 8 bytes per 127 pixels of a scanline per channel.
+std::string flat_hdr(int width, int height) {
+    std::string line = {2, 2, char(width >> 8), char(width & 255)};
+    for (unsigned char value : {128, 100, 80, 129})
+        for (int left = width; left > 0; left -= 127) line += {char(128 + std::min(127, left)), char(value)};
+    std::string out = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " + std::to_string(width) + "\n";
+    for (int y = 0; y < height; ++y) out += line;
+    return out;
+}
+
+TEST(HostileInputs, AFlatImageWithinTheFreePixelsIsRead) {  // in bands of rows through OpenImageIO
+    TempDir dir;
+    SKIP_WITHOUT_GLPREVIEW();
+    const ChildRun r = glpreview_on(dir, "env.hdr", flat_hdr(1024, 512));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST(HostileInputs, AFlatImageBeyondTheFreePixelsNeedsTheBytes) {  // 8192 x 4096 in 2 MB
+    TempDir dir;
+    SKIP_WITHOUT_GLPREVIEW();
+    expect_refused(glpreview_on(dir, "env.hdr", flat_hdr(8192, 4096)), 3, "env.hdr: the header declares 8192 x 4096 pixels");
+}
+
 TEST(HostileInputs, AWebPHeaderDeclaringALargeImage) {
     TempDir dir;
     SKIP_WITHOUT_GLPREVIEW();

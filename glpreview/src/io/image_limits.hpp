@@ -24,25 +24,27 @@ inline std::string dimensions_problem(long long width, long long height, int cha
 }
 
 // What a file's size lets its header claim (docs/scene.md, "Limits and checks"): any image up to kFreeImagePixels,
-// beyond that at most kPixelsPerFileByte pixels per byte of the file. A header is a few bytes that can declare any
-// size, and readers allocate what it declares before they find the pixels missing (a 21-byte Radiance header cost
-// 1.5 GB); real images hold a byte or more per pixel (Radiance's run-length code at best 8 bytes per 127 pixels, but
-// environments are not flat). With it, an image file of 16 MiB costs at most 2^25 pixels (384 MiB as float RGB).
+// beyond that at most one pixel per kFileBytesPerPixel bytes of the file. A header is a few bytes that can declare
+// any size, and readers allocate what it declares before they find the pixels missing (a 21-byte Radiance header cost
+// 1.5 GB). Real environments hold 2-6 bytes a pixel (EXR half RGB with ZIP or PIZ, Radiance's run-length code). An
+// image file of at most 16 MiB therefore costs at most 2^23 pixels: glpreview rendering a 4096 x 2048 environment
+// peaks at about 508 MiB.
 inline constexpr long long kFreeImagePixels = 1LL << 23;  // 4096 x 2048
-inline constexpr long long kPixelsPerFileByte = 2;
+inline constexpr long long kFileBytesPerPixel = 2;
 
 inline long long pixel_budget(std::uintmax_t file_bytes) {
-    const std::uintmax_t cap = static_cast<std::uintmax_t>(kMaxInputImagePixels) / kPixelsPerFileByte;
-    const long long earned = static_cast<long long>(file_bytes < cap ? file_bytes : cap) * kPixelsPerFileByte;
-    return earned > kFreeImagePixels ? earned : kFreeImagePixels;
+    const std::uintmax_t earned = file_bytes / kFileBytesPerPixel;
+    const std::uintmax_t cap = static_cast<std::uintmax_t>(kMaxInputImagePixels);
+    const long long budget = static_cast<long long>(earned < cap ? earned : cap);
+    return budget > kFreeImagePixels ? budget : kFreeImagePixels;
 }
 
 // Empty when a header's width x height fits the budget of a file of `file_bytes`; else the one-line reason.
 inline std::string budget_problem(long long width, long long height, std::uintmax_t file_bytes) {
     if (width * height <= pixel_budget(file_bytes)) return {};
     return "the header declares " + std::to_string(width) + " x " + std::to_string(height) + " pixels but the file holds " +
-           std::to_string(file_bytes) + " bytes (beyond " + std::to_string(kFreeImagePixels) + " pixels an image needs a byte " +
-           "for every " + std::to_string(kPixelsPerFileByte) + " pixels it declares)";
+           std::to_string(file_bytes) + " bytes (beyond " + std::to_string(kFreeImagePixels) + " pixels an image needs " +
+           std::to_string(kFileBytesPerPixel) + " bytes of file per pixel it declares)";
 }
 
 // The size of a regular file (0 when it cannot be read: the reader then reports why).
