@@ -90,7 +90,7 @@ OCIO::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice) {
             throw InputError({choice.path}, "more than " + std::to_string(kMaxOcioEntries) + " colour spaces, looks, view "
                              "transforms, named transforms and aliases (" + std::to_string(entries) + ")");
     } catch (const InputError& e) {
-        throw ColorConfigError(std::string("OCIO config ") + e.what() + " (" + choice.origin + ")");
+        throw ColorConfigError(describe(choice) + ": cannot be loaded: " + e.what());
     }
     OCIO::ConstConfigRcPtr config;
     try {
