@@ -53,7 +53,7 @@ std::string exr_header_problem(const std::filesystem::path& file) {
         }
         return false;
     };
-    const std::string truncated = "not an EXR: the header is truncated or malformed";
+    const std::string truncated = "cannot read the image: the EXR header is truncated or malformed";
     std::uint32_t magic = 0, version = 0;
     if (!read_u32(magic) || !read_u32(version)) return truncated;
     if (version & 0x800) return "deep EXR images are not supported";
