@@ -12,12 +12,15 @@
 #include <OpenEXR/ImfStringAttribute.h>
 #include <Imath/half.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
+#include <cstdint>
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "glpreview/io/image_io.hpp"
 #include "image_limits.hpp"
@@ -27,10 +30,113 @@
 namespace metalfit::glpreview {
 namespace {
 
+// The EXR header walked before OpenEXR reads it (docs/scene.md, "Limits and checks"): OpenEXR allocates what an
+// attribute's size, a preview's width x height or a data window declares before it finds the bytes missing (a
+// 1 KB file cost 2 GB). Each attribute must fit in the file, previews and string vectors in their attribute, every
+// part's data window within the limits and the pixel budget of the file's size, and tiles not so small that their
+// offset table (8 bytes a tile, in the file) outgrows it. Empty when OpenEXR may read it; else the one-line reason.
+std::string exr_header_problem(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    const std::uintmax_t size = file_bytes(file);
+    auto read_u32 = [&](std::uint32_t& v) {
+        unsigned char b[4];
+        if (!in.read(reinterpret_cast<char*>(b), 4)) return false;
+        v = b[0] | (b[1] << 8) | (b[2] << 16) | (static_cast<std::uint32_t>(b[3]) << 24);
+        return true;
+    };
+    auto read_name = [&](std::string& name) {
+        name.clear();
+        for (char c; in.get(c);) {
+            if (c == '\0') return true;
+            if (name.size() == 255) return false;
+            name.push_back(c);
+        }
+        return false;
+    };
+    const std::string truncated = "cannot read the image: the EXR header is truncated or malformed";
+    std::uint32_t magic = 0, version = 0;
+    if (!read_u32(magic) || !read_u32(version)) return truncated;
+    if (version & 0x800) return "deep EXR images are not supported";
+    const bool multipart = version & 0x1000;
+    for (int part = 0;; ++part) {
+        long long width = 0, height = 0, tile_w = 0, tile_h = 0;
+        int channels = 0, attributes = 0;
+        bool window = false;
+        for (std::string name, type;;) {
+            if (!read_name(name)) return truncated;
+            if (name.empty()) break;  // the end of this header
+            std::uint32_t bytes = 0;
+            if (!read_name(type) || !read_u32(bytes)) return truncated;
+            if (++attributes > 10000) return "more than 10000 attributes in an EXR header";
+            const std::uintmax_t at = static_cast<std::uintmax_t>(in.tellg());
+            if (bytes > 0x7fffffffu || bytes > size - at)
+                return "the EXR attribute '" + name + "' declares " + std::to_string(bytes) + " bytes; the file has " +
+                       std::to_string(size - at) + " left";
+            std::vector<unsigned char> value;  // only the small ones the check reads
+            if (type == "box2i" || type == "chlist" || type == "tiledesc" || type == "preview" || type == "stringvector") {
+                const std::uint32_t keep = type == "preview" ? std::min<std::uint32_t>(bytes, 8)
+                                           : type == "chlist" || type == "stringvector" ? std::min<std::uint32_t>(bytes, 1u << 20)
+                                                                                        : bytes;
+                value.resize(keep);
+                if (!in.read(reinterpret_cast<char*>(value.data()), keep)) return truncated;
+                in.seekg(bytes - keep, std::ios::cur);
+            } else {
+                in.seekg(bytes, std::ios::cur);
+            }
+            if (!in) return truncated;
+            auto i32 = [&](std::size_t o) {
+                return static_cast<std::int32_t>(value[o] | (value[o + 1] << 8) | (value[o + 2] << 16) |
+                                                 (static_cast<std::uint32_t>(value[o + 3]) << 24));
+            };
+            if (type == "box2i" && name == "dataWindow" && bytes == 16) {
+                width = static_cast<long long>(i32(8)) - i32(0) + 1;
+                height = static_cast<long long>(i32(12)) - i32(4) + 1;
+                window = true;
+            } else if (type == "chlist") {
+                for (std::size_t o = 0; o < value.size() && value[o] != 0; ++channels) {  // name\0, then 16 bytes
+                    while (o < value.size() && value[o] != 0) ++o;
+                    o += 17;
+                }
+            } else if (type == "tiledesc" && bytes >= 8) {
+                tile_w = static_cast<std::uint32_t>(i32(0));
+                tile_h = static_cast<std::uint32_t>(i32(4));
+            } else if (type == "preview") {
+                if (bytes < 8) return truncated;
+                const std::uint64_t pixels = std::uint64_t{static_cast<std::uint32_t>(i32(0))} * static_cast<std::uint32_t>(i32(4));
+                if (8 + 4 * pixels != bytes) return "the EXR preview '" + name + "' declares more pixels than its attribute holds";
+            } else if (type == "stringvector") {
+                for (std::size_t o = 0; o < value.size();) {
+                    if (o + 4 > value.size()) return truncated;
+                    const std::uint32_t length = static_cast<std::uint32_t>(i32(o));
+                    if (length > value.size() - o - 4) return "a string of the EXR attribute '" + name + "' outruns it";
+                    o += 4 + length;
+                }
+            }
+        }
+        if (!window) return "the EXR header has no dataWindow";
+        if (std::string problem = dimensions_problem(width, height, channels); !problem.empty()) return problem;
+        if (std::string problem = budget_problem(width, height, size); !problem.empty()) return problem;
+        if (tile_w > 0 && tile_h > 0 &&
+            8 * ((width + tile_w - 1) / tile_w) * ((height + tile_h - 1) / tile_h) > static_cast<long long>(size))
+            return "the EXR's tiles (" + std::to_string(tile_w) + " x " + std::to_string(tile_h) + ") need an offset table larger than the file";
+        if (!multipart) return {};
+        if (in.peek() == 0) return {};  // an empty header ends the list of parts
+        if (part >= 1000) return "more than 1000 parts in an EXR";
+    }
+}
+
 // Opens an EXR for reading; OpenEXR's exceptions become InputError naming the file.
 template <class Read>
 auto with_exr(const std::filesystem::path& file, Read read) {
     if (const std::string problem = not_a_file_problem(file); !problem.empty()) throw InputError(InputLocation(file), problem);
+    if (const std::string problem = exr_header_problem(file); !problem.empty()) throw InputError(InputLocation(file), problem);
+    // OpenEXR's own limits too (they are process-wide): a second line of defence if it reads a header differently.
+    static const bool limited = [] {
+        Imf::Header::setMaxImageSize(kMaxInputImageSide, kMaxInputImageSide);
+        Imf::Header::setMaxTileSize(kMaxInputImageSide, kMaxInputImageSide);
+        return true;
+    }();
+    (void)limited;
     try {
         Imf::InputFile in(file.c_str());
         return read(in);
@@ -73,6 +179,13 @@ bool has_exr_signature(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     std::array<char, 4> magic{};
     return in.read(magic.data(), magic.size()) && magic == std::array<char, 4>{0x76, 0x2f, 0x31, 0x01};
+}
+
+std::pair<int, int> read_exr_size(const std::filesystem::path& file) {
+    return with_exr(file, [&](Imf::InputFile& in) {
+        const Imath::Box2i window = in.header().dataWindow();
+        return std::pair<int, int>(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
+    });
 }
 
 Image read_exr(const std::filesystem::path& file) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <utility>
 
 #include "glpreview/io/image.hpp"
 
@@ -15,5 +16,7 @@ bool has_exr_signature(const std::filesystem::path& file);
 // channels in name order (the last repeated), as OpenImageIO orders them. The header's dimensions are checked before
 // any pixel is read. Throws InputError naming the file.
 Image read_exr(const std::filesystem::path& file);
+// The data window's width and height, after the same header checks as read_exr (no pixels read).
+std::pair<int, int> read_exr_size(const std::filesystem::path& file);
 
 }  // namespace metalfit::glpreview

@@ -14,11 +14,12 @@ namespace metalfit::glpreview {
 
 // What the module exports (built with the same compiler and standard library as glpreview, in the same build).
 struct OiioModuleApi {
-    static constexpr int kVersion = 1;
+    static constexpr int kVersion = 2;
     int version = kVersion;
     // Reads any image OpenImageIO reads as RGB (a grey image expanded, alpha dropped), after checking the header's
-    // dimensions. Empty on success, else the one-line reason (to follow "FILE: ").
-    std::string (*read_rgb)(const char* file, Image& image) = nullptr;
+    // dimensions; with `header_only`, only the header (image gets its width and height, no pixels). Empty on success,
+    // else the one-line reason (to follow "FILE: ").
+    std::string (*read_rgb)(const char* file, Image& image, bool header_only) = nullptr;
     // Draws the boxes as draw_text (image_text.hpp) says. Empty on success, else why (to follow "font DejaVuSans: ").
     std::string (*draw_text)(Image& image, const std::vector<TextBox>& boxes) = nullptr;
 };

@@ -47,7 +47,8 @@ public:
            std::initializer_list<const char*> keys)
         : value_(value), path_(std::move(path)), file_(file) {
         if (!value_.is_object()) fail(path_, "expected an object");
-        for (const auto& [key, _] : value_.items()) {
+        for (const auto& item : value_.items()) {
+            const std::string& key = item.key();  // not a structured binding: clang 14 cannot capture one (P1091)
             const bool known = std::any_of(keys.begin(), keys.end(), [&](const char* k) { return key == k; });
             if (!known) {
                 std::string list;

@@ -7,6 +7,7 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/color/ocio_config_contents.hpp"
+#include "color/ocio_config_file.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -41,11 +42,7 @@ ColorSpaceConverter& ColorSpaceConverter::operator=(ColorSpaceConverter&&) noexc
 ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, const std::string& target,
                                                 const std::string& xyz_space_name) {
     auto impl = std::make_shared<Impl>();
-    try {
-        impl->config = OCIO::Config::CreateFromFile(choice.path.c_str());
-    } catch (const OCIO::Exception& e) {
-        throw ColorConfigError(describe(choice) + ": cannot be loaded: " + e.what());
-    }
+    impl->config = load_ocio_config(choice);
     const auto& config = impl->config;
     const auto what_exists = [&choice] {
         const OcioConfigContents contents = read_ocio_config_contents(choice);

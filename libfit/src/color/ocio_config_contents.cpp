@@ -6,6 +6,7 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/text.hpp"
+#include "color/ocio_config_file.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -24,12 +25,7 @@ std::string OcioConfigContents::role_names() const {
 }
 
 OcioConfigContents read_ocio_config_contents(const OcioConfigChoice& choice) {
-    OCIO::ConstConfigRcPtr config;
-    try {
-        config = OCIO::Config::CreateFromFile(choice.path.c_str());
-    } catch (const OCIO::Exception& e) {
-        throw ColorConfigError("OCIO config " + choice.path.string() + " (" + choice.origin + "): cannot be loaded: " + e.what());
-    }
+    const OCIO::ConstConfigRcPtr config = load_ocio_config(choice);
     OcioConfigContents contents{choice, {}, {}};
     for (int i = 0; i < config->getNumColorSpaces(); ++i) {
         const auto space = config->getColorSpace(config->getColorSpaceNameByIndex(i));

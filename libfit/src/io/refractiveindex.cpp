@@ -10,6 +10,7 @@
 #include "libfit/base/file_digest.hpp"
 #include "libfit/base/input_file.hpp"
 #include "base/parse_number.hpp"
+#include "base/yaml_structure.hpp"
 
 namespace metalfit {
 namespace {
@@ -53,6 +54,7 @@ public:
 
     Material read() {
         YAML::Node root;
+        detail::check_yaml_structure(text_, file_);  // depth, node count, aliases: before yaml-cpp spends on them
         try {
             root = YAML::Load(text_);
         } catch (const YAML::ParserException& e) {

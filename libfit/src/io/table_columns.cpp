@@ -51,7 +51,10 @@ bool one_of(const std::string& s, std::initializer_list<const char*> names) {
 
 TableColumn classify(std::string_view header, const InputLocation& where) {
     TableColumn c{std::string(trim(header)), ColumnQuantity::ignored, 1.0};
-    const auto [raw_name, unit] = name_and_unit(header);
+    // Not a structured binding: clang 14 (the fuzz preset's) cannot capture one in the lambda below (C++20 P1091).
+    const std::pair<std::string, std::string> name_unit = name_and_unit(header);
+    const std::string& raw_name = name_unit.first;
+    const std::string& unit = name_unit.second;
     const std::string name = squeezed(raw_name);
     const auto unit_error = [&](const char* expected) {
         throw InputError(where, "unknown unit '" + unit + "' of column '" + c.header + "' (expected " + expected + ")");

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -24,6 +25,8 @@ inline constexpr long long kMaxInputImagePixels = 1LL << 27;
 // refused); RGB (a grey image is expanded, alpha dropped). Throws InputError naming the file; std::runtime_error when
 // a non-EXR file needs the OpenImageIO module and it is missing.
 Image read_image(const std::filesystem::path& file);
+// The width and height read_image would return, from the header alone, with the same checks (its fuzz target).
+std::pair<int, int> read_image_size(const std::filesystem::path& file);
 
 // What an EXR says about its pixels besides them (docs/preview.md, "Outputs"): the working space's primaries and
 // white (the standard `chromaticities` attribute) and its OCIO name (`colorSpace`, a string attribute).

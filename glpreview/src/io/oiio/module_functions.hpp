@@ -8,7 +8,7 @@
 
 namespace metalfit::glpreview::oiio {
 
-std::string read_rgb(const char* file, Image& image);                    // read_image.cpp
+std::string read_rgb(const char* file, Image& image, bool header_only);  // read_image.cpp
 std::string draw_text(Image& image, const std::vector<TextBox>& boxes);  // render_text.cpp
 
 }  // namespace metalfit::glpreview::oiio
