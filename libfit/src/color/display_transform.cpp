@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "libfit/base/errors.hpp"
+#include "color/ocio_config_load.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -77,7 +78,7 @@ DisplayEncoding measure_encoding(const OCIO::ConstConfigRcPtr& config, const cha
 DisplayTransform DisplayTransform::create(const OcioConfigChoice& choice, const std::string& source) {
     const std::string src = source.empty() ? OCIO::ROLE_SCENE_LINEAR : source;
     try {
-        auto config = OCIO::Config::CreateFromFile(choice.path.string().c_str());
+        const auto config = detail::load_ocio_config(choice);
         const char* display = config->getDefaultDisplay();
         const char* view = config->getDefaultView(display);
         auto transform = OCIO::DisplayViewTransform::Create();

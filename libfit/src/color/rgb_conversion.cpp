@@ -4,6 +4,7 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/color/ocio_config_contents.hpp"
+#include "color/ocio_config_load.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -14,12 +15,7 @@ struct RgbConversion::Impl {
 };
 
 RgbConversion RgbConversion::create(const OcioConfigChoice& choice, const std::string& from, const std::string& to) {
-    OCIO::ConstConfigRcPtr config;
-    try {
-        config = OCIO::Config::CreateFromFile(choice.path.string().c_str());
-    } catch (const OCIO::Exception& e) {
-        throw ColorConfigError(choice.path.string() + ": " + e.what());
-    }
+    const OCIO::ConstConfigRcPtr config = detail::load_ocio_config(choice);
     const auto resolve = [&](const std::string& name) {
         const auto space = config->getColorSpace(name.c_str());
         if (!space) {
