@@ -149,6 +149,16 @@ TEST(InputLimits, IllFormedUtf8InAnyImportedTextNamesTheFileAndLine) {
               (tmp.path() / "c.csv").string() + ":1: byte 0xFF is not UTF-8 (a table file is UTF-8 text)");
     const fs::path named = tmp.write("caf\xe9.csv", "wavelength_nm,n,k\n350,0.2,3\n900,0.2,6\n");
     EXPECT_EQ(error_of(named), (tmp.path()).string() + "/caf\\xE9.csv: the file name is not UTF-8 (byte 0xE9 is not UTF-8); rename the file");
+    // a database folder ($METALFIT_DATA) whose path is not UTF-8: the catalog's paths would reach the records
+    fs::create_directories(tmp.path() / "d\xff");
+    std::filesystem::copy_file(kData / "catalog.json", tmp.path() / "d\xff" / "catalog.json");
+    try {
+        Catalog::load(tmp.path() / "d\xff");
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), tmp.path().string() + "/d\\xFF/catalog.json: the path of the database is not UTF-8 "
+                                                               "(byte 0xFF is not UTF-8); rename the folder");
+    }
 }
 
 // Issue 30 (F19): Å typed as U+00C5 was refused by a message that listed it ("expected nm, um, µm or Å"); both Å code
