@@ -40,8 +40,8 @@ void referenced_spaces(const OCIO::ConstConfigRcPtr& config, const OCIO::ConstTr
 
 }  // namespace
 
-OCIO::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice) {
-    const std::string described = "OCIO config " + choice.path.string() + " (" + choice.origin + ")";
+OCIO::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice, const std::string& context) {
+    const std::string described = context.empty() ? "OCIO config " + choice.path.string() + " (" + choice.origin + ")" : context;
     // UTF-8 throughout, as every text file metalfit reads (utf8.hpp): OCIO itself passes any bytes in names and
     // families on, and only warns about keys. Read as an input file (a regular file within its size limit).
     std::string text;

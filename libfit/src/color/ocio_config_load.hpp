@@ -12,7 +12,8 @@ namespace metalfit::detail {
 // OCIO::Config::CreateFromFile, then refuses a config in which a colour space's transforms refer back to it through
 // ColorSpaceTransforms, LookTransforms or DisplayViewTransforms (directly or through other spaces): OCIO follows such
 // a cycle without end and the process dies of a stack overflow (SIGSEGV) in getProcessor. ColorConfigError naming
-// the config and the spaces of the cycle; a config OCIO cannot load is "cannot be loaded: <OCIO's reason>".
-OCIO_NAMESPACE::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice);
+// the config and the spaces of the cycle; a config OCIO cannot load is "cannot be loaded: <OCIO's reason>". Messages
+// start with `context`, by default "OCIO config <path> (<origin>)".
+OCIO_NAMESPACE::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice, const std::string& context = {});
 
 }  // namespace metalfit::detail
