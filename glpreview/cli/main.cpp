@@ -21,6 +21,7 @@
 #include "libfit/base/errors.hpp"
 #include "libfit/base/library_logging.hpp"
 #include "libfit/base/sample_statistics.hpp"
+#include "libfit/base/utf8.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/io/catalog.hpp"
 
@@ -147,6 +148,11 @@ int run_glpreview(int argc, char** argv) {
     app.add_option("--data-dir", data_dir, "Built-in database folder")->check(CLI::ExistingDirectory);
     app.add_option("--ocio-config", ocio_config, "OCIO config when $OCIO is not set (default: data/ocio/config.ocio)");
 
+    try {
+        require_utf8_arguments(argc, argv);  // before any value becomes a path or a name in a record (docs/cli.md)
+    } catch (...) {
+        return report_current_exception("glpreview");
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

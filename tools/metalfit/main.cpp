@@ -13,6 +13,7 @@
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/library_logging.hpp"
+#include "libfit/base/utf8.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/models/model.hpp"
 
@@ -93,6 +94,11 @@ int run_metalfit(int argc, char** argv) {
     auto& table = *app.add_subcommand("table", "F0 and F82 tint of every catalog metal: linear, 8-bit and hex, with source and caveat");
     auto run_table = cli::add_table_command(table, global);
 
+    try {
+        require_utf8_arguments(argc, argv);  // before any value becomes a name, label or path (docs/cli.md)
+    } catch (...) {
+        return report_current_exception("metalfit");
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

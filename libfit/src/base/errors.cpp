@@ -1,5 +1,7 @@
 #include "libfit/base/errors.hpp"
 
+#include "libfit/base/utf8.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -15,22 +17,6 @@ std::string format_location(const InputLocation& where, const std::string& messa
     if (!where.field.empty()) out += where.field + ": ";
     out += message;
     return sanitised_message(out);
-}
-
-// The length of the UTF-8 sequence starting at text[i], 0 when it is not one; `code` its code point.
-std::size_t utf8_sequence(std::string_view text, std::size_t i, char32_t& code) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    const std::size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
-    if (length == 0 || i + length > text.size()) return 0;
-    code = length == 1 ? c : length == 2 ? (c & 0x1F) : length == 3 ? (c & 0x0F) : (c & 0x07);
-    for (std::size_t j = 1; j < length; ++j) {
-        const auto d = static_cast<unsigned char>(text[i + j]);
-        if ((d >> 6) != 0x2) return 0;
-        code = (code << 6) | (d & 0x3F);
-    }
-    const bool overlong = (length == 2 && code < 0x80) || (length == 3 && code < 0x800) || (length == 4 && code < 0x10000);
-    if (overlong || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return 0;
-    return length;
 }
 
 bool invisible(char32_t code) {

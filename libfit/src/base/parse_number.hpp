@@ -3,6 +3,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string_view>
 #include <string>
@@ -88,5 +89,30 @@ inline double wavelength_nm(double value, double to_nm, std::string_view field, 
 
 // n + ik = 0: no material has it; the Fresnel reflectance is 0/0 there.
 inline constexpr const char* kZeroIndex = "n = k = 0: not a material (the Fresnel reflectance is undefined)";
+
+// The range of n and k metalfit accepts (docs/data.md, docs/decisions.md): n, k <= kMaxIndex and |n + ik| >=
+// kMinIndexModulus. Inside it the double-precision Fresnel (fresnel_real and the complex form) is within 4e-15 of a
+// long-double evaluation at every μ (tests/test_fresnel_real.cpp, FresnelReal.ExactInsideTheImportRange); |η²|² overflows
+// at n or k ≈ 1e77 (NaN reflectances) and below |η| ≈ 1e-7 the μ = 1 end loses digits (1e-8: 3e-9 off, 1e-80: 0.5).
+inline constexpr double kMaxIndex = 1e6;
+inline constexpr double kMinIndexModulus = 1e-6;
+
+// n (or k with `is_k`) above kMaxIndex: refused, naming the value as written.
+inline void check_index_limit(double value, bool is_k, std::string_view text, const InputLocation& where) {
+    if (value > kMaxIndex)
+        throw InputError(where, std::string(is_k ? "extinction coefficient k = " : "refractive index n = ") + std::string(text) +
+                                    " is above 1e6 (the largest n or k metalfit accepts: beyond it the Fresnel "
+                                    "reflectance in double precision is not exact)");
+}
+
+// n and k of one wavelength with |n + ik| below kMinIndexModulus (kZeroIndex when both are 0).
+inline void check_index_modulus(double n, double k, const InputLocation& where) {
+    if (n == 0.0 && k == 0.0) throw InputError(where, kZeroIndex);
+    if (std::hypot(n, k) < kMinIndexModulus) {
+        char text[96];
+        std::snprintf(text, sizeof text, "|n + ik| is below 1e-6 (n = %.3g, k = %.3g)", n, k);
+        throw InputError(where, std::string(text) + ": too close to n = k = 0 for the Fresnel reflectance in double precision");
+    }
+}
 
 }  // namespace metalfit::detail

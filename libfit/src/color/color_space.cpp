@@ -6,8 +6,9 @@
 #include <cstdlib>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/utf8.hpp"
 #include "libfit/color/ocio_config_contents.hpp"
-#include "color/ocio_config_file.hpp"
+#include "color/ocio_config_load.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -27,9 +28,13 @@ std::string describe(const OcioConfigChoice& c) { return "OCIO config " + c.path
 
 OcioConfigChoice choose_ocio_config(const std::optional<std::filesystem::path>& explicit_config,
                                     const std::filesystem::path& data_dir, const std::string& explicit_origin) {
-    if (const char* env = std::getenv("OCIO"); env != nullptr && *env != '\0') return {env, "$OCIO"};
-    if (explicit_config) return {*explicit_config, explicit_origin};
-    return {data_dir / "ocio" / "config.ocio", "metalfit default"};
+    OcioConfigChoice choice{data_dir / "ocio" / "config.ocio", "metalfit default"};
+    if (const char* env = std::getenv("OCIO"); env != nullptr && *env != '\0') choice = {env, "$OCIO"};
+    else if (explicit_config) choice = {*explicit_config, explicit_origin};
+    // The config's path is written into records and messages (UTF-8).
+    if (const auto problem = find_invalid_utf8(choice.path.native()))
+        throw ColorConfigError(describe(choice) + ": the path is not UTF-8 (" + problem->reason + ")");
+    return choice;
 }
 
 ColorSpaceConverter::ColorSpaceConverter(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
@@ -42,7 +47,7 @@ ColorSpaceConverter& ColorSpaceConverter::operator=(ColorSpaceConverter&&) noexc
 ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, const std::string& target,
                                                 const std::string& xyz_space_name) {
     auto impl = std::make_shared<Impl>();
-    impl->config = load_ocio_config(choice);
+    impl->config = detail::load_ocio_config(choice);
     const auto& config = impl->config;
     const auto what_exists = [&choice] {
         const OcioConfigContents contents = read_ocio_config_contents(choice);
@@ -66,6 +71,9 @@ ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, 
                                    what_exists());
         throw ColorConfigError(describe(choice) + " has no colour space or role '" + wanted + "'" + what_exists());
     }
+    for (const std::string& name : {xyz_space, std::string(target_space->getName())})
+        if (const auto problem = find_invalid_utf8(name))
+            throw ColorConfigError(describe(choice) + ": colour space name is not UTF-8 (" + problem->reason + "): " + name);
     if (target_space->isData())
         throw ColorConfigError(describe(choice) + ": colour space '" + target_space->getName() +
                                "' holds data, not colour (isdata): name a scene-linear colour space");
@@ -81,11 +89,17 @@ ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, 
     converter.space_ = target_space->getName();
     converter.xyz_space_ = xyz_space;
 
-    // Reflectance ratios need a linear space: check additivity and scaling on a few XYZ values.
+    // Reflectance ratios need a linear space: check additivity and scaling on a few XYZ values. They are divided by
+    // the perfect reflector's RGB, so the first probe (about the D65 white) must give finite positive channels, and
+    // every value must be finite (a matrix near the double maximum gives inf in OCIO's float32, then NaN ratios).
     const XYZ probes[] = {{0.9, 1.0, 1.1}, {0.2, 0.1, 0.05}, {0.05, 0.1, 0.4}};
     for (const XYZ& p : probes) {
         const RGB full = converter(p);
         const RGB half = converter({p.X * 0.5, p.Y * 0.5, p.Z * 0.5});
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(full[c]) || !std::isfinite(half[c]) || (&p == probes && !(full[c] > 0.0)))
+                throw ColorConfigError(describe(choice) + ": colour space '" + converter.space_ +
+                                       "' gives a non-finite RGB, or a non-positive one for the white (its transform is degenerate)");
         for (int c = 0; c < 3; ++c)
             if (std::abs(full[c] - 2.0 * half[c]) > 1e-4 * (1.0 + std::abs(full[c])))
                 throw ColorConfigError(describe(choice) + ": colour space '" + converter.space_ +

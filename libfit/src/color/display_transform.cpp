@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "libfit/base/errors.hpp"
-#include "color/ocio_config_file.hpp"
+#include "color/ocio_config_load.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -78,7 +78,7 @@ DisplayEncoding measure_encoding(const OCIO::ConstConfigRcPtr& config, const cha
 DisplayTransform DisplayTransform::create(const OcioConfigChoice& choice, const std::string& source) {
     const std::string src = source.empty() ? OCIO::ROLE_SCENE_LINEAR : source;
     try {
-        auto config = load_ocio_config(choice);
+        const auto config = detail::load_ocio_config(choice, choice.path.string() + ": no display transform from " + src);
         const char* display = config->getDefaultDisplay();
         const char* view = config->getDefaultView(display);
         auto transform = OCIO::DisplayViewTransform::Create();

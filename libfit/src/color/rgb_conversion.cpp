@@ -4,7 +4,7 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/color/ocio_config_contents.hpp"
-#include "color/ocio_config_file.hpp"
+#include "color/ocio_config_load.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -15,7 +15,7 @@ struct RgbConversion::Impl {
 };
 
 RgbConversion RgbConversion::create(const OcioConfigChoice& choice, const std::string& from, const std::string& to) {
-    const OCIO::ConstConfigRcPtr config = load_ocio_config(choice);
+    const OCIO::ConstConfigRcPtr config = detail::load_ocio_config(choice);
     const auto resolve = [&](const std::string& name) {
         const auto space = config->getColorSpace(name.c_str());
         if (!space) {

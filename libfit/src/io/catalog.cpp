@@ -7,6 +7,7 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/input_file.hpp"
+#include "libfit/base/utf8.hpp"
 #include "libfit/io/csv.hpp"
 
 namespace metalfit {
@@ -67,6 +68,9 @@ const CatalogSource& CatalogEntry::find_source(std::string_view source) const {
 
 Catalog Catalog::load(const std::filesystem::path& data_dir) {
     const auto file = data_dir / "catalog.json";
+    // Every data file's path starts with the folder's, and records carry them (UTF-8): $METALFIT_DATA may be anything.
+    if (const auto problem = find_invalid_utf8(file.native()))
+        throw InputError({file}, "the path of the database is not UTF-8 (" + problem->reason + "); rename the folder");
     std::error_code missing;
     if (!std::filesystem::exists(file, missing))
         throw InputError({file}, "cannot open the catalog (set $METALFIT_DATA to the data folder)");

@@ -7,7 +7,7 @@
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
 #include "libfit/base/input_file.hpp"
-#include "libfit/base/input_file.hpp"
+#include "libfit/base/utf8.hpp"
 #include "libfit/io/refractiveindex.hpp"
 #include "base/parse_number.hpp"
 #include "io/table_columns.hpp"
@@ -16,6 +16,9 @@ namespace metalfit {
 
 Material load_nk_csv(const std::filesystem::path& file) {
     const std::string bytes = read_input_file(file);  // a regular file within the size limit (input_file.hpp)
+    // UTF-8 throughout, as YAML: column names and units reach records and messages (a byte-order mark is UTF-8 too).
+    if (const auto problem = find_invalid_utf8(bytes))
+        throw InputError({file, problem->line}, problem->reason + " (a table file is UTF-8 text)");
     std::istringstream in(bytes);
     std::optional<detail::TableLayout> layout;  // none until the first header line
     detail::TableSamples samples;
@@ -48,6 +51,14 @@ Material load_nk_csv(const std::filesystem::path& file) {
     if (samples.n.empty() && samples.k.empty()) throw InputError({file, line_number}, "no data rows");
     if (samples.n.empty()) throw InputError({file, line_number}, "no n data (only k)");
 
+    // Rows of n < 1e-6 given without k: |n + ik| with k where it is known (k = 0 without a k column).
+    if (!samples.small_n.empty()) {
+        const std::optional<Spectrum> k = samples.k.empty() ? std::nullopt : std::optional<Spectrum>(Spectrum(samples.k));
+        for (const auto& [where, sample] : samples.small_n)
+            detail::check_index_modulus(
+                sample.value, k ? (*k)(sample.wavelength_nm, Interpolation::linear, OutOfRange::clamp) : 0.0, where);
+    }
+
     Material m;
     m.warnings = notes;
     Spectrum ns(std::move(samples.n));
@@ -76,6 +87,9 @@ Material load_nk_csv(const std::filesystem::path& file) {
 }
 
 Material load_nk_file(const std::filesystem::path& file) {
+    // The path becomes the material's id and its provenance: records are UTF-8 (JSON).
+    if (const auto problem = find_invalid_utf8(file.native()))
+        throw InputError({file}, "the file name is not UTF-8 (" + problem->reason + "); rename the file");
     std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
     if (detail::is_table_extension(ext)) return load_nk_csv(file);

@@ -2,6 +2,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <sstream>
@@ -9,6 +11,7 @@
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
 #include "libfit/base/input_file.hpp"
+#include "libfit/base/utf8.hpp"
 #include "base/parse_number.hpp"
 #include "base/yaml_structure.hpp"
 
@@ -19,25 +22,15 @@ namespace {
 constexpr const char* kSupportedTypes =
     "tabulated nk, tabulated n, tabulated k, formula 1, formula 2";
 
-// The file's text; InputError naming the line of the first byte that is not UTF-8 (yaml-cpp would stop on it
-// with an exception that names no file).
+// The file's text; InputError naming the line of the first byte that is not UTF-8 (yaml-cpp would stop on some
+// with an exception that names no file, and pass overlong forms, surrogates and code points above U+10FFFF on).
 std::string read_text(const std::filesystem::path& file) {
     std::string text = read_input_file(file);
-    int line = 1;
-    for (std::size_t i = 0; i < text.size();) {
-        const auto c = static_cast<unsigned char>(text[i]);
-        if (c == '\n') ++line;
-        const std::size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
-        bool valid = length > 0 && i + length <= text.size() && !(length == 2 && c < 0xC2);
-        for (std::size_t j = 1; valid && j < length; ++j) valid = (static_cast<unsigned char>(text[i + j]) >> 6) == 0x2;
-        if (!valid) {
-            char hex[8];
-            std::snprintf(hex, sizeof hex, "0x%02X", c);
-            throw InputError({file, line}, std::string("byte ") + hex + " is not UTF-8 (a YAML file is UTF-8 text)");
-        }
-        if (c == 0) throw InputError({file, line}, "a NUL byte (not a text file)");
-        i += length;
-    }
+    if (const auto problem = find_invalid_utf8(text))
+        throw InputError({file, problem->line}, problem->reason + " (a YAML file is UTF-8 text)");
+    if (const auto nul = text.find('\0'); nul != std::string::npos)
+        throw InputError({file, 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n'))},
+                         "a NUL byte (not a text file)");
     return text;
 }
 
@@ -105,10 +98,10 @@ public:
             }
         }
         if (!n) throw InputError({file_, line_of(data), "DATA"}, "no n data (only k)");
-        // A "tabulated n" row with n = 0 is n = k = 0 where k is 0 there (no k data: everywhere).
-        for (const InputLocation& here : zero_n_) {
-            const double nm = zero_n_nm_[static_cast<std::size_t>(&here - zero_n_.data())];
-            if (!k || (*k)(nm, Interpolation::linear, OutOfRange::clamp) == 0.0) throw InputError(here, detail::kZeroIndex);
+        // A "tabulated n" row with n near 0 is |n + ik| near 0 where k is too there (no k data: k = 0 everywhere).
+        for (std::size_t i = 0; i < small_n_.size(); ++i) {
+            const auto [nm, n_value] = small_n_at_[i];
+            detail::check_index_modulus(n_value, k ? (*k)(nm, Interpolation::linear, OutOfRange::clamp) : 0.0, small_n_[i]);
         }
         if (!k) {
             m.warnings.push_back(file_.string() + ": no k data (" + types.front() +
@@ -196,10 +189,12 @@ private:
             const std::vector<double> v = detail::parse_row(fields, here);
             detail::check_optical_row(v, fields, columns == 2 ? "nk" : is_k ? "k" : "n", here);
             const double nm = detail::wavelength_nm(v[0], 1000.0, fields[0], here);  // µm → nm
-            if (columns == 2 && v[1] == 0.0 && v[2] == 0.0) throw InputError(here, detail::kZeroIndex);
-            if (columns == 1 && !is_k && v[1] == 0.0) {
-                zero_n_.push_back(here);
-                zero_n_nm_.push_back(nm);
+            for (int c = 1; c <= columns; ++c)
+                detail::check_index_limit(v[c], is_k || c == 2, fields[c], here);
+            if (columns == 2) detail::check_index_modulus(v[1], v[2], here);
+            if (columns == 1 && !is_k && v[1] < detail::kMinIndexModulus) {
+                small_n_.push_back(here);
+                small_n_at_.push_back({nm, v[1]});
             }
             if (first.size() >= kMaxTableRows)
                 throw InputError(here, "more than " + std::to_string(kMaxTableRows) + " data rows (the limit)");
@@ -233,16 +228,31 @@ private:
             throw InputError({file_, line_of(range), where + ".wavelength_range"}, "wavelength out of range (µm)");
         auto c = numbers(coefficients, where + ".coefficients");
         if (c.empty()) throw InputError({file_, line_of(coefficients), where + ".coefficients"}, "no coefficients");
-        return SellmeierFormula(squared ? SellmeierFormula::Form::squared_poles : SellmeierFormula::Form::linear_poles,
-                                std::move(c), {r[0] * 1000.0, r[1] * 1000.0});
+        SellmeierFormula f(squared ? SellmeierFormula::Form::squared_poles : SellmeierFormula::Form::linear_poles,
+                           std::move(c), {r[0] * 1000.0, r[1] * 1000.0});
+        // n within the import range (parse_number.hpp) at the range's ends and every nm of the visible range in it: a
+        // pole, n² < 0 or coefficients near the double maximum would give NaN or inf reflectances downstream.
+        const InputLocation here{file_, line_of(coefficients), where + ".coefficients"};
+        const auto check = [&](double nm) {
+            const double n = f(nm, OutOfRange::clamp);
+            char text[64];
+            std::snprintf(text, sizeof text, "%.6g at %.6g \xc2\xb5m", n, nm / 1000.0);
+            if (!(n >= detail::kMinIndexModulus))
+                throw InputError(here, std::string("the formula gives n = ") + text + " (n\xc2\xb2 < 0, a pole or an overflow)");
+            detail::check_index_limit(n, false, text, here);
+        };
+        check(r[0] * 1000.0);
+        check(r[1] * 1000.0);
+        for (double nm = std::ceil(std::max(r[0] * 1000.0, 360.0)); nm <= std::min(r[1] * 1000.0, 830.0); nm += 1.0) check(nm);
+        return f;
     }
 
     std::filesystem::path file_;
     std::string text_;
     std::vector<std::string> lines_;  // to tell block scalars from plain ones
     std::vector<std::string> warnings_;
-    std::vector<InputLocation> zero_n_;  // rows of "tabulated n" blocks with n = 0, and their wavelengths
-    std::vector<double> zero_n_nm_;
+    std::vector<InputLocation> small_n_;  // rows of "tabulated n" blocks with n < 1e-6, and their (λ nm, n)
+    std::vector<SpectrumSample> small_n_at_;
 };
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "base/parse_number.hpp"
 #include "libfit/base/text.hpp"
@@ -34,7 +35,8 @@ std::pair<std::string, std::string> name_and_unit(std::string_view header) {
         return {std::string(trim(h.substr(0, slash))), std::string(trim(h.substr(slash + 1)))};
     if (const auto underscore = h.rfind('_'); underscore != std::string::npos) {
         const std::string unit = h.substr(underscore + 1);
-        for (const char* known : {"nm", "um", "\xc2\xb5m", "\xce\xbcm", "micron", "a", "angstrom", "ev", "cm-1"})
+        for (const char* known : {"nm", "um", "\xc2\xb5m", "\xce\xbcm", "micron", "a", "\xc3\x85", "\xc3\xa5", "\xe2\x84\xab",
+                                  "angstrom", "ev", "cm-1"})
             if (unit == known) return {h.substr(0, underscore), unit};
     }
     return {h, ""};
@@ -70,7 +72,8 @@ TableColumn classify(std::string_view header, const InputLocation& where) {
             c.to_nm = 1.0;
         } else if (one_of(unit, {"um", "\xc2\xb5m", "\xce\xbcm", "micron", "microns", "micrometre", "micrometer"})) {
             c.to_nm = 1000.0;
-        } else if (one_of(unit, {"a", "\xc3\xa5", "\xe2\x84\xab", "angstrom", "angstroms"})) {
+        } else if (one_of(unit, {"a", "\xc3\x85", "\xc3\xa5", "\xe2\x84\xab", "angstrom", "angstroms"})) {
+            // Å as U+00C5 (what keyboards type), U+212B (the ångström sign), å U+00E5 or ASCII
             c.to_nm = 0.1;
         } else {
             unit_error("nm, um, \xc2\xb5m or \xc3\x85");
@@ -200,7 +203,7 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
         throw InputError(where, "expected " + std::to_string(layout.columns.size()) + " fields (" + layout.describe() +
                                     "), found " + std::to_string(fields.size()));
     double x = 0.0, n = NAN, k = NAN, e1 = NAN, e2 = NAN;
-    std::string_view n_text, k_text, e2_text, x_text;
+    std::string_view n_text, k_text, e1_text, e2_text, x_text;
     const TableColumn* abscissa = nullptr;
     for (std::size_t i = 0; i < fields.size(); ++i) {
         const TableColumn& c = layout.columns[i];
@@ -221,7 +224,7 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
                 break;
             case ColumnQuantity::n: n = *value; n_text = fields[i]; break;
             case ColumnQuantity::k: k = *value; k_text = fields[i]; break;
-            case ColumnQuantity::eps1: e1 = *value; break;
+            case ColumnQuantity::eps1: e1 = *value; e1_text = fields[i]; break;
             case ColumnQuantity::eps2: e2 = *value; e2_text = fields[i]; break;
             case ColumnQuantity::ignored: break;
         }
@@ -232,13 +235,26 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
                                                                    "') is out of range after unit conversion to nm");
     if (!std::isnan(e1)) {
         if (e2 < 0.0) throw InputError(where, "negative \xce\xb5\xe2\x82\x82 = " + std::string(e2_text) + " (absorption must be >= 0)");
-        const double modulus = std::hypot(e1, e2);
-        n = std::sqrt(std::max(0.0, (modulus + e1) / 2.0));
-        k = std::sqrt(std::max(0.0, (modulus - e1) / 2.0));
+        // |ε| = n² + k²: above 2e12, n or k is above the import limit (and near the double maximum (|ε| + ε₁)/2
+        // overflowed to inf). Halves first, so that the modulus itself stays finite (the same values otherwise).
+        const double half_modulus = std::hypot(e1 / 2.0, e2 / 2.0);
+        if (half_modulus > kMaxIndex * kMaxIndex)
+            throw InputError(where, "\xce\xb5\xe2\x82\x81 = " + std::string(e1_text) + ", \xce\xb5\xe2\x82\x82 = " +
+                                        std::string(e2_text) + ": n or k would be above 1e6 (the largest n or k metalfit accepts)");
+        n = std::sqrt(std::max(0.0, half_modulus + e1 / 2.0));
+        k = std::sqrt(std::max(0.0, half_modulus - e1 / 2.0));
+        char converted[2][32];
+        std::snprintf(converted[0], sizeof converted[0], "%.6g (from \xce\xb5)", n);
+        std::snprintf(converted[1], sizeof converted[1], "%.6g (from \xce\xb5)", k);
+        check_index_limit(n, false, converted[0], where);
+        check_index_limit(k, true, converted[1], where);
     }
     if (n < 0.0) throw InputError(where, "negative refractive index n = " + std::string(n_text));
     if (k < 0.0) throw InputError(where, "negative extinction coefficient k = " + std::string(k_text));
-    if (n == 0.0 && k == 0.0) throw InputError(where, kZeroIndex);
+    if (!std::isnan(n)) check_index_limit(n, false, n_text, where);
+    if (!std::isnan(k)) check_index_limit(k, true, k_text, where);
+    if (!std::isnan(n) && !std::isnan(k)) check_index_modulus(n, k, where);
+    else if (!std::isnan(n) && n < kMinIndexModulus) samples.small_n.push_back({where, {nm, n}});
     if (!std::isnan(n)) samples.n.push_back({nm, n});
     if (!std::isnan(k)) samples.k.push_back({nm, k});
 }

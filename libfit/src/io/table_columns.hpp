@@ -49,6 +49,8 @@ std::vector<std::string_view> split_table_fields(std::string_view line, const Ta
 struct TableSamples {
     std::vector<SpectrumSample> n, k;
     std::vector<std::string> ignored_columns;  // headers of columns that were not read
+    // Rows giving n < 1e-6 without k (an n-only block or table): |n + ik| is checked once k is known.
+    std::vector<std::pair<InputLocation, SpectrumSample>> small_n;
 };
 
 // Adds one data row read under `layout` to `samples` (ε₁, ε₂ converted to n, k). Throws InputError at `where` for a

@@ -1,19 +1,45 @@
-#include "color/ocio_config_file.hpp"
+#include "color/ocio_config_load.hpp"
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <functional>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "base/yaml_structure.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/input_file.hpp"
+#include "libfit/base/utf8.hpp"
+#include "libfit/base/text.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
-namespace metalfit {
+namespace metalfit::detail {
 namespace {
 
-std::string describe(const OcioConfigChoice& c) { return "OCIO config " + c.path.string() + " (" + c.origin + ")"; }
+// The colour spaces a transform refers to by name (through groups), as the config resolves them (roles, aliases).
+void referenced_spaces(const OCIO::ConstConfigRcPtr& config, const OCIO::ConstTransformRcPtr& transform,
+                       std::set<std::string>& out, int depth = 0) {
+    if (!transform || depth > 64) return;
+    const auto add = [&](const char* name) {
+        if (name == nullptr || *name == '\0') return;
+        if (const auto space = config->getColorSpace(name)) out.insert(space->getName());
+    };
+    if (const auto group = OCIO::DynamicPtrCast<const OCIO::GroupTransform>(transform)) {
+        for (int i = 0; i < group->getNumTransforms(); ++i) referenced_spaces(config, group->getTransform(i), out, depth + 1);
+    } else if (const auto cs = OCIO::DynamicPtrCast<const OCIO::ColorSpaceTransform>(transform)) {
+        add(cs->getSrc());
+        add(cs->getDst());
+    } else if (const auto look = OCIO::DynamicPtrCast<const OCIO::LookTransform>(transform)) {
+        add(look->getSrc());
+        add(look->getDst());
+    } else if (const auto view = OCIO::DynamicPtrCast<const OCIO::DisplayViewTransform>(transform)) {
+        add(view->getSrc());
+    }
+}
 
 // Every file transform reachable from `transform` (inside group transforms too).
 void each_file_transform(const OCIO::ConstTransformRcPtr& transform,
@@ -74,13 +100,24 @@ std::string lut_problem(const OCIO::Config& config, const char* src, std::string
 
 }  // namespace
 
-OCIO::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice) {
+OCIO::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice, const std::string& context) {
+    const std::string described = context.empty() ? "OCIO config " + choice.path.string() + " (" + choice.origin + ")" : context;
+    // UTF-8 throughout, as every text file metalfit reads (utf8.hpp): OCIO itself passes any bytes in names and
+    // families on, and only warns about keys. Read as an input file (a regular file within its size limit).
+    std::string text;
     try {
-        // The same checks as every input (regular file, size), then the YAML's shape, before OCIO reads it. OCIO
-        // then opens the path again (so that its working folder and search path are the file's): the file could be
-        // swapped in between only by someone who can write it anyway.
-        const std::string text = read_input_file(choice.path);
-        const detail::YamlShape shape = detail::check_yaml_structure(text, choice.path);
+        text = read_input_file(choice.path);
+    } catch (const InputError& e) {
+        throw ColorConfigError(described + ": cannot be loaded: " + e.what());
+    }
+    if (const auto problem = find_invalid_utf8(text))
+        throw ColorConfigError(described + ": line " + std::to_string(problem->line) + ": " + problem->reason +
+                               " (an OCIO config is UTF-8 text)");
+    // The YAML's shape (depth, nodes, aliases: base/yaml_structure) and the number of entries, before OCIO reads it.
+    // OCIO then opens the path again (so that its working folder and search path are the file's): the file could be
+    // swapped in between only by someone who can write it anyway.
+    try {
+        const YamlShape shape = check_yaml_structure(text, choice.path);
         // OCIO's loading is quadratic in its entries (4,000 colour spaces take 2 s, 9,000 take 22 s): each colour
         // space, look, view transform or named transform is a tagged node, or an alias standing for one.
         std::size_t entries = shape.aliases;
@@ -90,23 +127,56 @@ OCIO::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice) {
             throw InputError({choice.path}, "more than " + std::to_string(kMaxOcioEntries) + " colour spaces, looks, view "
                              "transforms, named transforms and aliases (" + std::to_string(entries) + ")");
     } catch (const InputError& e) {
-        throw ColorConfigError(describe(choice) + ": cannot be loaded: " + e.what());
+        throw ColorConfigError(described + ": cannot be loaded: " + e.what());
     }
     OCIO::ConstConfigRcPtr config;
     try {
         config = OCIO::Config::CreateFromFile(choice.path.c_str());
     } catch (const OCIO::Exception& e) {
-        throw ColorConfigError(describe(choice) + ": cannot be loaded: " + e.what());
+        throw ColorConfigError(described + ": cannot be loaded: " + e.what());
     }
+    // The graph "space → spaces its transforms name", then a depth-first search for a cycle.
+    std::map<std::string, std::set<std::string>> edges;
+    for (int i = 0; i < config->getNumColorSpaces(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL); ++i) {
+        const char* name = config->getColorSpaceNameByIndex(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL, i);
+        const auto space = config->getColorSpace(name);
+        if (!space) continue;
+        auto& to = edges[space->getName()];
+        referenced_spaces(config, space->getTransform(OCIO::COLORSPACE_DIR_TO_REFERENCE), to);
+        referenced_spaces(config, space->getTransform(OCIO::COLORSPACE_DIR_FROM_REFERENCE), to);
+    }
+    enum class Mark { none, open, done };
+    std::map<std::string, Mark> mark;
+    std::vector<std::string> path;
+    const std::function<void(const std::string&)> visit = [&](const std::string& space) {
+        mark[space] = Mark::open;
+        path.push_back(space);
+        for (const std::string& next : edges[space]) {
+            if (mark[next] == Mark::open) {
+                std::vector<std::string> cycle(std::find(path.begin(), path.end(), next), path.end());
+                cycle.push_back(next);
+                throw ColorConfigError(described + ": colour space '" + next + "' converts to itself (" +
+                                       join(cycle, " \xe2\x86\x92 ") +
+                                       "): its transforms refer back to it, a cycle OCIO would follow without end");
+            }
+            if (mark[next] == Mark::none) visit(next);
+        }
+        path.pop_back();
+        mark[space] = Mark::done;
+    };
+    for (const auto& [space, to] : edges)
+        if (mark[space] == Mark::none) visit(space);
+    // Every LUT a file transform names: a regular file within the size limit that the search path finds (OCIO would
+    // read /dev/zero or a FIFO without end).
     each_transform(*config, [&](const OCIO::ConstTransformRcPtr& transform, const std::string& holder) {
         each_file_transform(transform, [&](const OCIO::FileTransform& file) {
             const char* src = file.getSrc();
             std::string resolved;
             if (const std::string problem = lut_problem(*config, src ? src : "", resolved); !problem.empty())
-                throw ColorConfigError(describe(choice) + ": " + holder + ": file transform " + resolved + ": " + problem);
+                throw ColorConfigError(described + ": " + holder + ": file transform " + resolved + ": " + problem);
         });
     });
     return config;
 }
 
-}  // namespace metalfit
+}  // namespace metalfit::detail

@@ -1,0 +1,103 @@
+#include "libfit/base/utf8.hpp"
+
+#include <cstdio>
+
+#include "libfit/base/errors.hpp"
+
+namespace metalfit {
+namespace {
+
+std::size_t lead_length(unsigned char c) {
+    return c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+}
+
+std::string hex_bytes(std::string_view bytes) {
+    std::string out;
+    char buffer[8];
+    for (const char b : bytes) {
+        std::snprintf(buffer, sizeof buffer, "%s%02X", out.empty() ? "" : " ", static_cast<unsigned char>(b));
+        out += buffer;
+    }
+    return out;
+}
+
+std::string code_point(char32_t code) {
+    char buffer[16];
+    std::snprintf(buffer, sizeof buffer, "U+%04X", static_cast<unsigned>(code));
+    return buffer;
+}
+
+// Why text[i] starts no UTF-8 sequence (utf8_sequence returned 0 there).
+std::string why_not(std::string_view text, std::size_t i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const std::size_t length = lead_length(c);
+    char buffer[48];
+    if (length == 0) {
+        std::snprintf(buffer, sizeof buffer, "byte 0x%02X is not UTF-8", c);
+        return buffer;
+    }
+    char32_t code = length == 2 ? (c & 0x1F) : length == 3 ? (c & 0x0F) : (c & 0x07);
+    for (std::size_t j = 1; j < length; ++j) {
+        if (i + j >= text.size() || (static_cast<unsigned char>(text[i + j]) >> 6) != 0x2) {
+            std::snprintf(buffer, sizeof buffer, "byte 0x%02X is not UTF-8", c);  // a truncated sequence
+            return buffer;
+        }
+        code = (code << 6) | (static_cast<unsigned char>(text[i + j]) & 0x3F);
+    }
+    const std::string bytes = hex_bytes(text.substr(i, length));
+    if ((length == 2 && code < 0x80) || (length == 3 && code < 0x800) || (length == 4 && code < 0x10000))
+        return "overlong encoding " + bytes + " of " + code_point(code);
+    if (code >= 0xD800 && code <= 0xDFFF) return "UTF-16 surrogate " + code_point(code) + " (" + bytes + ") in UTF-8";
+    return "code point " + code_point(code) + " (" + bytes + ") above U+10FFFF";
+}
+
+}  // namespace
+
+std::size_t utf8_sequence(std::string_view text, std::size_t i, char32_t& code) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const std::size_t length = lead_length(c);
+    if (length == 0 || i + length > text.size()) return 0;
+    char32_t value = length == 1 ? c : length == 2 ? (c & 0x1F) : length == 3 ? (c & 0x0F) : (c & 0x07);
+    for (std::size_t j = 1; j < length; ++j) {
+        const auto d = static_cast<unsigned char>(text[i + j]);
+        if ((d >> 6) != 0x2) return 0;
+        value = (value << 6) | (d & 0x3F);
+    }
+    const bool overlong = (length == 2 && value < 0x80) || (length == 3 && value < 0x800) || (length == 4 && value < 0x10000);
+    if (overlong || value > 0x10FFFF || (value >= 0xD800 && value <= 0xDFFF)) return 0;
+    code = value;
+    return length;
+}
+
+std::optional<Utf8Problem> find_invalid_utf8(std::string_view text) {
+    int line = 1;
+    for (std::size_t i = 0; i < text.size();) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c < 0x80) {  // the common case, one byte at a time
+            line += c == '\n';
+            ++i;
+            continue;
+        }
+        char32_t code = 0;
+        const std::size_t length = utf8_sequence(text, i, code);
+        if (length == 0) return Utf8Problem{i, line, why_not(text, i)};
+        i += length;
+    }
+    return std::nullopt;
+}
+
+void require_utf8_argument(std::string_view value, std::string_view what) {
+    if (const auto problem = find_invalid_utf8(value))
+        throw UsageError(std::string(what) + " is not UTF-8 (" + problem->reason + "): " + std::string(value));
+}
+
+void require_utf8_arguments(int argc, const char* const* argv) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view previous = i > 1 ? std::string_view(argv[i - 1]) : std::string_view();
+        std::string what = "argument " + std::to_string(i);
+        if (previous.starts_with("-") && is_utf8(previous)) what += " (after " + std::string(previous) + ")";
+        require_utf8_argument(argv[i], what);
+    }
+}
+
+}  // namespace metalfit
