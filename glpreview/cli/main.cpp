@@ -19,6 +19,7 @@
 #include "glpreview/scene/scene.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/standard_output.hpp"
 #include "libfit/base/library_logging.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/io/catalog.hpp"
@@ -90,6 +91,14 @@ void print_preview(const metalfit::glpreview::PreviewResult& result) {
             std::printf("rmse %.5f mean_abs %.5f mean steps %.2f\n", s["rmse"].get<double>(), s["mean_abs"].get<double>(),
                         s["mean_iterations"].get<double>());
     }
+}
+
+// What a run prints, before its files are switched in: when stdout fails, flush_standard_output throws and
+// nothing is written.
+void print_before_commit(const metalfit::glpreview::PreviewResult& result) {
+    print_preview(result);
+    std::fflush(stdout);  // the printf lines, before cout's check
+    metalfit::flush_standard_output();
 }
 
 int run_glpreview(int argc, char** argv) {
@@ -217,6 +226,11 @@ int run_glpreview(int argc, char** argv) {
             std::vector<Scene> scenes;
             std::set<std::string> stems;
             for (const auto& file : scene_files) {
+                // The stem names a folder inside -o: "...json" (stem "..") or ".json" must not name -o's parent or -o.
+                const std::string stem = file.stem().string();
+                if (stem.empty() || stem == "." || stem == ".." || stem.find('/') != std::string::npos)
+                    throw UsageError("--batch: " + file.string() + ": the scene's name '" + stem +
+                                     "' cannot name its output folder inside " + output_dir.string() + " (rename the scene file)");
                 if (!stems.insert(file.stem().string()).second)
                     throw UsageError("--batch: two scenes named '" + file.stem().string() + "' would write the same folder");
                 scenes.push_back(load(file));
@@ -224,7 +238,7 @@ int run_glpreview(int argc, char** argv) {
             const OcioConfigChoice ocio = choose_ocio_config(ocio_config, data_dir, "--ocio-config");
             GlContext context = GlContext::create();
             for (std::size_t i = 0; i < scenes.size(); ++i)
-                print_preview(run_preview(scenes[i], {data_dir, ocio, output_dir / scene_files[i].stem(), 0}, &context));
+                run_preview(scenes[i], {data_dir, ocio, output_dir / scene_files[i].stem(), 0}, &context, print_before_commit);
             return ok;
         }
         Scene scene = load(scene_files.front());
@@ -232,7 +246,9 @@ int run_glpreview(int argc, char** argv) {
             const auto [width, height] = parse_size("--capture-probe", capture_probe_size, "1024x512");
             const ReflectionProbe probe =
                 capture_probe(scene, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), width, height);
-            for (const auto& file : write_probe(probe, output_dir)) std::cout << file.string() << "\n";
+            for (const char* name : {"probe.exr", "probe.json"}) std::cout << (output_dir / name).string() << "\n";
+            flush_standard_output();  // a stdout that fails: nothing written
+            write_probe(probe, output_dir);
             return ok;
         }
         // --sheet materials given as files are the user's paths: relative to the current folder, not to the scene's.
@@ -253,7 +269,7 @@ int run_glpreview(int argc, char** argv) {
         }
         PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), output_dir, 0};
         if (!sheet.empty()) {
-            const SphereSheet result = render_sphere_sheet(scene, sheet_request, options);
+            render_sphere_sheet(scene, sheet_request, options, nullptr, [&](const SphereSheet& result) {
             for (const auto& row : result.record) {
                 std::printf("%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f",
                             row["material"].get<std::string>().c_str(), row["model"].get<std::string>().c_str(),
@@ -263,9 +279,11 @@ int run_glpreview(int argc, char** argv) {
                 std::printf("\n");
             }
             std::cout << (output_dir / "sheet.png").string() << "\n";
+            flush_standard_output();  // a stdout that fails: nothing written
+            });
             return ok;
         }
-        print_preview(run_preview(scene, options));
+        run_preview(scene, options, nullptr, print_before_commit);
         return ok;
     } catch (const GlError& e) {
         std::cerr << "glpreview: " << e.what() << "\n";
