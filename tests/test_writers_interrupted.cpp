@@ -300,6 +300,8 @@ TEST(WritersInterrupted, AFullStdoutWritesNothing) {
     const fs::path scene = tmp.write("s.json", kSmallScene);
     full(GLPREVIEW_EXE, "'" + scene.string() + "' -o '" + (tmp.path() / "out").string() + "'");
     full(GLPREVIEW_EXE, "--batch '" + scene.string() + "' -o '" + (tmp.path() / "batch").string() + "'");
+    full(GLPREVIEW_EXE, "'" + (metalfit::test::kData / "scenes" / "sheet.json").string() +
+                            "' --sheet Au --sheet-models schlick --size 24x24 -o '" + (tmp.path() / "sheet").string() + "'");
     EXPECT_EQ(names_in(tmp.path()), std::vector<std::string>{"s.json"});
 #endif
 }

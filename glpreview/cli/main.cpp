@@ -76,8 +76,11 @@ void apply_size(metalfit::glpreview::Scene& scene, const std::string& size) {
 }
 
 // The files a preview wrote, its frame time and each sphere's error, one line each.
-void print_preview(const metalfit::glpreview::PreviewResult& result) {
+void print_renderer(const metalfit::glpreview::PreviewResult& result) {
     if (!result.renderer.empty()) std::cerr << "glpreview: renderer " << result.renderer << "\n";
+}
+
+void print_preview(const metalfit::glpreview::PreviewResult& result) {
     for (const auto& file : result.written) std::cout << file.string() << "\n";
     if (result.metrics.is_null()) return;
     std::printf("ms per frame (median of %zu): %.2f\n", result.frame_ms.size(), result.metrics["ms_per_frame"].get<double>());
@@ -93,8 +96,8 @@ void print_preview(const metalfit::glpreview::PreviewResult& result) {
     }
 }
 
-// What a run prints, before its files are switched in: when stdout fails, flush_standard_output throws and
-// nothing is written.
+// What a run prints on stdout, before its files are switched in: when stdout fails, flush_standard_output throws and
+// nothing is written. (The renderer line on stderr comes after, with the outcome: print_renderer.)
 void print_before_commit(const metalfit::glpreview::PreviewResult& result) {
     print_preview(result);
     std::fflush(stdout);  // the printf lines, before cout's check
@@ -238,7 +241,8 @@ int run_glpreview(int argc, char** argv) {
             const OcioConfigChoice ocio = choose_ocio_config(ocio_config, data_dir, "--ocio-config");
             GlContext context = GlContext::create();
             for (std::size_t i = 0; i < scenes.size(); ++i)
-                run_preview(scenes[i], {data_dir, ocio, output_dir / scene_files[i].stem(), 0}, &context, print_before_commit);
+                print_renderer(run_preview(scenes[i], {data_dir, ocio, output_dir / scene_files[i].stem(), 0}, &context,
+                                           print_before_commit));
             return ok;
         }
         Scene scene = load(scene_files.front());
@@ -269,21 +273,23 @@ int run_glpreview(int argc, char** argv) {
         }
         PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), output_dir, 0};
         if (!sheet.empty()) {
-            render_sphere_sheet(scene, sheet_request, options, nullptr, [&](const SphereSheet& result) {
-            for (const auto& row : result.record) {
-                std::printf("%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f",
-                            row["material"].get<std::string>().c_str(), row["model"].get<std::string>().c_str(),
-                            row["model_worst_rel_rms"].get<double>(), kSheetDifferenceScale,
-                            row["image_rmse_model_vs_reference"].get<double>());
-                if (!sheet_request.roughness.empty()) std::printf(" at roughness %g", row["roughness"].get<double>());
-                std::printf("\n");
-            }
-            std::cout << (output_dir / "sheet.png").string() << "\n";
-            flush_standard_output();  // a stdout that fails: nothing written
-            });
+            // Printed before the sheet is switched in: a stdout that fails writes nothing.
+            const auto print_sheet = [&](const SphereSheet& result) {
+                for (const auto& row : result.record) {
+                    std::printf("%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f",
+                                row["material"].get<std::string>().c_str(), row["model"].get<std::string>().c_str(),
+                                row["model_worst_rel_rms"].get<double>(), kSheetDifferenceScale,
+                                row["image_rmse_model_vs_reference"].get<double>());
+                    if (!sheet_request.roughness.empty()) std::printf(" at roughness %g", row["roughness"].get<double>());
+                    std::printf("\n");
+                }
+                std::cout << (output_dir / "sheet.png").string() << "\n";
+                flush_standard_output();  // a stdout that fails: nothing written
+            };
+            render_sphere_sheet(scene, sheet_request, options, nullptr, print_sheet);
             return ok;
         }
-        run_preview(scene, options, nullptr, print_before_commit);
+        print_renderer(run_preview(scene, options, nullptr, print_before_commit));
         return ok;
     } catch (const GlError& e) {
         std::cerr << "glpreview: " << e.what() << "\n";
