@@ -379,6 +379,23 @@ TEST(StagedFolder, ParallelWritersIntoOneNewNestedFolderAllSucceedAndKeepEveryFi
     EXPECT_EQ(list(tmp.path() / "n1" / "n2"), std::vector<std::string>{"out"});
 }
 
+// F10: a link at -o that another user planted in a folder anyone can write (/dev/shm, /tmp) is not followed.
+TEST(StagedFolder, ALinkAnotherUserPlantedInASharedFolderIsNotFollowed) {
+    if (!fs::is_directory("/dev/shm")) GTEST_SKIP() << "no /dev/shm";
+    if (::geteuid() != 0) GTEST_SKIP() << "planting a link owned by another user needs root (lchown)";
+    TempDir tmp;
+    const fs::path victim = tmp.path() / "victim";
+    fs::create_directories(victim);
+    tmp.write("victim/precious", "mine");
+    const fs::path link = fs::path("/dev/shm") / ("metalfit-test-folder-link-" + std::to_string(::getpid()));
+    fs::remove(link);
+    fs::create_directory_symlink(victim, link);
+    ASSERT_EQ(::lchown(link.c_str(), 65534, 65534), 0);
+    EXPECT_THROW(update_folder_as_unit(link, std::vector<OutputFile>{{"f", "1"}}), InputError);
+    EXPECT_EQ(list(victim), std::vector<std::string>{"precious"});
+    fs::remove(link);
+}
+
 TEST(StagedFolder, TheCurrentFolderIsRefused) {
     TempDir tmp;
     const fs::path before = fs::current_path();
