@@ -396,6 +396,19 @@ TEST(StagedFolder, ALinkAnotherUserPlantedInASharedFolderIsNotFollowed) {
     fs::remove(link);
 }
 
+// A folder written inside another writer's staging (the report's glpreview renders go into the report's scratch
+// folder): the inner commit's lock on its parent must not wait for the outer writer's own lock (it deadlocked).
+TEST(StagedFolder, AFolderWrittenInsideAnotherWritersStagingDoesNotWaitForIt) {
+    TempDir tmp;
+    StagedFolder outer(tmp.path() / "out");
+    const fs::path inner = outer.file("renders/x").parent_path();
+    update_folder_as_unit(inner, std::vector<OutputFile>{{"sheet.png", "png"}});
+    EXPECT_EQ(read_file(inner / "sheet.png"), "png");
+    outer.commit();
+    EXPECT_EQ(read_file(tmp.path() / "out" / "renders" / "sheet.png"), "png");
+    EXPECT_EQ(list(tmp.path()), std::vector<std::string>{"out"});
+}
+
 TEST(StagedFolder, TheCurrentFolderIsRefused) {
     TempDir tmp;
     const fs::path before = fs::current_path();

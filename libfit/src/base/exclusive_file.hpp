@@ -62,10 +62,10 @@ inline int write_new_file(const std::filesystem::path& path, std::string_view co
 }
 
 // Staging names: "." + the target's name (cut at 200 bytes) + a mark + "<pid>.<16 hex digits>". The pid and the
-// lock (flock) the writer holds on its staging while it lives are what make a name provably a writer's own: the
-// next writer removes one only when all of these hold (owner_is_gone): the exact pattern, owned by this user, not a
-// link, of the expected kind, its pid not running, and its lock free. A user's file that merely starts the same way
-// is never touched.
+// lock the writer holds on its staging while it lives (lock_staging) are what make a name provably a writer's own:
+// the next writer removes one only when all of these hold (owner_is_gone): the exact pattern, owned by this user, not
+// a link, of the expected kind, its pid not running, and its lock free. A user's file that merely starts the same
+// way is never touched.
 inline constexpr std::string_view kTemporaryMark = ".metalfit-tmp.";
 inline constexpr std::string_view kStagingMark = ".metalfit-staging.";
 
@@ -96,11 +96,25 @@ inline pid_t staging_pid(std::string_view rest) {
     return pid > 0 ? static_cast<pid_t>(pid) : 0;
 }
 
-// Takes the writer's lock on a staging file or folder (held until `fd` is closed); false if another holds it.
-inline bool lock_staging(int fd, bool wait) {
-    while (::flock(fd, LOCK_EX | (wait ? 0 : LOCK_NB)) != 0)
+// Takes the writer's lock on a staging file or folder, held until `fd` is closed: an open-file-description read lock
+// (fcntl F_OFD_SETLKW), which never conflicts with the flock that serialises the commits into a folder — a writer
+// whose output folder lies inside another writer's staging (the report's glpreview renders) cannot deadlock on it.
+// `fd` must be open for reading.
+inline bool lock_staging(int fd) {
+    struct flock lock {};
+    lock.l_type = F_RDLCK;
+    lock.l_whence = SEEK_SET;
+    while (::fcntl(fd, F_OFD_SETLKW, &lock) != 0)
         if (errno != EINTR) return false;
     return true;
+}
+
+// True when nobody holds lock_staging's lock on `fd`.
+inline bool staging_lock_is_free(int fd) {
+    struct flock probe {};
+    probe.l_type = F_WRLCK;
+    probe.l_whence = SEEK_SET;
+    return ::fcntl(fd, F_OFD_GETLK, &probe) == 0 && probe.l_type == F_UNLCK;
 }
 
 // True when `path` (whose name is prefix + `rest`) was staged by a metalfit writer that is gone (see above).
@@ -113,7 +127,7 @@ inline bool owner_is_gone(const std::filesystem::path& path, std::string_view re
     if (directory ? !S_ISDIR(st.st_mode) : !S_ISREG(st.st_mode)) return false;
     const int fd = ::open(path.c_str(), (directory ? O_RDONLY | O_DIRECTORY : O_RDONLY) | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) return false;
-    const bool free = lock_staging(fd, false);
+    const bool free = staging_lock_is_free(fd);
     ::close(fd);
     return free;
 }
@@ -140,13 +154,13 @@ inline std::optional<std::filesystem::path> write_temporary_beside(const std::fi
     remove_stale_beside(target, kTemporaryMark);
     for (int attempt = 0; attempt < 16; ++attempt) {
         const std::filesystem::path temporary = staging_name_beside(target, kTemporaryMark);
-        const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        const int fd = ::open(temporary.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd < 0) {
             error = errno;
             if (error == EEXIST) continue;
             return std::nullopt;
         }
-        lock_staging(fd, true);
+        lock_staging(fd);
         error = write_all(fd, contents) ? 0 : errno;
         if (::close(fd) != 0 && error == 0) error = errno;
         if (error == 0) return temporary;
@@ -166,9 +180,9 @@ inline std::optional<OpenTemporary> open_temporary_beside(const std::filesystem:
     remove_stale_beside(target, kTemporaryMark);
     for (int attempt = 0; attempt < 16; ++attempt) {
         const std::filesystem::path temporary = staging_name_beside(target, kTemporaryMark);
-        const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        const int fd = ::open(temporary.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd >= 0) {
-            lock_staging(fd, true);
+            lock_staging(fd);
             error = 0;
             return OpenTemporary{temporary, fd};
         }

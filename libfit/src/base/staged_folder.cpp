@@ -183,7 +183,7 @@ StagedFolder::StagedFolder(const fs::path& requested, Existing existing, MergeEx
             throw InputError({dir_}, "cannot write: directory " + parent.string() + " is not writable (" +
                                          detail::describe_errno(error) + "; the new files are staged beside the folder)");
         staging_fd_ = ::open(staging_.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-        if (staging_fd_ < 0 || !detail::lock_staging(staging_fd_, true))
+        if (staging_fd_ < 0 || !detail::lock_staging(staging_fd_))
             throw InputError({dir_}, "cannot lock the staging folder: " + detail::describe_errno(errno));
     } catch (...) {
         if (staging_fd_ >= 0) ::close(staging_fd_);

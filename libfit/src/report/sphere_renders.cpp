@@ -54,7 +54,7 @@ struct TemporaryFolder {
         }
         if (path.empty()) throw std::runtime_error("cannot make a temporary folder in " + beside.parent_path().string());
         fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-        if (fd >= 0) detail::lock_staging(fd, true);
+        if (fd >= 0) detail::lock_staging(fd);
     }
     ~TemporaryFolder() {
         std::error_code ec;
@@ -74,7 +74,8 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
     const std::string size = std::to_string(r.cell_size) + "x" + std::to_string(r.cell_size);
     std::vector<std::string> args{r.glpreview.string(), r.scene.string(), "--sheet", join(r.materials, ","), "--sheet-models",
                                   join(r.models, ","), "--size", size,
-                                  "-o", folder.path.string(), "--data-dir", r.data_dir.string(),
+                                  // a folder inside the scratch folder: glpreview's own staging then lives there too
+                                  "-o", (folder.path / "sheet").string(), "--data-dir", r.data_dir.string(),
                                   "--ocio-config", r.ocio.path.string()};
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
@@ -97,8 +98,8 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
         throw std::runtime_error(why.empty() ? "glpreview failed" : why);
     }
     SphereSheetImage sheet;
-    sheet.png = read_bytes(folder.path / "sheet.png");
-    const auto record = nlohmann::json::parse(read_bytes(folder.path / "sheet.json"));
+    sheet.png = read_bytes(folder.path / "sheet" / "sheet.png");
+    const auto record = nlohmann::json::parse(read_bytes(folder.path / "sheet" / "sheet.json"));
     // Row r is the r-th material asked for (glpreview names it by its catalog name); its entries go by model, then
     // roughness.
     sheet.materials = r.materials;

@@ -25,8 +25,8 @@ using MergeExisting =
 // 1. construction: the folders above `dir` are created if missing; staging folders that killed writers left beside
 //    `dir` are removed (only names provably a writer's own: ".<name>.metalfit-staging.<pid>.<random>", owned by this
 //    user, whose pid is gone and whose lock is free; never a user's file); a new staging folder of that name is made
-//    beside `dir` (exclusively, unpredictable) and locked (flock) while this object lives; SIGINT, SIGTERM and SIGHUP
-//    are deferred (DeferredSignals) until it is destroyed, so that the staging is removed first;
+//    beside `dir` (exclusively, unpredictable) and locked (an OFD lock) while this object lives; SIGINT, SIGTERM and
+//    SIGHUP are deferred (DeferredSignals) until it is destroyed, so that the staging is removed first;
 // 2. the caller writes its files into the staging folder (write(), or file() for a library that writes by path);
 // 3. commit(), under a lock on the folder above `dir` (one committer at a time): with keep_other_files the files
 //    already in `dir` that the caller did not write are carried over (hard links, copies where refused; `merge`
