@@ -289,10 +289,64 @@ TEST(StagedFolder, AFailureChangesNothing) {
 TEST(StagedFolder, AStaleStagingFolderIsRemovedByTheNextWriter) {
     TempDir tmp;
     const fs::path dir = tmp.path() / "out";
-    fs::create_directories(tmp.path() / ".out.metalfit-staging.abc123" / "glsl");
-    tmp.write(".out.metalfit-staging.abc123/glsl/half", "x");
+    const std::string stale = stale_staging_name("out");
+    fs::create_directories(tmp.path() / stale / "glsl");
+    tmp.write(stale + "/glsl/half", "x");
     update_folder_as_unit(dir, std::vector<OutputFile>{{"f", "1"}});
     EXPECT_EQ(list(tmp.path()), std::vector<std::string>{"out"});
+}
+
+// Only names provably a writer's own are removed: the exact pattern, a pid that is gone, a lock nobody holds.
+TEST(StagedFolder, WhatIsNotProvablyAKilledWritersStagingIsKept) {
+    TempDir tmp;
+    const std::vector<std::string> kept{
+        ".out.metalfit-staging.abc123",                                       // a user's folder: no pid
+        ".out.metalfit-staging." + std::to_string(::getppid()) + ".0123456789abcdef",  // a running pid
+        ".out.metalfit-staging." + std::to_string(dead_pid()) + ".0123456789abcdeX",   // not the pattern
+        ".out.metalfit-staging." + std::to_string(dead_pid()) + ".0123456789abcdef-mine"};
+    for (const std::string& name : kept) fs::create_directories(tmp.path() / name);
+    const std::string stale_file = stale_staging_name("out");  // the right name, but a file: not a staging folder
+    tmp.write(stale_file, "mine");
+    update_folder_as_unit(tmp.path() / "out", std::vector<OutputFile>{{"f", "1"}});
+    std::vector<std::string> expected = kept;
+    expected.push_back(stale_file);
+    expected.push_back("out");
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(list(tmp.path()), expected);
+}
+
+TEST(AtomicFile, AStaleTemporaryIsRemovedByTheNextWriterOfThatFile) {
+    TempDir tmp;
+    const std::string stale = stale_staging_name("out.json", "tmp"), other = stale_staging_name("other.json", "tmp");
+    tmp.write(stale, "half");
+    tmp.write(other, "half");
+    tmp.write(".out.json.metalfit-tmp.mine", "the user's");
+    write_file_atomically(tmp.path() / "out.json", "{}");
+    std::vector<std::string> expected{".out.json.metalfit-tmp.mine", other, "out.json"};
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(list(tmp.path()), expected);
+    {
+        StreamedOutputFile out(tmp.path() / "other.json");
+        out.write("{}");
+        out.commit();
+    }
+    EXPECT_EQ(list(tmp.path()), (std::vector<std::string>{".out.json.metalfit-tmp.mine", "other.json", "out.json"}));
+}
+
+// F10: a link planted under /dev/shm (anyone's folder) is replaced, never written through; only this process's own
+// descriptor links (/dev/stdout, /dev/fd/N) are written in place.
+TEST(AtomicFile, ALinkUnderDevIsNotWrittenThrough) {
+    if (!fs::is_directory("/dev/shm")) GTEST_SKIP() << "no /dev/shm";
+    TempDir tmp;
+    const fs::path victim = tmp.write("victim", "precious");
+    const fs::path link = fs::path("/dev/shm") / ("metalfit-test-link-" + std::to_string(::getpid()));
+    fs::remove(link);
+    fs::create_symlink(victim, link);
+    write_file_atomically(link, "new");
+    EXPECT_EQ(read_file(victim), "precious");
+    EXPECT_FALSE(fs::is_symlink(link));
+    EXPECT_EQ(read_file(link), "new");
+    fs::remove(link);
 }
 
 TEST(StagedFolder, NewFilesAreNotWrittenThroughLinksInTheOldFolder) {
@@ -323,6 +377,36 @@ TEST(StagedFolder, ParallelWritersIntoOneNewNestedFolderAllSucceedAndKeepEveryFi
     for (const std::string& e : errors) EXPECT_EQ(e, "");
     EXPECT_EQ(tree(dir).size(), 8u);
     EXPECT_EQ(list(tmp.path() / "n1" / "n2"), std::vector<std::string>{"out"});
+}
+
+// F10: a link at -o that another user planted in a folder anyone can write (/dev/shm, /tmp) is not followed.
+TEST(StagedFolder, ALinkAnotherUserPlantedInASharedFolderIsNotFollowed) {
+    if (!fs::is_directory("/dev/shm")) GTEST_SKIP() << "no /dev/shm";
+    if (::geteuid() != 0) GTEST_SKIP() << "planting a link owned by another user needs root (lchown)";
+    TempDir tmp;
+    const fs::path victim = tmp.path() / "victim";
+    fs::create_directories(victim);
+    tmp.write("victim/precious", "mine");
+    const fs::path link = fs::path("/dev/shm") / ("metalfit-test-folder-link-" + std::to_string(::getpid()));
+    fs::remove(link);
+    fs::create_directory_symlink(victim, link);
+    ASSERT_EQ(::lchown(link.c_str(), 65534, 65534), 0);
+    EXPECT_THROW(update_folder_as_unit(link, std::vector<OutputFile>{{"f", "1"}}), InputError);
+    EXPECT_EQ(list(victim), std::vector<std::string>{"precious"});
+    fs::remove(link);
+}
+
+// A folder written inside another writer's staging (the report's glpreview renders go into the report's scratch
+// folder): the inner commit's lock on its parent must not wait for the outer writer's own lock (it deadlocked).
+TEST(StagedFolder, AFolderWrittenInsideAnotherWritersStagingDoesNotWaitForIt) {
+    TempDir tmp;
+    StagedFolder outer(tmp.path() / "out");
+    const fs::path inner = outer.file("renders/x").parent_path();
+    update_folder_as_unit(inner, std::vector<OutputFile>{{"sheet.png", "png"}});
+    EXPECT_EQ(read_file(inner / "sheet.png"), "png");
+    outer.commit();
+    EXPECT_EQ(read_file(tmp.path() / "out" / "renders" / "sheet.png"), "png");
+    EXPECT_EQ(list(tmp.path()), std::vector<std::string>{"out"});
 }
 
 TEST(StagedFolder, TheCurrentFolderIsRefused) {

@@ -123,7 +123,7 @@ TEST(ExportInterrupted, AKilledExportLeavesTheOldFolderOrTheNewOne) {
         }
     }
     // The next export removes a staging folder a kill left and finishes the job.
-    fs::create_directory(work / ".out.metalfit-staging.AbCdEf");
+    fs::create_directory(work / metalfit::test::stale_staging_name("out"));
     ASSERT_EQ(wait_for(start_export(new_args)), 0);
     EXPECT_EQ(tree(dir), new_tree);
     EXPECT_EQ(names_in(work), std::vector<std::string>{"out"});

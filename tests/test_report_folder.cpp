@@ -1,6 +1,8 @@
 // The report folder is written as one unit: complete, or not at all (an existing one then stays as it was).
 #include <gtest/gtest.h>
 
+#include <thread>
+
 #include "test_support.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/report/report.hpp"
@@ -35,6 +37,31 @@ TEST(ReportFolder, AFailureLeavesNothingNewAndTheOldFolderAsItWas) {
     metalfit::write_report_folder(dir, std::vector<ReportFile>{{"index.html", "kept"}});
     EXPECT_THROW(metalfit::write_report_folder(dir, failing), metalfit::InputError);
     EXPECT_EQ(read_file(dir / "index.html"), "kept");
+    EXPECT_EQ(entries(tmp.path()), 1u);
+}
+
+// F3: two reports at once into one folder both succeed, one after the other; the folder is one of them whole and
+// nothing is left beside it.
+TEST(ReportFolder, ParallelWritersOfOneFolderAllSucceed) {
+    const metalfit::test::TempDir tmp;
+    const fs::path dir = tmp.path() / "report";
+    metalfit::write_report_folder(dir, std::vector<ReportFile>{{"index.html", "old"}});
+    std::vector<std::thread> writers;
+    std::vector<std::string> errors(6);
+    for (int i = 0; i < 6; ++i)
+        writers.emplace_back([&, i] {
+            try {
+                const std::string n = std::to_string(i);
+                metalfit::write_report_folder(dir, std::vector<ReportFile>{{"index.html", n}, {"materials/" + n + ".html", n}});
+            } catch (const std::exception& e) {
+                errors[static_cast<std::size_t>(i)] = e.what();
+            }
+        });
+    for (auto& w : writers) w.join();
+    for (const std::string& e : errors) EXPECT_EQ(e, "");
+    const std::string n = read_file(dir / "index.html");
+    EXPECT_EQ(read_file(dir / "materials" / (n + ".html")), n);
+    EXPECT_EQ(entries(dir / "materials"), 1u);
     EXPECT_EQ(entries(tmp.path()), 1u);
 }
 

@@ -65,6 +65,21 @@ inline CommandResult run_command(const fs::path& executable, const std::string& 
     return result;
 }
 
+// The pid of a process that has ended (a child that exits at once, reaped): for staging names a killed writer left
+// (".<name>.metalfit-staging.<pid>.<16 hex>", libfit/src/base/exclusive_file.hpp).
+inline pid_t dead_pid() {
+    const pid_t pid = ::fork();
+    if (pid == 0) ::_exit(0);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    return pid;
+}
+
+// A staging name a killed writer of `target` (a file name) left: `mark` is "staging" (folders) or "tmp" (files).
+inline std::string stale_staging_name(const std::string& target, const std::string& mark = "staging") {
+    return "." + target + ".metalfit-" + mark + "." + std::to_string(dead_pid()) + ".0123456789abcdef";
+}
+
 // A fresh folder per test (named after it and the process), removed with everything in it.
 class TempDir {
 public:

@@ -19,6 +19,7 @@
 #include "glpreview/scene/scene.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/standard_output.hpp"
 #include "libfit/base/library_logging.hpp"
 #include "libfit/base/sample_statistics.hpp"
 #include "libfit/base/utf8.hpp"
@@ -77,8 +78,11 @@ void apply_size(metalfit::glpreview::Scene& scene, const std::string& size) {
 }
 
 // The files a preview wrote, its frame time and each sphere's error, one line each.
-void print_preview(const metalfit::glpreview::PreviewResult& result) {
+void print_renderer(const metalfit::glpreview::PreviewResult& result) {
     if (!result.renderer.empty()) std::cerr << "glpreview: renderer " << result.renderer << "\n";
+}
+
+void print_preview(const metalfit::glpreview::PreviewResult& result) {
     for (const auto& file : result.written) std::cout << file.string() << "\n";
     if (result.metrics.is_null()) return;
     std::printf("ms per frame (median of %zu): %.2f\n", result.frame_ms.size(),
@@ -93,6 +97,14 @@ void print_preview(const metalfit::glpreview::PreviewResult& result) {
             std::printf("rmse %.5f mean_abs %.5f mean steps %.2f\n", s["rmse"].get<double>(), s["mean_abs"].get<double>(),
                         s["mean_iterations"].get<double>());
     }
+}
+
+// What a run prints on stdout, before its files are switched in: when stdout fails, flush_standard_output throws and
+// nothing is written. (The renderer line on stderr comes after, with the outcome: print_renderer.)
+void print_before_commit(const metalfit::glpreview::PreviewResult& result) {
+    print_preview(result);
+    std::fflush(stdout);  // the printf lines, before cout's check
+    metalfit::flush_standard_output();
 }
 
 int run_glpreview(int argc, char** argv) {
@@ -226,6 +238,11 @@ int run_glpreview(int argc, char** argv) {
             std::vector<Scene> scenes;
             std::set<std::string> stems;
             for (const auto& file : scene_files) {
+                // The stem names a folder inside -o: "...json" (stem "..") or ".json" must not name -o's parent or -o.
+                const std::string stem = file.stem().string();
+                if (stem.empty() || stem == "." || stem == ".." || stem.find('/') != std::string::npos)
+                    throw UsageError("--batch: " + file.string() + ": the scene's name '" + stem +
+                                     "' cannot name its output folder inside " + output_dir.string() + " (rename the scene file)");
                 if (!stems.insert(file.stem().string()).second)
                     throw UsageError("--batch: two scenes named '" + file.stem().string() + "' would write the same folder");
                 scenes.push_back(load(file));
@@ -233,7 +250,8 @@ int run_glpreview(int argc, char** argv) {
             const OcioConfigChoice ocio = choose_ocio_config(ocio_config, data_dir, "--ocio-config");
             GlContext context = GlContext::create();
             for (std::size_t i = 0; i < scenes.size(); ++i)
-                print_preview(run_preview(scenes[i], {data_dir, ocio, output_dir / scene_files[i].stem(), 0}, &context));
+                print_renderer(run_preview(scenes[i], {data_dir, ocio, output_dir / scene_files[i].stem(), 0}, &context,
+                                           print_before_commit));
             return ok;
         }
         Scene scene = load(scene_files.front());
@@ -241,7 +259,9 @@ int run_glpreview(int argc, char** argv) {
             const auto [width, height] = parse_size("--capture-probe", capture_probe_size, "1024x512");
             const ReflectionProbe probe =
                 capture_probe(scene, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), width, height);
-            for (const auto& file : write_probe(probe, output_dir)) std::cout << file.string() << "\n";
+            for (const char* name : {"probe.exr", "probe.json"}) std::cout << (output_dir / name).string() << "\n";
+            flush_standard_output();  // a stdout that fails: nothing written
+            write_probe(probe, output_dir);
             return ok;
         }
         // --sheet materials given as files are the user's paths: relative to the current folder, not to the scene's.
@@ -262,19 +282,23 @@ int run_glpreview(int argc, char** argv) {
         }
         PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), output_dir, 0};
         if (!sheet.empty()) {
-            const SphereSheet result = render_sphere_sheet(scene, sheet_request, options);
-            for (const auto& row : result.record) {
-                std::printf("%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f",
-                            row["material"].get<std::string>().c_str(), row["model"].get<std::string>().c_str(),
-                            row["model_worst_rel_rms"].get<double>(), kSheetDifferenceScale,
-                            row["image_rmse_model_vs_reference"].get<double>());
-                if (!sheet_request.roughness.empty()) std::printf(" at roughness %g", row["roughness"].get<double>());
-                std::printf("\n");
-            }
-            std::cout << (output_dir / "sheet.png").string() << "\n";
+            // Printed before the sheet is switched in: a stdout that fails writes nothing.
+            const auto print_sheet = [&](const SphereSheet& result) {
+                for (const auto& row : result.record) {
+                    std::printf("%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f",
+                                row["material"].get<std::string>().c_str(), row["model"].get<std::string>().c_str(),
+                                row["model_worst_rel_rms"].get<double>(), kSheetDifferenceScale,
+                                row["image_rmse_model_vs_reference"].get<double>());
+                    if (!sheet_request.roughness.empty()) std::printf(" at roughness %g", row["roughness"].get<double>());
+                    std::printf("\n");
+                }
+                std::cout << (output_dir / "sheet.png").string() << "\n";
+                flush_standard_output();  // a stdout that fails: nothing written
+            };
+            render_sphere_sheet(scene, sheet_request, options, nullptr, print_sheet);
             return ok;
         }
-        print_preview(run_preview(scene, options));
+        print_renderer(run_preview(scene, options, nullptr, print_before_commit));
         return ok;
     } catch (const GlError& e) {
         std::cerr << "glpreview: " << e.what() << "\n";

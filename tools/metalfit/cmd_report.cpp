@@ -11,6 +11,7 @@
 #include "material_selection.hpp"
 #include "progress.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/standard_output.hpp"
 #include "libfit/color/display_transform.hpp"
 #include "libfit/fit/fit_batch.hpp"
 #include "libfit/io/catalog.hpp"
@@ -72,8 +73,10 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     const CostAndBudget cost = report_costs(fits, cost_table, budget);
     const ReportInputs inputs{context, setup.colorimetry, setup.converter, display, catalog, cost, renders,
                               o.sources == "all"};
-    write_report_folder(o.output, report_files(fits, inputs));
+    std::vector<ReportFile> files = report_files(fits, inputs);
     std::cout << (o.output / "index.html").string() << "\n";
+    flush_standard_output();  // a stdout that fails: nothing written
+    write_report_folder(o.output, files);
 
     if (fail_above > 0) {
         const std::vector<std::string> above = channels_above(fits, fail_above);

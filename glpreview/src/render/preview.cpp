@@ -6,7 +6,8 @@
 
 namespace metalfit::glpreview {
 
-PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlContext* context) {
+PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlContext* context,
+                          const std::function<void(const PreviewResult&)>& before_commit) {
     PreviewResult result;
     // The materials are the graph's import: resolved (and fitted) before any pass runs, in sphere order, so that a
     // bad material is reported as before any file is touched.
@@ -32,7 +33,6 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     skip_unneeded_effects(graph);
     result.plan = plan_of(graph, features);
     graph.execute();
-    run.commit_outputs();
 
     result.renderer = run.renderer_name;
     if (const Image* beauty = graph.result(h.beauty)) result.beauty = *beauty;
@@ -44,6 +44,8 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     if (const FrameTimes* frame_ms = graph.result(h.frame_times)) result.frame_ms = *frame_ms;
     if (const Json* metrics = graph.result(h.metrics)) result.metrics = *metrics;
     result.written = run.written;
+    if (before_commit) before_commit(result);
+    run.commit_outputs();
     return result;
 }
 

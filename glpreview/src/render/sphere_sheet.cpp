@@ -215,7 +215,7 @@ Plan build_sheet_plan(const Scene& base, const SheetRequest& request) {
 }
 
 SphereSheet render_sphere_sheet(const Scene& base, const SheetRequest& request, const PreviewOptions& options,
-                                GlContext* context) {
+                                GlContext* context, const std::function<void(const SphereSheet&)>& before_commit) {
     check_sheet_scene(base);
     check_sheet_request(request);
     // The sheet's materials are the command line's (relative to the current folder), not files the scene names: no
@@ -229,8 +229,10 @@ SphereSheet render_sphere_sheet(const Scene& base, const SheetRequest& request, 
     graph.before_first_gpu_pass([&run] { run.open_gl(); });
     graph.compile();
     graph.execute();
+    SphereSheet sheet{*graph.result(record), run.written};
+    if (before_commit) before_commit(sheet);
     run.commit_outputs();
-    return {*graph.result(record), run.written};
+    return sheet;
 }
 
 }  // namespace metalfit::glpreview

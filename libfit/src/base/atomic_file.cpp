@@ -22,17 +22,27 @@ fs::path directory_of(const fs::path& target) { return target.has_parent_path() 
 // What is at `target` now, without following a link there.
 enum class TargetKind { none, regular, link, directory, written_in_place, refused };
 
+// "/dev/stdout", "/dev/stderr", "/dev/fd/N", "/proc/self/fd/N", "/proc/thread-self/fd/N" (spelled plainly).
+bool is_descriptor_link(const fs::path& target) {
+    const std::string s = target.lexically_normal().string();
+    if (s == "/dev/stdout" || s == "/dev/stderr") return true;
+    for (std::string_view dir : {"/dev/fd/", "/proc/self/fd/", "/proc/thread-self/fd/"})
+        if (s.starts_with(dir) && s.size() > dir.size() &&
+            s.find_first_not_of("0123456789", dir.size()) == std::string::npos)
+            return true;
+    return false;
+}
+
 TargetKind kind_of(const fs::path& target) {
     struct stat st {};
     if (::lstat(target.c_str(), &st) != 0) return TargetKind::none;
     if (S_ISREG(st.st_mode)) return TargetKind::regular;
     if (S_ISDIR(st.st_mode)) return TargetKind::directory;
     if (S_ISLNK(st.st_mode)) {
-        // /dev/stdout, /dev/fd/N, /proc/self/fd/N: links the system keeps, written through. Any other link is
+        // /dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N: the links the system keeps for this process's own
+        // descriptors, written through. Any other link, under /dev/ (/dev/shm is anyone's) and /proc/ too, is
         // replaced by the renamed file, never written through (a planted link cannot redirect the output).
-        const std::string s = target.string();
-        const bool system_link = s.starts_with("/dev/") || s.starts_with("/proc/");
-        return system_link ? TargetKind::written_in_place : TargetKind::link;
+        return is_descriptor_link(target) ? TargetKind::written_in_place : TargetKind::link;
     }
     if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)) return TargetKind::written_in_place;
     return TargetKind::refused;  // block devices

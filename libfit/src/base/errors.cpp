@@ -1,4 +1,5 @@
 #include "libfit/base/errors.hpp"
+#include "libfit/base/standard_output.hpp"
 
 #include "libfit/base/utf8.hpp"
 
@@ -80,11 +81,30 @@ int report_current_exception(const char* program) {
     }
 }
 
+namespace {
+bool g_standard_output_loss_reported = false;
+
+std::string describe_loss(int error) {
+    return error == ENOSPC ? "disk full" : error != 0 ? std::strerror(error) : "a write failed (disk full?)";
+}
+}  // namespace
+
+void flush_standard_output() {
+    errno = 0;
+    std::cout.flush();
+    const bool lost = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+    if (!lost) return;
+    const int error = errno;
+    g_standard_output_loss_reported = true;
+    throw InputError(InputLocation("standard output"), "cannot write: " + describe_loss(error) + " (nothing was written)");
+}
+
 int finish_standard_output(const char* program, int code) {
     errno = 0;
     std::cout.flush();
     const bool lost = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
     if (!lost) return code;
+    if (g_standard_output_loss_reported) return code == exit_ok ? exit_bad_input : code;
     const int error = errno;
     std::fprintf(stderr, "%s: cannot write to standard output: %s\n", program,
                  error == ENOSPC ? "disk full" : error != 0 ? std::strerror(error) : "a write failed (disk full?)");

@@ -1,7 +1,11 @@
-// Internal: files created exclusively under unpredictable names (atomic_file, staged_folder).
+// Internal: files created exclusively under unpredictable names, and the staging names that killed writers leave
+// (atomic_file, staged_folder).
 #pragma once
 
 #include <fcntl.h>
+#include <signal.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <sys/random.h>
 #include <unistd.h>
 
@@ -57,36 +61,128 @@ inline int write_new_file(const std::filesystem::path& path, std::string_view co
     return error;
 }
 
-// The name of a temporary beside `target`: ".<target name>.<random>.tmp" in the same directory.
-inline std::filesystem::path temporary_name_beside(const std::filesystem::path& target) {
-    const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
-    return dir / ("." + target.filename().string().substr(0, 200) + "." + unpredictable_suffix() + ".tmp");
+// Staging names: "." + the target's name (cut at 200 bytes) + a mark + "<pid>.<16 hex digits>". The pid and the
+// lock the writer holds on its staging while it lives (lock_staging) are what make a name provably a writer's own:
+// the next writer removes one only when all of these hold (owner_is_gone): the exact pattern, owned by this user, not
+// a link, of the expected kind, its pid not running, and its lock free. A user's file that merely starts the same
+// way is never touched.
+inline constexpr std::string_view kTemporaryMark = ".metalfit-tmp.";
+inline constexpr std::string_view kStagingMark = ".metalfit-staging.";
+
+inline std::string staging_prefix(const std::filesystem::path& target, std::string_view mark) {
+    return "." + target.filename().string().substr(0, 200) + std::string(mark);
 }
 
-// A new file beside `target` named ".<target name>.<random>.tmp" holding `contents`; the path on success, else
-// nullopt with `error` set (EEXIST is retried with another name).
+inline std::filesystem::path directory_of(const std::filesystem::path& target) {
+    return target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+}
+
+// A fresh staging name beside `target`: prefix + pid + "." + random.
+inline std::filesystem::path staging_name_beside(const std::filesystem::path& target, std::string_view mark) {
+    return directory_of(target) / (staging_prefix(target, mark) + std::to_string(::getpid()) + "." + unpredictable_suffix());
+}
+
+// The pid of a staging name after its prefix ("<pid>.<16 hex>"), or 0 when the rest is not exactly that.
+inline pid_t staging_pid(std::string_view rest) {
+    const std::size_t dot = rest.find('.');
+    if (dot == std::string_view::npos || dot == 0 || dot > 9 || rest.size() != dot + 17) return 0;
+    long pid = 0;
+    for (char c : rest.substr(0, dot)) {
+        if (c < '0' || c > '9') return 0;
+        pid = pid * 10 + (c - '0');
+    }
+    for (char c : rest.substr(dot + 1))
+        if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'))) return 0;
+    return pid > 0 ? static_cast<pid_t>(pid) : 0;
+}
+
+// Takes the writer's lock on a staging file or folder, held until `fd` is closed: an open-file-description read lock
+// (fcntl F_OFD_SETLKW), which never conflicts with the flock that serialises the commits into a folder — a writer
+// whose output folder lies inside another writer's staging (the report's glpreview renders) cannot deadlock on it.
+// `fd` must be open for reading.
+inline bool lock_staging(int fd) {
+    struct flock lock {};
+    lock.l_type = F_RDLCK;
+    lock.l_whence = SEEK_SET;
+    while (::fcntl(fd, F_OFD_SETLKW, &lock) != 0)
+        if (errno != EINTR) return false;
+    return true;
+}
+
+// True when nobody holds lock_staging's lock on `fd`.
+inline bool staging_lock_is_free(int fd) {
+    struct flock probe {};
+    probe.l_type = F_WRLCK;
+    probe.l_whence = SEEK_SET;
+    return ::fcntl(fd, F_OFD_GETLK, &probe) == 0 && probe.l_type == F_UNLCK;
+}
+
+// True when `path` (whose name is prefix + `rest`) was staged by a metalfit writer that is gone (see above).
+inline bool owner_is_gone(const std::filesystem::path& path, std::string_view rest, bool directory) {
+    const pid_t pid = staging_pid(rest);
+    if (pid == 0) return false;
+    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) return false;  // running (or not ours to probe)
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) != 0 || st.st_uid != ::geteuid()) return false;
+    if (directory ? !S_ISDIR(st.st_mode) : !S_ISREG(st.st_mode)) return false;
+    const int fd = ::open(path.c_str(), (directory ? O_RDONLY | O_DIRECTORY : O_RDONLY) | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) return false;
+    const bool free = staging_lock_is_free(fd);
+    ::close(fd);
+    return free;
+}
+
+// Removes what killed writers left beside `target` under `mark` (files for kTemporaryMark, folders for kStagingMark).
+inline void remove_stale_beside(const std::filesystem::path& target, std::string_view mark) {
+    const std::string prefix = staging_prefix(target, mark);
+    const bool directory = mark == kStagingMark;
+    std::error_code ec;
+    for (std::filesystem::directory_iterator it(directory_of(target), ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (!name.starts_with(prefix) || !owner_is_gone(it->path(), std::string_view(name).substr(prefix.size()), directory))
+            continue;
+        std::error_code ignored;
+        if (directory) std::filesystem::remove_all(it->path(), ignored);
+        else ::unlink(it->path().c_str());
+    }
+}
+
+// A new file beside `target` named by staging_name_beside(kTemporaryMark) holding `contents`, locked while written;
+// the path on success, else nullopt with `error` set (EEXIST is retried with another name).
 inline std::optional<std::filesystem::path> write_temporary_beside(const std::filesystem::path& target,
                                                                    std::string_view contents, int& error) {
+    remove_stale_beside(target, kTemporaryMark);
     for (int attempt = 0; attempt < 16; ++attempt) {
-        const std::filesystem::path temporary = temporary_name_beside(target);
-        error = write_new_file(temporary, contents);
+        const std::filesystem::path temporary = staging_name_beside(target, kTemporaryMark);
+        const int fd = ::open(temporary.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd < 0) {
+            error = errno;
+            if (error == EEXIST) continue;
+            return std::nullopt;
+        }
+        lock_staging(fd);
+        error = write_all(fd, contents) ? 0 : errno;
+        if (::close(fd) != 0 && error == 0) error = errno;
         if (error == 0) return temporary;
-        if (error != EEXIST) return std::nullopt;
+        ::unlink(temporary.c_str());
+        return std::nullopt;
     }
     return std::nullopt;
 }
 
-// An empty temporary beside `target`, created as write_new_file creates its files and left open for writing: its
-// path and descriptor, else nullopt with `error` set (EEXIST is retried with another name).
+// An empty temporary beside `target`, created as write_temporary_beside creates its files and left open (and
+// locked) for writing: its path and descriptor, else nullopt with `error` set.
 struct OpenTemporary {
     std::filesystem::path path;
     int fd = -1;
 };
 inline std::optional<OpenTemporary> open_temporary_beside(const std::filesystem::path& target, int& error) {
+    remove_stale_beside(target, kTemporaryMark);
     for (int attempt = 0; attempt < 16; ++attempt) {
-        const std::filesystem::path temporary = temporary_name_beside(target);
-        const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        const std::filesystem::path temporary = staging_name_beside(target, kTemporaryMark);
+        const int fd = ::open(temporary.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd >= 0) {
+            lock_staging(fd);
             error = 0;
             return OpenTemporary{temporary, fd};
         }

@@ -5,6 +5,7 @@
 #include <spawn.h>
 #include <fcntl.h>
 #include <sys/wait.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/exclusive_file.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/text.hpp"
 
@@ -37,17 +39,30 @@ std::string last_line(const std::string& text) {
     return last;
 }
 
+// glpreview's scratch folder under $TMPDIR, named and locked as the writers' staging folders are
+// (".metalfit-renders.metalfit-staging.<pid>.<random>"), so that one a killed report left is removed by the next.
 struct TemporaryFolder {
     fs::path path;
+    int fd = -1;
     TemporaryFolder() {
-        std::random_device random;
-        path = fs::temp_directory_path() / ("metalfit-renders-" + std::to_string(::getpid()) + "-" + std::to_string(random()));
-        fs::create_directories(path);
+        const fs::path beside = fs::temp_directory_path() / "metalfit-renders";
+        detail::remove_stale_beside(beside, detail::kStagingMark);
+        for (int attempt = 0; attempt < 16 && path.empty(); ++attempt) {
+            const fs::path name = detail::staging_name_beside(beside, detail::kStagingMark);
+            if (::mkdir(name.c_str(), 0700) == 0) path = name;
+            else if (errno != EEXIST) break;
+        }
+        if (path.empty()) throw std::runtime_error("cannot make a temporary folder in " + beside.parent_path().string());
+        fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+        if (fd >= 0) detail::lock_staging(fd);
     }
     ~TemporaryFolder() {
         std::error_code ec;
         fs::remove_all(path, ec);
+        if (fd >= 0) ::close(fd);
     }
+    TemporaryFolder(const TemporaryFolder&) = delete;
+    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
 };
 
 // The sheet, or throws std::runtime_error with the reason.
@@ -59,7 +74,8 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
     const std::string size = std::to_string(r.cell_size) + "x" + std::to_string(r.cell_size);
     std::vector<std::string> args{r.glpreview.string(), r.scene.string(), "--sheet", join(r.materials, ","), "--sheet-models",
                                   join(r.models, ","), "--size", size,
-                                  "-o", folder.path.string(), "--data-dir", r.data_dir.string(),
+                                  // a folder inside the scratch folder: glpreview's own staging then lives there too
+                                  "-o", (folder.path / "sheet").string(), "--data-dir", r.data_dir.string(),
                                   "--ocio-config", r.ocio.path.string()};
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
@@ -82,8 +98,8 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
         throw std::runtime_error(why.empty() ? "glpreview failed" : why);
     }
     SphereSheetImage sheet;
-    sheet.png = read_bytes(folder.path / "sheet.png");
-    const auto record = nlohmann::json::parse(read_bytes(folder.path / "sheet.json"));
+    sheet.png = read_bytes(folder.path / "sheet" / "sheet.png");
+    const auto record = nlohmann::json::parse(read_bytes(folder.path / "sheet" / "sheet.json"));
     // Row r is the r-th material asked for (glpreview names it by its catalog name); its entries go by model, then
     // roughness.
     sheet.materials = r.materials;

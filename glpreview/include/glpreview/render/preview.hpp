@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -39,7 +40,10 @@ struct PreviewResult {
     std::vector<std::filesystem::path> written;
 };
 
-// `context` may be null: one is created when a GPU pass runs (and only then).
-PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlContext* context = nullptr);
+// `context` may be null: one is created when a GPU pass runs (and only then). `before_commit`, when given, sees the
+// result after every pass ran and before the files are switched into the output folder (the CLI prints it there and
+// checks stdout: a stdout that fails writes nothing); what it throws leaves the folder as it was.
+PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlContext* context = nullptr,
+                          const std::function<void(const PreviewResult&)>& before_commit = {});
 
 }  // namespace metalfit::glpreview

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,9 @@ struct SphereSheet {
 // The sheet's graph compiled without running it (no GL, no fits): what --explain --sheet prints.
 Plan build_sheet_plan(const Scene& scene, const SheetRequest& request);
 
+// `before_commit` as run_preview's: the sheet before its files are switched in.
 SphereSheet render_sphere_sheet(const Scene& scene, const SheetRequest& request, const PreviewOptions& options,
-                                GlContext* context = nullptr);
+                                GlContext* context = nullptr,
+                                const std::function<void(const SphereSheet&)>& before_commit = {});
 
 }  // namespace metalfit::glpreview

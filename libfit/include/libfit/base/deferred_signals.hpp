@@ -1,5 +1,5 @@
 // SIGINT, SIGTERM and SIGHUP held back while output files are written, so that an interrupted run can remove its
-// temporaries before it ends by the signal it was sent (docs/development.md, "Interrupted runs").
+// temporaries before it ends by the signal it was sent (docs/cli.md, "Output files and interrupted runs").
 #pragma once
 
 #include <stdexcept>

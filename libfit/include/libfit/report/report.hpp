@@ -50,9 +50,10 @@ struct ReportFile {
 // and the renders. Throws std::logic_error when this libfit was built without the chart libraries.
 std::vector<ReportFile> report_files(const std::vector<MaterialFit>& fits, const ReportInputs& inputs);
 
-// Writes the folder as one unit: every file into a new temporary folder beside `dir`, which then replaces `dir`
-// (renamed into place; an existing `dir` is replaced only after everything was written). On failure nothing new is
-// left behind. Throws InputError naming the path that failed.
+// Writes the folder as one unit (replace_folder_as_unit, libfit/base/staged_folder.hpp): every file into a staging
+// folder beside `dir`, which is then exchanged with `dir` (at every instant the old or the new folder is there; the
+// old one is removed after). On failure or a signal nothing new is left behind; a staging folder a SIGKILL left is
+// removed by the next writer. Throws InputError naming the path that failed.
 void write_report_folder(const std::filesystem::path& dir, const std::vector<ReportFile>& files);
 
 // What write_report_folder checks before writing (the target is a folder or does not exist, in an existing folder),
