@@ -14,6 +14,7 @@
 #include <random>
 #include <thread>
 
+#include "interrupted_runs.hpp"
 #include "test_support.hpp"
 
 extern char** environ;
@@ -24,42 +25,10 @@ namespace fs = std::filesystem;
 using metalfit::test::read_file;
 using metalfit::test::TempDir;
 
-std::map<std::string, std::string> tree(const fs::path& dir) {
-    std::map<std::string, std::string> files;
-    for (const auto& e : fs::recursive_directory_iterator(dir))
-        if (e.is_regular_file()) files[e.path().lexically_relative(dir).string()] = read_file(e.path());
-    return files;
-}
+using metalfit::test::names_in;
+using metalfit::test::tree;
 
-std::vector<std::string> names_in(const fs::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
-pid_t start_export(const std::vector<std::string>& args) {
-    std::vector<std::string> all{METALFIT_EXE};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (std::string& a : all) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    std::vector<std::string> env_strings;
-    for (char** e = environ; *e; ++e)
-        if (!std::string_view(*e).starts_with("OCIO=")) env_strings.emplace_back(*e);
-    std::vector<char*> env;
-    for (std::string& e : env_strings) env.push_back(e.data());
-    env.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-    pid_t pid = -1;
-    const int rc = posix_spawn(&pid, METALFIT_EXE, &actions, nullptr, argv.data(), env.data());
-    posix_spawn_file_actions_destroy(&actions);
-    if (rc != 0) throw std::runtime_error("posix_spawn failed");
-    return pid;
-}
+pid_t start_export(const std::vector<std::string>& args) { return metalfit::test::spawn_quietly(METALFIT_EXE, args); }
 
 int wait_for(pid_t pid) {
     int status = 0;

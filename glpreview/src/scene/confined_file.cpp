@@ -15,16 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool inside(const fs::path& p, const fs::path& folder) {
-    if (folder.empty()) return false;
-    auto f = folder.begin(), q = p.begin();
-    for (; f != folder.end(); ++f, ++q) {
-        if (f->empty()) continue;  // a trailing separator
-        if (q == p.end() || *f != *q) return false;
-    }
-    return true;
-}
-
 // The file the descriptor holds, as the kernel names it (every link resolved when it was opened).
 fs::path opened_path(int fd) {
     std::vector<char> buffer(4096);
@@ -52,10 +42,8 @@ ConfinedFile ConfinedFile::open(const fs::path& scene_file, const std::optional<
     const bool have_proc = ::access(descriptor.c_str(), R_OK) == 0;  // without /proc: the path, checked as it resolves now
     if (policy && !policy->allow_outside) {
         std::error_code error;
-        const fs::path folder = fs::weakly_canonical(fs::absolute(scene_file).parent_path(), error);
-        const fs::path data = policy->data_dir.empty() ? fs::path() : fs::weakly_canonical(fs::absolute(policy->data_dir), error);
         const fs::path opened = have_proc ? opened_path(fd) : fs::weakly_canonical(fs::absolute(original), error);
-        if (opened.empty() || (!inside(opened, folder) && !inside(opened, data))) {
+        if (opened.empty() || !policy_allows(*policy, scene_file, opened)) {
             ::close(fd);
             throw InputError(InputLocation(scene_file, 0, field),
                              "a path outside the scene's folder and the database (glpreview --allow-paths-outside to allow it)");

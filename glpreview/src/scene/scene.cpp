@@ -348,15 +348,22 @@ std::vector<std::string> placement_warnings(const Scene& scene) {
     return warnings;
 }
 
+bool policy_allows(const PathPolicy& policy, const std::filesystem::path& scene_file, const std::filesystem::path& resolved) {
+    namespace fs = std::filesystem;
+    if (policy.allow_outside) return true;
+    std::error_code error;
+    const fs::path folder = fs::weakly_canonical(fs::absolute(scene_file).parent_path(), error);
+    const fs::path data = policy.data_dir.empty() ? fs::path() : fs::weakly_canonical(fs::absolute(policy.data_dir), error);
+    return inside(resolved, folder) || inside(resolved, data);
+}
+
 void confine_scene_paths(const Scene& scene, const PathPolicy& policy) {
     if (policy.allow_outside) return;
     namespace fs = std::filesystem;
     std::error_code error;
-    const fs::path folder = fs::weakly_canonical(fs::absolute(scene.file).parent_path(), error);
-    const fs::path data = policy.data_dir.empty() ? fs::path() : fs::weakly_canonical(fs::absolute(policy.data_dir), error);
     auto check = [&](const fs::path& path, const std::string& field) {
         const fs::path resolved = fs::weakly_canonical(fs::absolute(path), error);
-        if (!inside(resolved, folder) && !inside(resolved, data))
+        if (!policy_allows(policy, scene.file, resolved))
             throw InputError(InputLocation(scene.file, 0, field),
                              "a path outside the scene's folder and the database (glpreview --allow-paths-outside to allow it)");
     };

@@ -181,6 +181,9 @@ struct Scene {
 // Every file the scene names (material files, the equirect image), resolved with links followed, must lie in the
 // scene's folder or the database unless policy.allow_outside; throws InputError naming the field.
 void confine_scene_paths(const Scene& scene, const PathPolicy& policy);
+// Whether `resolved` (an absolute path, links resolved) lies in the folder of `scene_file` or the database, or the
+// policy allows paths outside: the one test of confine_scene_paths and ConfinedFile.
+bool policy_allows(const PathPolicy& policy, const std::filesystem::path& scene_file, const std::filesystem::path& resolved);
 // Checks the image size against the limits (kMaxImageEdge, kMaxImagePixels); throws InputError naming `what`.
 void check_image_size(const std::filesystem::path& file, const std::string& what, int width, int height);
 
