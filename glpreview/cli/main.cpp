@@ -103,8 +103,7 @@ void print_preview(const metalfit::glpreview::PreviewResult& result) {
 // nothing is written. (The renderer line on stderr comes after, with the outcome: print_renderer.)
 void print_before_commit(const metalfit::glpreview::PreviewResult& result) {
     print_preview(result);
-    std::fflush(stdout);  // the printf lines, before cout's check
-    metalfit::flush_standard_output();
+    metalfit::flush_standard_output();  // cout and the printf lines (stdio) both
 }
 
 int run_glpreview(int argc, char** argv) {

@@ -360,18 +360,28 @@ void add_image_file_pass(PassGraph& graph, const std::string& file, Handle<Refer
     add_image_file(graph, file, image, run);
 }
 
-void add_json_file_pass(PassGraph& graph, const std::string& file, const std::string& why, Handle<Json> json, PreviewRun* run) {
+namespace {
+
+// A pass writing `file` (indented JSON) from the resource `from`, as `to_json` makes it of that resource.
+template <typename T, typename ToJson>
+void add_json_file(PassGraph& graph, const std::string& file, const std::string& why, Handle<T> from, PreviewRun* run,
+                   ToJson to_json) {
     graph.add_pass<Empty>(
         {"write " + file, why, Processor::cpu},
         [&](Builder& b, Empty&) {
-            b.read(json);
+            b.read(from);
             b.write_file(file);
         },
-        [run, file, json](const Empty&, Resources& r) {
+        [run, file, from, to_json](const Empty&, Resources& r) {
             if (run->output_dir.empty()) return;
-            const std::filesystem::path path = run->output_file(file);
-            write_file_atomically(path, r.get(json).dump(2) + "\n");
+            write_file_atomically(run->output_file(file), to_json(r.get(from)).dump(2) + "\n");
         });
+}
+
+}  // namespace
+
+void add_json_file_pass(PassGraph& graph, const std::string& file, const std::string& why, Handle<Json> json, PreviewRun* run) {
+    add_json_file(graph, file, why, json, run, [](const Json& j) -> const Json& { return j; });
 }
 
 PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Features& f, PreviewRun* run) {
@@ -529,16 +539,8 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
     if (o.localization) add_image_file_pass(graph, "localization.exr", h.localization, run);
     if (o.metrics) {
         add_json_file_pass(graph, "metrics.json", "asked for", h.metrics, run);
-        graph.add_pass<Empty>(
-            {"write timings.json", "asked for (metrics: the frame times, apart from metrics.json)", Processor::cpu},
-            [frame_times = h.frame_times](Builder& b, Empty&) {
-                b.read(frame_times);
-                b.write_file("timings.json");
-            },
-            [run, frame_times = h.frame_times](const Empty&, Resources& r) {
-                if (run->output_dir.empty()) return;
-                write_file_atomically(run->output_file("timings.json"), timings_json(*run, r.get(frame_times)).dump(2) + "\n");
-            });
+        add_json_file(graph, "timings.json", "asked for (metrics: the frame times, apart from metrics.json)", h.frame_times,
+                      run, [run](const FrameTimes& frame_ms) { return timings_json(*run, frame_ms); });
     }
     return h;
 }

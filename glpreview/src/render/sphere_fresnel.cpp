@@ -79,13 +79,16 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
     // the field and the file as the scene gave it.
     std::optional<ConfinedFile> file;
     if (looks_like_path(sphere.material)) file.emplace(ConfinedFile::open(scene_file_, paths_, sphere.material, field + ".material"));
+    const auto at_material = [&](const std::exception& e) {
+        return InputError(InputLocation(scene_file_, 0, field + ".material"), file ? file->in_original_terms(e.what()) : e.what());
+    };
     Material material;
     try {
         material = load_material(catalog_, file ? file->path().string() : sphere.material, sphere.source);
     } catch (const UsageError& e) {
-        throw InputError(InputLocation(scene_file_, 0, field + ".material"), file ? file->in_original_terms(e.what()) : e.what());
+        throw at_material(e);
     } catch (const InputError& e) {
-        throw InputError(InputLocation(scene_file_, 0, field + ".material"), file ? file->in_original_terms(e.what()) : e.what());
+        throw at_material(e);
     }
     if (file) {
         material.provenance.file = file->original();

@@ -17,8 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path directory_of(const fs::path& target) { return target.has_parent_path() ? target.parent_path() : fs::path("."); }
-
 // What is at `target` now, without following a link there.
 enum class TargetKind { none, regular, link, directory, written_in_place, refused };
 
@@ -58,7 +56,7 @@ void write_in_place(const fs::path& target, std::string_view contents) {
 
 [[noreturn]] void throw_cannot_write(const fs::path& target, int error) {
     if (error == EACCES || error == EPERM || error == EROFS)
-        throw InputError({target}, "cannot write: directory " + directory_of(target).string() + " is not writable");
+        throw InputError({target}, "cannot write: directory " + detail::directory_of(target).string() + " is not writable");
     throw InputError({target}, "cannot write: " + detail::describe_errno(error));
 }
 
@@ -66,8 +64,8 @@ void check_target(const fs::path& target, TargetKind kind) {
     if (kind == TargetKind::directory) throw InputError({target}, "cannot write: it is a directory");
     if (kind == TargetKind::refused) throw InputError({target}, "cannot write: it exists and is not a regular file");
     std::error_code ec;
-    if (!fs::is_directory(directory_of(target), ec))
-        throw InputError({target}, "cannot write: directory " + directory_of(target).string() + " does not exist");
+    if (!fs::is_directory(detail::directory_of(target), ec))
+        throw InputError({target}, "cannot write: directory " + detail::directory_of(target).string() + " does not exist");
 }
 
 }  // namespace

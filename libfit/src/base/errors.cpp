@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <iostream>
 
 namespace metalfit {
@@ -84,30 +85,28 @@ int report_current_exception(const char* program) {
 namespace {
 bool g_standard_output_loss_reported = false;
 
-std::string describe_loss(int error) {
+// Flushes stdout; when anything written there was lost, why, in words ("disk full", the system's words).
+std::optional<std::string> standard_output_loss() {
+    errno = 0;
+    std::cout.flush();
+    const bool lost = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+    if (!lost) return std::nullopt;
+    const int error = errno;
     return error == ENOSPC ? "disk full" : error != 0 ? std::strerror(error) : "a write failed (disk full?)";
 }
 }  // namespace
 
 void flush_standard_output() {
-    errno = 0;
-    std::cout.flush();
-    const bool lost = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
-    if (!lost) return;
-    const int error = errno;
+    const std::optional<std::string> loss = standard_output_loss();
+    if (!loss) return;
     g_standard_output_loss_reported = true;
-    throw InputError(InputLocation("standard output"), "cannot write: " + describe_loss(error) + " (nothing was written)");
+    throw InputError(InputLocation("standard output"), "cannot write: " + *loss + " (nothing was written)");
 }
 
 int finish_standard_output(const char* program, int code) {
-    errno = 0;
-    std::cout.flush();
-    const bool lost = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
-    if (!lost) return code;
-    if (g_standard_output_loss_reported) return code == exit_ok ? exit_bad_input : code;
-    const int error = errno;
-    std::fprintf(stderr, "%s: cannot write to standard output: %s\n", program,
-                 error == ENOSPC ? "disk full" : error != 0 ? std::strerror(error) : "a write failed (disk full?)");
+    const std::optional<std::string> loss = standard_output_loss();
+    if (!loss) return code;
+    if (!g_standard_output_loss_reported) std::fprintf(stderr, "%s: cannot write to standard output: %s\n", program, loss->c_str());
     return code == exit_ok ? exit_bad_input : code;
 }
 

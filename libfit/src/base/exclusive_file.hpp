@@ -147,31 +147,37 @@ inline void remove_stale_beside(const std::filesystem::path& target, std::string
     }
 }
 
-// A new file beside `target` named by staging_name_beside(kTemporaryMark) holding `contents`, locked while written;
-// the path on success, else nullopt with `error` set (EEXIST is retried with another name).
-inline std::optional<std::filesystem::path> write_temporary_beside(const std::filesystem::path& target,
-                                                                   std::string_view contents, int& error) {
-    remove_stale_beside(target, kTemporaryMark);
+// A new staging folder beside `target` (mode 0700, named by staging_name_beside(kStagingMark), made exclusively;
+// EEXIST is retried with another name), after the staging folders that killed writers left there were removed: its
+// path, else nullopt with `error` set. The caller locks it (lock_staging_folder) for as long as it writes there.
+inline std::optional<std::filesystem::path> make_staging_folder_beside(const std::filesystem::path& target, int& error) {
+    remove_stale_beside(target, kStagingMark);
+    error = 0;
     for (int attempt = 0; attempt < 16; ++attempt) {
-        const std::filesystem::path temporary = staging_name_beside(target, kTemporaryMark);
-        const int fd = ::open(temporary.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-        if (fd < 0) {
-            error = errno;
-            if (error == EEXIST) continue;
-            return std::nullopt;
-        }
-        lock_staging(fd);
-        error = write_all(fd, contents) ? 0 : errno;
-        if (::close(fd) != 0 && error == 0) error = errno;
-        if (error == 0) return temporary;
-        ::unlink(temporary.c_str());
-        return std::nullopt;
+        const std::filesystem::path name = staging_name_beside(target, kStagingMark);
+        if (::mkdir(name.c_str(), 0700) == 0) return name;
+        if ((error = errno) != EEXIST) return std::nullopt;
     }
     return std::nullopt;
 }
 
-// An empty temporary beside `target`, created as write_temporary_beside creates its files and left open (and
-// locked) for writing: its path and descriptor, else nullopt with `error` set.
+// Opens the staging folder `path` and takes lock_staging's lock on it: the descriptor that holds the lock (close it
+// to release), or -1 with errno set.
+inline int lock_staging_folder(const std::filesystem::path& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0) return -1;
+    if (!lock_staging(fd)) {
+        const int error = errno;
+        ::close(fd);
+        errno = error;
+        return -1;
+    }
+    return fd;
+}
+
+// An empty temporary beside `target`, named by staging_name_beside(kTemporaryMark), created exclusively (never
+// through a link) and left open (and locked: lock_staging) for writing: its path and descriptor, else nullopt with
+// `error` set (EEXIST is retried with another name). Temporaries that killed writers left are removed first.
 struct OpenTemporary {
     std::filesystem::path path;
     int fd = -1;
@@ -189,6 +195,19 @@ inline std::optional<OpenTemporary> open_temporary_beside(const std::filesystem:
         error = errno;
         if (error != EEXIST) return std::nullopt;
     }
+    return std::nullopt;
+}
+
+// A new temporary beside `target` (open_temporary_beside) holding `contents`, locked while written and closed: its
+// path on success, else nullopt with `error` set (nothing left behind).
+inline std::optional<std::filesystem::path> write_temporary_beside(const std::filesystem::path& target,
+                                                                   std::string_view contents, int& error) {
+    const std::optional<OpenTemporary> temporary = open_temporary_beside(target, error);
+    if (!temporary) return std::nullopt;
+    error = write_all(temporary->fd, contents) ? 0 : errno;
+    if (::close(temporary->fd) != 0 && error == 0) error = errno;
+    if (error == 0) return temporary->path;
+    ::unlink(temporary->path.c_str());
     return std::nullopt;
 }
 

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <string>
 #include <vector>
+#include <vector>
 
 #include "libfit/base/errors.hpp"
 
@@ -113,6 +114,18 @@ inline void check_index_modulus(double n, double k, const InputLocation& where) 
         std::snprintf(text, sizeof text, "|n + ik| is below 1e-6 (n = %.3g, k = %.3g)", n, k);
         throw InputError(where, std::string(text) + ": too close to n = k = 0 for the Fresnel reflectance in double precision");
     }
+}
+
+// A row giving n < kMinIndexModulus without its k (an n-only block or table): |n + ik| is checked once k is known.
+struct SmallN {
+    InputLocation where;
+    double nm = 0, n = 0;
+};
+
+// check_index_modulus of every such row with k_at(nm): k where the file gives it (0 where it gives none).
+template <class KAt>
+void check_small_n(const std::vector<SmallN>& rows, const KAt& k_at) {
+    for (const SmallN& row : rows) check_index_modulus(row.n, k_at(row.nm), row.where);
 }
 
 }  // namespace metalfit::detail

@@ -172,19 +172,14 @@ StagedFolder::StagedFolder(const fs::path& requested, Existing existing, MergeEx
     }
     created_ = create_folders(parent);
     try {
-        detail::remove_stale_beside(dir_, detail::kStagingMark);
         int error = 0;
-        for (int attempt = 0; attempt < 16 && staging_.empty(); ++attempt) {
-            const fs::path name = detail::staging_name_beside(dir_, detail::kStagingMark);
-            if (::mkdir(name.c_str(), 0700) == 0) staging_ = name;
-            else if ((error = errno) != EEXIST) break;
-        }
-        if (staging_.empty())
+        const std::optional<fs::path> staging = detail::make_staging_folder_beside(dir_, error);
+        if (!staging)
             throw InputError({dir_}, "cannot write: directory " + parent.string() + " is not writable (" +
                                          detail::describe_errno(error) + "; the new files are staged beside the folder)");
-        staging_fd_ = ::open(staging_.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-        if (staging_fd_ < 0 || !detail::lock_staging(staging_fd_))
-            throw InputError({dir_}, "cannot lock the staging folder: " + detail::describe_errno(errno));
+        staging_ = *staging;
+        staging_fd_ = detail::lock_staging_folder(staging_);
+        if (staging_fd_ < 0) throw InputError({dir_}, "cannot lock the staging folder: " + detail::describe_errno(errno));
     } catch (...) {
         if (staging_fd_ >= 0) ::close(staging_fd_);
         if (!staging_.empty()) ::rmdir(staging_.c_str());

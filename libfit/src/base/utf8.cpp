@@ -7,9 +7,34 @@
 namespace metalfit {
 namespace {
 
-std::size_t lead_length(unsigned char c) {
-    return c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+// The sequence a lead byte at text[i] announces, decoded as far as its continuation bytes go: `length` 0 for a byte
+// that starts none (a stray continuation byte, 0xF8–0xFF), `complete` false when the text ends or a byte that is no
+// continuation byte comes before `length` bytes; `code` the code point of a complete sequence.
+struct Decoded {
+    std::size_t length = 0;
+    bool complete = false;
+    char32_t code = 0;
+};
+
+Decoded decode(std::string_view text, std::size_t i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    Decoded d;
+    d.length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+    if (d.length == 0) return d;
+    d.code = d.length == 1 ? c : d.length == 2 ? (c & 0x1F) : d.length == 3 ? (c & 0x0F) : (c & 0x07);
+    for (std::size_t j = 1; j < d.length; ++j) {
+        if (i + j >= text.size() || (static_cast<unsigned char>(text[i + j]) >> 6) != 0x2) return d;
+        d.code = (d.code << 6) | (static_cast<unsigned char>(text[i + j]) & 0x3F);
+    }
+    d.complete = true;
+    return d;
 }
+
+bool overlong(const Decoded& d) {
+    return (d.length == 2 && d.code < 0x80) || (d.length == 3 && d.code < 0x800) || (d.length == 4 && d.code < 0x10000);
+}
+
+bool surrogate(char32_t code) { return code >= 0xD800 && code <= 0xDFFF; }
 
 std::string hex_bytes(std::string_view bytes) {
     std::string out;
@@ -29,44 +54,25 @@ std::string code_point(char32_t code) {
 
 // Why text[i] starts no UTF-8 sequence (utf8_sequence returned 0 there).
 std::string why_not(std::string_view text, std::size_t i) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    const std::size_t length = lead_length(c);
-    char buffer[48];
-    if (length == 0) {
-        std::snprintf(buffer, sizeof buffer, "byte 0x%02X is not UTF-8", c);
+    const Decoded d = decode(text, i);
+    if (!d.complete) {  // no lead byte, or a truncated sequence
+        char buffer[48];
+        std::snprintf(buffer, sizeof buffer, "byte 0x%02X is not UTF-8", static_cast<unsigned char>(text[i]));
         return buffer;
     }
-    char32_t code = length == 2 ? (c & 0x1F) : length == 3 ? (c & 0x0F) : (c & 0x07);
-    for (std::size_t j = 1; j < length; ++j) {
-        if (i + j >= text.size() || (static_cast<unsigned char>(text[i + j]) >> 6) != 0x2) {
-            std::snprintf(buffer, sizeof buffer, "byte 0x%02X is not UTF-8", c);  // a truncated sequence
-            return buffer;
-        }
-        code = (code << 6) | (static_cast<unsigned char>(text[i + j]) & 0x3F);
-    }
-    const std::string bytes = hex_bytes(text.substr(i, length));
-    if ((length == 2 && code < 0x80) || (length == 3 && code < 0x800) || (length == 4 && code < 0x10000))
-        return "overlong encoding " + bytes + " of " + code_point(code);
-    if (code >= 0xD800 && code <= 0xDFFF) return "UTF-16 surrogate " + code_point(code) + " (" + bytes + ") in UTF-8";
-    return "code point " + code_point(code) + " (" + bytes + ") above U+10FFFF";
+    const std::string bytes = hex_bytes(text.substr(i, d.length));
+    if (overlong(d)) return "overlong encoding " + bytes + " of " + code_point(d.code);
+    if (surrogate(d.code)) return "UTF-16 surrogate " + code_point(d.code) + " (" + bytes + ") in UTF-8";
+    return "code point " + code_point(d.code) + " (" + bytes + ") above U+10FFFF";
 }
 
 }  // namespace
 
 std::size_t utf8_sequence(std::string_view text, std::size_t i, char32_t& code) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    const std::size_t length = lead_length(c);
-    if (length == 0 || i + length > text.size()) return 0;
-    char32_t value = length == 1 ? c : length == 2 ? (c & 0x1F) : length == 3 ? (c & 0x0F) : (c & 0x07);
-    for (std::size_t j = 1; j < length; ++j) {
-        const auto d = static_cast<unsigned char>(text[i + j]);
-        if ((d >> 6) != 0x2) return 0;
-        value = (value << 6) | (d & 0x3F);
-    }
-    const bool overlong = (length == 2 && value < 0x80) || (length == 3 && value < 0x800) || (length == 4 && value < 0x10000);
-    if (overlong || value > 0x10FFFF || (value >= 0xD800 && value <= 0xDFFF)) return 0;
-    code = value;
-    return length;
+    const Decoded d = decode(text, i);
+    if (!d.complete || overlong(d) || d.code > 0x10FFFF || surrogate(d.code)) return 0;
+    code = d.code;
+    return d.length;
 }
 
 std::optional<Utf8Problem> find_invalid_utf8(std::string_view text) {

@@ -22,7 +22,7 @@ struct ColorSpaceConverter::Impl {
 
 namespace {
 
-std::string describe(const OcioConfigChoice& c) { return "OCIO config " + c.path.string() + " (" + c.origin + ")"; }
+const auto describe = detail::describe_ocio_config;  // every message here names the config so
 
 }  // namespace
 

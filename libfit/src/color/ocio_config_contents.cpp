@@ -32,7 +32,7 @@ OcioConfigContents read_ocio_config_contents(const OcioConfigChoice& choice) {
     const auto text = [&choice](const char* value, const std::string& field) {
         std::string s = value == nullptr ? "" : value;
         if (const auto problem = find_invalid_utf8(s))
-            throw ColorConfigError("OCIO config " + choice.path.string() + " (" + choice.origin + "): " + field + " is not UTF-8 (" +
+            throw ColorConfigError(detail::describe_ocio_config(choice) + ": " + field + " is not UTF-8 (" +
                                    problem->reason + "): " + s);
         return s;
     };

@@ -20,34 +20,35 @@ namespace OCIO = OCIO_NAMESPACE;
 namespace metalfit::detail {
 namespace {
 
+// Every transform reachable from `transform` that is not a group (group transforms opened, 64 levels at most).
+void each_leaf_transform(const OCIO::ConstTransformRcPtr& transform,
+                         const std::function<void(const OCIO::ConstTransformRcPtr&)>& visit, int depth = 0) {
+    if (!transform || depth > 64) return;
+    if (const auto group = OCIO::DynamicPtrCast<const OCIO::GroupTransform>(transform)) {
+        for (int i = 0; i < group->getNumTransforms(); ++i) each_leaf_transform(group->getTransform(i), visit, depth + 1);
+        return;
+    }
+    visit(transform);
+}
+
 // The colour spaces a transform refers to by name (through groups), as the config resolves them (roles, aliases).
 void referenced_spaces(const OCIO::ConstConfigRcPtr& config, const OCIO::ConstTransformRcPtr& transform,
-                       std::set<std::string>& out, int depth = 0) {
-    if (!transform || depth > 64) return;
+                       std::set<std::string>& out) {
     const auto add = [&](const char* name) {
         if (name == nullptr || *name == '\0') return;
         if (const auto space = config->getColorSpace(name)) out.insert(space->getName());
     };
-    if (const auto group = OCIO::DynamicPtrCast<const OCIO::GroupTransform>(transform)) {
-        for (int i = 0; i < group->getNumTransforms(); ++i) referenced_spaces(config, group->getTransform(i), out, depth + 1);
-    } else if (const auto cs = OCIO::DynamicPtrCast<const OCIO::ColorSpaceTransform>(transform)) {
-        add(cs->getSrc());
-        add(cs->getDst());
-    } else if (const auto look = OCIO::DynamicPtrCast<const OCIO::LookTransform>(transform)) {
-        add(look->getSrc());
-        add(look->getDst());
-    } else if (const auto view = OCIO::DynamicPtrCast<const OCIO::DisplayViewTransform>(transform)) {
-        add(view->getSrc());
-    }
-}
-
-// Every file transform reachable from `transform` (inside group transforms too).
-void each_file_transform(const OCIO::ConstTransformRcPtr& transform,
-                         const std::function<void(const OCIO::FileTransform&)>& visit) {
-    if (!transform) return;
-    if (const auto file = OCIO::DynamicPtrCast<const OCIO::FileTransform>(transform)) visit(*file);
-    if (const auto group = OCIO::DynamicPtrCast<const OCIO::GroupTransform>(transform))
-        for (int i = 0; i < group->getNumTransforms(); ++i) each_file_transform(group->getTransform(i), visit);
+    each_leaf_transform(transform, [&](const OCIO::ConstTransformRcPtr& leaf) {
+        if (const auto cs = OCIO::DynamicPtrCast<const OCIO::ColorSpaceTransform>(leaf)) {
+            add(cs->getSrc());
+            add(cs->getDst());
+        } else if (const auto look = OCIO::DynamicPtrCast<const OCIO::LookTransform>(leaf)) {
+            add(look->getSrc());
+            add(look->getDst());
+        } else if (const auto view = OCIO::DynamicPtrCast<const OCIO::DisplayViewTransform>(leaf)) {
+            add(view->getSrc());
+        }
+    });
 }
 
 // Every transform the config defines, with what holds it ("colour space 'x'", "look 'y'", ...).
@@ -100,8 +101,12 @@ std::string lut_problem(const OCIO::Config& config, const char* src, std::string
 
 }  // namespace
 
+std::string describe_ocio_config(const OcioConfigChoice& choice) {
+    return "OCIO config " + choice.path.string() + " (" + choice.origin + ")";
+}
+
 OCIO::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice, const std::string& context) {
-    const std::string described = context.empty() ? "OCIO config " + choice.path.string() + " (" + choice.origin + ")" : context;
+    const std::string described = context.empty() ? describe_ocio_config(choice) : context;
     // UTF-8 throughout, as every text file metalfit reads (utf8.hpp): OCIO itself passes any bytes in names and
     // families on, and only warns about keys. Read as an input file (a regular file within its size limit).
     std::string text;
@@ -169,8 +174,10 @@ OCIO::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice, const st
     // Every LUT a file transform names: a regular file within the size limit that the search path finds (OCIO would
     // read /dev/zero or a FIFO without end).
     each_transform(*config, [&](const OCIO::ConstTransformRcPtr& transform, const std::string& holder) {
-        each_file_transform(transform, [&](const OCIO::FileTransform& file) {
-            const char* src = file.getSrc();
+        each_leaf_transform(transform, [&](const OCIO::ConstTransformRcPtr& leaf) {
+            const auto file = OCIO::DynamicPtrCast<const OCIO::FileTransform>(leaf);
+            if (!file) return;
+            const char* src = file->getSrc();
             std::string resolved;
             if (const std::string problem = lut_problem(*config, src ? src : "", resolved); !problem.empty())
                 throw ColorConfigError(described + ": " + holder + ": file transform " + resolved + ": " + problem);

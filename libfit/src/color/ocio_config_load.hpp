@@ -14,6 +14,9 @@ namespace metalfit::detail {
 // a config may hold: OCIO 2.1 loads them in quadratic time (2,000 in about 0.5 s on this project's machines).
 inline constexpr std::size_t kMaxOcioEntries = 2000;
 
+// "OCIO config <path> (<origin>)": how every message about a config names it.
+std::string describe_ocio_config(const OcioConfigChoice& choice);
+
 // Reads a config under the limits of every other input (docs/colour.md, "Limits"): refuses a config that is not a
 // regular file within the input size limit (input_file.hpp), not UTF-8, whose YAML fails check_yaml_structure or that
 // holds more than kMaxOcioEntries entries; then OCIO::Config::CreateFromFile; then refuses a config in which a colour

@@ -54,9 +54,7 @@ Material load_nk_csv(const std::filesystem::path& file) {
     // Rows of n < 1e-6 given without k: |n + ik| with k where it is known (k = 0 without a k column).
     if (!samples.small_n.empty()) {
         const std::optional<Spectrum> k = samples.k.empty() ? std::nullopt : std::optional<Spectrum>(Spectrum(samples.k));
-        for (const auto& [where, sample] : samples.small_n)
-            detail::check_index_modulus(
-                sample.value, k ? (*k)(sample.wavelength_nm, Interpolation::linear, OutOfRange::clamp) : 0.0, where);
+        detail::check_small_n(samples.small_n, [&](double nm) { return k ? (*k)(nm, Interpolation::linear, OutOfRange::clamp) : 0.0; });
     }
 
     Material m;

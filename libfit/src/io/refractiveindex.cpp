@@ -99,10 +99,7 @@ public:
         }
         if (!n) throw InputError({file_, line_of(data), "DATA"}, "no n data (only k)");
         // A "tabulated n" row with n near 0 is |n + ik| near 0 where k is too there (no k data: k = 0 everywhere).
-        for (std::size_t i = 0; i < small_n_.size(); ++i) {
-            const auto [nm, n_value] = small_n_at_[i];
-            detail::check_index_modulus(n_value, k ? (*k)(nm, Interpolation::linear, OutOfRange::clamp) : 0.0, small_n_[i]);
-        }
+        detail::check_small_n(small_n_, [&](double nm) { return k ? (*k)(nm, Interpolation::linear, OutOfRange::clamp) : 0.0; });
         if (!k) {
             m.warnings.push_back(file_.string() + ": no k data (" + types.front() +
                                  " only): k = 0 assumed");
@@ -193,8 +190,7 @@ private:
                 detail::check_index_limit(v[c], is_k || c == 2, fields[c], here);
             if (columns == 2) detail::check_index_modulus(v[1], v[2], here);
             if (columns == 1 && !is_k && v[1] < detail::kMinIndexModulus) {
-                small_n_.push_back(here);
-                small_n_at_.push_back({nm, v[1]});
+                small_n_.push_back({here, nm, v[1]});
             }
             if (first.size() >= kMaxTableRows)
                 throw InputError(here, "more than " + std::to_string(kMaxTableRows) + " data rows (the limit)");
@@ -251,8 +247,7 @@ private:
     std::string text_;
     std::vector<std::string> lines_;  // to tell block scalars from plain ones
     std::vector<std::string> warnings_;
-    std::vector<InputLocation> small_n_;  // rows of "tabulated n" blocks with n < 1e-6, and their (λ nm, n)
-    std::vector<SpectrumSample> small_n_at_;
+    std::vector<detail::SmallN> small_n_;  // rows of "tabulated n" blocks with n < 1e-6
 };
 
 }  // namespace

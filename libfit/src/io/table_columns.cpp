@@ -254,7 +254,7 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
     if (!std::isnan(n)) check_index_limit(n, false, n_text, where);
     if (!std::isnan(k)) check_index_limit(k, true, k_text, where);
     if (!std::isnan(n) && !std::isnan(k)) check_index_modulus(n, k, where);
-    else if (!std::isnan(n) && n < kMinIndexModulus) samples.small_n.push_back({where, {nm, n}});
+    else if (!std::isnan(n) && n < kMinIndexModulus) samples.small_n.push_back({where, nm, n});
     if (!std::isnan(n)) samples.n.push_back({nm, n});
     if (!std::isnan(k)) samples.k.push_back({nm, k});
 }

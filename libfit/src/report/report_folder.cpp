@@ -6,11 +6,8 @@
 #include "libfit/report/report.hpp"
 
 namespace metalfit {
-namespace {
 
 namespace fs = std::filesystem;
-
-}  // namespace
 
 fs::path check_report_folder(const fs::path& target) {
     // "out/report/" names the folder "report": drop the trailing separator.
@@ -25,11 +22,7 @@ fs::path check_report_folder(const fs::path& target) {
 }
 
 void write_report_folder(const fs::path& target, const std::vector<ReportFile>& files) {
-    const fs::path dir = check_report_folder(target);
-    std::vector<OutputFile> outputs;
-    outputs.reserve(files.size());
-    for (const ReportFile& file : files) outputs.push_back({file.path, file.contents});
-    replace_folder_as_unit(dir, outputs);
+    replace_folder_as_unit(check_report_folder(target), files);
 }
 
 }  // namespace metalfit

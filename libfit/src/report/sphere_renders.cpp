@@ -46,15 +46,11 @@ struct TemporaryFolder {
     int fd = -1;
     TemporaryFolder() {
         const fs::path beside = fs::temp_directory_path() / "metalfit-renders";
-        detail::remove_stale_beside(beside, detail::kStagingMark);
-        for (int attempt = 0; attempt < 16 && path.empty(); ++attempt) {
-            const fs::path name = detail::staging_name_beside(beside, detail::kStagingMark);
-            if (::mkdir(name.c_str(), 0700) == 0) path = name;
-            else if (errno != EEXIST) break;
-        }
-        if (path.empty()) throw std::runtime_error("cannot make a temporary folder in " + beside.parent_path().string());
-        fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-        if (fd >= 0) detail::lock_staging(fd);
+        int error = 0;
+        const std::optional<fs::path> made = detail::make_staging_folder_beside(beside, error);
+        if (!made) throw std::runtime_error("cannot make a temporary folder in " + beside.parent_path().string());
+        path = *made;
+        fd = detail::lock_staging_folder(path);
     }
     ~TemporaryFolder() {
         std::error_code ec;

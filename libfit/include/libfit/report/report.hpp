@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "libfit/base/atomic_file.hpp"
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
 #include "libfit/color/display_transform.hpp"
@@ -40,10 +41,9 @@ struct ReportInputs {
 // The record (docs/report.md). `fits` as fit_materials gives them (the same models in the same order).
 nlohmann::ordered_json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& inputs);
 
-struct ReportFile {
-    std::filesystem::path path;  // relative to the report folder
-    std::string contents;
-};
+// A file of the report folder: `path` relative to it. The files every writer writes (libfit/base/atomic_file.hpp), so
+// that they go to the folder's writer as they are.
+using ReportFile = OutputFile;
 
 // Every file of the report folder: the pages, report.json, its script form assets/report-data.js (the same
 // bytes, wrapped so that pages opened from file:// can load it), the chart libraries, the page script and style,
