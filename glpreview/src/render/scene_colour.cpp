@@ -32,8 +32,10 @@ RgbConversion scene_space_conversion(const Scene& scene, const OcioConfigChoice&
 }
 
 Image read_environment_image(const Scene& scene, const OcioConfigChoice& config) {
-    // Opened once, checked on its descriptor and read through it; its errors name the scene and the field.
-    const ConfinedFile file = ConfinedFile::open(scene, scene.environment.equirect.file, "environment.file");
+    // Opened once, checked on its descriptor and read through it; its errors name the scene and the field. The
+    // scene already resolved the file against its folder (a path relative to the working folder when the scene's
+    // is): made absolute here, so that ConfinedFile does not resolve it against the scene's folder a second time.
+    const ConfinedFile file = ConfinedFile::open(scene, std::filesystem::absolute(scene.environment.equirect.file), "environment.file");
     Image pixels;
     try {
         pixels = read_image(file.path());
