@@ -339,6 +339,25 @@ TEST(PreviewCli, SheetFilesAreRelativeToTheCurrentFolderNotTheScenes) {
     EXPECT_TRUE(fs::exists(dir.path() / "out" / "sheet.json"));
 }
 
+// A scene named by a path relative to the working folder finds its image and material files beside it (each
+// resolved against the scene's folder once, not twice).
+TEST(PreviewCli, ARelativeScenePathFindsTheFilesBesideTheScene) {
+    TempDir dir;
+    fs::create_directories(dir.path() / "scenes");
+    fs::copy_file(kData / "scenes" / "sky.hdr", dir.path() / "scenes" / "sky.hdr");
+    fs::copy_file(kFixtures / "valid-nk.csv", dir.path() / "scenes" / "my-gold.csv");
+    dir.write("scenes/sky.json", R"({"image": {"width": 24, "height": 16},
+        "environment": {"type": "equirect", "file": "sky.hdr"},
+        "spheres": [{"center": [0, 1, 0], "radius": 0.5, "reflection": "classic", "material": "my-gold.csv"}],
+        "outputs": {"png": false, "difference": false}})");
+    const fs::path previous = fs::current_path();
+    fs::current_path(dir.path());
+    const CommandRun rendered = glpreview("scenes/sky.json -o out", dir);
+    fs::current_path(previous);
+    ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
+    EXPECT_TRUE(fs::exists(dir.path() / "out" / "beauty.exr"));
+}
+
 TEST(PreviewCli, AFullStdoutIsAnError) {
     // issue 13, item 5: what glpreview prints must reach stdout, or it says so and fails
     TempDir dir;
