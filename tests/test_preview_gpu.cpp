@@ -17,6 +17,7 @@
 #include "glpreview/render/environment.hpp"
 #include "glpreview/gl/gl_context.hpp"
 #include "glpreview/render/gpu_bench.hpp"
+#include "glpreview/effects/reflection_lookup.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
@@ -167,7 +168,7 @@ TEST(PreviewGpu, ClassicLookupsReadTheDistanceAlongR) {
     Sphere classic;
     classic.reflection = ReflectionMode::classic;
     const auto rays = random_rays(2000, 0.0, 7);
-    const auto results = gpu.probe(classic, rays);
+    const auto results = probe_reflection_lookups(gpu, classic, rays);
     const EnvironmentTracer tracer(scene.environment);
     double worst = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
@@ -195,13 +196,13 @@ TEST(PreviewGpu, DistanceImpostorConvergesToBoxProjectionInTheEmptyRoom) {
     const Vec3 o = scene.environment.reference();
     Sphere parallax;
     parallax.reflection = ReflectionMode::box_parallax;
-    const auto box = gpu.probe(parallax, rays);
+    const auto box = probe_reflection_lookups(gpu, parallax, rays);
     for (std::size_t i = 0; i < rays.size(); ++i)
         ASSERT_LT(angle_between(box[i].lookup, box_projection(scene.environment.room, o, rays[i][0], rays[i][1])), 1e-5);
     for (Strategy strategy : {Strategy::secant, Strategy::false_position, Strategy::mixed}) {
         std::map<int, std::vector<double>> angles;  // sorted, per iteration count
         for (int iterations : {1, 4, 16}) {
-            const auto results = gpu.probe(impostor(strategy, iterations), rays);
+            const auto results = probe_reflection_lookups(gpu, impostor(strategy, iterations), rays);
             for (std::size_t i = 0; i < rays.size(); ++i) angles[iterations].push_back(angle_between(results[i].lookup, box[i].lookup));
             std::sort(angles[iterations].begin(), angles[iterations].end());
         }
@@ -229,7 +230,7 @@ TEST(PreviewGpu, DistanceImpostorEqualsTheSphereProxyClosedForm) {
     gpu.capture_environment();
     const auto rays = random_rays(4000, 1.5, 13);
     for (Strategy strategy : {Strategy::secant, Strategy::false_position, Strategy::mixed}) {
-        const auto results = gpu.probe(impostor(strategy, 4), rays);
+        const auto results = probe_reflection_lookups(gpu, impostor(strategy, 4), rays);
         double worst = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {
             const Vec3 x = rays[i][0], r = rays[i][1];

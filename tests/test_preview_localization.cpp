@@ -20,6 +20,7 @@
 #include "glpreview/gl/gl_context.hpp"
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/environment.hpp"
+#include "glpreview/effects/reflection_lookup.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
 #include "glpreview/scene/scene.hpp"
@@ -373,7 +374,7 @@ TEST(PreviewLocalizationProbe, SafeguardedStrategiesConvergeOnEveryRay) {
         settings.strategy = strategy;
         settings.iterations = 32;
         settings.tolerance = 0;
-        const auto results = gpu.probe(settings, rays);
+        const auto results = probe_reflection_lookups(gpu, settings, rays);
         double worst = 0;
         std::size_t off = 0;
         for (std::size_t i = 0; i < rays.size(); ++i) {

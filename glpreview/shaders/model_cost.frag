@@ -1,6 +1,6 @@
 // Shader cost of one Fresnel model: every pixel evaluates it EVALUATIONS times at different μ (FRESNEL_CALL is the
 // libfit model function or the reference LUT lookup), summed so that nothing is optimised away.
-uniform vec3 u_param[4];
+uniform vec3 u_param[FRESNEL_PARAMETERS];  // the model's parameters (ShaderBuilder::fresnel_model)
 uniform sampler1D u_fresnel_lut;
 uniform vec2 u_viewport;
 layout(location = 0) out vec4 out_color;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "glpreview/render/sphere_shader.hpp"
 #include "libfit/base/text.hpp"
 
 namespace metalfit::glpreview {
@@ -38,26 +39,7 @@ std::string glsl_float(double value) {
 }
 
 std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere) {
-    std::vector<std::string> defines{environment_define(scene.environment)};
-    switch (sphere.reflection) {
-        case ReflectionMode::classic: defines.push_back("REFLECTION_CLASSIC"); break;
-        case ReflectionMode::box_parallax: defines.push_back("REFLECTION_BOX_PARALLAX"); break;
-        case ReflectionMode::distance_impostor:
-            defines.push_back("REFLECTION_DISTANCE_IMPOSTOR");
-            defines.push_back(strategy_define(sphere.strategy));
-            defines.push_back("NITER " + std::to_string(sphere.iterations));
-            defines.push_back("TOLERANCE " + glsl_float(sphere.tolerance));
-            break;
-    }
-    if (sphere.rough() && sphere.glossy == GlossyMethod::localized) {
-        defines.push_back("GLOSSY_LOCALIZED");
-        defines.push_back("LOCALIZED_SUBDIVISIONS " + std::to_string(localized_subdivisions(sphere.roughness, sphere.localized_size)));
-    } else if (sphere.rough()) {
-        defines.push_back("GLOSSY_PREFILTERED");
-    }
-    defines.push_back(shows_reference(sphere) ? "FRESNEL_REFERENCE" : "FRESNEL_MODEL " + fresnel_name(sphere.fresnel));
-    std::sort(defines.begin(), defines.end());
-    return defines;
+    return sphere_shader(scene, sphere, nullptr).labels();
 }
 
 int localized_subdivisions(double roughness, int m) {

@@ -1,6 +1,7 @@
 #include "glpreview/render/preview_passes.hpp"
 
-#include "glpreview/render/dfg_table.hpp"
+#include "glpreview/effects/registry.hpp"
+#include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/exr_metadata.hpp"
 #include "glpreview/render/monte_carlo_reference.hpp"
@@ -100,29 +101,24 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
     return j;
 }
 
-// The inputs of a GPU frame (beauty, timing) bound to the renderer.
-struct FrameInputs {
+// The inputs of a GPU frame (beauty, localization, timing) bound to the renderer: the environment, the Fresnel
+// data (so that the frames run after the passes that resolve it) and what the effects hand to the frame.
+struct FrameBinding {
     EnvironmentInputs environment;
     std::optional<Handle<FresnelSet>> luts, parameters;
-    std::optional<Handle<PrefilteredCube>> prefiltered;
-    std::vector<Handle<DfgSet>> dfg;
-    std::vector<Handle<DownsampledCube>> downsampled;
+    FrameInputs effects;
 
     void declare(Builder& b, Handle<const Scene*> camera) const {
         b.read(camera);
         environment.declare(b);
         if (luts) b.read(*luts);
         if (parameters) b.read(*parameters);
-        if (prefiltered) b.read(*prefiltered);
-        for (const auto& table : dfg) b.read(table);
-        for (const auto& cube : downsampled) b.read(cube);
+        effects.declare(b);
     }
     GpuRenderer& bind(PreviewRun& run, Resources& r) const {
         GpuRenderer& gpu = run.renderer();
         environment.bind(gpu, r);
-        if (prefiltered) gpu.use_prefiltered(r.get(*prefiltered));
-        for (const auto& table : dfg) gpu.use_dfg(r.get(table));
-        for (const auto& cube : downsampled) gpu.use_downsampled(r.get(cube));
+        effects.bind(gpu.frame(), r);
         return gpu;
     }
 };
@@ -280,79 +276,6 @@ Handle<FresnelSet> add_model_parameters_pass(PassGraph& graph, const Features& f
         .out;
 }
 
-Handle<PrefilteredCube> add_prefilter_environment_pass(PassGraph& graph, const Scene& scene, Handle<EnvironmentCube> cube,
-                                                       PreviewRun* run) {
-    struct Data {
-        Handle<EnvironmentCube> in;
-        Handle<PrefilteredCube> out;
-    };
-    const int size = PrefilteredCube::size_for(scene.environment.cube_size), levels = PrefilteredCube::levels_for(size);
-    std::vector<std::string> rough;
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
-        if (scene.spheres[i].rough() && scene.spheres[i].glossy == GlossyMethod::prefiltered) rough.push_back(std::to_string(i));
-    return graph
-        .add_pass<Data>({"prefilter-environment",
-                         "sphere(s) " + join(rough) + " rough with glossy 'prefiltered': GGX-prefiltered " + std::to_string(size) + "² cube, " + std::to_string(levels) +
-                             " mip levels (one per roughness step of 1/" + std::to_string(levels - 1) + "), filtered importance sampling",
-                         Processor::gpu},
-                        [&](Builder& b, Data& d) {
-                            d.in = b.read(cube);
-                            d.out = b.create<PrefilteredCube>("prefiltered-cube", {size, levels});
-                        },
-                        [run](const Data& d, Resources& r) { run->renderer().prefilter(r.get(d.in), r.get(d.out)); })
-        .out;
-}
-
-Handle<DownsampledCube> add_downsample_environment_pass(PassGraph& graph, const Scene& scene, int m, Handle<EnvironmentCube> cube,
-                                                       PreviewRun* run) {
-    struct Data {
-        Handle<EnvironmentCube> in;
-        Handle<DownsampledCube> out;
-    };
-    std::vector<std::string> spheres;
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
-        if (scene.spheres[i].rough() && scene.spheres[i].glossy == GlossyMethod::localized && scene.spheres[i].localized_size == m)
-            spheres.push_back(std::to_string(i));
-    const std::string size = std::to_string(m);
-    return graph
-        .add_pass<Data>({"downsample-environment " + size,
-                         "sphere(s) " + join(spheres) + " rough with glossy 'localized': the cube as " + size + " × " + size +
-                             " area lights per face (average radiance and position, thesis ch. 5)",
-                         Processor::gpu},
-                        [&](Builder& b, Data& d) {
-                            d.in = b.read(cube);
-                            d.out = b.create<DownsampledCube>("downsampled-cube " + size, {m});
-                        },
-                        [run](const Data& d, Resources& r) { run->renderer().downsample(r.get(d.in), r.get(d.out)); })
-        .out;
-}
-
-Handle<DfgSet> add_dfg_table_pass(PassGraph& graph, const Scene& scene, const std::string& fresnel, const SceneInputs& in,
-                                  PreviewRun* run) {
-    std::vector<std::size_t> spheres;
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
-        if (scene.spheres[i].rough() && scene.spheres[i].glossy == GlossyMethod::prefiltered && fresnel_name(scene.spheres[i].fresnel) == fresnel)
-            spheres.push_back(i);
-    std::vector<std::string> names;
-    for (std::size_t i : spheres) names.push_back(std::to_string(i));
-    return graph
-        .add_pass<Out<DfgSet>>(
-            {"dfg-table " + fresnel,
-             "rough sphere(s) " + join(names) + " use " + fresnel + ": the GGX-weighted integral of its own F over (μ, roughness), " +
-                 std::to_string(DfgTable::kMuSize) + " × " + std::to_string(DfgTable::kRoughnessSize) + " per material",
-             Processor::cpu},
-            [&](Builder& b, Out<DfgSet>& d) {
-                b.read(in.materials);
-                d.out = b.produce<DfgSet>("dfg-tables " + fresnel);
-            },
-            [run, spheres](const Out<DfgSet>& d, Resources& r) {
-                DfgSet& set = r.emplace(d.out);
-                for (std::size_t i : spheres)
-                    if (!set.tables.count(run->fresnel[i])) set.tables.emplace(run->fresnel[i], make_dfg_table(*run->fresnel[i]));
-            })
-        .out;
-}
-
 void add_image_file_pass(PassGraph& graph, const std::string& file, Handle<Image> image, PreviewRun* run) {
     add_image_file(graph, file, image, run);
 }
@@ -387,24 +310,15 @@ void add_json_file_pass(PassGraph& graph, const std::string& file, const std::st
 PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Features& f, PreviewRun* run) {
     PreviewHandles h;
     const SceneInputs in = import_scene(graph, scene);
-    FrameInputs frame;
+    FrameBinding frame;
     h.environment = frame.environment = add_environment_passes(graph, scene, f, in, run);
     if (f.reference_lut) h.luts = frame.luts = add_reference_luts_pass(graph, scene, in, run);
     else graph.skip("reference-luts", "no sphere uses fresnel 'reference'");
     if (f.model_fits) h.parameters = frame.parameters = add_model_parameters_pass(graph, f, in, run);
     else graph.skip("model-parameters", "no sphere uses a libfit model");
-    if (f.prefiltered_map && h.environment.cube) {
-        h.prefiltered = frame.prefiltered = add_prefilter_environment_pass(graph, scene, *h.environment.cube, run);
-        for (const std::string& fresnel : f.dfg_models) frame.dfg.push_back(add_dfg_table_pass(graph, scene, fresnel, in, run));
-    } else {
-        graph.skip("prefilter-environment", "no sphere is rough with glossy 'prefiltered' (mirrors: roughness 0)");
-        graph.skip("dfg-table", "no sphere is rough with glossy 'prefiltered'");
-    }
-    if (!f.downsample_sizes.empty() && h.environment.cube) {
-        for (int m : f.downsample_sizes) frame.downsampled.push_back(add_downsample_environment_pass(graph, scene, m, *h.environment.cube, run));
-    } else {
-        graph.skip("downsample-environment", "no sphere is rough with glossy 'localized'");
-    }
+    // The effects' passes (effects/registry.hpp), and what each hands to the frames.
+    PreviewGraph effects{graph, scene, f, in, h.environment.cube, run, frame.effects};
+    for (const Effect* effect : all_effects()) effect->add_preview_passes(effects);
 
     // beauty: one frame of every sphere with its shader variant.
     h.beauty = graph

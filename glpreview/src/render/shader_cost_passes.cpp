@@ -7,6 +7,7 @@
 #include "embedded_shaders.hpp"
 #include "frame_timing.hpp"
 #include "glpreview/gl/objects.hpp"
+#include "glpreview/gl/uniforms.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "gpu_bench_passes.hpp"
 #include "libfit/models/model.hpp"
@@ -59,6 +60,7 @@ struct SyntheticReferenceLut {
 struct CostProgram {
     std::string name;  // a model id or "reference-lut"
     gl::Program program;
+    BuiltProgram built;  // its id and sampler units
 };
 using CostPrograms = std::vector<CostProgram>;
 
@@ -67,18 +69,24 @@ struct ShaderRounds {
     RoundTimes ms;
 };
 
-CostProgram cost_program(const std::string& name, const std::string& library, const std::string& call, const Model* model) {
-    const std::string fragment = "#version 450 core\n#define EVALUATIONS " + std::to_string(kShaderBenchEvaluationsPerPixel) +
-                                 "\n#define FRESNEL_CALL " + call + "\n" + library + std::string(shader_text("model_cost.frag"));
-    gl::Program program(link_program({fullscreen_vertex_stage(), {GL_FRAGMENT_SHADER, fragment}}, "model-cost " + name));
+// One model's program (model null: the reference LUT's), assembled like the spheres' Fresnel (ShaderBuilder).
+CostProgram cost_program(const Model* model) {
+    const std::string name = model ? std::string(model->id()) : "reference-lut";
+    ShaderBuilder builder("model-cost");
+    builder.define("EVALUATIONS", std::to_string(kShaderBenchEvaluationsPerPixel));
+    if (model) builder.fresnel_model(model->id(), model);
+    else builder.define("FRESNEL_PARAMETERS", "1").define("FRESNEL_CALL", "reference_lut(mu)");
+    builder.sampler("u_fresnel_lut").source(shader_text("model_cost.frag"));
+    gl::Program program(link_program({fullscreen_vertex_stage(), {GL_FRAGMENT_SHADER, builder.text()}}, "model-cost " + name));
     if (model) {  // neutral parameter values, the same in R, G and B: the cost does not depend on them
         const ChannelParameters p = model->neutral_starts().front();
         set_model_parameters(program.id(), *model, {p, p, p});
     }
     const float size = float(kShaderBenchSize);
     glProgramUniform2f(program.id(), glGetUniformLocation(program.id(), "u_viewport"), size, size);
-    glProgramUniform1i(program.id(), glGetUniformLocation(program.id(), "u_fresnel_lut"), 0);
-    return {name, std::move(program)};
+    BuiltProgram built(program.id(), builder.samplers());
+    glProgramUniform1i(program.id(), glGetUniformLocation(program.id(), "u_fresnel_lut"), built.unit("u_fresnel_lut"));
+    return {name, std::move(program), built};
 }
 
 Json shader_record(const GpuBenchRun& run, int rounds, const ShaderRounds& timed) {
@@ -114,9 +122,8 @@ Handle<Json> add_shader_cost_passes(PassGraph& graph, GpuBenchRun& run) {
                 [](Builder& b, Programs& d) { d.out = b.produce<CostPrograms>("model-cost-programs"); },
                 [](const Programs& d, Resources& r) {
                     CostPrograms& all = r.emplace(d.out);
-                    for (const Model* model : all_models())
-                        all.push_back(cost_program(std::string(model->id()), model->glsl_source(), model_call(*model), model));
-                    all.push_back(cost_program("reference-lut", "", "reference_lut(mu)", nullptr));
+                    for (const Model* model : all_models()) all.push_back(cost_program(model));
+                    all.push_back(cost_program(nullptr));
                 })
             .out;
     struct Timing {
@@ -145,12 +152,12 @@ Handle<Json> add_shader_cost_passes(PassGraph& graph, GpuBenchRun& run) {
                     std::vector<std::function<void()>> variants;
                     for (const CostProgram& p : r.get(d.programs)) {
                         timed.names.push_back(p.name);
-                        variants.push_back([&target, lut, &vao, id = p.program.id()] {
+                        variants.push_back([&target, lut, &vao, &p] {
                             glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer.id());
                             glViewport(0, 0, target.size, target.size);
                             glBindVertexArray(vao.id());
-                            glBindTextureUnit(0, lut);
-                            glUseProgram(id);
+                            p.built.bind("u_fresnel_lut", lut);
+                            glUseProgram(p.program.id());
                             glDrawArrays(GL_TRIANGLES, 0, 3);
                         });
                     }

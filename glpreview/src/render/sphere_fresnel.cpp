@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "glpreview/render/scene_colour.hpp"
 #include "libfit/base/errors.hpp"
@@ -13,14 +14,24 @@
 
 namespace metalfit::glpreview {
 
+void SphereFresnel::set_parameters(ModelParameters values) {
+    parameters = std::move(values);
+    for (int c = 0; c < 3; ++c) {
+        const ChannelParameters& channel = parameters[c];
+        float_parameters_[static_cast<std::size_t>(c)].assign(channel.begin(), channel.end());
+    }
+}
+
 RGB SphereFresnel::operator()(double mu) const {
     mu = std::clamp(mu, 0.0, 1.0);
     if (model) {
         std::array<double, 3> value{};
         for (int c = 0; c < 3; ++c) {
-            std::array<float, 8> p{};
-            std::copy(parameters[c].begin(), parameters[c].end(), p.begin());
-            value[c] = model->evaluate(std::span<const float>(p.data(), parameters[c].size()), static_cast<float>(mu));
+            const std::vector<float>& p = float_parameters_[static_cast<std::size_t>(c)];
+            if (p.size() != model->parameters().size())
+                throw std::logic_error("SphereFresnel: " + std::string(model->id()) + " has " + std::to_string(p.size()) +
+                                       " parameters set, not " + std::to_string(model->parameters().size()));
+            value[c] = model->evaluate(std::span<const float>(p), static_cast<float>(mu));
         }
         return {value[0], value[1], value[2]};
     }
@@ -66,7 +77,7 @@ std::unique_ptr<SphereFresnel> FresnelLibrary::model_fresnel(const Material& mat
                                  (r.closed_forms.empty() ? std::string("none") : r.closed_forms.front().undefined));
         chosen = &*r.closed_forms[*r.best_closed].value;
     }
-    result->parameters = chosen->params;
+    result->set_parameters(chosen->params);
     result->worst_rel_rms = worst_channel(chosen->metrics.rel_rms);
     return result;
 }

@@ -5,6 +5,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "effects/glossy_localized/glossy_localized_effect.hpp"
+#include "effects/glossy_prefiltered/glossy_prefiltered_effect.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/preview_passes.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
@@ -118,8 +120,11 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
         [&scene, rows, environment, prefiltered, downsampled, roughness, groups, run](const Cells& d, Resources& r) {
             GpuRenderer& gpu = run->renderer();
             environment.bind(gpu, r);
-            if (prefiltered) gpu.use_prefiltered(r.get(*prefiltered));
-            for (const auto& cube : downsampled) gpu.use_downsampled(r.get(cube));
+            if (prefiltered) gpu.frame().put(r.get(*prefiltered));
+            for (const auto& handle : downsampled) {
+                const DownsampledCube& cube = r.get(handle);
+                gpu.frame().put(cube, std::to_string(cube.m));
+            }
             const SheetRows& all = r.get(rows);
             const int n_roughness = static_cast<int>(roughness.size());
             const int n_columns = static_cast<int>(sheet_columns(groups, n_roughness).size());

@@ -46,7 +46,7 @@ std::string glsl_float(double value);
 // a white furnace (docs/preview.md, "Rough spheres").
 int localized_subdivisions(double roughness, int m);
 
-// The sphere shader's #defines for one sphere (sorted, one per line), e.g. "REFLECTION_DISTANCE_IMPOSTOR",
+// The names of a sphere's shader variant: its builder's labels (render/sphere_shader.hpp), sorted, e.g. "REFLECTION_DISTANCE_IMPOSTOR",
 // "STRATEGY_FALSE_POSITION", "NITER 4", "TOLERANCE 0.0001", "FRESNEL_MODEL f82-tint", "ENV_ROOM".
 std::vector<std::string> sphere_defines(const Scene& scene, const Sphere& sphere);
 

@@ -85,7 +85,6 @@ struct PreviewHandles {
     EnvironmentInputs environment;
     std::optional<graph::Handle<FresnelSet>> luts, parameters;
     graph::Handle<Image> beauty;
-    std::optional<graph::Handle<PrefilteredCube>> prefiltered;
     graph::Handle<ReferenceRender> reference;  // the Monte-Carlo one when a sphere is rough, else the analytic one
     std::optional<graph::Handle<Image>> reference_standard_error;  // per pixel, when a sphere is rough
     graph::Handle<Image> difference;
@@ -107,14 +106,6 @@ graph::Handle<EnvironmentCube> add_capture_environment_pass(graph::PassGraph&, c
 std::pair<graph::Handle<EquirectTexture>, graph::Handle<Image>> add_load_equirect_pass(graph::PassGraph&, const Scene&,
                                                                                       PreviewRun*);
 graph::Handle<FresnelSet> add_reference_luts_pass(graph::PassGraph&, const Scene&, const SceneInputs&, PreviewRun*);
-graph::Handle<PrefilteredCube> add_prefilter_environment_pass(graph::PassGraph&, const Scene&, graph::Handle<EnvironmentCube>,
-                                                              PreviewRun*);
-// One pass per M of the rough localized spheres.
-graph::Handle<DownsampledCube> add_downsample_environment_pass(graph::PassGraph&, const Scene&, int m, graph::Handle<EnvironmentCube>,
-                                                              PreviewRun*);
-// One pass per Fresnel name ("reference" or a model id) of the rough prefiltered spheres.
-graph::Handle<DfgSet> add_dfg_table_pass(graph::PassGraph&, const Scene&, const std::string& fresnel, const SceneInputs&,
-                                         PreviewRun*);
 graph::Handle<FresnelSet> add_model_parameters_pass(graph::PassGraph&, const Features&, const SceneInputs&, PreviewRun*);
 void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<Image> image, PreviewRun*);
 void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<ReferenceRender> image, PreviewRun*);

@@ -2,6 +2,7 @@
 // its fitted or closed-form parameters. The GPU and the CPU reference use the same data.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -28,11 +29,17 @@ struct SphereFresnel {
     std::optional<ParameterSource> params;  // models: fitted or closed-form parameters
     std::vector<RGB> lut;       // reference: R_c(μ_i)
     const Model* model = nullptr;
-    ModelParameters parameters;   // model: values per channel
+    ModelParameters parameters;   // model: values per channel (set with set_parameters)
     double worst_rel_rms = 0;   // model: worst-channel rel_rms of these parameters (0 for the reference)
 
-    // CPU evaluation, as the GPU does it: the table with linear interpolation, or the model in float.
+    // CPU evaluation, as the GPU does it: the table with linear interpolation, or the model in float (any number of
+    // parameters; std::logic_error when `parameters` was set without set_parameters).
     RGB operator()(double mu) const;
+    // Sets `parameters` and their float values, which the GPU gets and operator() evaluates.
+    void set_parameters(ModelParameters values);
+
+private:
+    std::array<std::vector<float>, 3> float_parameters_;
 };
 
 // Resolves the spheres' materials through libfit's catalog and colour pipeline; one fit per distinct

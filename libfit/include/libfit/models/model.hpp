@@ -164,7 +164,7 @@ public:
     // GLSL: the name of the model's function, vec3 <name>(vec3 param..., float mu), and the source text of it and
     // of every function it calls (the .glsl files of the model folders, embedded at build time).
     virtual std::string_view glsl_function() const = 0;
-    std::string glsl_source() const;
+    virtual std::string glsl_source() const;
     // Shader source files of this model in dependency order ("schlick", "f82_tint").
     virtual std::span<const std::string_view> glsl_files() const = 0;
 

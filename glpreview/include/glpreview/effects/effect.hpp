@@ -1,0 +1,69 @@
+// An effect of the preview as one unit (docs/pass-graph.md, "Adding an effect"): what it adds to the sphere shader,
+// what it binds for each sphere it draws, the passes it adds to a preview graph (with the skips --explain lists) and
+// what it derives from a captured environment when there is no graph (tests, benchmarks). Each effect is one folder
+// glpreview/src/effects/<effect>/ (its code and its GLSL) and one line of the registry (effects/registry.hpp); the
+// renderer and the preview's graph call every registered effect and name none.
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+#include "glpreview/graph/features.hpp"
+#include "glpreview/graph/pass_graph.hpp"
+#include "glpreview/render/blackboard.hpp"
+#include "glpreview/render/shader_builder.hpp"
+#include "glpreview/scene/scene.hpp"
+
+namespace metalfit::glpreview {
+
+class GpuRenderer;
+class FrameInputs;
+struct EnvironmentCube;
+struct PreviewRun;
+struct SceneInputs;
+struct SphereFresnel;
+
+// The sphere shader being assembled for one sphere of a scene: `fresnel` resolves its model (null while planning,
+// when only the variant's name is wanted); `diagnostics`: the localization frame.
+struct SphereShader {
+    const Scene& scene;
+    const Sphere& sphere;
+    const SphereFresnel* fresnel = nullptr;
+    bool diagnostics = false;
+};
+
+// One sphere drawn in a frame: its program (with the units its builder assigned) and the frame's shared state.
+struct SphereDraw {
+    const Scene& scene;
+    const Sphere& sphere;
+    const SphereFresnel& fresnel;
+    const BuiltProgram& program;
+    GpuRenderer& renderer;
+};
+
+// The preview graph being built: effects add their passes here and hand what every GPU frame reads to `frame`.
+struct PreviewGraph {
+    graph::PassGraph& graph;
+    const Scene& scene;
+    const Features& features;
+    const SceneInputs& in;
+    std::optional<graph::Handle<EnvironmentCube>> environment_cube;
+    PreviewRun* run;  // null: compile and explain only
+    FrameInputs& frame;
+};
+
+class Effect {
+public:
+    virtual ~Effect() = default;
+    virtual std::string_view name() const = 0;
+    // Adds this effect's defines, GLSL, samplers and lobe to `builder` where it applies to the sphere.
+    virtual void declare_sphere(const SphereShader&, ShaderBuilder&) const {}
+    // Sets this effect's uniforms and binds its textures for one sphere's draw.
+    virtual void bind_sphere(const SphereDraw&) const {}
+    // Adds this effect's passes to a preview graph (or the skips that say why none runs).
+    virtual void add_preview_passes(PreviewGraph&) const {}
+    // Without a graph: derives this effect's inputs from the renderer's own captured cube (GpuRenderer::capture_environment()).
+    virtual void derive_from_environment(GpuRenderer&, const EnvironmentCube&) const {}
+};
+
+}  // namespace metalfit::glpreview

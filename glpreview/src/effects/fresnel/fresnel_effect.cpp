@@ -1,0 +1,64 @@
+#include "fresnel_effect.hpp"
+
+#include <map>
+#include <stdexcept>
+
+#include "render/embedded_shaders.hpp"
+#include "glpreview/gl/objects.hpp"
+#include "glpreview/gl/uniforms.hpp"
+#include "glpreview/render/gpu_renderer.hpp"
+
+namespace metalfit::glpreview {
+namespace {
+
+// The reference curves uploaded so far, by Fresnel (the renderer's, on its blackboard).
+struct ReferenceLuts {
+    std::map<const SphereFresnel*, gl::Texture> textures;
+
+    GLuint texture(const SphereFresnel& f) {
+        if (auto it = textures.find(&f); it != textures.end()) return it->second.id();
+        gl::Texture lut = gl::create_texture(GL_TEXTURE_1D);
+        std::vector<float> texels;
+        for (const RGB& v : f.lut) texels.insert(texels.end(), {float(v.r), float(v.g), float(v.b)});
+        glTextureStorage1D(lut.id(), 1, GL_RGB32F, static_cast<GLsizei>(f.lut.size()));
+        glTextureSubImage1D(lut.id(), 0, 0, static_cast<GLsizei>(f.lut.size()), GL_RGB, GL_FLOAT, texels.data());
+        glTextureParameteri(lut.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(lut.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(lut.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        check_gl("uploading a reference LUT");
+        return textures.emplace(&f, std::move(lut)).first->second.id();
+    }
+};
+
+class FresnelEffect final : public Effect {
+public:
+    std::string_view name() const override { return "fresnel"; }
+
+    void declare_sphere(const SphereShader& shader, ShaderBuilder& builder) const override {
+        if (const auto* model = std::get_if<ModelFresnel>(&shader.sphere.fresnel)) {
+            if (shader.fresnel && !shader.fresnel->model)
+                throw std::logic_error("GpuRenderer: sphere shows model " + model->model + " but its Fresnel is the reference");
+            builder.fresnel_model(model->model, shader.fresnel ? shader.fresnel->model : nullptr);
+        } else {
+            if (shader.fresnel && shader.fresnel->model)
+                throw std::logic_error("GpuRenderer: sphere shows the reference but its Fresnel is model " +
+                                       std::string(shader.fresnel->model->id()));
+            builder.fresnel_reference();
+        }
+        builder.source(shader_text("fresnel.glsl"));
+    }
+
+    void bind_sphere(const SphereDraw& draw) const override {
+        if (draw.fresnel.model) set_model_parameters(draw.program.id(), *draw.fresnel.model, draw.fresnel.parameters);
+        else draw.program.bind("u_fresnel_lut", draw.renderer.frame().state<ReferenceLuts>().texture(draw.fresnel));
+    }
+};
+
+}  // namespace
+
+const Effect& fresnel_effect() {
+    static const FresnelEffect effect;
+    return effect;
+}
+
+}  // namespace metalfit::glpreview

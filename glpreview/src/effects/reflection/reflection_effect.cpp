@@ -1,0 +1,75 @@
+#include "reflection_effect.hpp"
+
+#include <stdexcept>
+
+#include "render/embedded_shaders.hpp"
+#include "glpreview/gl/uniforms.hpp"
+#include "glpreview/render/gpu_renderer.hpp"
+
+namespace metalfit::glpreview {
+
+void declare_reflection_lookup(const Sphere& sphere, ShaderBuilder& builder) {
+    switch (sphere.reflection) {
+        case ReflectionMode::classic: builder.define("REFLECTION_CLASSIC"); break;
+        case ReflectionMode::box_parallax: builder.define("REFLECTION_BOX_PARALLAX"); break;
+        case ReflectionMode::distance_impostor:
+            builder.define("REFLECTION_DISTANCE_IMPOSTOR")
+                .define(strategy_define(sphere.strategy))
+                .define("NITER", std::to_string(sphere.iterations))
+                .define("TOLERANCE", glsl_float(sphere.tolerance));
+            break;
+    }
+    builder.source(shader_text("reflection.glsl")).sampler("u_env");
+}
+
+namespace {
+
+class ReflectionEffect final : public Effect {
+public:
+    std::string_view name() const override { return "reflection"; }
+    void declare_sphere(const SphereShader& shader, ShaderBuilder& builder) const override {
+        declare_reflection_lookup(shader.sphere, builder);
+    }
+};
+
+}  // namespace
+
+const Effect& reflection_effect() {
+    static const ReflectionEffect effect;
+    return effect;
+}
+
+std::vector<ProbeResult> probe_reflection_lookups(GpuRenderer& renderer, const Sphere& settings,
+                                                  std::span<const std::array<Vec3, 2>> rays) {
+    if (!renderer.cube()) throw std::logic_error("probe_reflection_lookups: no captured cube map");
+    ShaderBuilder probe("probe", ShaderBuilder::Stage::compute);
+    declare_environment(renderer.scene().environment, probe);
+    declare_reflection_lookup(settings, probe);
+    probe.source(shader_text("probe.comp"));
+    const BuiltProgram& p = renderer.program(probe);
+    const int count = static_cast<int>(rays.size());
+    set_uniform(p.id(), "u_count", count);
+    std::vector<float> input;
+    for (const auto& [x, r] : rays) input.insert(input.end(), {float(x.x), float(x.y), float(x.z), 0.f, float(r.x), float(r.y), float(r.z), 0.f});
+    const gl::Buffer input_buffer = gl::create_buffer(), output_buffer = gl::create_buffer();
+    const GLuint buffers[2] = {input_buffer.id(), output_buffer.id()};
+    glNamedBufferStorage(buffers[0], static_cast<GLsizeiptr>(input.size() * sizeof(float)), input.data(), 0);
+    glNamedBufferStorage(buffers[1], static_cast<GLsizeiptr>(input.size() * sizeof(float)), nullptr, GL_MAP_READ_BIT);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
+    p.bind("u_env", renderer.cube()->texture.id());
+    glUseProgram(p.id());
+    glDispatchCompute(static_cast<GLuint>((count + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<float> output(input.size());
+    glGetNamedBufferSubData(buffers[1], 0, static_cast<GLsizeiptr>(output.size() * sizeof(float)), output.data());
+    check_gl("probing reflection lookups");
+    std::vector<ProbeResult> results;
+    for (int i = 0; i < count; ++i) {
+        const float* v = &output[8 * static_cast<std::size_t>(i)];
+        results.push_back({{v[0], v[1], v[2]}, {v[4], v[5], v[6], v[7]}});
+    }
+    return results;
+}
+
+}  // namespace metalfit::glpreview
