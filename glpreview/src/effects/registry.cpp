@@ -1,24 +1,30 @@
 // The registry of effects (effects/registry.hpp): one line per effect folder, in the order their GLSL is assembled
-// and their passes are added.
+// and their passes are added (the frame's inputs before the beauty frame, the outputs after it).
 #include "glpreview/effects/registry.hpp"
 
 #include <array>
 
+#include "environment/environment_effect.hpp"
 #include "fresnel/fresnel_effect.hpp"
 #include "glossy_localized/glossy_localized_effect.hpp"
 #include "glossy_prefiltered/glossy_prefiltered_effect.hpp"
 #include "localization_diagnostics/localization_diagnostics_effect.hpp"
+#include "metrics/metrics_effect.hpp"
+#include "reference/reference_effect.hpp"
 #include "reflection/reflection_effect.hpp"
 
 namespace metalfit::glpreview {
 
 std::span<const Effect* const> all_effects() {
-    static const std::array<const Effect*, 5> effects{
+    static const std::array<const Effect*, 8> effects{
+        &environment_effect(),
         &reflection_effect(),
         &fresnel_effect(),
         &glossy_prefiltered_effect(),
         &glossy_localized_effect(),
-        &localization_diagnostics_effect(),  // last: the localization frame replaces every lobe
+        &reference_effect(),
+        &localization_diagnostics_effect(),  // after the lobes: the localization frame replaces every lobe
+        &metrics_effect(),                   // after the reference and the localization frame it reads
     };
     return effects;
 }

@@ -5,6 +5,7 @@
 
 #include "embedded_shaders.hpp"
 #include "glpreview/effects/registry.hpp"
+#include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/gl/uniforms.hpp"
 #include "glpreview/scene/camera.hpp"
 
@@ -44,8 +45,8 @@ const BuiltProgram& GpuRenderer::program(const ShaderBuilder& builder) {
     // Linked once per context (another scene's renderer may have linked the same source); this scene's uniforms set
     // on its first use here (uniforms a shader lacks are ignored).
     const BuiltProgram& built = programs_.emplace(key, link(*program_cache_, builder)).first->second;
-    set_environment_uniforms(built.id());
     set_camera_uniforms(built.id());
+    for (const Effect* effect : all_effects()) effect->set_program_uniforms(scene_, built.id());
     return built;
 }
 
@@ -53,62 +54,6 @@ std::vector<std::string> GpuRenderer::compiled_variants() const {
     std::vector<std::string> keys;
     for (const auto& [key, _] : programs_) keys.push_back(key);
     return keys;
-}
-
-void GpuRenderer::set_environment_uniforms(GLuint p) const {
-    const Environment& env = scene_.environment;
-    set_uniform(p, "u_reference", env.reference());
-    if (env.type == EnvironmentType::room) {
-        const Room& room = env.room;
-        set_uniform(p, "u_room_min", room.min);
-        set_uniform(p, "u_room_max", room.max);
-        set_uniform(p, "u_wall_x_min", room.wall_x_min);
-        set_uniform(p, "u_wall_x_max", room.wall_x_max);
-        set_uniform(p, "u_wall_z_min", room.wall_z_min);
-        set_uniform(p, "u_wall_z_max", room.wall_z_max);
-        set_uniform(p, "u_floor_light", room.floor_light);
-        set_uniform(p, "u_floor_dark", room.floor_dark);
-        set_uniform(p, "u_ceiling", room.ceiling);
-        set_uniform(p, "u_checker", static_cast<float>(room.checker));
-        const int panels = static_cast<int>(std::min<std::size_t>(room.panels.size(), 16));
-        set_uniform(p, "u_panel_count", panels);
-        for (int i = 0; i < panels; ++i) {
-            const CeilingPanel& panel = room.panels[static_cast<std::size_t>(i)];
-            const std::string index = "[" + std::to_string(i) + "]";
-            glProgramUniform4f(p, glGetUniformLocation(p, ("u_panel_rect" + index).c_str()), float(panel.min_x),
-                               float(panel.min_z), float(panel.max_x), float(panel.max_z));
-            set_uniform(p, ("u_panel_radiance" + index).c_str(), panel.radiance);
-        }
-        const int boxes = static_cast<int>(std::min<std::size_t>(room.boxes.size(), 32));
-        set_uniform(p, "u_box_count", boxes);
-        for (int i = 0; i < boxes; ++i) {
-            const RoomBox& box = room.boxes[static_cast<std::size_t>(i)];
-            const std::string index = "[" + std::to_string(i) + "]";
-            set_uniform(p, ("u_box_min" + index).c_str(), box.min);
-            set_uniform(p, ("u_box_max" + index).c_str(), box.max);
-            set_uniform(p, ("u_box_color" + index).c_str(), box.color);
-        }
-    } else if (env.type == EnvironmentType::sphere_room) {
-        set_uniform(p, "u_sphere_room_radius", static_cast<float>(env.sphere_room.radius));
-        set_uniform(p, "u_sphere_room_checker", static_cast<float>(env.sphere_room.checker_deg));
-        set_uniform(p, "u_sphere_room_light", env.sphere_room.light);
-        set_uniform(p, "u_sphere_room_dark", env.sphere_room.dark);
-    } else {
-        set_uniform(p, "u_equirect_intensity", static_cast<float>(env.equirect.intensity));
-        if (env.equirect.proxy) {
-            if (const auto* sphere = std::get_if<SphereProxy>(&*env.equirect.proxy)) {
-                set_uniform(p, "u_proxy_radius", static_cast<float>(sphere->radius));
-            } else {
-                const auto& box = std::get<BoxProxy>(*env.equirect.proxy);
-                set_uniform(p, "u_proxy_min", box.min - env.reference());
-                set_uniform(p, "u_proxy_max", box.max - env.reference());
-            }
-        }
-    }
-    if (const auto box = env.parallax_box()) {  // the room's box or the equirect's box proxy
-        set_uniform(p, "u_box_parallax_min", box->min - env.reference());
-        set_uniform(p, "u_box_parallax_max", box->max - env.reference());
-    }
 }
 
 void GpuRenderer::set_camera_uniforms(GLuint p) const {
@@ -185,5 +130,11 @@ Image GpuRenderer::read_frame() const {
         }
     return image;
 }
+
+}  // namespace metalfit::glpreview
+
+namespace metalfit::glpreview {
+
+Blackboard& FrameInputs::frame_of(GpuRenderer& gpu) { return gpu.frame(); }
 
 }  // namespace metalfit::glpreview

@@ -19,6 +19,7 @@ namespace metalfit::glpreview {
 class GpuRenderer;
 class FrameInputs;
 struct EnvironmentCube;
+struct PreviewHandles;
 struct PreviewRun;
 struct SceneInputs;
 struct SphereFresnel;
@@ -41,15 +42,16 @@ struct SphereDraw {
     GpuRenderer& renderer;
 };
 
-// The preview graph being built: effects add their passes here and hand what every GPU frame reads to `frame`.
+// The preview graph being built: effects add their passes here, hand what every GPU frame reads to `frame` and
+// publish what later passes and the caller read in `handles` (the graph's blackboard of handles).
 struct PreviewGraph {
     graph::PassGraph& graph;
     const Scene& scene;
     const Features& features;
     const SceneInputs& in;
-    std::optional<graph::Handle<EnvironmentCube>> environment_cube;
     PreviewRun* run;  // null: compile and explain only
     FrameInputs& frame;
+    PreviewHandles& handles;
 };
 
 class Effect {
@@ -60,8 +62,13 @@ public:
     virtual void declare_sphere(const SphereShader&, ShaderBuilder&) const {}
     // Sets this effect's uniforms and binds its textures for one sphere's draw.
     virtual void bind_sphere(const SphereDraw&) const {}
-    // Adds this effect's passes to a preview graph (or the skips that say why none runs).
-    virtual void add_preview_passes(PreviewGraph&) const {}
+    // Adds this effect's passes to a preview graph (or the skips that say why none runs): those the frame reads,
+    // before the beauty frame, and those that read the beauty frame (references, diagnostics, metrics), after it.
+    virtual void add_frame_input_passes(PreviewGraph&) const {}
+    virtual void add_output_passes(PreviewGraph&) const {}
+    // Sets the uniforms this effect's GLSL reads that do not change while the renderer lives, on a program's first
+    // use by a renderer (uniforms a program lacks are ignored).
+    virtual void set_program_uniforms(const Scene&, GLuint /*program*/) const {}
     // Without a graph: derives this effect's inputs from the renderer's own captured cube (GpuRenderer::capture_environment()).
     virtual void derive_from_environment(GpuRenderer&, const EnvironmentCube&) const {}
 };

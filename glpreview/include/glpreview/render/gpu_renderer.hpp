@@ -80,7 +80,6 @@ public:
 
 private:
     EnvironmentCube::Descriptor cube_descriptor() const;
-    void set_environment_uniforms(GLuint program) const;
     void set_camera_uniforms(GLuint program) const;
     void bind_environment(const BuiltProgram& program) const;
     void draw_frame(bool diagnostics = false);

@@ -6,7 +6,10 @@
 #include "render/embedded_shaders.hpp"
 #include "glpreview/gl/objects.hpp"
 #include "glpreview/gl/uniforms.hpp"
+#include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
+#include "glpreview/render/preview_passes.hpp"
+#include "libfit/base/text.hpp"
 
 namespace metalfit::glpreview {
 namespace {
@@ -48,6 +51,13 @@ public:
         builder.source(shader_text("fresnel.glsl"));
     }
 
+    void add_frame_input_passes(PreviewGraph& g) const override {
+        if (g.features.reference_lut) g.frame.read(*(g.handles.luts = add_reference_luts_pass(g.graph, g.scene, g.in, g.run)));
+        else g.graph.skip("reference-luts", "no sphere uses fresnel 'reference'");
+        if (g.features.model_fits) g.frame.read(*(g.handles.parameters = add_model_parameters_pass(g.graph, g.features, g.in, g.run)));
+        else g.graph.skip("model-parameters", "no sphere uses a libfit model");
+    }
+
     void bind_sphere(const SphereDraw& draw) const override {
         if (draw.fresnel.model) set_model_parameters(draw.program.id(), *draw.fresnel.model, draw.fresnel.parameters);
         else draw.program.bind("u_fresnel_lut", draw.renderer.frame().state<ReferenceLuts>().texture(draw.fresnel));
@@ -55,6 +65,39 @@ public:
 };
 
 }  // namespace
+
+graph::Handle<FresnelSet> add_reference_luts_pass(graph::PassGraph& graph, const Scene& scene, const SceneInputs& in, PreviewRun* run) {
+    return graph
+        .add_pass<graph::Out<FresnelSet>>(
+            {"reference-luts", "some sphere shows the exact reference: R_c(μ) from libfit into 1D RGB textures (256 texels)",
+             graph::Processor::cpu},
+            [&](graph::Builder& b, graph::Out<FresnelSet>& d) {
+                b.read(in.materials);
+                d.out = b.produce<FresnelSet>("fresnel-luts");
+            },
+            [run, &scene](const graph::Out<FresnelSet>& d, graph::Resources& r) {
+                FresnelSet& set = r.emplace(d.out);
+                for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+                    set.spheres.push_back(run->fresnel[i]->model ? nullptr : run->fresnel[i]);
+            })
+        .out;
+}
+
+graph::Handle<FresnelSet> add_model_parameters_pass(graph::PassGraph& graph, const Features& f, const SceneInputs& in, PreviewRun* run) {
+    return graph
+        .add_pass<graph::Out<FresnelSet>>(
+            {"model-parameters", "models " + join({f.models.begin(), f.models.end()}) + ": parameters from libfit (Ceres fit or closed form)",
+             graph::Processor::cpu},
+            [&](graph::Builder& b, graph::Out<FresnelSet>& d) {
+                b.read(in.materials);
+                d.out = b.produce<FresnelSet>("model-parameters");
+            },
+            [run](const graph::Out<FresnelSet>& d, graph::Resources& r) {
+                FresnelSet& set = r.emplace(d.out);
+                for (const SphereFresnel* fresnel : run->fresnel) set.spheres.push_back(fresnel->model ? fresnel : nullptr);
+            })
+        .out;
+}
 
 const Effect& fresnel_effect() {
     static const FresnelEffect effect;

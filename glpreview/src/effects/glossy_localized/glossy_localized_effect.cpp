@@ -51,10 +51,10 @@ public:
         draw.program.bind("u_area_position", cube.position.id());
     }
 
-    void add_preview_passes(PreviewGraph& g) const override {
-        if (!g.features.downsample_sizes.empty() && g.environment_cube) {
+    void add_frame_input_passes(PreviewGraph& g) const override {
+        if (!g.features.downsample_sizes.empty() && g.handles.environment.cube) {
             for (int m : g.features.downsample_sizes)
-                g.frame.add(add_downsample_environment_pass(g.graph, g.scene, m, *g.environment_cube, g.run), std::to_string(m));
+                g.frame.add(add_downsample_environment_pass(g.graph, g.scene, m, *g.handles.environment.cube, g.run), std::to_string(m));
         } else {
             g.graph.skip("downsample-environment", "no sphere is rough with glossy 'localized'");
         }

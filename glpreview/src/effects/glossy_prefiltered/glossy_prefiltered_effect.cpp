@@ -102,9 +102,9 @@ public:
         draw.program.bind("u_dfg", frame.state<DfgTextures>().texture(draw.fresnel, frame.find<DfgSet>(fresnel_name(draw.sphere.fresnel))));
     }
 
-    void add_preview_passes(PreviewGraph& g) const override {
-        if (g.features.prefiltered_map && g.environment_cube) {
-            g.frame.add(add_prefilter_environment_pass(g.graph, g.scene, *g.environment_cube, g.run));
+    void add_frame_input_passes(PreviewGraph& g) const override {
+        if (g.features.prefiltered_map && g.handles.environment.cube) {
+            g.frame.add(add_prefilter_environment_pass(g.graph, g.scene, *g.handles.environment.cube, g.run));
             for (const std::string& fresnel : g.features.dfg_models)
                 g.frame.add(add_dfg_table_pass(g.graph, g.scene, fresnel, g.in, g.run), fresnel);
         } else {

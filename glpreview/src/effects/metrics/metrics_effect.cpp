@@ -1,0 +1,122 @@
+#include "metrics_effect.hpp"
+
+#include "glpreview/render/frame_inputs.hpp"
+#include "glpreview/render/preview_passes.hpp"
+#include "glpreview/render/sphere_metrics.hpp"
+#include "libfit/base/text.hpp"
+
+namespace metalfit::glpreview {
+namespace {
+
+using graph::Builder;
+using graph::Handle;
+using graph::Out;
+using graph::Processor;
+using graph::Resources;
+
+Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRender& reference, const Image& localization,
+                  const Image* standard_error) {
+    const Scene& scene = run.scene;
+    Json j;
+    j["schema"] = "metalfit.preview-metrics/1";
+    j["scene"] = scene.file.filename().string();
+    j["renderer"] = run.renderer_name;
+    j["size"] = {scene.width, scene.height};
+    j["space"] = scene.space.empty() ? std::string("scene_linear") : scene.space;  // as the scene names it
+    const auto errors = sphere_errors(beauty, reference, scene.spheres.size());
+    const auto effort = sphere_localization(localization, reference, scene.spheres.size());
+    const auto noise = standard_error ? sphere_reference_noise(*standard_error, reference, scene.spheres.size())
+                                      : std::vector<double>(scene.spheres.size(), 0.0);
+    j["spheres"] = Json::array();
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        // A localized rough sphere looks nothing up along its reflection mode: no impostor statistics.
+        const bool impostor = s.reflection == ReflectionMode::distance_impostor && !(s.rough() && s.glossy == GlossyMethod::localized);
+        Json e;
+        e["sphere"] = i;
+        e["material"] = run.fresnel[i]->material;
+        e["source"] = run.fresnel[i]->source;
+        e["fresnel"] = fresnel_name(s.fresnel);
+        const auto* model = std::get_if<ModelFresnel>(&s.fresnel);
+        e["params"] = model ? Json(to_string(model->parameters)) : Json(nullptr);
+        e["mode"] = to_string(s.reflection);
+        e["strategy"] = impostor ? Json(to_string(s.strategy)) : Json(nullptr);
+        e["iterations"] = impostor ? s.iterations : 0;
+        e["tolerance"] = impostor ? Json(s.tolerance) : Json(nullptr);
+        e["rmse"] = errors[i].rmse;  // NaN (null) when no pixel shows the sphere
+        e["mean_abs"] = errors[i].mean_abs;
+        e["pixels"] = errors[i].pixels;
+        e["mean_iterations"] = impostor ? Json(effort[i].mean_iterations) : Json(nullptr);
+        e["mean_rho_error"] = impostor ? Json(effort[i].mean_rho_error) : Json(nullptr);
+        e["roughness"] = s.roughness;
+        e["glossy"] = s.rough() ? Json(to_string(s.glossy)) : Json(nullptr);
+        e["localized_size"] = s.rough() && s.glossy == GlossyMethod::localized ? Json(s.localized_size) : Json(nullptr);
+        e["reference_noise"] = s.rough() ? noise[i] : 0.0;  // NaN (null) when no pixel shows the sphere
+        j["spheres"].push_back(e);
+    }
+    return j;
+}
+
+
+class MetricsEffect final : public Effect {
+public:
+    std::string_view name() const override { return "metrics"; }
+
+    void add_output_passes(PreviewGraph& g) const override {
+        auto& graph = g.graph;
+        const Scene& scene = g.scene;
+        PreviewRun* run = g.run;
+        PreviewHandles& h = g.handles;
+        const FrameInputs& frame = g.frame;
+    h.difference = graph
+                       .add_pass<Out<Image>>(
+                           {"difference", "|beauty − reference| per pixel", Processor::cpu},
+                           [&](Builder& b, Out<Image>& d) {
+                               b.read(h.beauty);
+                               b.read(h.reference);
+                               d.out = b.produce<Image>("difference-image");
+                           },
+                           [beauty = h.beauty, reference = h.reference](const Out<Image>& d, Resources& r) {
+                               r.emplace(d.out, absolute_difference(r.get(beauty), r.get(reference).image));
+                           })
+                       .out;
+    h.frame_times = graph
+                        .add_pass<Out<FrameTimes>>(
+                            {"timing", "ms per frame: median of " + std::to_string(scene.outputs.timing_frames) +
+                                           " frames between glFinish calls",
+                             Processor::gpu},
+                            [&](Builder& b, Out<FrameTimes>& d) {
+                                frame.declare(b);
+                                d.out = b.produce<FrameTimes>("frame-times");
+                            },
+                            [run, frame](const Out<FrameTimes>& d, Resources& r) {
+                                r.emplace(d.out, (frame.bind(run->renderer(), r), run->renderer().time_frames(run->scene.outputs.timing_frames)));
+                            })
+                        .out;
+    h.metrics = graph
+                    .add_pass<Out<Json>>(
+                        {"metrics", "per sphere: RMSE and mean |difference| of linear radiance inside the sphere mask", Processor::cpu},
+                        [&](Builder& b, Out<Json>& d) {
+                            b.read(h.beauty);
+                            b.read(h.reference);
+                            b.read(h.localization);
+                            if (h.reference_standard_error) b.read(*h.reference_standard_error);
+                            d.out = b.produce<Json>("metrics");
+                        },
+                        [run, h](const Out<Json>& d, Resources& r) {
+                            r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.localization),
+                                                        h.reference_standard_error ? &r.get(*h.reference_standard_error) : nullptr));
+                        })
+                    .out;
+
+    }
+};
+
+}  // namespace
+
+const Effect& metrics_effect() {
+    static const MetricsEffect effect;
+    return effect;
+}
+
+}  // namespace metalfit::glpreview
