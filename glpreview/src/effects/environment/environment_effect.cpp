@@ -1,6 +1,7 @@
 #include "environment_effect.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "glpreview/gl/uniforms.hpp"
 #include "glpreview/render/frame_inputs.hpp"
@@ -73,9 +74,184 @@ void set_environment_uniforms(const Environment& env, GLuint p) {
     }
 }
 
+using Reader = SceneReader;
+
+void check_box(const Reader& r, const char* what, const Vec3& min, const Vec3& max) {
+    if (!(min.x < max.x && min.y < max.y && min.z < max.z)) r.fail(r.field(what), "min must be below max on every axis");
+}
+
+Room read_room(const Reader& r) {
+    Room room;
+    r.read("min", room.min);
+    r.read("max", room.max);
+    check_box(r, "max", room.min, room.max);
+    r.read_color("wall_x_min", room.wall_x_min);
+    r.read_color("wall_x_max", room.wall_x_max);
+    r.read_color("wall_z_min", room.wall_z_min);
+    r.read_color("wall_z_max", room.wall_z_max);
+    r.read_color("floor_light", room.floor_light);
+    r.read_color("floor_dark", room.floor_dark);
+    r.read_color("ceiling", room.ceiling);
+    r.read("checker", room.checker, 1e-3, kSceneBig);
+    bool panels_given = false;
+    r.each("panels", [&](const nlohmann::json& v, const std::string& path) {
+        panels_given = true;
+        Reader p(v, path, r.file(), {"min", "max", "radiance"});
+        CeilingPanel panel;
+        auto read2 = [&](const char* key, double& a, double& b) {
+            if (!p.has(key)) p.fail(p.field(key), "missing ([x, z])");
+            const nlohmann::json& e = p.at(key);
+            if (!e.is_array() || e.size() != 2 || !e[0].is_number() || !e[1].is_number())
+                p.fail(p.field(key), "expected [x, z]");
+            a = e[0].get<double>();
+            b = e[1].get<double>();
+        };
+        read2("min", panel.min_x, panel.min_z);
+        read2("max", panel.max_x, panel.max_z);
+        if (!(panel.min_x < panel.max_x && panel.min_z < panel.max_z)) p.fail(p.field("max"), "min must be below max");
+        p.read_color("radiance", panel.radiance);
+        if (room.panels.size() >= kMaxPanels) r.fail(r.field("panels"), "at most " + std::to_string(kMaxPanels) + " panels");
+        room.panels.push_back(panel);
+    });
+    if (!panels_given) {  // default: a 2 × 2 grid of panels over the room's middle
+        const double cx = 0.5 * (room.min.x + room.max.x), cz = 0.5 * (room.min.z + room.max.z);
+        const double sx = 0.15 * (room.max.x - room.min.x), sz = 0.15 * (room.max.z - room.min.z);
+        for (int i : {-1, 1})
+            for (int j : {-1, 1})
+                room.panels.push_back({cx + i * sx - 0.4 * sx, cz + j * sz - 0.4 * sz, cx + i * sx + 0.4 * sx,
+                                       cz + j * sz + 0.4 * sz, {6, 6, 6}});
+    }
+    r.each("boxes", [&](const nlohmann::json& v, const std::string& path) {
+        Reader b(v, path, r.file(), {"min", "max", "color"});
+        RoomBox box;
+        if (!b.has("min") || !b.has("max")) b.fail(path, "a box needs min and max");
+        b.read("min", box.min);
+        b.read("max", box.max);
+        check_box(b, "max", box.min, box.max);
+        b.read_color("color", box.color);
+        if (room.boxes.size() >= kMaxRoomBoxes) b.fail(path, "at most " + std::to_string(kMaxRoomBoxes) + " boxes and columns together");
+        room.boxes.push_back(box);
+    });
+    r.each("columns", [&](const nlohmann::json& v, const std::string& path) {
+        Reader c(v, path, r.file(), {"center", "half_width", "color"});
+        if (!c.has("center")) c.fail(c.field("center"), "missing ([x, z])");
+        const nlohmann::json& e = c.at("center");
+        if (!e.is_array() || e.size() != 2 || !e[0].is_number() || !e[1].is_number())
+            c.fail(c.field("center"), "expected [x, z]");
+        double half = 0.2;
+        c.read("half_width", half, 1e-3, kSceneBig);
+        RoomBox box;
+        box.min = {e[0].get<double>() - half, room.min.y, e[1].get<double>() - half};
+        box.max = {e[0].get<double>() + half, room.max.y, e[1].get<double>() + half};
+        c.read_color("color", box.color);
+        if (room.boxes.size() >= kMaxRoomBoxes) c.fail(path, "at most " + std::to_string(kMaxRoomBoxes) + " boxes and columns together");
+        room.boxes.push_back(box);
+    });
+    return room;
+}
+
+// "proxy": {"box": {"min": [..], "max": [..]}} or {"sphere": radius} (docs/scene.md, "Environments").
+EnvironmentProxy read_proxy(const Reader& environment) {
+    const Reader r(environment.at("proxy"), "environment.proxy", environment.file(), {"box", "sphere"});
+    if (r.has("box") == r.has("sphere")) r.fail("environment.proxy", "expected exactly one of 'box' or 'sphere'");
+    if (r.has("sphere")) {
+        SphereProxy sphere;
+        r.read("sphere", sphere.radius, 1e-3, kSceneBig);
+        return sphere;
+    }
+    const Reader b(r.at("box"), "environment.proxy.box", environment.file(), {"min", "max"});
+    BoxProxy box;
+    for (const char* key : {"min", "max"})
+        if (!b.has(key)) b.fail(b.field(key), "missing");
+    b.read("min", box.min);
+    b.read("max", box.max);
+    for (int i = 0; i < 3; ++i) {
+        if (std::abs(box.min[i]) > kSceneBig) b.fail(b.field("min"), "coordinates must be in [-1e+06, 1e+06]");
+        if (std::abs(box.max[i]) > kSceneBig) b.fail(b.field("max"), "coordinates must be in [-1e+06, 1e+06]");
+        if (!(box.max[i] - box.min[i] >= 1e-3)) b.fail(b.field("max"), "must exceed min by at least 1e-3 on every axis");
+    }
+    return box;
+}
+
+
 class EnvironmentEffect final : public Effect {
 public:
     std::string_view name() const override { return "environment"; }
+
+    std::vector<const char*> scene_keys() const override { return {"environment"}; }
+
+    void read_scene(const SceneReader& top, Scene& scene) const override {
+        const std::filesystem::path& file = top.file();
+    {
+        static const nlohmann::json no_environment = nlohmann::json::object();  // the default room, with its default panels
+        const nlohmann::json& env = top.has("environment") ? top.at("environment") : no_environment;
+        Environment& e = scene.environment;
+        std::string type = "room";
+        if (env.is_object() && env.contains("type")) {
+            if (!env["type"].is_string()) top.fail("environment.type", "expected a string");
+            type = env["type"].get<std::string>();
+        }
+        if (type == "room") {
+            Reader r(env, "environment", file,
+                     {"type", "reference_point", "cube_size", "min", "max", "wall_x_min", "wall_x_max", "wall_z_min",
+                      "wall_z_max", "floor_light", "floor_dark", "ceiling", "checker", "panels", "boxes", "columns"});
+            e.type = EnvironmentType::room;
+            e.room = read_room(r);
+            r.read("cube_size", e.cube_size, 8, 4096);
+            if (r.has("reference_point")) {
+                Vec3 p;
+                r.read("reference_point", p);
+                e.reference_point = p;
+                for (int i = 0; i < 3; ++i)
+                    if (!(p[i] > e.room.min[i] && p[i] < e.room.max[i])) r.fail("environment.reference_point", "must be inside the room");
+            }
+        } else if (type == "sphere-room") {
+            Reader r(env, "environment", file, {"type", "reference_point", "cube_size", "radius", "checker_deg", "light", "dark"});
+            e.type = EnvironmentType::sphere_room;
+            r.read("radius", e.sphere_room.radius, 1e-3, kSceneBig);
+            r.read("checker_deg", e.sphere_room.checker_deg, 0.1, 180);
+            r.read_color("light", e.sphere_room.light);
+            r.read_color("dark", e.sphere_room.dark);
+            r.read("cube_size", e.cube_size, 8, 4096);
+            if (r.has("reference_point")) {
+                Vec3 p;
+                r.read("reference_point", p);
+                e.reference_point = p;
+            }
+        } else if (type == "equirect") {
+            Reader r(env, "environment", file, {"type", "file", "intensity", "colorspace", "proxy", "reference_point", "cube_size"});
+            e.type = EnvironmentType::equirect;
+            std::string path;
+            r.read("file", path);
+            if (path.empty()) r.fail("environment.file", "missing (an equirectangular EXR or HDR image)");
+            e.equirect.file = std::filesystem::path(path).is_absolute() ? std::filesystem::path(path)
+                                                                        : file.parent_path() / path;
+            r.read("intensity", e.equirect.intensity, 0, kSceneBig);
+            if (r.has("colorspace")) r.read("colorspace", e.equirect.colorspace);
+            if (r.has("proxy")) e.equirect.proxy = read_proxy(r);
+            r.read("cube_size", e.cube_size, 8, 4096);
+            if (r.has("reference_point")) {
+                Vec3 p;
+                r.read("reference_point", p);
+                e.reference_point = p;
+            }
+            if (const auto* box = e.equirect.proxy ? std::get_if<BoxProxy>(&*e.equirect.proxy) : nullptr) {
+                const Vec3 o = e.reference();
+                for (int i = 0; i < 3; ++i)
+                    if (!(o[i] > box->min[i] && o[i] < box->max[i]))
+                        r.fail(r.has("reference_point") ? "environment.reference_point" : "environment.proxy.box",
+                               "the capture point (environment.reference_point, default the origin) must lie inside the proxy box");
+            }
+            if (!e.equirect.proxy)
+                for (const char* key : {"reference_point", "cube_size"})
+                    if (r.has(key))
+                        scene.warnings.push_back(file.string() + ": environment." + key +
+                                                 ": ignored: an equirect without a proxy is at infinity (nothing is captured)");
+        } else {
+            top.fail("environment.type", "unknown value '" + scene_excerpt(type) + "' (known: room, sphere-room, equirect)");
+        }
+    }
+    }
 
     void add_frame_input_passes(PreviewGraph& g) const override {
         const EnvironmentInputs environment = add_environment_passes(g.graph, g.scene, g.features, g.in, g.run);

@@ -37,6 +37,20 @@ class FresnelEffect final : public Effect {
 public:
     std::string_view name() const override { return "fresnel"; }
 
+    std::vector<const char*> sphere_keys() const override { return {"material", "source", "fresnel", "params"}; }
+
+    void read_sphere(const SceneReader& r, Sphere& s, Scene& /*scene*/) const override {
+        r.read("material", s.material);
+        r.read("source", s.source);
+        std::string fresnel = "reference", params = "fit";
+        r.read("fresnel", fresnel);
+        r.read("params", params);
+        if (params != "fit" && params != "closed") r.fail(r.field("params"), "unknown value '" + scene_excerpt(params) + "' (known: fit, closed)");
+        if (fresnel != "reference")  // "params" is checked on a reference sphere too, and means nothing there
+            s.fresnel = ModelFresnel{fresnel, params == "closed" ? ParameterSource::closed : ParameterSource::fit};
+    }
+
+
     void declare_sphere(const SphereShader& shader, ShaderBuilder& builder) const override {
         if (const auto* model = std::get_if<ModelFresnel>(&shader.sphere.fresnel)) {
             if (shader.fresnel && !shader.fresnel->model)

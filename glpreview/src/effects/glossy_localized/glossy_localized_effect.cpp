@@ -29,6 +29,18 @@ class GlossyLocalizedEffect final : public Effect {
 public:
     std::string_view name() const override { return "glossy-localized"; }
 
+    std::vector<const char*> sphere_keys() const override { return {"localized_size"}; }
+
+    void read_sphere(const SceneReader& r, Sphere& s, Scene& scene) const override {
+        r.read("localized_size", s.localized_size, 2, 16);
+        if (r.has("reflection") && applies(s))
+            scene.warnings.push_back(r.file().string() + ": " + r.field("reflection") +
+                                     ": ignored: glossy 'localized' localizes by the area lights' positions");
+        if (r.has("localized_size") && !applies(s))
+            scene.warnings.push_back(r.file().string() + ": " + r.field("localized_size") + ": ignored: only a rough sphere with glossy 'localized' uses it");
+    }
+
+
     void declare_sphere(const SphereShader& shader, ShaderBuilder& builder) const override {
         const Sphere& sphere = shader.sphere;
         if (!applies(sphere)) return;

@@ -82,6 +82,18 @@ class GlossyPrefilteredEffect final : public Effect {
 public:
     std::string_view name() const override { return "glossy-prefiltered"; }
 
+    std::vector<const char*> sphere_keys() const override { return {"roughness", "glossy"}; }
+
+    void read_sphere(const SceneReader& r, Sphere& s, Scene& scene) const override {
+        r.read("roughness", s.roughness, 0, 1);
+        r.read_enum("glossy", s.glossy, {{"prefiltered", GlossyMethod::prefiltered}, {"localized", GlossyMethod::localized}});
+        if (s.rough() && !scene.environment.captured())
+            r.fail(r.field("roughness"), "rough spheres need a captured environment (room, sphere-room or an equirect with a proxy): an equirect at infinity is not prefiltered");
+        if (r.has("glossy") && !s.rough())
+            scene.warnings.push_back(r.file().string() + ": " + r.field("glossy") + ": ignored: the sphere is a mirror (roughness 0)");
+    }
+
+
     void declare_sphere(const SphereShader& shader, ShaderBuilder& builder) const override {
         if (!applies(shader.sphere)) return;
         builder.define("GLOSSY_PREFILTERED")

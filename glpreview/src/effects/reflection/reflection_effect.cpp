@@ -27,6 +27,33 @@ namespace {
 class ReflectionEffect final : public Effect {
 public:
     std::string_view name() const override { return "reflection"; }
+
+    std::vector<const char*> sphere_keys() const override { return {"reflection", "strategy", "iterations", "tolerance"}; }
+
+    void read_sphere(const SceneReader& r, Sphere& s, Scene& scene) const override {
+        r.read_enum("reflection", s.reflection,
+                    {{"classic", ReflectionMode::classic},
+                     {"distance-impostor", ReflectionMode::distance_impostor},
+                     {"box-parallax", ReflectionMode::box_parallax}});
+        r.read_enum("strategy", s.strategy,
+                    {{"secant", Strategy::secant},
+                     {"false-position", Strategy::false_position},
+                     {"mixed", Strategy::mixed},
+                     {"illinois", Strategy::illinois},
+                     {"safe-secant", Strategy::safe_secant}});
+        r.read("iterations", s.iterations, 0, 64);
+        r.read("tolerance", s.tolerance, 0, 1);
+        if (s.reflection != ReflectionMode::distance_impostor)
+            for (const char* key : {"strategy", "iterations", "tolerance"})
+                if (r.has(key))
+                    scene.warnings.push_back(r.file().string() + ": " + r.field(key) + ": ignored: only the distance impostor refines (reflection '" +
+                                             to_string(s.reflection) + "')");
+        if (s.reflection != ReflectionMode::classic && !scene.environment.captured())
+            r.fail(r.field("reflection"), "an equirect environment is at infinity without a proxy: only 'classic' reflections");
+        if (s.reflection == ReflectionMode::box_parallax && !scene.environment.parallax_box())
+            r.fail(r.field("reflection"), "box-parallax needs a room environment or an equirect with a box proxy");
+    }
+
     void declare_sphere(const SphereShader& shader, ShaderBuilder& builder) const override {
         declare_reflection_lookup(shader.sphere, builder);
     }
