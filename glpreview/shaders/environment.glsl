@@ -31,6 +31,15 @@ bool checker_even(float a, float b, float size) {
     return ((int(floor(a / size)) + int(floor(b / size))) & 1) == 0;
 }
 
+// A room surface of colour c (its radiance) at p with inward normal n: where an effect lights the room
+// (ENVIRONMENT_LIGHTING(albedo, p, n), its reflected radiance), that light added with the albedo c clamped to 1.
+#if defined(ENVIRONMENT_LIGHTING)
+vec3 lit_surface(vec3 c, vec3 p, vec3 n) { return c + ENVIRONMENT_LIGHTING(min(c, vec3(1.0)), p, n); }
+#define ROOM_SURFACE(c, p, n) lit_surface(c, p, n)
+#else
+#define ROOM_SURFACE(c, p, n) (c)
+#endif
+
 // rgb: radiance, a: ray parameter of the hit.
 vec4 environment_trace(vec3 o, vec3 d) {
     vec3 inv = vec3(1.0 / env_safe(d.x), 1.0 / env_safe(d.y), 1.0 / env_safe(d.z));
@@ -67,22 +76,26 @@ vec4 environment_trace(vec3 o, vec3 d) {
     vec3 p = o + t_best * d;
     if (box_hit >= 0) {
         float shade = box_axis == 1 ? 1.0 : box_axis == 0 ? 0.7 : 0.85;
-        return vec4(shade * u_box_color[box_hit], t_best);
+        vec3 n = vec3(0.0);
+        n[box_axis] = d[box_axis] > 0.0 ? -1.0 : 1.0;  // the face the ray entered
+        return vec4(ROOM_SURFACE(shade * u_box_color[box_hit], p, n), t_best);
     }
+    vec3 n = vec3(0.0);
+    n[axis] = positive_side ? -1.0 : 1.0;  // the wall's inward normal
     if (axis == 1) {
-        if (!positive_side) return vec4(checker_even(p.x, p.z, u_checker) ? u_floor_light : u_floor_dark, t_best);
+        if (!positive_side) return vec4(ROOM_SURFACE(checker_even(p.x, p.z, u_checker) ? u_floor_light : u_floor_dark, p, n), t_best);
         for (int i = 0; i < u_panel_count; ++i) {
             vec4 r = u_panel_rect[i];
-            if (p.x >= r.x && p.x <= r.z && p.z >= r.y && p.z <= r.w) return vec4(u_panel_radiance[i], t_best);
+            if (p.x >= r.x && p.x <= r.z && p.z >= r.y && p.z <= r.w) return vec4(u_panel_radiance[i], t_best);  // emitters
         }
-        return vec4(u_ceiling, t_best);
+        return vec4(ROOM_SURFACE(u_ceiling, p, n), t_best);
     }
     if (axis == 0) {
         float shade = checker_even(p.z, p.y, u_checker) ? 1.0 : 0.75;
-        return vec4(shade * (positive_side ? u_wall_x_max : u_wall_x_min), t_best);
+        return vec4(ROOM_SURFACE(shade * (positive_side ? u_wall_x_max : u_wall_x_min), p, n), t_best);
     }
     float shade = checker_even(p.x, p.y, u_checker) ? 1.0 : 0.75;
-    return vec4(shade * (positive_side ? u_wall_z_max : u_wall_z_min), t_best);
+    return vec4(ROOM_SURFACE(shade * (positive_side ? u_wall_z_max : u_wall_z_min), p, n), t_best);
 }
 
 #elif defined(ENV_SPHERE_ROOM)

@@ -8,6 +8,10 @@ layout(location = 0) out vec4 out_color;
 // The mirror: the reflected radiance (reflection_lookup into the captured cube map, or the image at infinity)
 // times the Fresnel of μ = cos θ.
 vec3 mirror_radiance(vec3 p, vec3 R, float mu) {
+#if defined(REFLECTED_EMITTER)
+    vec3 emitted;  // an emitter an effect puts in the room (a sphere light): seen before the environment
+    if (REFLECTED_EMITTER(p, R, emitted)) return fresnel(mu) * emitted;
+#endif
 #if defined(ENV_EQUIRECT)
     vec3 L = environment_trace(p, R).rgb;  // at infinity: the direction alone
 #else

@@ -10,7 +10,7 @@
 namespace metalfit::glpreview {
 
 ReferenceRender render_reference(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel,
-                                 const EnvironmentTracer& environment, int threads) {
+                                 const EnvironmentTracer& environment, int threads, const CpuLighting* lighting) {
     const int w = scene.width, h = scene.height;
     ReferenceRender out{Image(w, h), std::vector<int>(static_cast<std::size_t>(w) * h, -1)};
     const CameraBasis basis = camera_basis(scene.camera, w, h);
@@ -30,9 +30,15 @@ ReferenceRender render_reference(const Scene& scene, const std::vector<const Sph
                 nearest = static_cast<int>(s);
             }
         }
+        // An emitter an effect puts in the room (a sphere light) is seen before the environment.
+        const auto seen = [&](Vec3 origin, Vec3 direction) {
+            if (lighting && lighting->emitter)
+                if (const std::optional<RGB> emitted = lighting->emitter(origin, direction)) return *emitted;
+            return environment.trace(origin, direction).radiance;
+        };
         RGB radiance;
         if (nearest < 0) {
-            radiance = environment.trace(basis.position, d).radiance;
+            radiance = seen(basis.position, d);
         } else {
             const Sphere& sphere = scene.spheres[static_cast<std::size_t>(nearest)];
             const Vec3 p = basis.position + t_nearest * d;
@@ -40,7 +46,7 @@ ReferenceRender render_reference(const Scene& scene, const std::vector<const Sph
             const double mu = std::clamp(-dot(d, n), 0.0, 1.0);
             const Vec3 r = normalize(reflect(d, n));
             const RGB f = (*fresnel[static_cast<std::size_t>(nearest)])(mu);
-            radiance = f * environment.trace(p, r).radiance;
+            radiance = f * seen(p, r);
         }
         out.image.set(px, row, radiance);
         out.sphere_id[static_cast<std::size_t>(row) * w + px] = nearest;

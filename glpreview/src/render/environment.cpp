@@ -17,8 +17,8 @@ bool checker_even(double a, double b, double size) {
 
 }  // namespace
 
-EnvironmentTracer::EnvironmentTracer(const Environment& environment, const Image* equirect)
-    : environment_(environment), equirect_(equirect) {
+EnvironmentTracer::EnvironmentTracer(const Environment& environment, const Image* equirect, SurfaceLight light)
+    : environment_(environment), equirect_(equirect), light_(std::move(light)) {
     if (environment.type == EnvironmentType::equirect && !equirect)
         throw std::invalid_argument("EnvironmentTracer: the equirect image is missing");
 }
@@ -92,22 +92,32 @@ EnvironmentHit EnvironmentTracer::trace_room(Vec3 o, Vec3 d) const {
     const Vec3 p = o + t_best * d;
     if (box_hit >= 0) {
         const double shade = box_axis == 1 ? 1.0 : box_axis == 0 ? 0.7 : 0.85;
-        return {shade * room.boxes[static_cast<std::size_t>(box_hit)].color, t_best};
+        Vec3 n;
+        n[box_axis] = d[box_axis] > 0 ? -1.0 : 1.0;  // the face the ray entered
+        return {surface(shade * room.boxes[static_cast<std::size_t>(box_hit)].color, p, n), t_best};
     }
+    Vec3 n;
+    n[axis] = positive_side ? -1.0 : 1.0;  // the wall's inward normal
     if (axis == 1) {
         if (!positive_side)
-            return {checker_even(p.x, p.z, room.checker) ? room.floor_light : room.floor_dark, t_best};
+            return {surface(checker_even(p.x, p.z, room.checker) ? room.floor_light : room.floor_dark, p, n), t_best};
         for (const CeilingPanel& panel : room.panels)
             if (p.x >= panel.min_x && p.x <= panel.max_x && p.z >= panel.min_z && p.z <= panel.max_z)
-                return {panel.radiance, t_best};
-        return {room.ceiling, t_best};
+                return {panel.radiance, t_best};  // emitters
+        return {surface(room.ceiling, p, n), t_best};
     }
     if (axis == 0) {
         const double shade = checker_even(p.z, p.y, room.checker) ? 1.0 : 0.75;
-        return {shade * (positive_side ? room.wall_x_max : room.wall_x_min), t_best};
+        return {surface(shade * (positive_side ? room.wall_x_max : room.wall_x_min), p, n), t_best};
     }
     const double shade = checker_even(p.x, p.y, room.checker) ? 1.0 : 0.75;
-    return {shade * (positive_side ? room.wall_z_max : room.wall_z_min), t_best};
+    return {surface(shade * (positive_side ? room.wall_z_max : room.wall_z_min), p, n), t_best};
+}
+
+RGB EnvironmentTracer::surface(const RGB& colour, Vec3 p, Vec3 n) const {
+    if (!light_) return colour;
+    const RGB albedo{std::min(colour.r, 1.0), std::min(colour.g, 1.0), std::min(colour.b, 1.0)};
+    return colour + light_(albedo, p, n);
 }
 
 EnvironmentHit EnvironmentTracer::trace_sphere_room(Vec3 origin, Vec3 d) const {

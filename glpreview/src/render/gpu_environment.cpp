@@ -23,15 +23,12 @@ void GpuRenderer::capture_environment() {
 void GpuRenderer::capture_environment(const EnvironmentCube& cube) {
     const int n = cube.size;
     ShaderBuilder capture("capture");
-    declare_environment(scene_.environment, capture);
+    declare_environment(scene_, capture);
     capture.source(shader_text("cube_face.glsl")).source(shader_text("capture.frag"));
     const BuiltProgram& p = program(capture);
     set_uniform(p.id(), "u_size", n);
     const gl::Framebuffer fbo = gl::create_framebuffer();
-    if (scene_.environment.type == EnvironmentType::equirect) {  // an equirect on its proxy: the image is painted on it
-        if (!equirect_) throw std::invalid_argument("GpuRenderer: the equirect image is missing");
-        p.bind("u_equirect", equirect_->id());
-    }
+    bind_environment(p);  // an equirect on its proxy: the image is painted on it; the effects' light on the room
     glUseProgram(p.id());
     glBindVertexArray(vao_.id());
     glDisable(GL_DEPTH_TEST);

@@ -65,12 +65,13 @@ void GpuRenderer::set_camera_uniforms(GLuint p) const {
     glProgramUniform2f(p, glGetUniformLocation(p, "u_viewport"), float(scene_.width), float(scene_.height));
 }
 
-void GpuRenderer::bind_environment(const BuiltProgram& program) const {
+void GpuRenderer::bind_environment(const BuiltProgram& program) {
     if (cube_ && program.reads("u_env")) program.bind("u_env", cube_->texture.id());
     if (scene_.environment.type == EnvironmentType::equirect) {
         if (!equirect_) throw std::invalid_argument("GpuRenderer: the equirect image is missing");
         program.bind("u_equirect", equirect_->id());
     }
+    for (const Effect* effect : all_effects()) effect->bind_environment_program(*this, program);
 }
 
 void GpuRenderer::draw_frame(bool diagnostics) {
@@ -87,7 +88,7 @@ void GpuRenderer::draw_frame(bool diagnostics) {
         glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, zero);
     } else {
         ShaderBuilder background("background");
-        declare_environment(scene_.environment, background);
+        declare_environment(scene_, background);
         background.source(shader_text("camera.glsl")).source(shader_text("background.frag"));
         const BuiltProgram& p = program(background);
         bind_environment(p);

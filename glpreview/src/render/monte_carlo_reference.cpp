@@ -5,6 +5,7 @@
 #include <random>
 #include <thread>
 
+#include "glpreview/render/cpu_lighting.hpp"
 #include "glpreview/render/ggx.hpp"
 #include "glpreview/render/worker_threads.hpp"
 #include "glpreview/scene/camera.hpp"
@@ -13,7 +14,7 @@ namespace metalfit::glpreview {
 
 MonteCarloReference render_monte_carlo_reference(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel,
                                                  const EnvironmentTracer& environment, const ReferenceRender& analytic,
-                                                 int samples, int threads) {
+                                                 int samples, int threads, const CpuLighting* lighting) {
     const int w = scene.width, h = scene.height;
     MonteCarloReference out{analytic, Image(w, h)};
     const CameraBasis basis = camera_basis(scene.camera, w, h);
@@ -49,11 +50,17 @@ MonteCarloReference render_monte_carlo_reference(const Scene& scene, const std::
                 sum2[c] += x * x;
             }
         }
+        RadianceEstimate direct;  // the light effects add (lights), with its own variance
+        const bool lit = lighting && lighting->sphere_light;
+        if (lit)
+            direct = lighting->sphere_light(static_cast<std::size_t>(id), p, n, -d, f, samples,
+                                            kMonteCarloSeed ^ (0xD1B54A32D192ED03ull * (static_cast<std::uint64_t>(row) * w + px + 1)));
         RGB mean, error;
         for (int c = 0; c < 3; ++c) {
             mean[c] = sum[c] / samples;
             const double variance = samples > 1 ? std::max(0.0, (sum2[c] - samples * mean[c] * mean[c]) / (samples - 1)) : 0.0;
-            error[c] = std::sqrt(variance / samples);
+            error[c] = std::sqrt(lit ? variance / samples + direct.variance[c] : variance / samples);
+            if (lit) mean[c] += direct.mean[c];
         }
         out.render.image.set(px, row, mean);
         out.standard_error.set(px, row, error);

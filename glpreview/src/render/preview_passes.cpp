@@ -127,8 +127,9 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
     const SceneInputs in = import_scene(graph, scene);
     FrameInputs frame;
     frame.read(in.camera);
+    FrameInputs environment;  // what the capture reads (the lights' shadow maps)
     // The effects' passes the frames read (effects/registry.hpp), and what each hands to the frames.
-    PreviewGraph effects{graph, scene, f, in, run, frame, h};
+    PreviewGraph effects{graph, scene, f, in, run, frame, environment, h};
     for (const Effect* effect : all_effects()) effect->add_frame_input_passes(effects);
 
     // beauty: one frame of every sphere with its shader variant.

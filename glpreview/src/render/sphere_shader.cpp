@@ -6,14 +6,16 @@
 
 namespace metalfit::glpreview {
 
-void declare_environment(const Environment& environment, ShaderBuilder& builder) {
-    builder.define(environment_define(environment)).source(shader_text("environment.glsl"));
-    if (environment.type == EnvironmentType::equirect) builder.sampler("u_equirect");
+void declare_environment(const Scene& scene, ShaderBuilder& builder) {
+    // The effects' parts first: environment.glsl calls ENVIRONMENT_LIGHTING where one is defined.
+    for (const Effect* effect : all_effects()) effect->declare_environment_program(scene, builder);
+    builder.define(environment_define(scene.environment)).source(shader_text("environment.glsl"));
+    if (scene.environment.type == EnvironmentType::equirect) builder.sampler("u_equirect");
 }
 
 ShaderBuilder sphere_shader(const Scene& scene, const Sphere& sphere, const SphereFresnel* fresnel, bool diagnostics) {
     ShaderBuilder builder("sphere");
-    declare_environment(scene.environment, builder);
+    declare_environment(scene, builder);
     builder.radiance("mirror_radiance(p, R, mu)");  // the mirror, unless an effect gives the sphere another lobe
     const SphereShader shader{scene, sphere, fresnel, diagnostics};
     for (const Effect* effect : all_effects()) effect->declare_sphere(shader, builder);

@@ -284,6 +284,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         r.read("reference_samples", o.reference_samples, 1, 65536);
         if (!o.exr && !o.png && (o.beauty || o.reference || o.difference)) r.fail("outputs.exr", "images asked for but neither exr nor png");
     }
+    for (const Effect* effect : all_effects()) effect->check_scene(top, scene);
     for (std::string& w : placement_warnings(scene)) scene.warnings.push_back(std::move(w));
     return scene;
 }

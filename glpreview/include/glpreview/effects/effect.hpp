@@ -12,6 +12,7 @@
 #include "glpreview/graph/features.hpp"
 #include "glpreview/graph/pass_graph.hpp"
 #include "glpreview/render/blackboard.hpp"
+#include "glpreview/render/cpu_lighting.hpp"
 #include "glpreview/render/shader_builder.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "glpreview/scene/scene_reader.hpp"
@@ -53,6 +54,7 @@ struct PreviewGraph {
     const SceneInputs& in;
     PreviewRun* run;  // null: compile and explain only
     FrameInputs& frame;
+    FrameInputs& environment;  // what the capture of the environment reads (added before the capture pass)
     PreviewHandles& handles;
 };
 
@@ -67,6 +69,8 @@ public:
     virtual void read_scene(const SceneReader& /*top*/, Scene&) const {}
     virtual std::vector<const char*> sphere_keys() const { return {}; }
     virtual void read_sphere(const SceneReader& /*sphere*/, Sphere&, Scene&) const {}
+    // Checks that need the whole scene (a light inside a sphere), after every key was read; errors as above.
+    virtual void check_scene(const SceneReader& /*top*/, const Scene&) const {}
     // Adds this effect's defines, GLSL, samplers and lobe to `builder` where it applies to the sphere.
     virtual void declare_sphere(const SphereShader&, ShaderBuilder&) const {}
     // Sets this effect's uniforms and binds its textures for one sphere's draw.
@@ -75,9 +79,24 @@ public:
     // before the beauty frame, and those that read the beauty frame (references, diagnostics, metrics), after it.
     virtual void add_frame_input_passes(PreviewGraph&) const {}
     virtual void add_output_passes(PreviewGraph&) const {}
+    // What this effect adds to every program that reads the environment (the capture, the background, the spheres):
+    // its GLSL (ENVIRONMENT_LIGHTING: light on the room's surfaces; REFLECTED_EMITTER: emitters that camera and
+    // mirror rays see), samplers and defines; and what it binds for such a program at each use.
+    virtual void declare_environment_program(const Scene&, ShaderBuilder&) const {}
+    virtual void bind_environment_program(GpuRenderer&, const BuiltProgram&) const {}
     // Sets the uniforms this effect's GLSL reads that do not change while the renderer lives, on a program's first
     // use by a renderer (uniforms a program lacks are ignored).
     virtual void set_program_uniforms(const Scene&, GLuint /*program*/) const {}
+    // The CPU references: what this effect adds (render/cpu_lighting.hpp), for one scene. Thread-safe: the
+    // references call them from several threads.
+    virtual RGB cpu_surface_light(const Scene&, const RGB& /*albedo*/, Vec3 /*p*/, Vec3 /*n*/) const { return {0, 0, 0}; }
+    virtual std::optional<RGB> cpu_emitter(const Scene&, Vec3 /*origin*/, Vec3 /*dir*/) const { return std::nullopt; }
+    virtual RadianceEstimate cpu_sphere_light(const Scene&, std::size_t /*sphere*/, Vec3 /*p*/, Vec3 /*n*/, Vec3 /*v*/,
+                                              const SphereFresnel&, int /*samples*/, std::uint64_t /*seed*/) const {
+        return {};
+    }
+    // Whether this effect adds anything to the CPU references of `scene` (else its cpu_* are not called).
+    virtual bool lights_cpu_reference(const Scene&) const { return false; }
     // Without a graph: derives this effect's inputs from the renderer's own captured cube (GpuRenderer::capture_environment()).
     virtual void derive_from_environment(GpuRenderer&, const EnvironmentCube&) const {}
 };

@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "glpreview/render/cpu_lighting.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/io/image.hpp"
 #include "glpreview/scene/scene.hpp"
@@ -17,8 +18,9 @@ struct ReferenceRender {
     std::vector<int> sphere_id;  // per pixel (top row first): the sphere seen, −1 for the environment
 };
 
-// fresnel[i] belongs to scene.spheres[i]. Runs on `threads` threads (0: all cores).
+// fresnel[i] belongs to scene.spheres[i]. Runs on `threads` threads (0: all cores). `lighting`: what effects add
+// (emitters seen by camera and mirror rays; the room's light is the tracer's).
 ReferenceRender render_reference(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel,
-                                 const EnvironmentTracer& environment, int threads = 0);
+                                 const EnvironmentTracer& environment, int threads = 0, const CpuLighting* lighting = nullptr);
 
 }  // namespace metalfit::glpreview

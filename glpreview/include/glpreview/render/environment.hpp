@@ -3,6 +3,7 @@
 // file; tests compare the two).
 #pragma once
 
+#include <functional>
 #include <limits>
 
 #include "glpreview/io/image.hpp"
@@ -15,10 +16,16 @@ struct EnvironmentHit {
     double t = std::numeric_limits<double>::infinity();  // ray parameter of the hit (∞ for an image at infinity)
 };
 
+// The light an effect adds to a room surface of albedo `albedo` at p with inward normal n (its reflected radiance),
+// as ENVIRONMENT_LIGHTING does in environment.glsl.
+using SurfaceLight = std::function<RGB(const RGB& albedo, Vec3 p, Vec3 n)>;
+
 class EnvironmentTracer {
 public:
-    // `equirect` must be the loaded image when the environment is an equirect one (kept by reference).
-    EnvironmentTracer(const Environment& environment, const Image* equirect = nullptr);
+    // `equirect` must be the loaded image when the environment is an equirect one (kept by reference). `light`: the
+    // light effects add to the room's surfaces (none: the room's emission alone); its albedo is a surface's colour
+    // clamped to 1; ceiling panels are emitters and take none.
+    EnvironmentTracer(const Environment& environment, const Image* equirect = nullptr, SurfaceLight light = {});
 
     // Radiance seen from `origin` along unit direction `dir`, and where it is.
     EnvironmentHit trace(Vec3 origin, Vec3 dir) const;
@@ -28,9 +35,11 @@ private:
     EnvironmentHit trace_sphere_room(Vec3 origin, Vec3 dir) const;
     EnvironmentHit trace_proxy(Vec3 origin, Vec3 dir) const;  // an equirect on its proxy
     RGB equirect_radiance(Vec3 dir) const;
+    RGB surface(const RGB& colour, Vec3 p, Vec3 n) const;  // a room surface's radiance: colour plus light_
 
     const Environment& environment_;
     const Image* equirect_;
+    SurfaceLight light_;
 };
 
 // Bilinear lookup in an equirect image (u wraps, v clamps), as the shader does it with texelFetch.

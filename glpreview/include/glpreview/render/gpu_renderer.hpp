@@ -81,7 +81,8 @@ public:
 private:
     EnvironmentCube::Descriptor cube_descriptor() const;
     void set_camera_uniforms(GLuint program) const;
-    void bind_environment(const BuiltProgram& program) const;
+    // The environment's textures and what every effect binds for a program that reads the environment.
+    void bind_environment(const BuiltProgram& program);
     void draw_frame(bool diagnostics = false);
     Image read_frame() const;
 

@@ -21,8 +21,9 @@ struct MonteCarloReference {
 };
 
 // `analytic` is render_reference() of the same scene; `samples` per pixel (scene.outputs.reference_samples).
+// `lighting`: the direct light effects add to rough spheres (its estimate and variance added to the lobe's).
 MonteCarloReference render_monte_carlo_reference(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel,
                                                  const EnvironmentTracer& environment, const ReferenceRender& analytic,
-                                                 int samples, int threads = 0);
+                                                 int samples, int threads = 0, const CpuLighting* lighting = nullptr);
 
 }  // namespace metalfit::glpreview

@@ -17,6 +17,7 @@
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/dfg_table.hpp"
+#include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/gpu_resources.hpp"
 #include "glpreview/render/output_staging.hpp"
@@ -77,8 +78,9 @@ struct EnvironmentInputs {
     void bind(GpuRenderer& gpu, graph::Resources& r) const;  // and hands it to the renderer
 };
 // The environment passes the features call for (capture-environment or load-equirect) and the skips --explain lists.
+// `capture_inputs`: what the capture reads besides the scene (the lights' shadow maps), declared and bound by it.
 EnvironmentInputs add_environment_passes(graph::PassGraph& graph, const Scene& scene, const Features& features,
-                                         const SceneInputs& in, PreviewRun* run);
+                                         const SceneInputs& in, PreviewRun* run, const FrameInputs* capture_inputs = nullptr);
 
 // The CPU images and values a preview produces (handles into the graph; a culled writer leaves them empty).
 struct PreviewHandles {
@@ -102,7 +104,8 @@ void skip_unneeded_effects(graph::PassGraph& graph);
 // `equirect`: the image an equirect on its proxy paints on the proxy (the capture reads it).
 graph::Handle<EnvironmentCube> add_capture_environment_pass(graph::PassGraph&, const Scene&, const Features&,
                                                             const SceneInputs&, PreviewRun*,
-                                                            std::optional<graph::Handle<EquirectTexture>> equirect = {});
+                                                            std::optional<graph::Handle<EquirectTexture>> equirect = {},
+                                                            const FrameInputs* capture_inputs = nullptr);
 std::pair<graph::Handle<EquirectTexture>, graph::Handle<Image>> add_load_equirect_pass(graph::PassGraph&, const Scene&,
                                                                                       PreviewRun*);
 graph::Handle<FresnelSet> add_reference_luts_pass(graph::PassGraph&, const Scene&, const SceneInputs&, PreviewRun*);

@@ -4,6 +4,9 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
+#include <memory>
+#include <typeindex>
 #include <optional>
 #include <string>
 #include <variant>
@@ -159,6 +162,24 @@ struct PathPolicy {
     bool allow_outside = false;
 };
 
+// What effects read from a scene beyond the core's keys (Effect::read_scene), by type: immutable once parsed, shared
+// by copies of the scene.
+class EffectSettings {
+public:
+    template <class T>
+    void set(T value) {
+        values_[std::type_index(typeid(T))] = std::make_shared<const T>(std::move(value));
+    }
+    template <class T>
+    const T* find() const {
+        const auto it = values_.find(std::type_index(typeid(T)));
+        return it == values_.end() ? nullptr : static_cast<const T*>(it->second.get());
+    }
+
+private:
+    std::map<std::type_index, std::shared_ptr<const void>> values_;
+};
+
 struct Scene {
     std::filesystem::path file;  // where it was read from (for messages and relative paths)
     int width = 512, height = 512;
@@ -176,6 +197,7 @@ struct Scene {
     // again on the open descriptor (ConfinedFile), so a link swapped in after the first check leads nowhere outside.
     // Unset (library use): no confinement.
     std::optional<PathPolicy> paths;
+    EffectSettings effects;  // the effects' own keys (lights, ...)
 };
 
 // Every file the scene names (material files, the equirect image), resolved with links followed, must lie in the

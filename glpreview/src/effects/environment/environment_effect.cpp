@@ -254,7 +254,7 @@ public:
     }
 
     void add_frame_input_passes(PreviewGraph& g) const override {
-        const EnvironmentInputs environment = add_environment_passes(g.graph, g.scene, g.features, g.in, g.run);
+        const EnvironmentInputs environment = add_environment_passes(g.graph, g.scene, g.features, g.in, g.run, &g.environment);
         g.handles.environment = environment;
         g.frame.add([environment](Builder& b) { environment.declare(b); },
                     [environment](GpuRenderer& gpu, Resources& r) { environment.bind(gpu, r); });
@@ -284,7 +284,7 @@ std::string captured_environment_name(const Environment& environment) {
 
 Handle<EnvironmentCube> add_capture_environment_pass(PassGraph& graph, const Scene& scene, const Features& f,
                                                      const SceneInputs& in, PreviewRun* run,
-                                                     std::optional<Handle<EquirectTexture>> equirect) {
+                                                     std::optional<Handle<EquirectTexture>> equirect, const FrameInputs* capture_inputs) {
     struct Data {
         std::optional<Handle<EquirectTexture>> equirect;
         Handle<EnvironmentCube> out;
@@ -299,10 +299,12 @@ Handle<EnvironmentCube> add_capture_environment_pass(PassGraph& graph, const Sce
             [&](Builder& b, Data& d) {
                 b.read(in.environment);
                 if (equirect) d.equirect = b.read(*equirect);
+                if (capture_inputs) capture_inputs->declare(b);
                 d.out = b.create<EnvironmentCube>("environment-cube", {scene.environment.cube_size, f.distance_channel, f.prefiltered_map});
             },
-            [run](const Data& d, Resources& r) {
+            [run, capture_inputs = capture_inputs ? std::optional<FrameInputs>(*capture_inputs) : std::nullopt](const Data& d, Resources& r) {
                 if (d.equirect) run->renderer().use_equirect(r.get(*d.equirect));
+                if (capture_inputs) capture_inputs->bind(run->renderer(), r);
                 run->renderer().capture_environment(r.get(d.out));
             })
         .out;
@@ -342,7 +344,7 @@ void EnvironmentInputs::bind(GpuRenderer& gpu, Resources& r) const {
 }
 
 EnvironmentInputs add_environment_passes(PassGraph& graph, const Scene& scene, const Features& f, const SceneInputs& in,
-                                         PreviewRun* run) {
+                                         PreviewRun* run, const FrameInputs* capture_inputs) {
     EnvironmentInputs environment;
     if (f.equirect_image) {
         const auto [texture, image] = add_load_equirect_pass(graph, scene, run);
@@ -350,7 +352,7 @@ EnvironmentInputs add_environment_passes(PassGraph& graph, const Scene& scene, c
         environment.equirect_image = image;
     }
     if (f.environment_capture) {
-        environment.cube = add_capture_environment_pass(graph, scene, f, in, run, environment.equirect_texture);
+        environment.cube = add_capture_environment_pass(graph, scene, f, in, run, environment.equirect_texture, capture_inputs);
         if (!f.distance_channel)
             graph.skip("distance channel", "no sphere uses the distance impostor: the cube map stores radiance only (RGBA16F)");
     } else {

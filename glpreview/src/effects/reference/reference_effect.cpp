@@ -1,10 +1,13 @@
 #include "reference_effect.hpp"
 
+#include <optional>
+
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/monte_carlo_reference.hpp"
 #include "glpreview/render/preview_passes.hpp"
+#include "glpreview/effects/registry.hpp"
 #include "libfit/base/text.hpp"
 
 namespace metalfit::glpreview {
@@ -16,6 +19,36 @@ using graph::Out;
 using graph::Processor;
 using graph::Resources;
 
+
+// What the registered effects add to the references of `scene` (lights), or nothing.
+std::optional<CpuLighting> cpu_lighting(const Scene& scene) {
+    std::vector<const Effect*> lighting;
+    for (const Effect* effect : all_effects())
+        if (effect->lights_cpu_reference(scene)) lighting.push_back(effect);
+    if (lighting.empty()) return std::nullopt;
+    CpuLighting all;
+    all.surface = [&scene, lighting](const RGB& albedo, Vec3 p, Vec3 n) {
+        RGB sum{0, 0, 0};
+        for (const Effect* effect : lighting) sum = sum + effect->cpu_surface_light(scene, albedo, p, n);
+        return sum;
+    };
+    all.emitter = [&scene, lighting](Vec3 origin, Vec3 dir) -> std::optional<RGB> {
+        for (const Effect* effect : lighting)
+            if (const std::optional<RGB> emitted = effect->cpu_emitter(scene, origin, dir)) return emitted;
+        return std::nullopt;
+    };
+    all.sphere_light = [&scene, lighting](std::size_t sphere, Vec3 p, Vec3 n, Vec3 v, const SphereFresnel& fresnel, int samples,
+                                          std::uint64_t seed) {
+        RadianceEstimate sum;
+        for (const Effect* effect : lighting) {
+            const RadianceEstimate e = effect->cpu_sphere_light(scene, sphere, p, n, v, fresnel, samples, seed);
+            sum.mean = sum.mean + e.mean;
+            sum.variance = sum.variance + e.variance;
+        }
+        return sum;
+    };
+    return all;
+}
 
 class ReferenceEffect final : public Effect {
 public:
@@ -41,8 +74,10 @@ public:
                               d.out = b.produce<ReferenceRender>("reference-image");
                           },
                           [run, equirect = h.environment.equirect_image](const Out<ReferenceRender>& d, Resources& r) {
-                              const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr);
-                              r.emplace(d.out, render_reference(run->scene, run->fresnel, tracer, run->threads));
+                              const std::optional<CpuLighting> lighting = cpu_lighting(run->scene);
+                              const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr,
+                                                             lighting ? lighting->surface : SurfaceLight{});
+                              r.emplace(d.out, render_reference(run->scene, run->fresnel, tracer, run->threads, lighting ? &*lighting : nullptr));
                           })
                       .out;
     // monte-carlo-reference: the rough spheres' lobes by Monte Carlo, over the analytic reference's pixels.
@@ -67,9 +102,12 @@ public:
                 d.standard_error = b.produce<Image>("reference-standard-error");
             },
             [run, equirect = h.environment.equirect_image](const Data& d, Resources& r) {
-                const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr);
+                const std::optional<CpuLighting> lighting = cpu_lighting(run->scene);
+                const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr,
+                                               lighting ? lighting->surface : SurfaceLight{});
                 MonteCarloReference result = render_monte_carlo_reference(run->scene, run->fresnel, tracer, r.get(d.analytic),
-                                                                          run->scene.outputs.reference_samples, run->threads);
+                                                                          run->scene.outputs.reference_samples, run->threads,
+                                                                          lighting ? &*lighting : nullptr);
                 r.emplace(d.out, std::move(result.render));
                 r.emplace(d.standard_error, std::move(result.standard_error));
             });

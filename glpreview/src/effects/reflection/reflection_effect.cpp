@@ -70,7 +70,7 @@ std::vector<ProbeResult> probe_reflection_lookups(GpuRenderer& renderer, const S
                                                   std::span<const std::array<Vec3, 2>> rays) {
     if (!renderer.cube()) throw std::logic_error("probe_reflection_lookups: no captured cube map");
     ShaderBuilder probe("probe", ShaderBuilder::Stage::compute);
-    declare_environment(renderer.scene().environment, probe);
+    declare_environment(renderer.scene(), probe);
     declare_reflection_lookup(settings, probe);
     probe.source(shader_text("probe.comp"));
     const BuiltProgram& p = renderer.program(probe);
