@@ -8,6 +8,7 @@
 #include "fresnel/fresnel_effect.hpp"
 #include "glossy_localized/glossy_localized_effect.hpp"
 #include "glossy_prefiltered/glossy_prefiltered_effect.hpp"
+#include "lights/lights_effect.hpp"
 #include "localization_diagnostics/localization_diagnostics_effect.hpp"
 #include "metrics/metrics_effect.hpp"
 #include "reference/reference_effect.hpp"
@@ -16,7 +17,8 @@
 namespace metalfit::glpreview {
 
 std::span<const Effect* const> all_effects() {
-    static const std::array<const Effect*, 8> effects{
+    static const std::array<const Effect*, 9> effects{
+        &lights_effect(),  // first: the capture of the environment reads its shadow maps
         &environment_effect(),
         &reflection_effect(),
         &fresnel_effect(),
