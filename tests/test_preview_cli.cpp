@@ -230,6 +230,23 @@ TEST(PreviewCli, BenchmarkModesPrintTheirJson) {
     }
 }
 
+TEST(PreviewCli, TheLightsBenchmarkPrintsItsRatiosToTheMirrorFrame) {
+    TempDir dir;
+    const CommandRun run = glpreview("--bench-lights --quick --json", dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto lights = nlohmann::json::parse(run.out);
+    const auto& rows = lights["rows"];
+    ASSERT_EQ(rows.size(), 5u);  // the mirror frame, the rough frame with 0, 1, 4 lights, one shadow pass
+    EXPECT_DOUBLE_EQ(rows[0]["ratio_to_mirror_frame"].get<double>(), 1.0);
+    for (const auto& r : rows) {
+        EXPECT_GT(r["ms"].get<double>(), 0.0);
+        EXPECT_GE(r["ratio_noise"].get<double>(), 0.0);
+    }
+    // Lights cost something: four lights' frame is slower than none (the per-round ratios' median).
+    EXPECT_GT(rows[3]["ratio_to_mirror_frame"].get<double>(), rows[1]["ratio_to_mirror_frame"].get<double>());
+    EXPECT_GT(lights["shadow_pass_per_light"]["ratio_to_mirror_frame"].get<double>(), 0.0);
+}
+
 
 // A one-sphere scene under the shipped equirect sky (a user's HDRI): the sheet renders under it.
 fs::path write_equirect_sheet_scene(const TempDir& dir) {

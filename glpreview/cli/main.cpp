@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "glpreview/gl/gl_context.hpp"
+#include "glpreview/effects/lights_bench.hpp"
 #include "glpreview/render/gpu_bench.hpp"
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/render/sphere_sheet.hpp"
@@ -122,7 +123,8 @@ int run_glpreview(int argc, char** argv) {
     bool batch = false;
     app.add_flag("--batch", batch,
                  "Render every scene given, each into OUTPUT/<scene file's stem>/, in one process and one GL context");
-    bool bench_shader_cost = false, bench_localization_cost = false, bench_glossy_cost = false, quick = false, json = false;
+    bool bench_shader_cost = false, bench_localization_cost = false, bench_glossy_cost = false, bench_lights_cost = false, quick = false,
+         json = false;
     app.add_flag("--bench-shaders", bench_shader_cost,
                  "Benchmark: full-screen 1024² pass per libfit model, ratio to the exact conductor-rgb pass (JSON with --json)");
     app.add_flag("--bench-localization", bench_localization_cost,
@@ -130,6 +132,9 @@ int run_glpreview(int argc, char** argv) {
     app.add_flag("--bench-glossy", bench_glossy_cost,
                  "Benchmark: roughness x rough method, ms per frame as a ratio to the mirror classic pass, RMSE vs the Monte-Carlo "
                  "reference; the shipped mirror scenes' ms per frame (a Markdown table; JSON with --json)");
+    app.add_flag("--bench-lights", bench_lights_cost,
+                 "Benchmark: a rough sphere's frame with 0, 1 and 4 point lights and one light's shadow pass, as ratios to the "
+                 "mirror frame (a Markdown table; JSON with --json)");
     app.add_flag("--quick", quick, "Benchmarks: fewer frames, smaller images");
     app.add_flag("--json", json, "Benchmarks: print JSON");
     app.add_option("-o,--output", output_dir, "Output folder (default: preview/)");
@@ -171,6 +176,27 @@ int run_glpreview(int argc, char** argv) {
         return code == 0 ? ok : usage;
     }
     try {
+        if (bench_lights_cost) {
+            GlContext context = GlContext::create();
+            const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
+            const auto result = bench_lights(context, options, quick);
+            if (json) {
+                std::cout << result.dump(2) << "\n";
+                return ok;
+            }
+            std::printf("renderer %s; %dx%d, %d interleaved rounds\n\n| variant | ms | ratio to the mirror frame |\n|---|---:|---:|\n",
+                        result["renderer"].get<std::string>().c_str(), result["size"][0].get<int>(), result["size"][1].get<int>(),
+                        result["rounds"].get<int>());
+            for (const auto& r : result["rows"])
+                std::printf("| %s | %.3f | %.2f ± %.2f |\n", r["variant"].get<std::string>().c_str(), r["ms"].get<double>(),
+                            r["ratio_to_mirror_frame"].get<double>(), r["ratio_noise"].get<double>());
+            std::printf("\nper light: light pass %.2f ± %.2f, shadow pass %.2f ± %.2f (ratios to the mirror frame)\n",
+                        result["light_pass_per_light"]["ratio_to_mirror_frame"].get<double>(),
+                        result["light_pass_per_light"]["ratio_noise"].get<double>(),
+                        result["shadow_pass_per_light"]["ratio_to_mirror_frame"].get<double>(),
+                        result["shadow_pass_per_light"]["ratio_noise"].get<double>());
+            return ok;
+        }
         if (bench_glossy_cost) {
             GlContext context = GlContext::create();
             const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
@@ -218,7 +244,7 @@ int run_glpreview(int argc, char** argv) {
                                     r["ratio_to_classic"].get<double>(), r["ratio_noise"].get<double>(), r["rmse"].get<double>());
             return ok;
         }
-        if (scene_files.empty()) throw UsageError("a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy)");
+        if (scene_files.empty()) throw UsageError("a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy / --bench-lights)");
         if (scene_files.size() > 1 && !batch) throw UsageError("several scene files need --batch");
         if (batch && (!sheet.empty() || explain_only || !capture_probe_size.empty()))
             throw UsageError("--batch renders scenes: --sheet, --explain and --capture-probe take one scene");
