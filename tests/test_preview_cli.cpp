@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
 #include <set>
 #include <nlohmann/json.hpp>
 
@@ -373,6 +374,28 @@ TEST(PreviewCli, ARelativeScenePathFindsTheFilesBesideTheScene) {
     fs::current_path(previous);
     ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
     EXPECT_TRUE(fs::exists(dir.path() / "out" / "beauty.exr"));
+}
+
+TEST(PreviewCli, TheSheetsLightColumnShowsTheHighlightAndNeedsARoom) {
+    TempDir dir;
+    const std::string scene = (kData / "scenes" / "sheet.json").string();
+    const CommandRun run = glpreview(scene + " --sheet Au --sheet-models f82-tint --sheet-light on --size 64x64 -o " + (dir.path() / "out").string(), dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    std::ifstream in(dir.path() / "out" / "sheet.json");
+    const auto sheet = nlohmann::json::parse(in);
+    ASSERT_TRUE(sheet.is_array());  // a row per material, model and roughness
+    ASSERT_EQ(sheet.size(), 2u);    // the scene's roughness 0 and the lit column
+    int lit = 0;
+    for (const auto& row : sheet)
+        if (row.contains("light")) {
+            ++lit;
+            EXPECT_DOUBLE_EQ(row["roughness"].get<double>(), 0.35);
+        }
+    EXPECT_EQ(lit, 1);
+    const CommandRun sky = glpreview((kData / "scenes" / "sky.json").string() + " --sheet Au --sheet-light on --size 32x32 -o " + (dir.path() / "out2").string(), dir);
+    EXPECT_EQ(sky.exit_code, 2);
+    EXPECT_TRUE(Contains(sky.err, "--sheet-light: the light column needs a room environment")) << sky.err;
+    EXPECT_FALSE(fs::exists(dir.path() / "out2"));
 }
 
 TEST(PreviewCli, AFullStdoutIsAnError) {

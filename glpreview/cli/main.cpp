@@ -146,7 +146,7 @@ int run_glpreview(int argc, char** argv) {
     app.add_option("--sheet", sheet,
                    "Sphere sheet instead of the scene's outputs: comma-separated materials, one row each "
                    "(reference | model | |difference| x 10); the scene holds one sphere");
-    std::string sheet_models = "best", sheet_roughness, sheet_labels = "on";
+    std::string sheet_models = "best", sheet_roughness, sheet_labels = "on", sheet_light = "off";
     app.add_option("--sheet-models", sheet_models,
                    "Sheet: the models shown, comma-separated libfit ids, one column group each, or best (each "
                    "material's best fitted model)")
@@ -156,6 +156,9 @@ int run_glpreview(int argc, char** argv) {
                    "sphere's)");
     app.add_option("--sheet-labels", sheet_labels, "Sheet: material, model, roughness and error drawn on sheet.png (on|off)")
         ->capture_default_str();
+    app.add_option("--sheet-light", sheet_light,
+                   "Sheet: one more column at roughness 0.35 under a point light beside and behind the sphere, each model's highlight next "
+                   "to the reference's (on|off; a room environment)");
     std::string capture_probe_size;
     app.add_option("--capture-probe", capture_probe_size,
                    "Capture the scene's environment from its reference point as a WxH equirect reflection probe: "
@@ -298,8 +301,13 @@ int run_glpreview(int argc, char** argv) {
         if (sheet_labels != "on" && sheet_labels != "off")
             throw UsageError("--sheet-labels: on or off (got '" + sheet_labels.substr(0, 40) + "')");
         sheet_request.labels = sheet_labels == "on";
-        if (sheet.empty() && (sheet_models != "best" || !sheet_roughness.empty() || sheet_labels != "on"))
-            throw UsageError("--sheet-models, --sheet-roughness and --sheet-labels need --sheet");
+        if (sheet_light != "on" && sheet_light != "off")
+            throw UsageError("--sheet-light: on or off (got '" + sheet_light.substr(0, 40) + "')");
+        sheet_request.light = sheet_light == "on";
+        if (sheet_request.light && scene.environment.type != EnvironmentType::room)
+            throw UsageError("--sheet-light: the light column needs a room environment (its surfaces receive the light)");
+        if (sheet.empty() && (sheet_models != "best" || !sheet_roughness.empty() || sheet_labels != "on" || sheet_light != "off"))
+            throw UsageError("--sheet-models, --sheet-roughness, --sheet-labels and --sheet-light need --sheet");
         if (!sheet.empty()) check_sheet_request(sheet_request);
         if (explain_only) {
             std::cout << explain(sheet.empty() ? build_plan(scene) : build_sheet_plan(scene, sheet_request), scene);

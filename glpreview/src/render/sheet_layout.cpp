@@ -61,7 +61,7 @@ std::vector<TextBox> sheet_labels(const std::vector<SheetCell>& cells, int cell_
     std::vector<TextBox> boxes;
     for (const SheetCell& c : cells) {
         const int x = c.column * cell_width, y = c.row * cell_height;
-        std::string top, bottom = "roughness " + format("%g", c.roughness);
+        std::string top, bottom = "roughness " + format("%g", c.roughness) + (c.lit ? ", lit" : "");
         switch (c.kind) {
         case SheetCellKind::reference: top = c.material + ": reference"; break;
         case SheetCellKind::model:

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 
 #include "effects/glossy_localized/glossy_localized_effect.hpp"
+#include "effects/lights/light.hpp"
 #include "effects/glossy_prefiltered/glossy_prefiltered_effect.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/preview_passes.hpp"
@@ -39,9 +41,31 @@ struct SheetRow {
 using SheetRows = std::vector<SheetRow>;
 using SheetCells = std::vector<SheetCell>;
 
-// The roughness of the columns: those asked for, else the scene sphere's own.
+// The roughness of the columns: those asked for, else the scene sphere's own; then the lit column's, if asked for.
 std::vector<double> column_roughness(const Scene& base, const SheetRequest& request) {
-    return request.roughness.empty() ? std::vector<double>{base.spheres[0].roughness} : request.roughness;
+    std::vector<double> roughness = request.roughness.empty() ? std::vector<double>{base.spheres[0].roughness} : request.roughness;
+    if (request.light) roughness.push_back(kSheetLightRoughness);
+    return roughness;
+}
+
+// The light of the lit column: a point light behind and beside the sphere, placed so that the mirror direction at
+// the point whose normal is 60° from the view points at it (μ = v·h = 0.5 at the highlight's centre, down to
+// grazing across the lobe: where the cheap models disagree), 6 radii from that point, its irradiance there 0.1
+// (the highlight's peak near 1: not clipped by the display transform). Steeper angles make a highlight narrower
+// than a pixel at the sheet's sizes.
+Lights grazing_light(const Scene& scene) {
+    const Sphere& sphere = scene.spheres[0];
+    const Vec3 v = normalize(scene.camera.position - sphere.center);
+    Vec3 side = cross(Vec3{0, 1, 0}, v);
+    side = length(side) > 1e-9 ? normalize(side) : Vec3{1, 0, 0};
+    const double angle = 60.0 * std::numbers::pi / 180;
+    const Vec3 n = std::cos(angle) * v + std::sin(angle) * side;
+    const Vec3 l = normalize(2 * dot(n, v) * n - v);
+    const double distance = 6 * sphere.radius;
+    Light light;
+    light.position = sphere.center + sphere.radius * n + distance * l;
+    light.intensity = 0.1 * distance * distance;
+    return Lights{{light}};
 }
 
 std::string roughness_list(const std::vector<double>& roughness) {
@@ -106,7 +130,8 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
     const Cells& cells = graph.add_pass<Cells>(
         {"sheet-cells",
          "per material: reference | model | |difference| x 10 for " + std::to_string(groups) + " model group(s) at roughness " +
-             roughness_list(roughness) + ", one GPU frame each (DFG tables of rough cells made on first use)",
+             roughness_list(roughness) + (request.light ? " (the last lit by a point light grazing the sphere)" : "") +
+             ", one GPU frame each (DFG tables of rough cells made on first use)",
          Processor::gpu},
         [&](Builder& b, Cells& d) {
             b.read(rows);
@@ -117,7 +142,8 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
             d.record = b.produce<Json>("sheet-record");
             d.cells = b.produce<SheetCells>("sheet-cell-labels");
         },
-        [&scene, rows, environment, prefiltered, downsampled, roughness, groups, run](const Cells& d, Resources& r) {
+        [&scene, rows, environment, prefiltered, downsampled, roughness, groups, run, request_light = request.light](const Cells& d,
+                                                                                                              Resources& r) {
             GpuRenderer& gpu = run->renderer();
             environment.bind(gpu, r);
             if (prefiltered) gpu.frame().put(r.get(*prefiltered));
@@ -131,6 +157,11 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
             Image& sheet = r.emplace(d.image, n_columns * scene.width, static_cast<int>(all.size()) * scene.height);
             Json& record = r.emplace(d.record, Json::array());
             SheetCells& labels = r.emplace(d.cells);
+            const auto light_column = [&scene, lit_column = request_light ? n_roughness - 1 : -1](int k) {
+                if (k == lit_column) scene.effects.set(grazing_light(scene));
+                else scene.effects = {};
+                return k == lit_column;
+            };
             for (std::size_t row = 0; row < all.size(); ++row) {
                 const int y = static_cast<int>(row);
                 const std::string& material = all[row].reference->material;
@@ -138,17 +169,19 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                 for (int k = 0; k < n_roughness; ++k) {
                     scene.spheres[0].roughness = roughness[k];
                     scene.spheres[0].fresnel = ReferenceFresnel{};
+                    const bool lit = light_column(k);
                     gpu.set_fresnel(0, all[row].reference);
                     references.push_back(gpu.render());
                     const int column = sheet_column(SheetCellKind::reference, 0, k, n_roughness);
                     paste(sheet, references.back(), column, y);
-                    labels.push_back({y, column, SheetCellKind::reference, material, {}, roughness[k], 0.0});
+                    labels.push_back({y, column, SheetCellKind::reference, material, {}, roughness[k], 0.0, lit});
                 }
                 for (int g = 1; g <= groups; ++g) {
                     const SphereFresnel& model = *all[row].models[g - 1];
                     for (int k = 0; k < n_roughness; ++k) {
                         scene.spheres[0].roughness = roughness[k];
                         scene.spheres[0].fresnel = ModelFresnel{model.fresnel, ParameterSource::fit};
+                        const bool lit = light_column(k);
                         gpu.set_fresnel(0, &model);
                         const Image model_image = gpu.render();
                         const Image difference = absolute_difference(model_image, references[k], kSheetDifferenceScale);
@@ -157,8 +190,8 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                         paste(sheet, model_image, model_column, y);
                         paste(sheet, difference, difference_column, y);
                         const double rmse = image_rmse(model_image, references[k]);
-                        labels.push_back({y, model_column, SheetCellKind::model, material, model.fresnel, roughness[k], model.worst_rel_rms});
-                        labels.push_back({y, difference_column, SheetCellKind::difference, material, model.fresnel, roughness[k], rmse});
+                        labels.push_back({y, model_column, SheetCellKind::model, material, model.fresnel, roughness[k], model.worst_rel_rms, lit});
+                        labels.push_back({y, difference_column, SheetCellKind::difference, material, model.fresnel, roughness[k], rmse, lit});
                         record.push_back({{"row", row},
                                           {"material", model.material},
                                           {"source", model.source},
@@ -170,6 +203,7 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                                            {{"reference", sheet_column(SheetCellKind::reference, 0, k, n_roughness)},
                                             {"model", model_column},
                                             {"difference", difference_column}}}});
+                        if (lit) record.back()["light"] = "a point light beside and behind the sphere (the highlight where the normal is 60 degrees from the view)";
                     }
                 }
             }

@@ -16,7 +16,11 @@ struct SheetRequest {
     std::vector<std::string> models;     // libfit model ids, in the order shown
     std::vector<double> roughness;       // GGX roughness of the columns, each in [0, 1]
     bool labels = true;                  // drawn on sheet.png (sheet.exr stays the bare renders)
+    bool light = false;                  // one more column: roughness kSheetLightRoughness under a point light grazing the sphere
 };
+
+// The lit column's roughness: a point light's highlight needs a lobe.
+inline constexpr double kSheetLightRoughness = 0.35;
 
 // Throws UsageError (one line, naming the option) for an unknown model, a model or roughness named twice, or a
 // roughness outside [0, 1].
@@ -42,6 +46,7 @@ struct SheetCell {
     std::string material, model;  // model: empty for the reference
     double roughness = 0;
     double error = 0;             // model: worst-channel fitted rel_rms; difference: image RMSE; reference: unused
+    bool lit = false;             // the light column (a point light grazing the sphere)
 };
 
 // The two label bands of a cell: its top and bottom rows of label_band_height(cell_height) pixels. Nothing else of the

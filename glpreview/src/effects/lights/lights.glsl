@@ -28,8 +28,10 @@ vec2 lights_disc(int k, int n) {
 
 const int LIGHTS_SHADOW_SAMPLES = 16;
 
-// The fraction of the light that reaches p, from a local light's distance cube map.
-float lights_shadow_cube(int i, int layer, vec3 p) {
+// The fraction of the light that reaches p, from a local light's distance cube map. `slope`: tan of the angle between
+// the receiver's normal and the light: the depth bias grows with the width each sample looks across times it, so
+// that a surface lit at a grazing angle does not shadow itself.
+float lights_shadow_cube(int i, int layer, vec3 p, float slope) {
     vec3 to = p - u_light_position[i];
     float z = length(to);
     vec3 w = to / z;
@@ -44,7 +46,7 @@ float lights_shadow_cube(int i, int layer, vec3 p) {
     for (int k = 0; k < LIGHTS_SHADOW_SAMPLES; ++k) {
         vec2 o = search * lights_disc(k, LIGHTS_SHADOW_SAMPLES);
         float d = texture(u_shadow_cubes, vec4(normalize(w + o.x * t1 + o.y * t2), float(layer))).r;
-        if (d < z - bias) {
+        if (d < z - bias - z * length(o) * slope) {
             blockers += 1.0;
             blocker_z += d;
         }
@@ -57,13 +59,13 @@ float lights_shadow_cube(int i, int layer, vec3 p) {
     for (int k = 0; k < LIGHTS_SHADOW_SAMPLES; ++k) {
         vec2 o = filter_radius * lights_disc(k, LIGHTS_SHADOW_SAMPLES);
         float d = texture(u_shadow_cubes, vec4(normalize(w + o.x * t1 + o.y * t2), float(layer))).r;
-        lit += d >= z - bias ? 1.0 : 0.0;
+        lit += d >= z - bias - z * length(o) * slope ? 1.0 : 0.0;
     }
     return lit / float(LIGHTS_SHADOW_SAMPLES);
 }
 
 // The same from a directional light's plane (a light without size: a filter of a texel and a half).
-float lights_shadow_plane(int i, int layer, vec3 p) {
+float lights_shadow_plane(int i, int layer, vec3 p, float slope) {
     vec3 rel = p - u_shadow_plane_origin[i];
     vec3 U = u_shadow_plane_u[i], V = u_shadow_plane_v[i];
     vec2 uv = vec2(dot(rel, U) / dot(U, U), dot(rel, V) / dot(V, V));
@@ -73,7 +75,8 @@ float lights_shadow_plane(int i, int layer, vec3 p) {
     float lit = 0.0;
     for (int k = 0; k < LIGHTS_SHADOW_SAMPLES; ++k) {
         vec2 o = 1.5 * texel * lights_disc(k, LIGHTS_SHADOW_SAMPLES);
-        lit += texture(u_shadow_planes, vec3(uv + o, float(layer))).r >= z - bias ? 1.0 : 0.0;
+        float across = length(o.x * U + o.y * V);  // how far the sample looks from p, in the room
+        lit += texture(u_shadow_planes, vec3(uv + o, float(layer))).r >= z - bias - across * slope ? 1.0 : 0.0;
     }
     return lit / float(LIGHTS_SHADOW_SAMPLES);
 }
@@ -83,12 +86,15 @@ float lights_shadow_plane(int i, int layer, vec3 p) {
 float lights_shadow(int i, vec3 p, vec3 n) {
     int layer = u_light_shadow[i];
     if (layer < 0) return 1.0;
+    vec3 l = u_light_type[i] == 2 ? -u_light_direction[i] : normalize(u_light_position[i] - p);
+    float n_l = clamp(dot(n, l), 0.05, 1.0);
+    float slope = min(sqrt(1.0 - n_l * n_l) / n_l, 10.0);
     if (u_light_type[i] == 2) {
         float texel = max(length(u_shadow_plane_u[i]), length(u_shadow_plane_v[i])) / float(textureSize(u_shadow_planes, 0).x);
-        return lights_shadow_plane(i, layer, p + texel * n);
+        return lights_shadow_plane(i, layer, p + texel * n, slope);
     }
     float texel = 2.0 * length(p - u_light_position[i]) / float(textureSize(u_shadow_cubes, 0).x);
-    return lights_shadow_cube(i, layer, p + texel * n);
+    return lights_shadow_cube(i, layer, p + texel * n, slope);
 }
 
 // Light i at p: the unit direction l towards it, its irradiance E normal to l (unshadowed) and its distance.
