@@ -34,6 +34,7 @@
 #include "libfit/optics/fresnel.hpp"
 #include "libfit/io/csv.hpp"
 #include "libfit/fit/metrics.hpp"
+#include "libfit/fit/parameter_source.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/base/quadrature.hpp"
 #include "libfit/reference/reference_curve.hpp"
@@ -602,7 +603,7 @@ TEST(FitOptimum, IndependentSolversAgreeWithEachOther) {
     }
 }
 
-// Model::evaluate against the formulas of FORMULAS.md written out here (and libfit's complex-form Fresnel for the
+// Model::evaluate against the formulas of docs/fitting.md ("Models") written out here (and libfit's complex-form Fresnel for the
 // exact families), in double and float.
 TEST(FitOptimum, ModelsEvaluateTheirPublishedFormulas) {
     const auto S = [](double F0, double mu) { return F0 + (1 - F0) * w5(mu); };
@@ -1193,6 +1194,47 @@ TEST(InterleavedTimer, OneCallPerSampleRunsEachJobOnceToWarmUpThenOncePerRoundIn
         for (double ns : t.ns_per_item) EXPECT_GE(ns, 0.0);
         EXPECT_EQ(t.median_ns, median(t.ns_per_item));
     }
+}
+
+// The one place that says which constraints combine (FitConstraints::check_combination): pin F0 with the gamut
+// constraint cannot be met wherever R(1) leaves [0, 1]; each alone, or neither, passes.
+TEST(FitConstraints, PinF0AndGamutFitDoNotCombine) {
+    for (const bool pin : {false, true})
+        for (const bool gamut : {false, true}) {
+            FitConstraints c;
+            c.pin_f0 = pin;
+            c.gamut_fit = gamut;
+            if (pin && gamut) {
+                try {
+                    c.check_combination();
+                    ADD_FAILURE() << "pin F0 and gamut fit accepted together";
+                } catch (const UsageError& e) {
+                    EXPECT_NE(std::string(e.what()).find("--pin F0 and --gamut-fit together"), std::string::npos) << e.what();
+                }
+            } else {
+                EXPECT_NO_THROW(c.check_combination()) << pin << gamut;
+            }
+        }
+}
+
+// One "fit or best closed form" (choose_parameters): the fit, else the best defined closed form, else nothing.
+TEST(ParameterChoice, FitOrBestClosedForm) {
+    ModelResult r;
+    r.fit.value.params[0] = {0.5, 0.5};
+    r.closed_forms.push_back({"r1", "", std::nullopt, "no data at 700 nm", ""});
+    r.closed_forms.push_back({"r2", "", EvaluatedParameters{}, "", ""});
+    r.closed_forms[1].value->params[0] = {0.25, 0.75};
+    const auto fit = choose_parameters(r, ParameterSource::fit);
+    ASSERT_TRUE(fit);
+    EXPECT_EQ(fit->value, &r.fit.value);
+    EXPECT_EQ(fit->origin, "fit");
+    EXPECT_FALSE(choose_parameters(r, ParameterSource::closed)) << "no best closed form was chosen";
+    r.best_closed = 1;
+    const auto closed = choose_parameters(r, ParameterSource::closed);
+    ASSERT_TRUE(closed);
+    EXPECT_EQ(closed->value, &*r.closed_forms[1].value);
+    EXPECT_EQ(closed->origin, "closed r2");
+    EXPECT_EQ(undefined_closed_forms(r), "r1: no data at 700 nm; r2: ");
 }
 
 }  // namespace metalfit

@@ -7,6 +7,7 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "export_options.hpp"
 #include "material_selection.hpp"
 #include "progress.hpp"
 #include "libfit/io/catalog.hpp"
@@ -97,7 +98,7 @@ std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& glo
     app.add_option("--costs", o->costs, "Cost table for --model best:BUDGET: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");
     // --params and --gamut are checked by libfit's parsers: one line naming the value, like every other error.
     app.add_option("--params", o->params, "Parameters written: fit (Ceres) or closed (best closed form)");
-    app.add_option("--format", o->formats, "Formats, comma-separated, or all: json, glsl, hlsl, mtlx, openpbr, cpp, gltf")->required();
+    app.add_option("--format", o->formats, "Formats, comma-separated, or all: " + export_format_list())->required();
     app.add_option("--gamut", o->gamut, "Colour parameters outside [0, 1]: keep (flagged), clip, or scale by 1/max");
     app.add_flag("--gamut-fit", o->gamut_fit,
                  "Fit every channel's curve inside [0, 1] at every angle (constrained, so --gamut has nothing left to do)");

@@ -147,8 +147,7 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
         constraints.pin_f0 = true;
     }
     constraints.gamut_fit = o.gamut_fit;
-    if (constraints.pin_f0 && constraints.gamut_fit)
-        throw UsageError("--pin F0 and --gamut-fit together: F(1) = R(1) leaves [0, 1] wherever R(1) does; choose one");
+    constraints.check_combination();
     std::optional<Budget> budget;
     if (!o.budget.empty()) budget = parse_budget(o.budget, parse_budget_metric(o.budget_metric));
     else if (!o.costs.empty()) throw UsageError("--costs needs --budget");

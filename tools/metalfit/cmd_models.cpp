@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "libfit/base/number_text.hpp"
 #include "commands.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/base/version.hpp"
@@ -18,11 +19,7 @@ struct ModelsOptions {
     std::filesystem::path output;
 };
 
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
+std::string number(double v) { return significant_text(v, 6); }
 
 std::string signature(const Model& m) {
     std::string s = "vec3 " + std::string(m.glsl_function()) + "(";

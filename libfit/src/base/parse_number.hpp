@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
 
 namespace metalfit::detail {
 
@@ -110,9 +111,8 @@ inline void check_index_limit(double value, bool is_k, std::string_view text, co
 inline void check_index_modulus(double n, double k, const InputLocation& where) {
     if (n == 0.0 && k == 0.0) throw InputError(where, kZeroIndex);
     if (std::hypot(n, k) < kMinIndexModulus) {
-        char text[96];
-        std::snprintf(text, sizeof text, "|n + ik| is below 1e-6 (n = %.3g, k = %.3g)", n, k);
-        throw InputError(where, std::string(text) + ": too close to n = k = 0 for the Fresnel reflectance in double precision");
+        throw InputError(where, "|n + ik| is below 1e-6 (n = " + significant_text(n, 3) + ", k = " + significant_text(k, 3) +
+                                    "): too close to n = k = 0 for the Fresnel reflectance in double precision");
     }
 }
 

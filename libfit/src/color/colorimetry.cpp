@@ -44,13 +44,7 @@ XYZ sum(const DenseSpectrum<XYZ>& w) { return sum_of_products(DenseSpectrum<doub
 
 }  // namespace
 
-Observer parse_observer(std::string_view s) {
-    if (s == "1931") return Observer::cie1931_2deg;
-    if (s == "1964") return Observer::cie1964_10deg;
-    if (s == "2015-2") return Observer::cie2015_2deg;
-    if (s == "2015-10") return Observer::cie2015_10deg;
-    throw UsageError("unknown observer '" + std::string(s) + "' (expected 1931, 1964, 2015-2 or 2015-10)");
-}
+Observer parse_observer(std::string_view s) { return kObserverNames.parse(s); }
 
 std::string to_string(Observer o) {
     switch (o) {
@@ -62,15 +56,7 @@ std::string to_string(Observer o) {
     return "?";
 }
 
-std::string option_name(Observer o) {
-    switch (o) {
-        case Observer::cie1931_2deg: return "1931";
-        case Observer::cie1964_10deg: return "1964";
-        case Observer::cie2015_2deg: return "2015-2";
-        case Observer::cie2015_10deg: return "2015-10";
-    }
-    return "?";
-}
+std::string option_name(Observer o) { return std::string(kObserverNames.name(o)); }
 
 DenseSpectrum<XYZ> colour_matching_functions(const std::filesystem::path& data_dir, Observer observer) {
     const auto file = data_dir / "cie" / cmf_file_name(observer);

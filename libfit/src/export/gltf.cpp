@@ -203,24 +203,3 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
 }
 
 }  // namespace metalfit::detail
-
-namespace metalfit {
-
-void require_export_space(const ExportRequest& request, const std::string& space, const std::string& materialx_space) {
-    if (std::find(request.formats.begin(), request.formats.end(), ExportFormat::gltf) == request.formats.end()) return;
-    if (materialx_space == "lin_rec709") return;
-    throw UsageError("export --format gltf: glTF 2.0's colours are linear Rec.709 (sRGB primaries) and a .gltf cannot name another "
-           "space, but this export is in '" + space + "'; export glTF with --space 'Linear Rec.709 (sRGB)' (the default), "
-           "or list the other formats (json,glsl,hlsl,mtlx,openpbr,cpp) instead of all");
-}
-
-std::string leave_out_formats_the_space_cannot_carry(ExportRequest& request, const std::string& space,
-                                                     const std::string& materialx_space) {
-    const auto gltf = std::find(request.formats.begin(), request.formats.end(), ExportFormat::gltf);
-    if (gltf == request.formats.end() || materialx_space == "lin_rec709") return {};
-    request.formats.erase(gltf);
-    return "--format all: glTF left out: glTF 2.0's colours are linear Rec.709 and a .gltf cannot name '" + space +
-           "' (export it with --space 'Linear Rec.709 (sRGB)')";
-}
-
-}  // namespace metalfit

@@ -7,16 +7,13 @@
 #include <numeric>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
 
 namespace metalfit {
 
 namespace {
 
-std::string number(double x, const char* format = "%.3g") {
-    char text[32];
-    std::snprintf(text, sizeof text, format, x);
-    return text;
-}
+std::string number(double x, int digits = 3) { return significant_text(x, digits); }
 
 bool is_fraction(BudgetMetric metric) { return metric != BudgetMetric::de2000_max; }
 
@@ -27,21 +24,9 @@ std::string value_text(double value, BudgetMetric metric) {
 
 }  // namespace
 
-std::string to_string(BudgetMetric metric) {
-    switch (metric) {
-        case BudgetMetric::rel_rms: return "rel_rms";
-        case BudgetMetric::max_rel: return "max_rel";
-        case BudgetMetric::de2000_max: return "de2000_max";
-    }
-    return "?";
-}
+std::string to_string(BudgetMetric metric) { return std::string(kBudgetMetricNames.name(metric)); }
 
-BudgetMetric parse_budget_metric(const std::string& text) {
-    if (text == "rel_rms") return BudgetMetric::rel_rms;
-    if (text == "max_rel") return BudgetMetric::max_rel;
-    if (text == "de2000_max") return BudgetMetric::de2000_max;
-    throw UsageError("unknown budget metric '" + text + "' (known: rel_rms, max_rel, de2000_max)");
-}
+BudgetMetric parse_budget_metric(const std::string& text) { return kBudgetMetricNames.parse(text); }
 
 Budget parse_budget(const std::string& text, BudgetMetric metric) {
     const bool percent = !text.empty() && text.back() == '%';
@@ -70,7 +55,7 @@ double budget_value(const Metrics& metrics, BudgetMetric metric) {
 
 std::string BudgetChoice::summary() const {
     const auto cost_text = [&](const BudgetCandidate& c) {
-        return c.cost ? number(*c.cost, "%.4g") + " " + cost_unit : std::string("no cost");
+        return c.cost ? number(*c.cost, 4) + " " + cost_unit : std::string("no cost");
     };
     if (chosen) {
         for (const BudgetCandidate& c : candidates)

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/sample_statistics.hpp"
 #include "libfit/base/version.hpp"
 
@@ -14,10 +15,7 @@ namespace metalfit {
 namespace {
 
 std::string percent(double x) {
-    if (std::isnan(x)) return "—";
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2f", 100 * x);
-    return text;
+    return std::isnan(x) ? "—" : fixed_text(100 * x, 2);
 }
 
 }  // namespace

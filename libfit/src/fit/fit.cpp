@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
 
 namespace metalfit {
 
@@ -27,11 +28,7 @@ std::vector<NamedStart> starts_for_channel(const Model& model, const std::vector
     return starts;
 }
 
-std::string number(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", x);
-    return text;
-}
+std::string number(double x) { return significant_text(x, 6); }
 
 }  // namespace
 
@@ -75,10 +72,14 @@ ClosedFormInput closed_form_input(const ReferenceCurve& curve, const Material& m
             [&material, options](double nm) { return material.index(nm, options.interpolation, options.out_of_range); }};
 }
 
+void FitConstraints::check_combination() const {
+    if (pin_f0 && gamut_fit)
+        throw UsageError("--pin F0 and --gamut-fit together: F(1) = R(1) leaves [0, 1] wherever R(1) does; choose one");
+}
+
 ModelResult fit_model(const Model& model, const SampledReference& reference, const ClosedFormInput& input,
                       FitTimings* timings, const FitConstraints& constraints) {
-    if (constraints.pin_f0 && constraints.gamut_fit)
-        throw UsageError("--pin F0 and --gamut-fit together: F(1) = R(1) leaves [0, 1] wherever R(1) does; choose one");
+    constraints.check_combination();
     if (constraints.pin_f0 && !model.can_pin_f0())
         throw UsageError("--pin F0: model " + std::string(model.id()) + " cannot hold F(1) at a given value");
     const RGB R1 = reference.dense().back().value;  // R(1): the dense grid ends at μ = 1

@@ -66,7 +66,7 @@ Json metrics_record(const Metrics& m) {
             {"albedo_err", per_channel(m.albedo_err)}};
 }
 
-// params, metrics (exactly the seven keys of DESIGN.md) and where the maxima are.
+// params, metrics (exactly the seven keys of docs/fitting.md, "Definitions") and where the maxima are.
 Json evaluated_record(const Model& model, const EvaluatedParameters& value) {
     const Metrics& m = value.metrics;
     return {{"params", params_json(model, value.params)},
@@ -167,7 +167,7 @@ Json fit_record_without_materials(const FitRecordContext& context, const BudgetC
                                {"sha256", sha256_file(context.config.path)}}},
               {"color_space", context.space},
               {"interpolation", to_string(context.spectral.interpolation)},
-              {"out_of_range", context.spectral.out_of_range == OutOfRange::clamp ? "clamp" : "error"},
+              {"out_of_range", to_string(context.spectral.out_of_range)},
               {"white_balance", "R_c = RGB_c(F) / RGB_c(perfect reflector)"},
               {"nodes", e.nodes},
               {"quadrature", "Gauss-Legendre on [0, 1]"},

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/text.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/models/schlick/schlick.hpp"
@@ -33,11 +34,7 @@ std::vector<Display8> to_display(const std::vector<RGB>& linear, const DisplayTr
     return out;
 }
 
-std::string fixed4(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4f", v);
-    return text;
-}
+std::string fixed4(double v) { return fixed_text(v, 4); }
 
 bool in_gamut(const RGB& v) { return v.min() >= 0.0 && v.max() <= 1.0; }
 

@@ -11,6 +11,7 @@
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
 #include "libfit/base/input_file.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/utf8.hpp"
 #include "base/parse_number.hpp"
 #include "base/yaml_structure.hpp"
@@ -231,8 +232,7 @@ private:
         const InputLocation here{file_, line_of(coefficients), where + ".coefficients"};
         const auto check = [&](double nm) {
             const double n = f(nm, OutOfRange::clamp);
-            char text[64];
-            std::snprintf(text, sizeof text, "%.6g at %.6g \xc2\xb5m", n, nm / 1000.0);
+            const std::string text = significant_text(n, 6) + " at " + significant_text(nm / 1000.0, 6) + " \xc2\xb5m";
             if (!(n >= detail::kMinIndexModulus))
                 throw InputError(here, std::string("the formula gives n = ") + text + " (n\xc2\xb2 < 0, a pole or an overflow)");
             detail::check_index_limit(n, false, text, here);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "libfit/base/number_text.hpp"
 #include "base/parse_number.hpp"
 #include "libfit/base/text.hpp"
 
@@ -243,9 +244,7 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
                                         std::string(e2_text) + ": n or k would be above 1e6 (the largest n or k metalfit accepts)");
         n = std::sqrt(std::max(0.0, half_modulus + e1 / 2.0));
         k = std::sqrt(std::max(0.0, half_modulus - e1 / 2.0));
-        char converted[2][32];
-        std::snprintf(converted[0], sizeof converted[0], "%.6g (from \xce\xb5)", n);
-        std::snprintf(converted[1], sizeof converted[1], "%.6g (from \xce\xb5)", k);
+        const std::string converted[2]{significant_text(n, 6) + " (from \xce\xb5)", significant_text(k, 6) + " (from \xce\xb5)"};
         check_index_limit(n, false, converted[0], where);
         check_index_limit(k, true, converted[1], where);
     }

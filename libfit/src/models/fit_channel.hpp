@@ -200,8 +200,6 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         if (constraints.pinned_f0) pinned = static_cast<int>(M::kPinnedParameter);
     if (constraints.pinned_f0 && pinned < 0)
         throw std::logic_error(std::string(M::kId) + " cannot pin F0");
-    if (constraints.pinned_f0 && constraints.unit_range)
-        throw std::logic_error("--pin F0 and --gamut-fit together");
     const auto solve = [&](ChannelParameters& x, std::vector<int> fixed, ceres::Solver::Summary& summary,
                            StartPruning* pruning = nullptr) {
         ceres::Problem problem;

@@ -5,15 +5,12 @@
 #include <cstdlib>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
 
 namespace metalfit {
 namespace {
 
-std::string percent(double fraction) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g %%", 100 * fraction);
-    return text;
-}
+std::string percent(double fraction) { return significant_text(100 * fraction, 4) + " %"; }
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/fit/catalog_summary.hpp"
 #include "libfit/optics/fresnel.hpp"
@@ -30,9 +31,7 @@ const double kSpectralAngles[] = {0, 60, 80};
 // Plotted values keep 6 significant digits (the metrics keep all of theirs).
 double plotted(double v) {
     if (!std::isfinite(v) || v == 0) return v;
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", v);
-    return std::strtod(text, nullptr);
+    return std::strtod(significant_text(v, 6).c_str(), nullptr);
 }
 
 Json rgb_json(const RGB& v) { return Json::array({v.r, v.g, v.b}); }
@@ -329,7 +328,7 @@ Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in)
                                {"sha256", sha256_file(c.config.path)}}},
               {"display", in.display.description()},
               {"interpolation", to_string(c.spectral.interpolation)},
-              {"out_of_range", c.spectral.out_of_range == OutOfRange::clamp ? "clamp" : "error"},
+              {"out_of_range", to_string(c.spectral.out_of_range)},
               {"white_balance", "R_c = RGB_c(F) / RGB_c(perfect reflector)"},
               {"nodes", e.nodes},
               {"quadrature", "Gauss-Legendre on [0, 1]"},

@@ -120,12 +120,7 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
 
 }  // namespace
 
-RenderMode parse_render_mode(const std::string& text) {
-    if (text == "auto") return RenderMode::auto_;
-    if (text == "on") return RenderMode::on;
-    if (text == "off") return RenderMode::off;
-    throw UsageError("unknown --renders mode '" + text + "' (auto, on or off)");
-}
+RenderMode parse_render_mode(const std::string& text) { return kRenderModeNames.parse(text); }
 
 fs::path glpreview_beside_this_program() {
     std::error_code ec;

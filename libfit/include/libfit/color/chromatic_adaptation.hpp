@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "libfit/base/enum_names.hpp"
 #include "libfit/color/color.hpp"
 #include "libfit/color/matrix3.hpp"
 
@@ -16,6 +17,11 @@ enum class Adaptation {
     von_kries_xyz,  // scaling X, Y, Z themselves ("XYZ scaling")
     none,           // no adaptation
 };
+inline constexpr EnumNames kAdaptationNames{"chromatic adaptation", KnownNamesWording::expected,
+                                            std::array{EnumName<Adaptation>{Adaptation::bradford, "bradford"},
+                                                       EnumName<Adaptation>{Adaptation::cat02, "cat02"},
+                                                       EnumName<Adaptation>{Adaptation::von_kries_xyz, "von-kries-xyz"},
+                                                       EnumName<Adaptation>{Adaptation::none, "none"}}};
 
 Adaptation parse_adaptation(std::string_view s);  // "bradford" | "cat02" | "von-kries-xyz" | "none"; UsageError
 std::string to_string(Adaptation a);               // the same names

@@ -84,6 +84,9 @@ struct FitConstraints {
     // constraint; closed forms outside it are never kept as fallbacks. Not together with pin_f0 (UsageError).
     bool gamut_fit = false;
     bool operator==(const FitConstraints&) const = default;
+    // The one place that says which constraints combine: a UsageError for a combination that cannot be met (pin_f0
+    // with gamut_fit). fit_model calls it; a command line calls it before any work.
+    void check_combination() const;
 };
 
 // Requires the chosen metric to be defined on the reference (see SampledReference::rel_undefined).

@@ -117,7 +117,7 @@ struct NamedStart {
     ChannelParameters params;
 };
 
-// Constraints of one channel's fit.
+// Constraints of one channel's fit (from FitConstraints, whose check_combination has passed: never both).
 struct ChannelConstraints {
     // --pin F0: F(1) equals this value exactly (the pinned parameter is computed from the others, Model::pin_f0).
     std::optional<double> pinned_f0;

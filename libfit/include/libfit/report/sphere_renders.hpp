@@ -8,11 +8,16 @@
 #include <string>
 #include <vector>
 
+#include "libfit/base/enum_names.hpp"
 #include "libfit/color/color_space.hpp"
 
 namespace metalfit {
 
 enum class RenderMode { auto_, on, off };
+inline constexpr EnumNames kRenderModeNames{"--renders mode", KnownNamesWording::alternatives,
+                                            std::array{EnumName<RenderMode>{RenderMode::auto_, "auto"},
+                                                       EnumName<RenderMode>{RenderMode::on, "on"},
+                                                       EnumName<RenderMode>{RenderMode::off, "off"}}};
 RenderMode parse_render_mode(const std::string& text);  // "auto" | "on" | "off", else UsageError
 
 // Where one model's render of one material at one roughness lies in the sheet (columns; the row is the material's).
