@@ -54,7 +54,7 @@ TEST(ColorSpace, XyzToLinearRec709IsTheMatrixOfThePrimaries) {
     const Eigen::Matrix3d expected = rgb_to_xyz(kRec709, 0.3127, 0.3290).inverse();
     const Eigen::Matrix3d actual = converter_matrix(convert);
     EXPECT_LT((actual - expected).cwiseAbs().maxCoeff(), 1e-5) << "OCIO:\n" << actual << "\nprimaries:\n" << expected;
-    // DESIGN.md: first row 3.2409699, −1.5373832, −0.4986108 (IEC 61966-2-1 derived from its primaries and white).
+    // docs/colour.md, "The shipped config": first row 3.2409699, −1.5373832, −0.4986108 (IEC 61966-2-1 derived from its primaries and white).
     EXPECT_NEAR(actual(0, 0), 3.2409699, 1e-5);
     EXPECT_NEAR(actual(0, 1), -1.5373832, 1e-5);
     EXPECT_NEAR(actual(0, 2), -0.4986108, 1e-5);
@@ -74,7 +74,7 @@ TEST(ColorSpace, PerfectReflectorUnderD65IsWhiteInEverySpace) {
         const RGB rgb = ColorSpaceConverter::create(kShipped, space)(white);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(rgb[c], 1.0, 1e-3) << space << " channel " << c;
     }
-    // The D65 spectrum is not exactly at (0.3127, 0.3290): the offset DESIGN.md records.
+    // The D65 spectrum is not exactly at (0.3127, 0.3290): the offset docs/colour.md records ("White balance").
     const RGB rec709 = ColorSpaceConverter::create(kShipped)(white);
     EXPECT_NEAR(rec709.r, 1.00016, 2e-5);
     EXPECT_NEAR(rec709.b, 0.99976, 2e-5);

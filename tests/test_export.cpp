@@ -226,7 +226,7 @@ TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
     const Catalog catalog = Catalog::load(data);
     const Colorimetry colorimetry = Colorimetry::load(data, Observer::cie1931_2deg, Illuminant::D65);
     const ColorSpaceConverter converter = ColorSpaceConverter::create(choose_ocio_config(std::nullopt, data));
-    // Own quadrature and grid, not libfit's metrics: the definitions of DESIGN.md, written out here.
+    // Own quadrature and grid, not libfit's metrics: the definitions of docs/fitting.md ("Definitions"), written out here.
     const auto nodes = gauss_legendre_unit(128);
     std::vector<double> grid_mu;
     for (int i = 0; i <= 1024; ++i) grid_mu.push_back(i / 1024.0);

@@ -29,7 +29,7 @@ metalfit::test::CommandResult run(const std::string& args, const fs::path& scrat
     return metalfit::test::run_command(METALFIT_EXE, args, scratch);
 }
 
-// F0 = F(mu = 1) of a model from its written parameters, in the forms the models define it (FORMULAS.md) rather than
+// F0 = F(mu = 1) of a model from its written parameters, in the forms the models define it (docs/fitting.md, "Models") rather than
 // through the models' code: F0 itself, Gulbrandsen's reflectivity r, or the normal-incidence Fresnel of n, k (the
 // compensation term a mu (1 - mu)^alpha of lazanyi-comp vanishes at mu = 1). Empty for the other models.
 std::optional<double> independent_f0(const std::string& model, const Json& params, int c) {

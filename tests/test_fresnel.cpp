@@ -12,7 +12,7 @@ namespace {
 
 using C = std::complex<double>;
 
-// The thesis' real form (FORMULAS.md §1), valid for μ > 0: an independent route to F.
+// The thesis' real form (Lazányi 2008, ch. 3; docs/colour.md, "Exact Fresnel reflectance"), valid for μ > 0: an independent route to F.
 double thesis_real_form(double mu, double n, double k) {
     const double s2 = 1.0 - mu * mu, s = std::sqrt(s2);
     const double t = n * n - k * k - s2;

@@ -122,7 +122,7 @@ TYPED_TEST(EveryModel, AnalyticGradientIsAutodiffs) {
 }
 
 TYPED_TEST(EveryModel, GrazingIsOneAndFloatAgreesWithDouble) {
-    // F(0) = 1 is built into every model (DESIGN.md); the float overload (what shaders and the bench evaluate) follows
+    // F(0) = 1 is built into every model (docs/colour.md, "White balance"); the float overload (what shaders and the bench evaluate) follows
     // the double one to float precision on curves of order 1.
     using M = TypeParam;
     for (const ChannelParameters& p : sample_parameters<M>()) {

@@ -1,5 +1,5 @@
 // Cheap Fresnel models: each checked against an independent form written here (the complex-form exact Fresnel,
-// the published formulas of FORMULAS.md §2–4), against finite differences (Ceres Jets), and its GLSL text parsed.
+// the published formulas: docs/fitting.md, "Models", and docs/references.md), against finite differences (Ceres Jets), and its GLSL text parsed.
 #include <ceres/jet.h>
 #include <gtest/gtest.h>
 
@@ -28,7 +28,7 @@ namespace {
 using C = std::complex<double>;
 using Params = std::vector<double>;
 
-// ---- independent forms (FORMULAS.md), written without the library's helpers ----
+// ---- independent forms (docs/fitting.md, "Models"), written without the library's helpers ----
 
 double schlick(double f0, double mu) { return f0 + (1.0 - f0) * std::pow(1.0 - mu, 5.0); }
 

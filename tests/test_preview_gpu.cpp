@@ -179,7 +179,7 @@ TEST(PreviewGpu, ClassicLookupsReadTheDistanceAlongR) {
     EXPECT_LT(worst, 1e-2);
 }
 
-// In the empty box room the distance impostor converges to box projection (FORMULAS.md §5). Secant converges
+// In the empty box room the distance impostor converges to box projection (Lazányi 2008, ch. 4; Lagarde & Zanuttini 2012; docs/references.md). Secant converges
 // superlinearly: every lookup direction is within 1e-3 rad of box projection's after 4 iterations. False position
 // (and mixed, which continues with false-position steps) converges linearly, as regula falsi does when one end of
 // the bracket sticks: after 4 iterations 90% of the rays are within 1e-3, after 16 iterations 99%; the worst ray

@@ -215,7 +215,7 @@ TEST_F(ReferenceCurveTest, PchipIsCloseToLinearButNotIdentical) {
 }
 
 TEST_F(ReferenceCurveTest, AluminiumHasItsMinimumNearGrazing) {
-    // Aluminium's reflectance is not monotone in μ: it dips below F0 before rising to 1 (FORMULAS.md §2).
+    // Aluminium's reflectance is not monotone in μ: it dips below F0 before rising to 1 (Lazányi 2008, ch. 3; docs/references.md).
     const ReferenceCurve r = curve(material("Al"));
     const double f0 = r(1.0).g;
     double minimum = 1.0, at = 1.0;

@@ -1,4 +1,4 @@
-// Error metrics of a model's parameters against a sampled reference curve (the definitions of DESIGN.md).
+// Error metrics of a model's parameters against a sampled reference curve (the definitions of docs/fitting.md, "Definitions").
 #pragma once
 
 #include <array>
@@ -23,7 +23,7 @@ struct Metrics {
     double de2000_max_mu = 0;
     PerChannel albedo_err{};  // ∫ 2μ (M − R) dμ, signed (energy the model adds)
     // The error at normal incidence, signed and relative: M(1) / R(1) − 1 (NaN where R(1) ≤ 0). Not one of the seven
-    // metrics of DESIGN.md: reported beside them (docs/fit-record.md), for the pinned-F0 convention (--pin F0).
+    // metrics of docs/fitting.md, "Definitions": reported beside them (docs/fit-record.md), for the pinned-F0 convention (--pin F0).
     PerChannel err_f0{};
 
     // The metric the fit minimises, per channel.
