@@ -240,6 +240,30 @@ TEST_F(Cli, UnknownCommandAndMissingMaterialSayWhatIsWrong) {
     EXPECT_FALSE(fs::exists(dir_ / "x"));
 }
 
+// The values of export's options (tools/metalfit/export_options) and the subcommand list (commands.hpp kCommands):
+// one line each, exit 2, the messages they always had.
+TEST_F(Cli, ExportOptionValuesAndTheCommandListSayWhatIsWrong) {
+    const std::string out = " -o '" + (dir_ / "never").string() + "'";
+    const Result format = run("export gold --model schlick --format glsl,nope" + out);
+    EXPECT_EQ(format.exit_code, 2);
+    expect_one_line_error(format, "unknown export format 'nope' (known: json, glsl, hlsl, mtlx, openpbr, cpp, gltf, or all)");
+    const Result roughness = run("export gold --model schlick --format json --roughness 1.5" + out);
+    EXPECT_EQ(roughness.exit_code, 2);
+    expect_one_line_error(roughness, "--roughness '1.5': expected a number in [0, 1] (OpenPBR's specular_roughness)");
+    const Result gamut = run("export gold --model schlick --format json --gamut wrap" + out);
+    EXPECT_EQ(gamut.exit_code, 2);
+    expect_one_line_error(gamut, "unknown gamut policy 'wrap' (keep, clip or scale)");
+    const Result params = run("export gold --model schlick --format json --params best" + out);
+    EXPECT_EQ(params.exit_code, 2);
+    expect_one_line_error(params, "unknown parameter source 'best' (fit or closed)");
+    const Result prefix = run("export gold --model schlick --format json --id-prefix float" + out);
+    EXPECT_EQ(prefix.exit_code, 2);
+    expect_one_line_error(prefix, "--id-prefix 'float': a C++, GLSL or HLSL keyword");
+    EXPECT_FALSE(fs::exists(dir_ / "never"));
+    const Result command = run("shwo gold");
+    expect_one_line_error(command, "(commands: list, show, fit, models, bench, export, spaces, report, table; --help for more)");
+}
+
 // --gamut-fit: the record says so, gold's red Schlick F0 ends at 1 (its unconstrained fit is 1.022), the export of
 // the same fit carries it; with --pin F0 it is a usage error.
 TEST_F(Cli, GamutFitHoldsTheCurvesInsideTheUnitInterval) {
