@@ -87,12 +87,16 @@ TEST(EnumNames, NamesAreExact) {
 
 TEST(EnumNames, AnUnknownNameGetsTheMessageItAlwaysGot) {
     // Each the exact text the hand-written parser of that option printed.
-    EXPECT_EQ(usage_message([] { parse_budget_metric("rms"); }), "unknown budget metric 'rms' (known: rel_rms, max_rel, de2000_max)");
+    EXPECT_EQ(usage_message([] { parse_budget_metric("rms"); }),
+              "unknown budget metric 'rms' (known: rel_rms, max_rel, de2000_max)");
     EXPECT_EQ(usage_message([] { parse_render_mode("yes"); }), "unknown --renders mode 'yes' (auto, on or off)");
     EXPECT_EQ(usage_message([] { parse_error_metric("rmse"); }), "unknown error metric 'rmse' (known: rel, abs)");
-    EXPECT_EQ(usage_message([] { parse_angular_weight("flat"); }), "unknown angular weight 'flat' (known: uniform, cosine)");
-    EXPECT_EQ(usage_message([] { parse_convention("pbr"); }), "unknown convention 'pbr' (expected metalfit, adobe or physicallybased)");
-    EXPECT_EQ(usage_message([] { parse_observer("1932"); }), "unknown observer '1932' (expected 1931, 1964, 2015-2 or 2015-10)");
+    EXPECT_EQ(usage_message([] { parse_angular_weight("flat"); }),
+              "unknown angular weight 'flat' (known: uniform, cosine)");
+    EXPECT_EQ(usage_message([] { parse_convention("pbr"); }),
+              "unknown convention 'pbr' (expected metalfit, adobe or physicallybased)");
+    EXPECT_EQ(usage_message([] { parse_observer("1932"); }),
+              "unknown observer '1932' (expected 1931, 1964, 2015-2 or 2015-10)");
     EXPECT_EQ(usage_message([] { parse_adaptation("cat16"); }),
               "unknown chromatic adaptation 'cat16' (expected bradford, cat02, von-kries-xyz or none)");
     EXPECT_EQ(usage_message([] { parse_parameter_source("best"); }), "unknown parameter source 'best' (fit or closed)");
@@ -104,7 +108,8 @@ TEST(EnumNames, TheKnownNamesWordings) {
     enum class Two { a, b };
     constexpr EnumNames one{"thing", KnownNamesWording::alternatives, std::array{EnumName<Two>{Two::a, "a"}}};
     EXPECT_EQ(one.known(), "a");
-    constexpr EnumNames two{"thing", KnownNamesWording::expected, std::array{EnumName<Two>{Two::a, "a"}, EnumName<Two>{Two::b, "b"}}};
+    constexpr EnumNames two{"thing", KnownNamesWording::expected,
+                            std::array{EnumName<Two>{Two::a, "a"}, EnumName<Two>{Two::b, "b"}}};
     EXPECT_EQ(two.known(), "expected a or b");
     EXPECT_EQ(usage_message([&] { two.parse("c"); }), "unknown thing 'c' (expected a or b)");
     static_assert(two.find("b") == Two::b);  // a table is usable at compile time

@@ -28,9 +28,25 @@ std::string printf_text(const char* format, int digits, double v) {
 // Doubles from every part of the range: random bit patterns (finite ones), plus values near powers of ten and
 // the extremes, where shortest round-trip printers have gone wrong.
 std::vector<double> many_doubles() {
-    std::vector<double> values{0.0, -0.0, 1.0, 0.1, 0.2, 0.3, 1.0 / 3, 2.0 / 3, 5e-324, 2.2250738585072014e-308,
-                               std::numeric_limits<double>::max(), std::numeric_limits<double>::epsilon(), 9007199254740993.0,
-                               123456789012345680.0, 0.04045, 65504.0, 1e21, 1e22, 1e23};
+    std::vector<double> values{0.0,
+                               -0.0,
+                               1.0,
+                               0.1,
+                               0.2,
+                               0.3,
+                               1.0 / 3,
+                               2.0 / 3,
+                               5e-324,
+                               2.2250738585072014e-308,
+                               std::numeric_limits<double>::max(),
+                               std::numeric_limits<double>::epsilon(),
+                               9007199254740993.0,
+                               123456789012345680.0,
+                               0.04045,
+                               65504.0,
+                               1e21,
+                               1e22,
+                               1e23};
     for (int e = -300; e <= 300; e += 7) {
         const double p = std::pow(10.0, e);
         values.insert(values.end(), {p, std::nextafter(p, 0.0), std::nextafter(p, INFINITY), -p});
@@ -56,7 +72,8 @@ TEST(NumberText, ShortestReadsBackAsTheSameDouble) {
 
 TEST(NumberText, ShortestHasTheFewestDigitsThatReadBack) {
     // The digits of the shortest text are as many as the smallest printf precision that reads back as v.
-    for (const double v : {0.1, 1.0 / 3, 2.0 / 3, 1e-7, 123.456, 0.04045, 3.2409699, 6.02214076e23, 0.9999999999999999}) {
+    for (const double v :
+         {0.1, 1.0 / 3, 2.0 / 3, 1e-7, 123.456, 0.04045, 3.2409699, 6.02214076e23, 0.9999999999999999}) {
         int fewest = 1;
         while (std::strtod(printf_text("%.*g", fewest, v).c_str(), nullptr) != v) ++fewest;
         std::string digits;
@@ -79,7 +96,8 @@ TEST(NumberText, ShortestFloatReadsBackAsTheSameFloat) {
         const float f = std::bit_cast<float>(static_cast<std::uint32_t>(random()));
         if (!std::isfinite(f)) continue;
         const std::string text = shortest_text(f);
-        ASSERT_EQ(std::bit_cast<std::uint32_t>(std::strtof(text.c_str(), nullptr)), std::bit_cast<std::uint32_t>(f)) << text;
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(std::strtof(text.c_str(), nullptr)), std::bit_cast<std::uint32_t>(f))
+            << text;
     }
     EXPECT_EQ(shortest_text(0.1f), "0.1");
     EXPECT_EQ(shortest_text(static_cast<float>(0.1)), "0.1");  // not the double's 0.10000000149011612

@@ -6,8 +6,8 @@
 #include <array>
 #include <filesystem>
 #include <functional>
-#include <optional>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,11 +44,14 @@ inline constexpr std::array<Command, 9> kCommands{{
     {"show", "Reference reflectance of one material (F0, F82, R at a few angles)", &add_show_command},
     {"fit", "Fit cheap Fresnel models (closed forms and Ceres) to one material or --all", &add_fit_command},
     {"models", "The Fresnel models: parameters, bounds and GLSL", &add_models_command},
-    {"bench", "What accuracy costs: model evaluation, fit, SPIR-V and GPU timings against accuracy", &add_bench_command},
+    {"bench", "What accuracy costs: model evaluation, fit, SPIR-V and GPU timings against accuracy",
+     &add_bench_command},
     {"export", "Write shader-ready constants: JSON, GLSL, HLSL, MaterialX, OpenPBR, C++", &add_export_command},
     {"spaces", "The OCIO config in use: its colour spaces (which can be --space) and roles", &add_spaces_command},
-    {"report", "HTML report (catalog and material pages, report.json, charts, renders) of the fits", &add_report_command},
-    {"table", "F0 and F82 tint of every catalog metal: linear, 8-bit and hex, with source and caveat", &add_table_command},
+    {"report", "HTML report (catalog and material pages, report.json, charts, renders) of the fits",
+     &add_report_command},
+    {"table", "F0 and F82 tint of every catalog metal: linear, 8-bit and hex, with source and caveat",
+     &add_table_command},
 }};
 
 // `metalfit report --fail-above`: the report was written, and `count` channels are above the limit (each already

@@ -3,10 +3,10 @@
 // 6 `report --fail-above` found channels above the limit (the report is written).
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
-#include <string_view>
 #include <cstdio>
+#include <initializer_list>
 #include <iostream>
+#include <string_view>
 
 #include "commands.hpp"
 #include "libfit/base/atomic_file.hpp"
@@ -21,8 +21,10 @@
 namespace metalfit::cli {
 
 void emit(const std::string& text, const std::filesystem::path& output) {
-    if (output.empty() || output == "-") std::cout << text << std::flush;
-    else write_file_atomically(output, text);
+    if (output.empty() || output == "-")
+        std::cout << text << std::flush;
+    else
+        write_file_atomically(output, text);
 }
 
 std::string model_ids() {
@@ -33,9 +35,7 @@ std::string model_ids() {
 
 void warn(const std::string& message) { std::cerr << "metalfit: warning: " << sanitised_message(message) << "\n"; }
 
-std::string fixed(double v, int digits) {
-    return std::isnan(v) ? "-" : fixed_text(v, digits);
-}
+std::string fixed(double v, int digits) { return std::isnan(v) ? "-" : fixed_text(v, digits); }
 
 // The first word of the command line that is neither an option nor an option's value: the command a user typed.
 std::string first_command_word(int argc, char** argv, std::initializer_list<std::string_view> options_with_values) {
@@ -52,7 +52,9 @@ std::string first_command_word(int argc, char** argv, std::initializer_list<std:
 // clear message rather than "unknown subcommand".
 std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions&) {
     app.allow_extras()->fallthrough(false);
-    return [] { throw UsageError("bench: this metalfit was built without the bench (configure with -DMETALFIT_BUILD_BENCH=ON)"); };
+    return [] {
+        throw UsageError("bench: this metalfit was built without the bench (configure with -DMETALFIT_BUILD_BENCH=ON)");
+    };
 }
 #endif
 
@@ -70,9 +72,12 @@ int run_metalfit(int argc, char** argv) {
     app.option_defaults()->always_capture_default();  // --help shows every default (subcommands inherit this)
     app.fallthrough();
     cli::GlobalOptions global{default_data_dir(), std::nullopt};
-    app.add_option("--data-dir", global.data_dir, "Built-in database folder (default: $METALFIT_DATA, else ../share/metalfit beside the executable, else the source tree's data/)")
+    app.add_option(
+           "--data-dir", global.data_dir,
+           "Built-in database folder (default: $METALFIT_DATA, else ../share/metalfit beside the executable, else the source tree's data/)")
         ->check(CLI::ExistingDirectory);
-    app.add_option("--ocio-config", global.ocio_config, "OCIO config to use when $OCIO is not set (default: data/ocio/config.ocio)");
+    app.add_option("--ocio-config", global.ocio_config,
+                   "OCIO config to use when $OCIO is not set (default: data/ocio/config.ocio)");
 
     // Each subcommand's app and the function that runs it once the command line is parsed (cli::kCommands).
     std::vector<std::pair<CLI::App*, std::function<void()>>> commands;
@@ -91,10 +96,13 @@ int run_metalfit(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         // CLI11 says "A subcommand is required" for a mistyped one too: name the word and the commands instead.
         if (app.get_subcommands().empty())
-            if (const std::string word = cli::first_command_word(argc, argv, {"--data-dir", "--ocio-config"}); !word.empty()) {
+            if (const std::string word = cli::first_command_word(argc, argv, {"--data-dir", "--ocio-config"});
+                !word.empty()) {
                 std::string known;
-                for (const cli::Command& command : cli::kCommands) known += (known.empty() ? "" : ", ") + std::string(command.name);
-                std::fprintf(stderr, "metalfit: unknown command '%s' (commands: %s; --help for more)\n", word.c_str(), known.c_str());
+                for (const cli::Command& command : cli::kCommands)
+                    known += (known.empty() ? "" : ", ") + std::string(command.name);
+                std::fprintf(stderr, "metalfit: unknown command '%s' (commands: %s; --help for more)\n", word.c_str(),
+                             known.c_str());
                 return usage;
             }
         const int code = app.exit(e);

@@ -5,7 +5,9 @@
 namespace metalfit::detail {
 
 std::string known_names_text(const std::string_view* names, std::size_t count, KnownNamesWording wording) {
-    std::string text = wording == KnownNamesWording::known ? "known: " : wording == KnownNamesWording::expected ? "expected " : "";
+    std::string text = wording == KnownNamesWording::known      ? "known: "
+                       : wording == KnownNamesWording::expected ? "expected "
+                                                                : "";
     for (std::size_t i = 0; i < count; ++i) {
         if (i > 0) text += wording != KnownNamesWording::known && i + 1 == count ? " or " : ", ";
         text += names[i];

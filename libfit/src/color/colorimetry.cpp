@@ -1,8 +1,8 @@
 #include "libfit/color/colorimetry.hpp"
 
+#include "color/cie_table.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/spectral/spectrum.hpp"
-#include "color/cie_table.hpp"
 
 namespace metalfit {
 namespace {
@@ -28,8 +28,9 @@ int first_tabulated_nm(Observer o) {
 DenseSpectrum<XYZ> normalised_weights(const DenseSpectrum<XYZ>& cmf, const DenseSpectrum<double>& spd,
                                       const std::filesystem::path& data_dir, const Illuminant& illuminant) {
     if (spd.first_nm() > kFirstNm || spd.last_nm() < kLastNm)
-        throw InputError({data_dir / "cie"}, "illuminant " + illuminant.name() + " covers " + std::to_string(spd.first_nm()) + "–" +
-                                                 std::to_string(spd.last_nm()) + " nm (360–830 nm needed)");
+        throw InputError({data_dir / "cie"}, "illuminant " + illuminant.name() + " covers " +
+                                                 std::to_string(spd.first_nm()) + "–" + std::to_string(spd.last_nm()) +
+                                                 " nm (360–830 nm needed)");
     const DenseSpectrum<XYZ> weighted = DenseSpectrum<XYZ>::sampled(kFirstNm, kLastNm, [&](int nm) {
         const XYZ& xyz = cmf.at_nm(nm);
         const double s = spd.at_nm(nm);
@@ -40,7 +41,9 @@ DenseSpectrum<XYZ> normalised_weights(const DenseSpectrum<XYZ>& cmf, const Dense
     return weighted.map([y_sum](const XYZ& w) { return w / y_sum; });
 }
 
-XYZ sum(const DenseSpectrum<XYZ>& w) { return sum_of_products(DenseSpectrum<double>(w.first_nm(), w.last_nm(), 1.0), w); }
+XYZ sum(const DenseSpectrum<XYZ>& w) {
+    return sum_of_products(DenseSpectrum<double>(w.first_nm(), w.last_nm(), 1.0), w);
+}
 
 }  // namespace
 
@@ -77,7 +80,8 @@ Colorimetry Colorimetry::load(const std::filesystem::path& data_dir, Observer ob
     c.weights_ = normalised_weights(cmf, illuminant.spectrum(data_dir), data_dir, illuminant);
     c.illuminant_white_ = sum(c.weights_);
     if (adaptation != Adaptation::none && !(illuminant == connection_illuminant())) {
-        const XYZ target = sum(normalised_weights(cmf, connection_illuminant().spectrum(data_dir), data_dir, connection_illuminant()));
+        const XYZ target =
+            sum(normalised_weights(cmf, connection_illuminant().spectrum(data_dir), data_dir, connection_illuminant()));
         c.matrix_ = metalfit::adaptation_matrix(adaptation, c.illuminant_white_, target);
         c.adapted_ = !(c.matrix_ == Matrix3::identity());
         if (c.adapted_) c.weights_ = c.weights_.map([&](const XYZ& w) { return c.matrix_ * w; });
@@ -88,10 +92,14 @@ Colorimetry Colorimetry::load(const std::filesystem::path& data_dir, Observer ob
 
 std::string describe_adaptation(Adaptation adaptation, bool adapted, const Illuminant& illuminant) {
     if (adaptation == Adaptation::none) return "none";
-    if (adapted) return to_string(adaptation) + ", " + illuminant.name() + " white → " + connection_illuminant().name() + " white";
+    if (adapted)
+        return to_string(adaptation) + ", " + illuminant.name() + " white → " + connection_illuminant().name() +
+               " white";
     return to_string(adaptation) + " (not needed: " + illuminant.name() + ")";
 }
 
-XYZ Colorimetry::integrate(const DenseSpectrum<double>& reflectance) const { return sum_of_products(reflectance, weights_); }
+XYZ Colorimetry::integrate(const DenseSpectrum<double>& reflectance) const {
+    return sum_of_products(reflectance, weights_);
+}
 
 }  // namespace metalfit

@@ -37,7 +37,8 @@ std::string half_precision_note(const WrittenParameters& written, std::string_vi
         if (parameters[i].kind == ParameterKind::index) index.push_back(i);
         const RGB v = written.params.parameter(i);
         for (int c = 0; c < 3; ++c) {
-            const std::string which = std::string(parameters[i].name) + " " + kChannelNames[c] + " = " + short_number(v[c]);
+            const std::string which =
+                std::string(parameters[i].name) + " " + kChannelNames[c] + " = " + short_number(v[c]);
             if (std::abs(v[c]) > kHalfMax) unsafe(which + " is beyond 65504");
             if (parameters[i].upper > parameters[i].lower && v[c] >= parameters[i].upper * (1.0 - 1e-9))
                 bounds.push_back(which + " is the fit's upper bound (the fit runs it there to come close to F0 > 1)");
@@ -50,7 +51,8 @@ std::string half_precision_note(const WrittenParameters& written, std::string_vi
             const double n = written.params[c][index[0]], k = written.params[c][index[1]];
             const double squares = std::max(k * k, 4.0 * n * n * k * k);
             if (squares > kHalfMax)
-                unsafe(std::string("k² or 4n²k² of ") + kChannelNames[c] + " reaches " + short_number(squares) + ", beyond 65504");
+                unsafe(std::string("k² or 4n²k² of ") + kChannelNames[c] + " reaches " + short_number(squares) +
+                       ", beyond 65504");
         }
         if (written.model->materialx_form() == MaterialxForm::artistic_ior && 1.0 - written.params[c][0] < kHalfEpsilon)
             unsafe(std::string("r ") + kChannelNames[c] + " = " + short_number(written.params[c][0]) +
@@ -87,7 +89,8 @@ std::string comment_header(const MaterialExport& material, const WrittenParamete
     line("parameters: " + written.origin + "; gamut policy: " + to_string(context.request.gamut));
     for (const std::string& note : written.gamut) line("OUT OF GAMUT: " + note);
     line("error of these parameters against R_c (R, G, B; " + std::to_string(r.error.nodes) +
-         " Gauss-Legendre nodes on [0, 1], " + to_string(r.error.weight) + " weight; maxima over mu = i/1024 and the nodes):");
+         " Gauss-Legendre nodes on [0, 1], " + to_string(r.error.weight) +
+         " weight; maxima over mu = i/1024 and the nodes):");
     line("  rel_rms     = " + figures(e.rel_rms));
     line("  abs_rms     = " + figures(e.abs_rms));
     line("  max_rel     = " + figures(e.max_rel));

@@ -26,15 +26,15 @@ std::vector<std::string> export_warnings(const FitRecordContext& context, const 
     std::vector<std::string> warnings;
     const bool materialx = std::any_of(request.formats.begin(), request.formats.end(),
                                        [](ExportFormat f) { return detail::format_entry(f).materialx_document; });
-    if (materialx && materialx_space.empty())
-        warnings.push_back(detail::untagged_materialx_warning(context.space));
+    if (materialx && materialx_space.empty()) warnings.push_back(detail::untagged_materialx_warning(context.space));
     return warnings;
 }
 
 namespace {
 
 // The requested formats that cannot carry the export's colour space (glTF outside linear Rec.709).
-std::vector<ExportFormat> formats_outside_their_space(const std::vector<ExportFormat>& formats, const std::string& materialx_space) {
+std::vector<ExportFormat> formats_outside_their_space(const std::vector<ExportFormat>& formats,
+                                                      const std::string& materialx_space) {
     std::vector<ExportFormat> outside;
     for (ExportFormat f : formats)
         if (detail::format_entry(f).linear_rec709_only && materialx_space != "lin_rec709") outside.push_back(f);
@@ -48,16 +48,21 @@ void require_export_space(const ExportRequest& request, const std::string& space
     std::string others;
     for (const detail::ExportFormatEntry& f : detail::export_format_entries())
         if (!f.linear_rec709_only) others += (others.empty() ? "" : ",") + to_string(f.format);
-    throw UsageError("export --format gltf: glTF 2.0's colours are linear Rec.709 (sRGB primaries) and a .gltf cannot name another "
-           "space, but this export is in '" + space + "'; export glTF with --space 'Linear Rec.709 (sRGB)' (the default), "
-           "or list the other formats (" + others + ") instead of all");
+    throw UsageError(
+        "export --format gltf: glTF 2.0's colours are linear Rec.709 (sRGB primaries) and a .gltf cannot name another "
+        "space, but this export is in '" +
+        space +
+        "'; export glTF with --space 'Linear Rec.709 (sRGB)' (the default), "
+        "or list the other formats (" +
+        others + ") instead of all");
 }
 
 std::string leave_out_formats_the_space_cannot_carry(ExportRequest& request, const std::string& space,
                                                      const std::string& materialx_space) {
     const std::vector<ExportFormat> outside = formats_outside_their_space(request.formats, materialx_space);
     if (outside.empty()) return {};
-    std::erase_if(request.formats, [&](ExportFormat f) { return std::find(outside.begin(), outside.end(), f) != outside.end(); });
+    std::erase_if(request.formats,
+                  [&](ExportFormat f) { return std::find(outside.begin(), outside.end(), f) != outside.end(); });
     return "--format all: glTF left out: glTF 2.0's colours are linear Rec.709 and a .gltf cannot name '" + space +
            "' (export it with --space 'Linear Rec.709 (sRGB)')";
 }
@@ -83,8 +88,9 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
             stand_in = written_parameters(result_of(&stand_in_model), *fit.reference, request.source, request.gamut,
                                           fit.material.id);
         for (const Model* model : request.models) {
-            ModelExport e{written_parameters(result_of(model), *fit.reference, request.source, request.gamut, fit.material.id),
-                          std::nullopt};
+            ModelExport e{
+                written_parameters(result_of(model), *fit.reference, request.source, request.gamut, fit.material.id),
+                std::nullopt};
             if (!detail::as_f82_tint(e.written, *fit.reference)) e.stand_in = stand_in;
             m.models.push_back(std::move(e));
         }

@@ -10,9 +10,9 @@ void write_export(const std::filesystem::path& dir, const std::vector<ExportFile
     std::vector<OutputFile> outputs;
     outputs.reserve(files.size());
     for (const ExportFile& f : files) outputs.push_back({f.path, f.contents});
-    update_folder_as_unit(dir, outputs, [&](const std::filesystem::path& relative, const std::string& existing, const std::string& mine) {
-        return detail::merge_index(dir, relative, existing, mine);
-    });
+    update_folder_as_unit(dir, outputs,
+                          [&](const std::filesystem::path& relative, const std::string& existing,
+                              const std::string& mine) { return detail::merge_index(dir, relative, existing, mine); });
 }
 
 }  // namespace metalfit

@@ -9,7 +9,10 @@ namespace metalfit::detail {
 
 std::string file_stem(std::string_view id_prefix, const std::string& material_id, std::string_view model_id) {
     std::string s = std::string(id_prefix) + "_" + material_id + "_" + std::string(model_id);
-    for (char& ch : s) ch = std::isalnum(static_cast<unsigned char>(ch)) ? static_cast<char>(std::tolower(static_cast<unsigned char>(ch))) : '_';
+    for (char& ch : s)
+        ch = std::isalnum(static_cast<unsigned char>(ch))
+                 ? static_cast<char>(std::tolower(static_cast<unsigned char>(ch)))
+                 : '_';
     return s;
 }
 

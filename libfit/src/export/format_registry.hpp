@@ -44,13 +44,17 @@ const ExportFormatEntry& format_entry(ExportFormat format);
 bool needs_stand_in(const ExportFormatEntry& format, const Model& model);
 
 // The index merges of the formats (index_merge.cpp).
-std::optional<std::string> merge_json_index(const std::string& relative, const std::string& existing, const std::string& mine);
-std::optional<std::string> merge_glsl_index(const std::string& relative, const std::string& existing, const std::string& mine);
-std::optional<std::string> merge_hlsl_index(const std::string& relative, const std::string& existing, const std::string& mine);
-std::optional<std::string> merge_cpp_index(const std::string& relative, const std::string& existing, const std::string& mine);
+std::optional<std::string> merge_json_index(const std::string& relative, const std::string& existing,
+                                            const std::string& mine);
+std::optional<std::string> merge_glsl_index(const std::string& relative, const std::string& existing,
+                                            const std::string& mine);
+std::optional<std::string> merge_hlsl_index(const std::string& relative, const std::string& existing,
+                                            const std::string& mine);
+std::optional<std::string> merge_cpp_index(const std::string& relative, const std::string& existing,
+                                           const std::string& mine);
 // A file of an export written into `dir` where a file of that name is: the merged index file, or `mine` for a file
 // no format shares. InputError naming the file when the two cannot be merged.
-std::string merge_index(const std::filesystem::path& dir, const std::filesystem::path& relative, const std::string& existing,
-                        const std::string& mine);
+std::string merge_index(const std::filesystem::path& dir, const std::filesystem::path& relative,
+                        const std::string& existing, const std::string& mine);
 
 }  // namespace metalfit::detail

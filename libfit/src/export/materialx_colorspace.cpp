@@ -13,8 +13,9 @@ std::string materialx_colorspace(const OcioConfigChoice& config, const std::stri
     // MaterialX 1.39's linear colour spaces, each with the names OCIO configs (the builtin studio and CG configs,
     // ACES 1.x, metalfit's own) give the same space or list as aliases.
     static const std::vector<std::pair<std::string, std::vector<std::string>>> known{
-        {"lin_rec709", {"lin_rec709", "Linear Rec.709 (sRGB)", "Linear Rec.709", "lin_srgb", "lin_rec709_srgb",
-                        "Utility - Linear - sRGB", "Utility - Linear - Rec.709", "scene-linear Rec.709-sRGB"}},
+        {"lin_rec709",
+         {"lin_rec709", "Linear Rec.709 (sRGB)", "Linear Rec.709", "lin_srgb", "lin_rec709_srgb",
+          "Utility - Linear - sRGB", "Utility - Linear - Rec.709", "scene-linear Rec.709-sRGB"}},
         {"acescg", {"acescg", "lin_ap1", "ACES - ACEScg", "lin_ap1_scene"}},
         {"lin_displayp3", {"lin_displayp3", "Linear P3-D65", "lin_p3d65", "Utility - Linear - P3-D65"}},
         {"lin_adobergb", {"lin_adobergb", "Linear AdobeRGB", "Linear Adobe RGB (1998)"}},

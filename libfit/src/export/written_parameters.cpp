@@ -23,21 +23,22 @@ std::vector<std::string> apply_gamut(const Model& model, ModelParameters& params
         for (int c = 0; c < 3; ++c) {
             const double v = colour[c];
             max = std::max(max, v);
-            if (v > 1.0 || v < 0.0) outside += (outside.empty() ? "" : ", ") + std::string(kChannelNames[c]) + " " + detail::number(v);
+            if (v > 1.0 || v < 0.0)
+                outside += (outside.empty() ? "" : ", ") + std::string(kChannelNames[c]) + " " + detail::number(v);
         }
         if (outside.empty()) continue;
         switch (policy) {
-            case GamutPolicy::keep:
-                notes.push_back(name + " outside [0, 1] (" + outside + "): kept");
-                break;
+            case GamutPolicy::keep: notes.push_back(name + " outside [0, 1] (" + outside + "): kept"); break;
             case GamutPolicy::clip:
-                params.set_parameter(i, {std::clamp(colour.r, 0.0, 1.0), std::clamp(colour.g, 0.0, 1.0), std::clamp(colour.b, 0.0, 1.0)});
+                params.set_parameter(i, {std::clamp(colour.r, 0.0, 1.0), std::clamp(colour.g, 0.0, 1.0),
+                                         std::clamp(colour.b, 0.0, 1.0)});
                 notes.push_back(name + " outside [0, 1] (" + outside + "): clipped to [0, 1]");
                 break;
             case GamutPolicy::scale:
                 for (int c = 0; c < 3; ++c) params[c][i] = std::max(0.0, max > 1.0 ? colour[c] / max : colour[c]);
-                notes.push_back(name + " outside [0, 1] (" + outside + "): " +
-                                (max > 1.0 ? "scaled by 1/" + detail::number(max) : std::string("negative values set to 0")));
+                notes.push_back(
+                    name + " outside [0, 1] (" + outside + "): " +
+                    (max > 1.0 ? "scaled by 1/" + detail::number(max) : std::string("negative values set to 0")));
                 break;
         }
     }
@@ -49,7 +50,6 @@ std::vector<std::string> apply_gamut(const Model& model, ModelParameters& params
 std::string to_string(GamutPolicy policy) { return std::string(kGamutPolicyNames.name(policy)); }
 
 GamutPolicy parse_gamut_policy(const std::string& text) { return kGamutPolicyNames.parse(text); }
-
 
 WrittenParameters written_parameters(const ModelResult& result, const SampledReference& reference,
                                      ParameterSource source, GamutPolicy gamut, const std::string& material_id) {

@@ -66,8 +66,16 @@ MetalTable metal_table(const Catalog& catalog, const MetalTableColour& colour) {
         const Material material = load_material(catalog, entry.id);
         const ReferenceCurve working(material, colour.colorimetry, colour.working, colour.spectral);
         const ReferenceCurve scene(material, colour.colorimetry, colour.scene_linear, colour.spectral);
-        MetalTableRow row{entry.id, entry.name, entry.kind, entry.primary.source, entry.primary.reference,
-                          entry.primary.note, working(1.0), {}, {}, {}};
+        MetalTableRow row{entry.id,
+                          entry.name,
+                          entry.kind,
+                          entry.primary.source,
+                          entry.primary.reference,
+                          entry.primary.note,
+                          working(1.0),
+                          {},
+                          {},
+                          {}};
         row.tint = f82_tint(row.f0, working(kMuF82));
         const RGB scene_f0 = scene(1.0);
         scene_values.push_back(scene_f0);

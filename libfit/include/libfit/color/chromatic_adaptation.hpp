@@ -24,7 +24,7 @@ inline constexpr EnumNames kAdaptationNames{"chromatic adaptation", KnownNamesWo
                                                        EnumName<Adaptation>{Adaptation::none, "none"}}};
 
 Adaptation parse_adaptation(std::string_view s);  // "bradford" | "cat02" | "von-kries-xyz" | "none"; UsageError
-std::string to_string(Adaptation a);               // the same names
+std::string to_string(Adaptation a);              // the same names
 
 // The cone-space matrix of a method (identity for von-kries-xyz and none).
 Matrix3 cone_matrix(Adaptation a);

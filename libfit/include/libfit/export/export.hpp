@@ -20,14 +20,12 @@ namespace metalfit {
 // The formats, in the order `--format all` writes them (each format's writer, files and rules: the private
 // format registry, src/export/format_registry.hpp).
 enum class ExportFormat { json, glsl, hlsl, mtlx, openpbr, cpp, gltf };
-inline constexpr EnumNames kExportFormatNames{"export format", KnownNamesWording::known,
-                                              std::array{EnumName<ExportFormat>{ExportFormat::json, "json"},
-                                                         EnumName<ExportFormat>{ExportFormat::glsl, "glsl"},
-                                                         EnumName<ExportFormat>{ExportFormat::hlsl, "hlsl"},
-                                                         EnumName<ExportFormat>{ExportFormat::mtlx, "mtlx"},
-                                                         EnumName<ExportFormat>{ExportFormat::openpbr, "openpbr"},
-                                                         EnumName<ExportFormat>{ExportFormat::cpp, "cpp"},
-                                                         EnumName<ExportFormat>{ExportFormat::gltf, "gltf"}}};
+inline constexpr EnumNames kExportFormatNames{
+    "export format", KnownNamesWording::known,
+    std::array{EnumName<ExportFormat>{ExportFormat::json, "json"}, EnumName<ExportFormat>{ExportFormat::glsl, "glsl"},
+               EnumName<ExportFormat>{ExportFormat::hlsl, "hlsl"}, EnumName<ExportFormat>{ExportFormat::mtlx, "mtlx"},
+               EnumName<ExportFormat>{ExportFormat::openpbr, "openpbr"},
+               EnumName<ExportFormat>{ExportFormat::cpp, "cpp"}, EnumName<ExportFormat>{ExportFormat::gltf, "gltf"}}};
 std::string to_string(ExportFormat format);
 
 // What happens to colour parameters (F0, tint, r, g) outside [0, 1]: written as they are and flagged, clipped to
@@ -44,10 +42,10 @@ std::string to_string(GamutPolicy policy);
 // compute_metrics on the material's sampled reference, so they describe what a consumer evaluates).
 struct WrittenParameters {
     const Model* model = nullptr;
-    std::string origin;                   // "fit" or "closed r1-r82"
+    std::string origin;  // "fit" or "closed r1-r82"
     ModelParameters params;
     Metrics metrics;
-    std::vector<std::string> gamut;       // one note per out-of-gamut colour parameter: what was done to it
+    std::vector<std::string> gamut;  // one note per out-of-gamut colour parameter: what was done to it
 };
 
 // Chooses the fit or the best closed form of `result`, applies the gamut policy and recomputes the metrics.

@@ -10,8 +10,8 @@
 
 #include "libfit/base/phase_clock.hpp"
 #include "libfit/color/colorimetry.hpp"
-#include "libfit/io/material.hpp"
 #include "libfit/fit/metrics.hpp"
+#include "libfit/io/material.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/reference/reference_curve.hpp"
 #include "libfit/reference/sampled_reference.hpp"

@@ -14,10 +14,11 @@ struct EvaluatedParameters;  // libfit/fit/fit.hpp
 struct ModelResult;
 
 enum class ParameterSource { fit, closed };
-inline constexpr EnumNames kParameterSourceNames{"parameter source", KnownNamesWording::alternatives,
-                                                 std::array{EnumName<ParameterSource>{ParameterSource::fit, "fit"},
-                                                            EnumName<ParameterSource>{ParameterSource::closed, "closed"}}};
-std::string to_string(ParameterSource source);                   // "fit" | "closed"
+inline constexpr EnumNames kParameterSourceNames{
+    "parameter source", KnownNamesWording::alternatives,
+    std::array{EnumName<ParameterSource>{ParameterSource::fit, "fit"},
+               EnumName<ParameterSource>{ParameterSource::closed, "closed"}}};
+std::string to_string(ParameterSource source);                    // "fit" | "closed"
 ParameterSource parse_parameter_source(const std::string& text);  // "fit" | "closed", else UsageError
 
 // The parameters `source` picks from `result`, and where they come from: "fit", or "closed <form id>".

@@ -31,11 +31,11 @@ class ReferenceCurve {
 public:
     // Throws InputError naming the material's file when its data do not cover 360–830 nm (and
     // options.out_of_range is error).
-    ReferenceCurve(const Material& material, const Colorimetry& colorimetry,
-                   ColorSpaceConverter converter, SpectralOptions options = {});
+    ReferenceCurve(const Material& material, const Colorimetry& colorimetry, ColorSpaceConverter converter,
+                   SpectralOptions options = {});
 
-    RGB operator()(double mu) const;  // white balanced
-    XYZ xyz(double mu) const;         // before the colour space
+    RGB operator()(double mu) const;                                // white balanced
+    XYZ xyz(double mu) const;                                       // before the colour space
     std::vector<RGB> operator()(std::span<const double> mu) const;  // white balanced, one per μ
     std::vector<XYZ> xyz(std::span<const double> mu) const;
     // RGB of the perfect reflector before white balance (provenance: about (1.00016, 0.99998,

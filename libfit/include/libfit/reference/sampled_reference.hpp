@@ -19,9 +19,9 @@ namespace metalfit {
 enum class ErrorMetric { rel, abs };
 // Angular weight w(μ) of the error integrals: 1 (uniform over the hemisphere) or 2μ (projected solid angle).
 enum class AngularWeight { uniform, cosine };
-inline constexpr EnumNames kErrorMetricNames{"error metric", KnownNamesWording::known,
-                                             std::array{EnumName<ErrorMetric>{ErrorMetric::rel, "rel"},
-                                                        EnumName<ErrorMetric>{ErrorMetric::abs, "abs"}}};
+inline constexpr EnumNames kErrorMetricNames{
+    "error metric", KnownNamesWording::known,
+    std::array{EnumName<ErrorMetric>{ErrorMetric::rel, "rel"}, EnumName<ErrorMetric>{ErrorMetric::abs, "abs"}}};
 inline constexpr EnumNames kAngularWeightNames{"angular weight", KnownNamesWording::known,
                                                std::array{EnumName<AngularWeight>{AngularWeight::uniform, "uniform"},
                                                           EnumName<AngularWeight>{AngularWeight::cosine, "cosine"}}};
