@@ -15,8 +15,8 @@
 #include <memory>
 
 #include "libfit/base/data_dir.hpp"
-#include "libfit/fit/fit.hpp"
 #include "libfit/base/quadrature.hpp"
+#include "libfit/fit/fit.hpp"
 #include "metalfit_bench/convergence.hpp"
 #include "metalfit_bench/environment.hpp"
 #include "metalfit_bench/eval_kernels.hpp"
@@ -87,8 +87,10 @@ int main(int argc, char** argv) {
     std::string material_id = "Au";
     std::vector<char*> args;
     for (int i = 0; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--material") == 0 && i + 1 < argc) material_id = argv[++i];
-        else args.push_back(argv[i]);
+        if (std::strcmp(argv[i], "--material") == 0 && i + 1 < argc)
+            material_id = argv[++i];
+        else
+            args.push_back(argv[i]);
     }
     int count = static_cast<int>(args.size());
     benchmark::Initialize(&count, args.data());
@@ -103,12 +105,14 @@ int main(int argc, char** argv) {
         }
         for (const CatalogEntry& e : env.catalog.entries())
             for (const Model* m : all_models())
-                benchmark::RegisterBenchmark(("BM_Fit/" + e.id + "/" + std::string(m->id())).c_str(), fit, &env, e.id, m)
+                benchmark::RegisterBenchmark(("BM_Fit/" + e.id + "/" + std::string(m->id())).c_str(), fit, &env, e.id,
+                                             m)
                     ->Unit(benchmark::kMillisecond);
         const FittedConvergence convergence = fitted_rel_rms_convergence(material);
         for (std::size_t i = 0; i < convergence.nodes.size(); ++i) {
             std::map<std::string, double> change;
-            for (std::size_t m = 0; m < convergence.models.size(); ++m) change[convergence.models[m]] = convergence.rel_rms_change[i][m];
+            for (std::size_t m = 0; m < convergence.models.size(); ++m)
+                change[convergence.models[m]] = convergence.rel_rms_change[i][m];
             benchmark::RegisterBenchmark("BM_Integration", integration, &material, change)
                 ->Arg(convergence.nodes[i])
                 ->Unit(benchmark::kMicrosecond);

@@ -22,7 +22,8 @@ inline std::filesystem::path input_file(const std::uint8_t* data, std::size_t si
         return d;
     }();
     const std::filesystem::path file = dir / name;
-    std::ofstream(file, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    std::ofstream(file, std::ios::binary | std::ios::trunc)
+        .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
     return file;
 }
 

@@ -10,7 +10,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }();
     (void)quiet;
     const auto file = metalfit::fuzz::input_file(data, size, "config.ocio");
-    metalfit::fuzz::expect_only_documented_errors(
-        [&] { metalfit::ColorSpaceConverter::create(metalfit::OcioConfigChoice{file, "fuzz"}); });
+    metalfit::fuzz::expect_only_documented_errors([&] {
+        metalfit::ColorSpaceConverter::create(metalfit::OcioConfigChoice{file, "fuzz"});
+    });
     return 0;
 }

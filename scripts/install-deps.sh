@@ -24,6 +24,7 @@ PACKAGES=(
   fonts-dejavu-core                    # DejaVu Sans: glpreview's sheet labels (OpenImageIO render_text finds it)
   chromium                             # metalfit report: the browser test opens the pages headless
   clang libclang-rt-14-dev             # the optional fuzz preset: clang with libFuzzer and the sanitizers (fuzz/)
+  clang-format                         # scripts/check-format.sh and the ctest format.check (.clang-format)
 )
 # npm (from Debian's nodejs + npm unless a node with its own npm is already on PATH): installs the report's chart
 # libraries (vega, vega-lite, vega-embed), playwright-core and the export consumer of the tests (@needle-tools/materialx:

@@ -8,8 +8,8 @@
 
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <iterator>
+#include <map>
 #include <string>
 #include <thread>
 #include <vector>
@@ -18,9 +18,9 @@
 
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/deferred_signals.hpp"
-#include "libfit/base/staged_folder.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
+#include "libfit/base/staged_folder.hpp"
 
 namespace metalfit {
 namespace {
@@ -117,8 +117,7 @@ TEST(StreamedOutputFile, WithoutCommitTheTargetStaysAsItWasAndNoTemporaryIsLeft)
         StreamedOutputFile out(target);
         out.write("half a record");
         throw std::runtime_error("a fit failed");
-    } catch (const std::runtime_error&) {
-    }
+    } catch (const std::runtime_error&) {}
     EXPECT_EQ(read_file(target), "old");
     EXPECT_EQ(list(dir.path()), std::vector<std::string>{"record.json"});
     { StreamedOutputFile never(dir.path() / "new.json"); }
@@ -168,8 +167,9 @@ TEST(AtomicFile, ReadOnlyDirectoryThrowsAndLeavesNothing) {
     TempDir dir;
     const fs::path target = dir.path() / "existing.txt";
     write_file_atomically(target, "old");
-    fs::permissions(dir.path(), fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
-                                    fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec,
+    fs::permissions(dir.path(),
+                    fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read | fs::perms::group_exec |
+                        fs::perms::others_read | fs::perms::others_exec,
                     fs::perm_options::replace);
     {
         // Running as root (or with CAP_DAC_OVERRIDE) makes a 0555 directory writable anyway.
@@ -273,7 +273,8 @@ TEST(StagedFolder, AFailureChangesNothing) {
     const fs::path dir = tmp.path() / "out";
     update_folder_as_unit(dir, std::vector<OutputFile>{{"f", "old"}});
     fs::create_directories(dir / "d");
-    EXPECT_THROW(update_folder_as_unit(dir, std::vector<OutputFile>{{"f", "new"}, {"d", "a file where a folder is"}}), InputError);
+    EXPECT_THROW(update_folder_as_unit(dir, std::vector<OutputFile>{{"f", "new"}, {"d", "a file where a folder is"}}),
+                 InputError);
     EXPECT_EQ(read_file(dir / "f"), "old");
     EXPECT_EQ(list(tmp.path()), std::vector<std::string>{"out"});
     // a merge that refuses: nothing changes either
@@ -300,7 +301,7 @@ TEST(StagedFolder, AStaleStagingFolderIsRemovedByTheNextWriter) {
 TEST(StagedFolder, WhatIsNotProvablyAKilledWritersStagingIsKept) {
     TempDir tmp;
     const std::vector<std::string> kept{
-        ".out.metalfit-staging.abc123",                                       // a user's folder: no pid
+        ".out.metalfit-staging.abc123",                                                // a user's folder: no pid
         ".out.metalfit-staging." + std::to_string(::getppid()) + ".0123456789abcdef",  // a running pid
         ".out.metalfit-staging." + std::to_string(dead_pid()) + ".0123456789abcdeX",   // not the pattern
         ".out.metalfit-staging." + std::to_string(dead_pid()) + ".0123456789abcdef-mine"};
@@ -466,13 +467,14 @@ TEST(SanitisedMessage, ControlBytesInvisibleCharactersAndHugeTokensAreMadeSafe) 
     EXPECT_EQ(sanitised_message("a\nb\tc\x1b[31md"), "a b c\\x1B[31md");
     EXPECT_EQ(sanitised_message("\xEF\xBB\xBFwavelength_nm"), "<U+FEFF>wavelength_nm");
     EXPECT_EQ(sanitised_message("caf\xe9 \xc2\xb5m"), "caf\\xE9 \xc2\xb5m");  // a stray Latin-1 byte; µ stays
-    EXPECT_EQ(sanitised_message("x\xE2\x80\xAEy"), "x<U+202E>y");            // right-to-left override
+    EXPECT_EQ(sanitised_message("x\xE2\x80\xAEy"), "x<U+202E>y");             // right-to-left override
     const std::string huge(50'000'000, 'x');
     const std::string cut = sanitised_message("found '" + huge + "'");
     EXPECT_LE(cut.size(), kMaxMessageBytes + 40);
     EXPECT_TRUE(cut.ends_with("… (49999008 more bytes)")) << cut.substr(cut.size() - 40);
     // InputError's message is sanitised too
-    const InputError e({"f.csv", 2}, "non-numeric value '\xEF\xBB\xBF" "1.0\r'");
+    const InputError e({"f.csv", 2}, "non-numeric value '\xEF\xBB\xBF"
+                                     "1.0\r'");
     EXPECT_STREQ(e.what(), "f.csv:2: non-numeric value '<U+FEFF>1.0 '");
 }
 

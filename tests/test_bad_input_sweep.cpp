@@ -25,7 +25,8 @@ using metalfit::test::read_file;
 using metalfit::test::TempDir;
 
 const std::vector<std::string> kNumbers = {"1e308", "1e309", "-1e309", "4.9e-324", "nan", "inf"};
-const std::vector<std::string> kBadUtf8 = {"\xff", "\xc0\xaf", "\xe0\x80\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80", "\xe2\x82"};
+const std::vector<std::string> kBadUtf8 = {"\xff",         "\xc0\xaf",         "\xe0\x80\xaf",
+                                           "\xed\xa0\x80", "\xf4\x90\x80\x80", "\xe2\x82"};
 
 // "x@y" with every @ replaced by `value`.
 std::string fill(std::string text, const std::string& value) {
@@ -43,11 +44,12 @@ struct Template {
 class BadInputSweep : public ::testing::Test {
 protected:
     // Runs `exe` and checks the contract: exit 2, 3 or 4, stdout empty, stderr one line containing `names`.
-    void expect_refused(const fs::path& exe, const std::string& args, const std::string& names, const std::string& label,
-                        const std::string& env = "OCIO=") {
+    void expect_refused(const fs::path& exe, const std::string& args, const std::string& names,
+                        const std::string& label, const std::string& env = "OCIO=") {
         const CommandResult r = metalfit::test::run_command(exe, args, tmp_.path(), env);
         const std::string where = label + ": " + sanitised_message(r.err);
-        EXPECT_TRUE(r.exit_code == 2 || r.exit_code == 3 || r.exit_code == 4) << where << " (exit " << r.exit_code << ")";
+        EXPECT_TRUE(r.exit_code == 2 || r.exit_code == 3 || r.exit_code == 4)
+            << where << " (exit " << r.exit_code << ")";
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << where;
         EXPECT_TRUE(!r.err.empty() && r.err.back() == '\n') << where;
         EXPECT_NE(r.err.find(sanitised_message(names)), std::string::npos) << where << " does not name " << names;
@@ -79,15 +81,18 @@ TEST_F(BadInputSweep, RefractiveindexYaml) {
         {"k", "s.yml", head + "        0.4 0.2 @\n        0.6 0.3 @\n        0.9 0.2 @\n", no_tiny},
         {"wavelength", "s.yml", head + "        @ 0.2 3\n        0.6 0.3 4\n", kNumbers},
         {"tabulated n", "s.yml", "DATA:\n  - type: tabulated n\n    data: |\n        0.3 @\n        0.9 @\n", kNumbers},
-        {"formula coefficient", "s.yml", "DATA:\n  - type: formula 1\n    wavelength_range: 0.3 2.5\n    coefficients: 0 @ 0.1\n", no_tiny},
-        {"formula range", "s.yml", "DATA:\n  - type: formula 2\n    wavelength_range: 0.3 @\n    coefficients: 0 1 0.01\n", no_tiny},
+        {"formula coefficient", "s.yml",
+         "DATA:\n  - type: formula 1\n    wavelength_range: 0.3 2.5\n    coefficients: 0 @ 0.1\n", no_tiny},
+        {"formula range", "s.yml",
+         "DATA:\n  - type: formula 2\n    wavelength_range: 0.3 @\n    coefficients: 0 1 0.01\n", no_tiny},
     };
     for (const std::string& bad : kBadUtf8) {
         const std::vector<std::string> one{bad};
         templates.push_back({"utf-8 in a key", "s.yml", "REFER@ENCES: x\n" + head + kYamlRows, one});
         templates.push_back({"utf-8 in a value", "s.yml", "REFERENCES: \"caf@\"\n" + head + kYamlRows, one});
         templates.push_back({"utf-8 in a condition", "s.yml", head + kYamlRows + "CONDITIONS:\n  medium: @\n", one});
-        templates.push_back({"utf-8 in the type", "s.yml", "DATA:\n  - type: tabulated@ nk\n    data: |\n" + kYamlRows, one});
+        templates.push_back(
+            {"utf-8 in the type", "s.yml", "DATA:\n  - type: tabulated@ nk\n    data: |\n" + kYamlRows, one});
         templates.push_back({"utf-8 in a row", "s.yml", head + "        0.4 0.2 3\n        0.6 0.3@ 4\n", one});
         templates.push_back({"utf-8 at the end", "s.yml", head + kYamlRows + "# end@", one});
     }
@@ -110,7 +115,8 @@ TEST_F(BadInputSweep, CsvAndInstrumentTables) {
     };
     for (const std::string& bad : kBadUtf8) {
         const std::vector<std::string> one{bad};
-        templates.push_back({"utf-8 in a column name", "s.csv", "wavelength_nm,n,k,MS@E\n400,0.2,3,1\n900,0.2,6,1\n", one});
+        templates.push_back(
+            {"utf-8 in a column name", "s.csv", "wavelength_nm,n,k,MS@E\n400,0.2,3,1\n900,0.2,6,1\n", one});
         templates.push_back({"utf-8 in a unit", "s.tsv", "wavelength (n@m)\tn\tk\n400\t0.2\t3\n900\t0.2\t6\n", one});
         templates.push_back({"utf-8 in a value", "s.csv", "wavelength_nm,n,k\n400,0.2@,3\n900,0.2,6\n", one});
         templates.push_back({"utf-8 in a comment", "s.csv", "# caf@\nwavelength_nm,n,k\n400,0.2,3\n900,0.2,6\n", one});
@@ -125,8 +131,8 @@ TEST_F(BadInputSweep, CommandLineValues) {
     for (const std::string& bad : kBadUtf8) {
         const std::string label = "[" + sanitised_message(bad) + "]";
         expect_refused(METALFIT_EXE, "show '" + good.string() + "' --name 'a" + bad + "'", "--name", "--name " + label);
-        expect_refused(METALFIT_EXE, "fit '" + good.string() + "' --model schlick --reference 'r" + bad + "'", "--reference",
-                       "--reference " + label);
+        expect_refused(METALFIT_EXE, "fit '" + good.string() + "' --model schlick --reference 'r" + bad + "'",
+                       "--reference", "--reference " + label);
         const fs::path named = tmp_.write("m" + bad + ".csv", read_file(good));
         expect_refused(METALFIT_EXE, "show '" + named.string() + "'", named.string(), "file name " + label);
         expect_refused(METALFIT_EXE, "show 'gold" + bad + "'", "gold", "material " + label);
@@ -138,10 +144,12 @@ TEST_F(BadInputSweep, CommandLineValues) {
 // --data-dir with a catalog.json of one material (the data file given by its absolute path).
 TEST_F(BadInputSweep, Catalog) {
     const fs::path nk = fs::path(METALFIT_TEST_DATA) / "nk" / "Au" / "Johnson.yml";
-    const std::string ocio = "--ocio-config '" + (fs::path(METALFIT_TEST_DATA) / "ocio" / "config.ocio").string() + "' ";
+    const std::string ocio =
+        "--ocio-config '" + (fs::path(METALFIT_TEST_DATA) / "ocio" / "config.ocio").string() + "' ";
     const auto catalog = [&](const std::string& key, const std::string& name, const std::string& range_min) {
-        return "{\"materials\": [{\"id\": \"gold\", \"" + key + "\": \"" + name + "\", \"primary\": {\"source\": \"Johnson\", \"file\": \"" +
-               nk.string() + "\", \"reference\": \"r\", \"licence\": \"CC0\", \"range_nm\": [" + range_min +
+        return "{\"materials\": [{\"id\": \"gold\", \"" + key + "\": \"" + name +
+               "\", \"primary\": {\"source\": \"Johnson\", \"file\": \"" + nk.string() +
+               "\", \"reference\": \"r\", \"licence\": \"CC0\", \"range_nm\": [" + range_min +
                ", 830], \"points_360_830\": 10}}]}\n";
     };
     fs::create_directories(tmp_.path() / "d");
@@ -167,9 +175,10 @@ TEST_F(BadInputSweep, Catalog) {
 // name, a key and at the end (`spaces` reads every name and family).
 TEST_F(BadInputSweep, OcioConfig) {
     const std::string config = read_file(fs::path(METALFIT_TEST_DATA) / "ocio" / "config.ocio");
-    const std::string matrix = "[0.486570948648216, 0.265667693169093, 0.198217285234362, 0.0, 0.228974564069749, "
-                               "0.691738521836506, 0.079286914093745, 0.0, -0.0, 0.045113381858903, 1.043944368900976, 0.0, "
-                               "0.0, 0.0, 0.0, 1.0]";
+    const std::string matrix =
+        "[0.486570948648216, 0.265667693169093, 0.198217285234362, 0.0, 0.228974564069749, "
+        "0.691738521836506, 0.079286914093745, 0.0, -0.0, 0.045113381858903, 1.043944368900976, 0.0, "
+        "0.0, 0.0, 0.0, 1.0]";
     ASSERT_NE(config.find(matrix), std::string::npos);
     const auto with = [&](const std::string& from, const std::string& to) {
         std::string text = config;
@@ -181,7 +190,8 @@ TEST_F(BadInputSweep, OcioConfig) {
     const std::string args = "--ocio-config '" + file.string() + "' ";
     for (const std::string& value : kNumbers) {
         tmp_.write("c.ocio", with(matrix, fill("[@, 0, 0, 0, 0, @, 0, 0, 0, 0, @, 0, 0, 0, 0, 1]", value)));
-        expect_refused(METALFIT_EXE, args + "show gold --json --space 'Linear P3-D65'", file.string(), "matrix [" + value + "]");
+        expect_refused(METALFIT_EXE, args + "show gold --json --space 'Linear P3-D65'", file.string(),
+                       "matrix [" + value + "]");
     }
     for (const std::string& bad : kBadUtf8) {
         const std::string label = "[" + sanitised_message(bad) + "]";
@@ -205,13 +215,16 @@ TEST_F(BadInputSweep, OcioColourSpaceThatConvertsToItselfIsAColourConfigurationE
     const fs::path file = tmp_.path() / "c.ocio";
     const std::string args = "--ocio-config '" + file.string() + "' ";
     std::string self = config;
-    self.insert(self.find(p3), "        - !<ColorSpaceTransform> {src: lin_p3d65, dst: ACES2065-1}\n");  // through its alias
+    self.insert(self.find(p3),
+                "        - !<ColorSpaceTransform> {src: lin_p3d65, dst: ACES2065-1}\n");  // through its alias
     tmp_.write("c.ocio", self);
     for (const char* command : {"spaces --json", "show gold --json --space 'Linear P3-D65'", "show gold --json"}) {
         expect_refused(METALFIT_EXE, args + command, file.string(), command);
         const CommandResult r = metalfit::test::run_command(METALFIT_EXE, args + command, tmp_.path());
-        EXPECT_NE(r.err.find("colour space 'Linear P3-D65' converts to itself (Linear P3-D65 \xe2\x86\x92 Linear P3-D65)"),
-                  std::string::npos) << r.err;
+        EXPECT_NE(
+            r.err.find("colour space 'Linear P3-D65' converts to itself (Linear P3-D65 \xe2\x86\x92 Linear P3-D65)"),
+            std::string::npos)
+            << r.err;
     }
     // Two spaces through each other: Linear Rec.2020 from P3 and P3 from Rec.2020 (named by its alias).
     const std::string rec2020 = "        - !<MatrixTransform> {matrix: [0.636958048301291";
@@ -221,7 +234,8 @@ TEST_F(BadInputSweep, OcioColourSpaceThatConvertsToItselfIsAColourConfigurationE
     pair.insert(pair.find(p3), "        - !<ColorSpaceTransform> {src: lin_rec2020, dst: ACES2065-1}\n");
     tmp_.write("c.ocio", pair);
     expect_refused(METALFIT_EXE, args + "show gold --json --space 'Linear P3-D65'", file.string(), "two spaces");
-    EXPECT_NE(metalfit::test::run_command(METALFIT_EXE, args + "spaces", tmp_.path()).err.find("converts to itself"), std::string::npos);
+    EXPECT_NE(metalfit::test::run_command(METALFIT_EXE, args + "spaces", tmp_.path()).err.find("converts to itself"),
+              std::string::npos);
 }
 
 // glpreview's scene JSON (--explain: parsed and planned, nothing rendered) and its command line.

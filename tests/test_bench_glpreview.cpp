@@ -14,7 +14,8 @@ using namespace metalfit::bench;
 using metalfit::test::TempDir;
 using nlohmann::json;
 
-const char* kShaders = R"({"renderer": "fake GL", "size": [1024, 1024], "frames": 60, "evaluations_per_pixel": 16, "models": [
+const char* kShaders =
+    R"({"renderer": "fake GL", "size": [1024, 1024], "frames": 60, "evaluations_per_pixel": 16, "models": [
   {"model": "schlick", "ms_per_frame": 0.25, "ratio_to_conductor_rgb": 0.5},
   {"model": "conductor-rgb", "ms_per_frame": 0.5, "ratio_to_conductor_rgb": 1.0},
   {"model": "reference-lut", "ms_per_frame": 0.3, "ratio_to_conductor_rgb": 0.6}]})";
@@ -112,7 +113,8 @@ TEST(BenchMarkdown, KeepsTheHandWrittenReading) {
                                  "\nSchlick is cheap.\n\nSecond paragraph.\n" + kReadingEnd + "\n";
     const std::string again = to_markdown(report, previous);
     EXPECT_NE(again.find(std::string(kReadingBegin) + "\nSchlick is cheap.\n\nSecond paragraph.\n" + kReadingEnd),
-              std::string::npos) << again;
+              std::string::npos)
+        << again;
     EXPECT_EQ(again.find("stale"), std::string::npos);
     EXPECT_EQ(again.find("No reading written yet"), std::string::npos);
     EXPECT_EQ(to_markdown(report, again), again);  // regeneration is a fixed point

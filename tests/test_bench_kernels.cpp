@@ -30,7 +30,8 @@ TEST(BenchKernels, EveryModelAndTheExactFormsAndLutsAreThere) {
     for (const EvalKernel& k : kernels) ids.push_back(k.id);
     std::vector<std::string> expected;
     for (const Model* m : all_models()) expected.emplace_back(m->id());
-    for (const char* extra : {"exact-complex", "exact-real", "lut-64", "lut-256", "spectral-reference"}) expected.emplace_back(extra);
+    for (const char* extra : {"exact-complex", "exact-real", "lut-64", "lut-256", "spectral-reference"})
+        expected.emplace_back(extra);
     EXPECT_EQ(ids, expected);
 }
 
@@ -48,11 +49,13 @@ TEST(BenchKernels, ScalarAndArrayLoopsComputeTheModelsAndTheReference) {
                 EXPECT_NEAR(s, a, 1e-6f * std::max(1.0f, std::abs(s))) << k.id << " μ=" << mu[i];
                 if (k.kind == "model") {
                     const Model& m = find_model(k.id);
-                    EXPECT_NEAR(s, m.evaluate(std::span<const double>(gold().params(k.id)[c]), double(mu[i])), 2e-5) << k.id;
+                    EXPECT_NEAR(s, m.evaluate(std::span<const double>(gold().params(k.id)[c]), double(mu[i])), 2e-5)
+                        << k.id;
                 }
                 if (k.id == "exact-complex" || k.id == "exact-real") {
                     const Model& m = find_model("conductor-rgb");
-                    EXPECT_NEAR(s, m.evaluate(std::span<const double>(gold().params("conductor-rgb")[c]), double(mu[i])), 2e-5);
+                    EXPECT_NEAR(
+                        s, m.evaluate(std::span<const double>(gold().params("conductor-rgb")[c]), double(mu[i])), 2e-5);
                 }
                 if (k.id == "spectral-reference") {
                     EXPECT_NEAR(s, exact[c], 1e-6);

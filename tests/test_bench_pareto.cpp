@@ -39,7 +39,8 @@ TEST(Pareto, NanPointsAreNeitherOnTheFrontNorDominating) {
     EXPECT_EQ(pareto_front(p), (std::vector<bool>{false, true}));
 }
 
-CostRow row(const std::string& id, const std::string& kind, double ratio, double error, std::optional<double> shader = {}) {
+CostRow row(const std::string& id, const std::string& kind, double ratio, double error,
+            std::optional<double> shader = {}) {
     CostRow r;
     r.id = id;
     r.kind = kind;
@@ -50,11 +51,11 @@ CostRow row(const std::string& id, const std::string& kind, double ratio, double
 }
 
 TEST(Pareto, ReportRowsAreMarkedAmongModelsAndAmongAllRows) {
-    std::vector<CostRow> rows{row("fast", "model", 0.1, 0.10, 0.3),       // on both model fronts
+    std::vector<CostRow> rows{row("fast", "model", 0.1, 0.10, 0.3),             // on both model fronts
                               row("same-but-slower", "model", 0.5, 0.10, 0.4),  // dominated by fast
-                              row("accurate", "model", 1.0, 0.001, 1.0),   // on the model fronts
-                              row("lut", "lut", 0.1, 0.0001),              // dominates every model on the CPU
-                              row("exact", "exact", 1000, 0.0)};           // the only exact row
+                              row("accurate", "model", 1.0, 0.001, 1.0),        // on the model fronts
+                              row("lut", "lut", 0.1, 0.0001),                   // dominates every model on the CPU
+                              row("exact", "exact", 1000, 0.0)};                // the only exact row
     mark_pareto_fronts(rows, ParetoTolerance{});
     EXPECT_TRUE(rows[0].front_models.cpu);
     EXPECT_FALSE(rows[1].front_models.cpu);

@@ -101,9 +101,9 @@ TEST_F(CompiledSpirv, EveryModelCompilesAndCostsMoreThanTheWrapper) {
         counts[r.id] = *r.counts;
     }
     EXPECT_EQ(counts["wrapper"].compute(), 0);
-    EXPECT_EQ(counts["schlick"].transcendental, 0);           // (1 − μ)^5 by multiplication
-    EXPECT_EQ(counts["lazanyi-comp"].transcendental, 1);      // pow(1 − μ, α)
-    EXPECT_GE(counts["conductor-rgb"].transcendental, 2);     // square roots
+    EXPECT_EQ(counts["schlick"].transcendental, 0);        // (1 − μ)^5 by multiplication
+    EXPECT_EQ(counts["lazanyi-comp"].transcendental, 1);   // pow(1 − μ, α)
+    EXPECT_GE(counts["conductor-rgb"].transcendental, 2);  // square roots
     EXPECT_EQ(counts["reference-lut"].texture, 1);
     EXPECT_LT(counts["schlick"].compute(), counts["conductor-rgb"].compute());
     EXPECT_LT(counts["conductor-rgb"].compute(), counts["gulbrandsen"].compute());  // n, k from r, g first

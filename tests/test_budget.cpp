@@ -34,7 +34,7 @@ TEST(Budget, PicksTheCheapestModelMeetingTheBudgetInEveryChannel) {
     const CostTable costs = table({{"schlick", 10}, {"f82-tint", 20}, {"rational", 15}, {"conductor-rgb", 40}});
     const BudgetChoice one = choose_model(fits, costs, {0.01, BudgetMetric::rel_rms});
     ASSERT_NE(one.chosen, nullptr);
-    EXPECT_EQ(one.chosen->id(), "rational");  // cheaper than f82-tint, which also qualifies
+    EXPECT_EQ(one.chosen->id(), "rational");                   // cheaper than f82-tint, which also qualifies
     EXPECT_EQ(one.candidates.front().model->id(), "schlick");  // cheapest first
     EXPECT_FALSE(one.candidates.front().qualifies);
     EXPECT_TRUE(Contains(one.candidates.front().reason, "rel_rms 2 % > 1 %")) << one.candidates.front().reason;
@@ -62,7 +62,8 @@ TEST(Budget, TiesInCostGoToTheMoreAccurateModelThenToTheInputOrder) {
 TEST(Budget, NoneQualifiesSaysWhyForEveryModel) {
     const std::vector<ModelResult> fits{result("schlick", 0.02), result("f82-tint", 0.011), result("rational", 0.001)};
     // rational would qualify but has no cost in the table.
-    const BudgetChoice c = choose_model(fits, table({{"schlick", 10}, {"f82-tint", 20}}), {0.005, BudgetMetric::rel_rms});
+    const BudgetChoice c =
+        choose_model(fits, table({{"schlick", 10}, {"f82-tint", 20}}), {0.005, BudgetMetric::rel_rms});
     EXPECT_EQ(c.chosen, nullptr);
     ASSERT_EQ(c.candidates.size(), 3u);
     EXPECT_EQ(c.candidates.back().model->id(), "rational");  // no cost: last
@@ -130,7 +131,8 @@ TEST(ModelCost, ReadsABenchReportPreferringGpuRatios) {
         EXPECT_TRUE(Contains(e.what(), "schema")) << e.what();
     }
     EXPECT_THROW(cost_table_from_bench_json(write("neg.json", R"({"schema": "metalfit.bench/1", "rows": [
-        {"id": "schlick", "kind": "model", "ratio_scalar": -1, "shader_ratio": null}]})")), InputError);
+        {"id": "schlick", "kind": "model", "ratio_scalar": -1, "shader_ratio": null}]})")),
+                 InputError);
     EXPECT_THROW(cost_table_from_bench_json(write("broken.json", "{")), InputError);
     EXPECT_THROW(cost_table_from_bench_json(dir / "missing.json"), InputError);
 }

@@ -9,9 +9,9 @@
 #include <fstream>
 #include <string>
 
+#include "libfit/base/errors.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/io/csv.hpp"
-#include "libfit/base/errors.hpp"
 
 namespace metalfit {
 namespace {
@@ -76,7 +76,7 @@ TEST_F(CatalogTest, FindIsCaseInsensitiveOnIdNameAndAlias) {
     ASSERT_NE(brass, nullptr);
     EXPECT_EQ(brass->id, "Cu-Zn");
     EXPECT_EQ(catalog().find("BRASS"), brass);
-    EXPECT_EQ(catalog().find("cu70zn30"), brass);  // alias
+    EXPECT_EQ(catalog().find("cu70zn30"), brass);    // alias
     ASSERT_NE(catalog().find("Aluminum"), nullptr);  // alias spelling
     EXPECT_EQ(catalog().find("Aluminum")->id, "Al");
     ASSERT_NE(catalog().find("STAINLESS STEEL"), nullptr);
@@ -162,7 +162,7 @@ TEST(CatalogPaths, LooksLikePath) {
     EXPECT_TRUE(looks_like_path("dir/gold"));
     EXPECT_TRUE(looks_like_path("./gold"));
     EXPECT_TRUE(looks_like_path("/abs/path/file.txt"));
-    EXPECT_TRUE(looks_like_path("gold.txt"));   // instrument tables: .txt, .tsv, .dat
+    EXPECT_TRUE(looks_like_path("gold.txt"));  // instrument tables: .txt, .tsv, .dat
     EXPECT_TRUE(looks_like_path("gold.tsv"));
     EXPECT_TRUE(looks_like_path("gold.DAT"));
     EXPECT_FALSE(looks_like_path("gold.xlsx"));  // not existing, no separator, other extension
@@ -183,7 +183,8 @@ TEST_F(CatalogTest, AFileInTheCurrentFolderNeverShadowsACatalogName) {
         (void)load_material(catalog(), "mytable");
         ADD_FAILURE() << "a bare file name was taken as a path";
     } catch (const UsageError& e) {
-        EXPECT_NE(std::string(e.what()).find("a file of that name is here, but files are read by their extension"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("a file of that name is here, but files are read by their extension"),
+                  std::string::npos)
             << e.what();
     }
 }
@@ -199,9 +200,11 @@ TEST_F(CatalogTest, CoverageMetadataMatchesEveryTable) {
             ASSERT_TRUE(s->coverage) << e.id << " " << s->source << ": no coverage (run scripts/catalog-coverage.py)";
             const Material m = load_nk_file(s->file);
             const WavelengthRange r = m.index.range();
-            EXPECT_EQ(s->coverage->range_nm.min_nm, r.min_nm) << e.id << " " << s->source << " (run scripts/catalog-coverage.py)";
+            EXPECT_EQ(s->coverage->range_nm.min_nm, r.min_nm)
+                << e.id << " " << s->source << " (run scripts/catalog-coverage.py)";
             EXPECT_EQ(s->coverage->range_nm.max_nm, r.max_nm) << e.id << " " << s->source;
-            EXPECT_EQ(s->coverage->points_360_830, m.index.n.tabulated_points_in(kVisibleRange)) << e.id << " " << s->source;
+            EXPECT_EQ(s->coverage->points_360_830, m.index.n.tabulated_points_in(kVisibleRange))
+                << e.id << " " << s->source;
             ++sources;
         }
     }
@@ -211,7 +214,8 @@ TEST_F(CatalogTest, CoverageMetadataMatchesEveryTable) {
 TEST(CatalogErrors, CoverageNeedsBothFieldsAndItsShape) {
     TempDir dir;
     const std::string source = R"("source": "S", "file": "nk/Au/S.yml", "reference": "r", "licence": "CC0-1.0")";
-    dir.write("catalog.json", R"({"materials": [{"id": "Au", "name": "gold", "primary": {)" + source + R"(, "range_nm": [300, 900]}}]})");
+    dir.write("catalog.json", R"({"materials": [{"id": "Au", "name": "gold", "primary": {)" + source +
+                                  R"(, "range_nm": [300, 900]}}]})");
     try {
         (void)Catalog::load(dir.path());
         FAIL() << "range_nm without points_360_830 must throw";

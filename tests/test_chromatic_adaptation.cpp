@@ -28,12 +28,10 @@ void expect_matrix_near(const Matrix3& a, const double (&expected)[3][3], double
 // D65 = (0.95047, 1, 1.08883) and D50 = (0.96422, 1, 0.82521); printed to 7 decimals.
 constexpr XYZ kLindbloomD65{0.95047, 1.0, 1.08883};
 constexpr XYZ kLindbloomD50{0.96422, 1.0, 0.82521};
-constexpr double kBradfordD65toD50[3][3] = {{1.0478112, 0.0228866, -0.0501270},
-                                            {0.0295424, 0.9904844, -0.0170491},
-                                            {-0.0092345, 0.0150436, 0.7521316}};
-constexpr double kBradfordD50toD65[3][3] = {{0.9555766, -0.0230393, 0.0631636},
-                                            {-0.0282895, 1.0099416, 0.0210077},
-                                            {0.0122982, -0.0204830, 1.3299098}};
+constexpr double kBradfordD65toD50[3][3] = {
+    {1.0478112, 0.0228866, -0.0501270}, {0.0295424, 0.9904844, -0.0170491}, {-0.0092345, 0.0150436, 0.7521316}};
+constexpr double kBradfordD50toD65[3][3] = {
+    {0.9555766, -0.0230393, 0.0631636}, {-0.0282895, 1.0099416, 0.0210077}, {0.0122982, -0.0204830, 1.3299098}};
 
 TEST(ChromaticAdaptation, BradfordMatchesLindbloomsPublishedMatrices) {
     expect_matrix_near(adaptation_matrix(Adaptation::bradford, kLindbloomD65, kLindbloomD50), kBradfordD65toD50, 6e-8);
@@ -52,8 +50,9 @@ TEST(ChromaticAdaptation, EveryMethodAgreesWithAnIndependentComputationAndMapsWh
     // CIE 159:2004 (CIECAM02), M_CAT02.
     cat02 << 0.7328, 0.4296, -0.1624, -0.7036, 1.6975, 0.0061, 0.0030, 0.0136, 0.9834;
     const XYZ a = xyz_from_chromaticity(0.44757, 0.40745), d65 = xyz_from_chromaticity(0.3127, 0.3290);
-    const std::pair<Adaptation, Eigen::Matrix3d> methods[] = {
-        {Adaptation::bradford, bradford}, {Adaptation::cat02, cat02}, {Adaptation::von_kries_xyz, Eigen::Matrix3d::Identity()}};
+    const std::pair<Adaptation, Eigen::Matrix3d> methods[] = {{Adaptation::bradford, bradford},
+                                                              {Adaptation::cat02, cat02},
+                                                              {Adaptation::von_kries_xyz, Eigen::Matrix3d::Identity()}};
     for (const auto& [method, cone] : methods) {
         const Matrix3 m = adaptation_matrix(method, a, d65);
         const Eigen::Matrix3d e = independent(cone, a, d65);
@@ -66,7 +65,8 @@ TEST(ChromaticAdaptation, EveryMethodAgreesWithAnIndependentComputationAndMapsWh
     }
     // The methods differ off the white: a saturated colour lands in different places.
     const XYZ red{0.4, 0.2, 0.02};
-    const XYZ b = adaptation_matrix(Adaptation::bradford, a, d65) * red, c = adaptation_matrix(Adaptation::cat02, a, d65) * red;
+    const XYZ b = adaptation_matrix(Adaptation::bradford, a, d65) * red,
+              c = adaptation_matrix(Adaptation::cat02, a, d65) * red;
     EXPECT_GT(std::abs(b.Z - c.Z) + std::abs(b.X - c.X), 1e-4);
 }
 
@@ -96,7 +96,8 @@ TEST(ColorimetryAdaptation, AdaptedWeightsAreTheMatrixTimesTheUnadaptedOnes) {
                 const Colorimetry adapted = Colorimetry::load(kData, o, i, a);
                 ASSERT_TRUE(adapted.adapted()) << to_string(i);
                 // The adapted white is D65's white under the same observer (the connection white).
-                EXPECT_NEAR(adapted.white().X, d65.X, 1e-12) << to_string(o) << " " << to_string(i) << " " << to_string(a);
+                EXPECT_NEAR(adapted.white().X, d65.X, 1e-12)
+                    << to_string(o) << " " << to_string(i) << " " << to_string(a);
                 EXPECT_NEAR(adapted.white().Y, 1.0, 1e-12);
                 EXPECT_NEAR(adapted.white().Z, d65.Z, 1e-12);
                 // Every weight is M · the unadapted weight, M computed independently from the two whites.
@@ -117,7 +118,8 @@ TEST(ColorimetryAdaptation, AdaptedWeightsAreTheMatrixTimesTheUnadaptedOnes) {
 }
 
 TEST(ColorimetryAdaptation, D65IsNotAdaptedAndKeepsItsWeightsBitForBit) {
-    for (Observer o : {Observer::cie1931_2deg, Observer::cie1964_10deg, Observer::cie2015_2deg, Observer::cie2015_10deg}) {
+    for (Observer o :
+         {Observer::cie1931_2deg, Observer::cie1964_10deg, Observer::cie2015_2deg, Observer::cie2015_10deg}) {
         const Colorimetry none = Colorimetry::load(kData, o, Illuminant::D65, Adaptation::none);
         for (Adaptation a : {Adaptation::bradford, Adaptation::cat02, Adaptation::von_kries_xyz}) {
             const Colorimetry c = Colorimetry::load(kData, o, Illuminant::D65, a);
@@ -137,7 +139,8 @@ TEST(ColorimetryAdaptation, GoldUnderAAgreesWithBradfordToTheNominalD65White) {
     const OcioConfigChoice shipped{kData / "ocio" / "config.ocio", "test"};
     const ColorSpaceConverter rec709 = ColorSpaceConverter::create(shipped);
     const Material gold = load_material(Catalog::load(kData), "Au");
-    const RGB metalfit = ReferenceCurve(gold, Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::A), rec709)(1.0);
+    const RGB metalfit =
+        ReferenceCurve(gold, Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::A), rec709)(1.0);
     const Colorimetry plain = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::A, Adaptation::none);
     const XYZ f0 = ReferenceCurve(gold, plain, rec709).xyz(1.0);
     Eigen::Matrix3d bradford;
@@ -150,8 +153,9 @@ TEST(ColorimetryAdaptation, GoldUnderAAgreesWithBradfordToTheNominalD65White) {
     const RGB nominal = rec709(adapt(f0)) / rec709(adapt(plain.white()));
     double worst = 0.0;
     for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(metalfit[c] - nominal[c]));
-    std::printf("gold under A: metalfit F0 (%.6f, %.6f, %.6f), Bradford to (0.3127, 0.3290): (%.6f, %.6f, %.6f), worst %.2g\n",
-                metalfit.r, metalfit.g, metalfit.b, nominal.r, nominal.g, nominal.b, worst);
+    std::printf(
+        "gold under A: metalfit F0 (%.6f, %.6f, %.6f), Bradford to (0.3127, 0.3290): (%.6f, %.6f, %.6f), worst %.2g\n",
+        metalfit.r, metalfit.g, metalfit.b, nominal.r, nominal.g, nominal.b, worst);
     EXPECT_LT(worst, 1e-4);
     EXPECT_NEAR(metalfit.b, 0.357, 5e-4);  // the figure; 0.200 without adaptation
 }

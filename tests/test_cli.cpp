@@ -4,12 +4,12 @@
 #include "test_support.hpp"
 #include <nlohmann/json.hpp>
 
-#include <filesystem>
-#include <fstream>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
-#include <array>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -20,7 +20,6 @@ using metalfit::test::read_file;
 namespace fs = std::filesystem;
 
 using Result = metalfit::test::CommandResult;
-
 
 class Cli : public ::testing::Test {
 protected:
@@ -158,7 +157,7 @@ TEST_F(Cli, OutputFilesAreWrittenWholeOrNotAtAll) {
     EXPECT_EQ(failing.exit_code, 3);
     EXPECT_EQ(read_file(target), before);
     EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1)  // gold.json (run_command
-        << "a temporary file was left behind";                                          // removes its stdout/stderr)
+        << "a temporary file was left behind";                                           // removes its stdout/stderr)
 }
 
 // --- metalfit fit ---------------------------------------------------------------------------------------------
@@ -186,7 +185,8 @@ TEST_F(Cli, FitJsonRecordHasTheDocumentedShape) {
     for (const auto& m : nlohmann::json::parse(run("models --json").out)) models.push_back(m["id"]);
     ASSERT_FALSE(models.empty());
     ASSERT_EQ(gold["models"].size(), models.size());
-    std::vector<std::string> keys = {"rel_rms", "abs_rms", "max_rel", "max_abs", "de2000_mean", "de2000_max", "albedo_err"};
+    std::vector<std::string> keys = {"rel_rms",     "abs_rms",    "max_rel",   "max_abs",
+                                     "de2000_mean", "de2000_max", "albedo_err"};
     std::sort(keys.begin(), keys.end());  // nlohmann::json iterates keys sorted
     for (const auto& id : models) {
         SCOPED_TRACE(id);
@@ -205,7 +205,8 @@ TEST_F(Cli, FitJsonRecordHasTheDocumentedShape) {
         ASSERT_TRUE(closed.contains("params") != closed.contains("undefined")) << closed.dump();
         if (closed.contains("params")) {
             for (int c = 0; c < 3; ++c)
-                EXPECT_LE(fit["metrics"]["rel_rms"][c].get<double>(), closed["metrics"]["rel_rms"][c].get<double>() + 1e-12);
+                EXPECT_LE(fit["metrics"]["rel_rms"][c].get<double>(),
+                          closed["metrics"]["rel_rms"][c].get<double>() + 1e-12);
         }
     }
     // F0 above 1 is kept by the models whose F0 is a free parameter.
@@ -240,10 +241,37 @@ TEST_F(Cli, UnknownCommandAndMissingMaterialSayWhatIsWrong) {
     EXPECT_FALSE(fs::exists(dir_ / "x"));
 }
 
+// The values of export's options (tools/metalfit/export_options) and the subcommand list (commands.hpp kCommands):
+// one line each, exit 2, the messages they always had.
+TEST_F(Cli, ExportOptionValuesAndTheCommandListSayWhatIsWrong) {
+    const std::string out = " -o '" + (dir_ / "never").string() + "'";
+    const Result format = run("export gold --model schlick --format glsl,nope" + out);
+    EXPECT_EQ(format.exit_code, 2);
+    expect_one_line_error(format,
+                          "unknown export format 'nope' (known: json, glsl, hlsl, mtlx, openpbr, cpp, gltf, or all)");
+    const Result roughness = run("export gold --model schlick --format json --roughness 1.5" + out);
+    EXPECT_EQ(roughness.exit_code, 2);
+    expect_one_line_error(roughness, "--roughness '1.5': expected a number in [0, 1] (OpenPBR's specular_roughness)");
+    const Result gamut = run("export gold --model schlick --format json --gamut wrap" + out);
+    EXPECT_EQ(gamut.exit_code, 2);
+    expect_one_line_error(gamut, "unknown gamut policy 'wrap' (keep, clip or scale)");
+    const Result params = run("export gold --model schlick --format json --params best" + out);
+    EXPECT_EQ(params.exit_code, 2);
+    expect_one_line_error(params, "unknown parameter source 'best' (fit or closed)");
+    const Result prefix = run("export gold --model schlick --format json --id-prefix float" + out);
+    EXPECT_EQ(prefix.exit_code, 2);
+    expect_one_line_error(prefix, "--id-prefix 'float': a C++, GLSL or HLSL keyword");
+    EXPECT_FALSE(fs::exists(dir_ / "never"));
+    const Result command = run("shwo gold");
+    expect_one_line_error(command,
+                          "(commands: list, show, fit, models, bench, export, spaces, report, table; --help for more)");
+}
+
 // --gamut-fit: the record says so, gold's red Schlick F0 ends at 1 (its unconstrained fit is 1.022), the export of
 // the same fit carries it; with --pin F0 it is a usage error.
 TEST_F(Cli, GamutFitHoldsTheCurvesInsideTheUnitInterval) {
-    const Result free = run("fit gold --model schlick --json"), held = run("fit gold --model schlick --gamut-fit --json");
+    const Result free = run("fit gold --model schlick --json"),
+                 held = run("fit gold --model schlick --gamut-fit --json");
     ASSERT_EQ(held.exit_code, 0) << held.err;
     const auto f = nlohmann::json::parse(free.out), h = nlohmann::json::parse(held.out);
     EXPECT_FALSE(f["provenance"].contains("constraints"));
@@ -252,7 +280,8 @@ TEST_F(Cli, GamutFitHoldsTheCurvesInsideTheUnitInterval) {
     EXPECT_LE(h["materials"]["Au"]["models"]["schlick"]["fit"]["params"]["F0"][0].get<double>(), 1.0);
     EXPECT_NEAR(h["materials"]["Au"]["models"]["schlick"]["fit"]["params"]["F0"][0].get<double>(), 1.0, 1e-6);
     EXPECT_NEAR(h["materials"]["Au"]["models"]["schlick"]["fit"]["params"]["F0"][1].get<double>(),
-                f["materials"]["Au"]["models"]["schlick"]["fit"]["params"]["F0"][1].get<double>(), 1e-8);  // inside already
+                f["materials"]["Au"]["models"]["schlick"]["fit"]["params"]["F0"][1].get<double>(),
+                1e-8);  // inside already
     const Result both = run("fit gold --model schlick --gamut-fit --pin F0");
     EXPECT_EQ(both.exit_code, 2);
     expect_one_line_error(both, "--gamut-fit");
@@ -272,7 +301,8 @@ TEST_F(Cli, PinBudgetAndBestExport) {
     for (const char* model : {"schlick", "f82-tint"})
         for (int c = 0; c < 3; ++c) {
             EXPECT_NEAR(p["materials"]["Cu"]["models"][model]["fit"]["params"]["F0"][c].get<double>(),
-                        p["materials"]["Cu"]["F0"][c].get<double>(), 1e-12) << model;
+                        p["materials"]["Cu"]["F0"][c].get<double>(), 1e-12)
+                << model;
             EXPECT_NEAR(p["materials"]["Cu"]["models"][model]["fit"]["err_f0"][c].get<double>(), 0.0, 1e-12);
         }
     const Result bad_pin = run("fit copper --pin tint");
@@ -303,7 +333,8 @@ TEST_F(Cli, PinBudgetAndBestExport) {
     std::ofstream(dir_ / "bench.json") << R"({"schema": "metalfit.bench/1", "rows": [
         {"id": "schlick", "kind": "model", "ratio_scalar": 0.5, "shader_ratio": 0.5},
         {"id": "f82-tint", "kind": "model", "ratio_scalar": 0.1, "shader_ratio": 0.1}]})";
-    const Result costs = run("fit gold --model schlick,f82-tint --budget 5% --costs '" + (dir_ / "bench.json").string() + "' --json");
+    const Result costs =
+        run("fit gold --model schlick,f82-tint --budget 5% --costs '" + (dir_ / "bench.json").string() + "' --json");
     ASSERT_EQ(costs.exit_code, 0) << costs.err;
     const auto cj = nlohmann::json::parse(costs.out);
     EXPECT_EQ(cj["materials"]["Au"]["budget"]["chosen"], "f82-tint");
@@ -344,7 +375,8 @@ TEST_F(Cli, FitSummaryRowsAreTheRecordsWorstChannels) {
     std::string row = "| Zn |", median = "| **median fit** |";
     for (const char* model : {"schlick", "lazanyi-comp", "f82-tint"}) {
         const auto& m = record[model];
-        row += " " + worst(m["fit"]["metrics"]) + " / " + worst(m["closed"].contains("metrics") ? m["closed"]["metrics"] : nlohmann::json()) + " |";
+        row += " " + worst(m["fit"]["metrics"]) + " / " +
+               worst(m["closed"].contains("metrics") ? m["closed"]["metrics"] : nlohmann::json()) + " |";
         median += " " + worst(m["fit"]["metrics"]) + " |";  // one material: the median is its value
     }
     const std::string text = read_file(summary);
@@ -363,7 +395,8 @@ TEST_F(Cli, FitRunsAreByteIdenticalWhateverTheThreads) {
 }
 
 TEST_F(Cli, FitOptionsReachTheRecord) {
-    const Result r = run("fit Al --model f82-tint,schlick --metric abs --weight cosine --nodes 64 --space ACEScg --json");
+    const Result r =
+        run("fit Al --model f82-tint,schlick --metric abs --weight cosine --nodes 64 --space ACEScg --json");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["provenance"]["metric"], "abs");
@@ -427,7 +460,6 @@ TEST_F(Cli, FitOutputIsWrittenWholeOrNotAtAll) {
     EXPECT_FALSE(fs::exists(dir_ / "no"));
 }
 
-
 TEST_F(Cli, DashAsOutputMeansStdout) {
     const Result dash = run("show gold --json -o -");
     ASSERT_EQ(dash.exit_code, 0) << dash.err;
@@ -466,7 +498,7 @@ TEST_F(Cli, SpacesListsTheConfigsSpacesAndRoles) {
     for (const auto& s : j["spaces"]) target[s["name"].get<std::string>()] = s["fit_target"].get<bool>();
     EXPECT_TRUE(target.at("ACEScg"));
     EXPECT_TRUE(target.at("Linear Rec.2020"));
-    EXPECT_FALSE(target.at("Raw"));            // data
+    EXPECT_FALSE(target.at("Raw"));             // data
     EXPECT_FALSE(target.at("sRGB - Texture"));  // not linear
     const Result text = run("spaces");
     EXPECT_NE(text.out.find("  * ACEScg"), std::string::npos) << text.out;
@@ -522,29 +554,33 @@ TEST_F(Cli, SeveralMaterialsPerCall) {
 TEST_F(Cli, HelpShowsEveryDefaultAndTheModelIds) {
     const Result r = run("fit --help");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    for (const char* shown : {"=metalfit", "the convention's, 1931", "the convention's, D65", "=rel", "=uniform", "=128", "f82-tint",
-                              "lazanyi-comp", "conductor-rgb"})
+    for (const char* shown : {"=metalfit", "the convention's, 1931", "the convention's, D65", "=rel", "=uniform",
+                              "=128", "f82-tint", "lazanyi-comp", "conductor-rgb"})
         EXPECT_NE(r.out.find(shown), std::string::npos) << shown << "\n" << r.out;
     const Result e = run("export --help");
     EXPECT_EQ(r.out.find("TEXT=[]"), std::string::npos) << r.out;  // no empty default for the materials
-    for (const char* shown : {"=fit", "=keep", "schlick"}) EXPECT_NE(e.out.find(shown), std::string::npos) << shown << "\n" << e.out;
+    for (const char* shown : {"=fit", "=keep", "schlick"})
+        EXPECT_NE(e.out.find(shown), std::string::npos) << shown << "\n" << e.out;
 }
 
 TEST_F(Cli, MaterialxExportsInASpaceMaterialxCannotNameSayIt) {
-    const Result r = run("export Au --model f82-tint --format mtlx,openpbr --space 'Linear Rec.2020' -o '" + (dir_ / "x").string() + "'");
+    const Result r = run("export Au --model f82-tint --format mtlx,openpbr --space 'Linear Rec.2020' -o '" +
+                         (dir_ / "x").string() + "'");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.err.find("warning: WARNING: colours are in Linear Rec.2020"), std::string::npos) << r.err;
-    for (const fs::path& file : {dir_ / "x" / "mtlx" / "metalfit_au_f82_tint.mtlx", dir_ / "x" / "openpbr" / "metalfit_au_f82_tint.mtlx"}) {
+    for (const fs::path& file :
+         {dir_ / "x" / "mtlx" / "metalfit_au_f82_tint.mtlx", dir_ / "x" / "openpbr" / "metalfit_au_f82_tint.mtlx"}) {
         const std::string text = read_file(file);
         EXPECT_NE(text.find("WARNING: colours are in Linear Rec.2020"), std::string::npos) << file;
         EXPECT_EQ(text.find("colorspace="), std::string::npos) << file;
     }
-    const Result tagged = run("export Au --model f82-tint --format mtlx --space lin_ap1 -o '" + (dir_ / "y").string() + "'");
+    const Result tagged =
+        run("export Au --model f82-tint --format mtlx --space lin_ap1 -o '" + (dir_ / "y").string() + "'");
     ASSERT_EQ(tagged.exit_code, 0) << tagged.err;
     EXPECT_TRUE(tagged.err.empty()) << tagged.err;
-    EXPECT_NE(read_file(dir_ / "y" / "mtlx" / "metalfit_au_f82_tint.mtlx").find("colorspace=\"acescg\""), std::string::npos);
+    EXPECT_NE(read_file(dir_ / "y" / "mtlx" / "metalfit_au_f82_tint.mtlx").find("colorspace=\"acescg\""),
+              std::string::npos);
 }
-
 
 TEST_F(Cli, ExtrapolationIsNamedInTheRecordShowAndExports) {
     const std::string file = "'" + kFixtures + "/bad-short-range.yml' ";
@@ -558,11 +594,13 @@ TEST_F(Cli, ExtrapolationIsNamedInTheRecordShowAndExports) {
     ASSERT_EQ(show.exit_code, 0) << show.err;
     EXPECT_NE(show.out.find("held        k held at its 400 nm value"), std::string::npos) << show.out;
     EXPECT_EQ(nlohmann::json::parse(run("show " + file + "--extrapolate --json").out)["warnings"].size(), 4u);
-    const Result exported = run("export " + file + "--extrapolate --model schlick --format glsl -o '" + (dir_ / "x").string() + "'");
+    const Result exported =
+        run("export " + file + "--extrapolate --model schlick --format glsl -o '" + (dir_ / "x").string() + "'");
     ASSERT_EQ(exported.exit_code, 0) << exported.err;
     std::string glsl;
     for (const auto& f : fs::recursive_directory_iterator(dir_ / "x"))
-        if (f.path().extension() == ".glsl" && f.path().filename() != "metalfit_models.glsl") glsl += read_file(f.path());
+        if (f.path().extension() == ".glsl" && f.path().filename() != "metalfit_models.glsl")
+            glsl += read_file(f.path());
     EXPECT_NE(glsl.find("DATA WARNING: n held at its 700 nm value over 700–830 nm"), std::string::npos) << glsl;
 }
 
@@ -575,7 +613,9 @@ namespace {
 class CliColour : public ::testing::Test {
 protected:
     // Each test its own scratch folder: ctest runs tests in parallel processes.
-    Result run(const std::string& args) const { return metalfit::test::run_command(METALFIT_EXE, args, scratch_.path(), "OCIO="); }
+    Result run(const std::string& args) const {
+        return metalfit::test::run_command(METALFIT_EXE, args, scratch_.path(), "OCIO=");
+    }
     metalfit::test::TempDir scratch_;
 };
 
@@ -630,9 +670,9 @@ TEST_F(CliColour, HeadersAndTextNameAdaptationAndConvention) {
 
 TEST_F(CliColour, HelpShowsEveryDefaultAndBadValuesAreUsageErrors) {
     const Result help = run("show --help");
-    for (const char* text : {"--convention", "(default: metalfit)", "--cmf", "2015-2", "(default: the convention's, 1931)",
-                             "--illuminant", "(default: the convention's, D65)", "--adaptation", "(default: the convention's, bradford)",
-                             "(default: linear)"})
+    for (const char* text : {"--convention", "(default: metalfit)", "--cmf", "2015-2",
+                             "(default: the convention's, 1931)", "--illuminant", "(default: the convention's, D65)",
+                             "--adaptation", "(default: the convention's, bradford)", "(default: linear)"})
         EXPECT_TRUE(metalfit::test::Contains(help.out, text)) << text;
     for (const char* args : {"show Au --illuminant D3000", "show Au --illuminant F2", "show Au --cmf 2012",
                              "show Au --adaptation vonkries", "show Au --convention aces"}) {
@@ -822,7 +862,8 @@ TEST_F(Cli, TablePhysicallyBasedHoldsBothSpacesAndNkThatGiveBackF0AndF82) {
         return c;
     };
     const auto inverse = [](const M3& a) {
-        const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+        const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                           a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
                            a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
         M3 c{};
         for (int i = 0; i < 3; ++i)
@@ -858,9 +899,9 @@ TEST_F(Cli, TablePhysicallyBasedHoldsBothSpacesAndNkThatGiveBackF0AndF82) {
     };
     const auto from = lms(d65), to = lms(aces_white);
     const M3 gain{{{to[0] / from[0], 0, 0}, {0, to[1] / from[1], 0}, {0, 0, to[2] / from[2]}}};
-    const M3 rec709_to_acescg =
-        mul(inverse(rgb_to_xyz({{{0.713, 0.293}, {0.165, 0.830}, {0.128, 0.044}}}, aces_white)),
-            mul(mul(inverse(bradford), mul(gain, bradford)), rgb_to_xyz({{{0.64, 0.33}, {0.30, 0.60}, {0.15, 0.06}}}, d65)));
+    const M3 rec709_to_acescg = mul(inverse(rgb_to_xyz({{{0.713, 0.293}, {0.165, 0.830}, {0.128, 0.044}}}, aces_white)),
+                                    mul(mul(inverse(bradford), mul(gain, bradford)),
+                                        rgb_to_xyz({{{0.64, 0.33}, {0.30, 0.60}, {0.15, 0.06}}}, d65)));
     int matched_82 = 0, bound_channels = 0;
     for (std::size_t i = 0; i < doc["data"].size(); ++i) {
         const auto& m = doc["data"][i];
@@ -870,7 +911,8 @@ TEST_F(Cli, TablePhysicallyBasedHoldsBothSpacesAndNkThatGiveBackF0AndF82) {
             // Not exact: R_c divides by each space's RGB of the colorimetry's white (reference_curve), whose
             // chromaticity is the nominal D65's to about 1e-5 (at most 2.1e-5, gold's red); without the adaptation
             // the matrix is off by up to 0.078.
-            EXPECT_NEAR(m["color"][1]["color"][c].get<double>(), expected, 5e-5) << m["name"] << " ACEScg channel " << c;
+            EXPECT_NEAR(m["color"][1]["color"][c].get<double>(), expected, 5e-5)
+                << m["name"] << " ACEScg channel " << c;
         }
         EXPECT_EQ(m["name"], rec709["materials"][i]["name"]);
         EXPECT_EQ(m["category"], nlohmann::json::array({"Metal"}));
@@ -890,7 +932,8 @@ TEST_F(Cli, TablePhysicallyBasedHoldsBothSpacesAndNkThatGiveBackF0AndF82) {
                 EXPECT_NEAR(f0, table["F0"]["linear"][c].get<double>(), 1e-12) << where;
                 EXPECT_NEAR(tint, table["F82_tint"]["linear"][c].get<double>(), 1e-12) << where;
                 const double r = std::clamp(f0, 0.0, 0.99999);  // Gulbrandsen's r; F0 kept as it is in color
-                EXPECT_NEAR(((n - 1) * (n - 1) + k * k) / ((n + 1) * (n + 1) + k * k), r, 1e-9 * std::max(1.0, n)) << where;
+                EXPECT_NEAR(((n - 1) * (n - 1) + k * k) / ((n + 1) * (n + 1) + k * k), r, 1e-9 * std::max(1.0, n))
+                    << where;
                 EXPECT_GE(g, 0.0);
                 EXPECT_LE(g, 1.0);
                 if (r != f0 || g <= 0.0 || g >= 1.0) {

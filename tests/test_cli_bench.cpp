@@ -5,7 +5,6 @@
 
 #include <sys/stat.h>
 
-
 #include <nlohmann/json.hpp>
 
 #include "libfit/models/model.hpp"
@@ -20,7 +19,9 @@ using nlohmann::json;
 
 using Result = metalfit::test::CommandResult;
 
-Result run(const TempDir& dir, const std::string& args) { return metalfit::test::run_command(METALFIT_EXE, args, dir.path()); }
+Result run(const TempDir& dir, const std::string& args) {
+    return metalfit::test::run_command(METALFIT_EXE, args, dir.path());
+}
 
 void expect_number(const json& j, const char* key) { EXPECT_TRUE(j.at(key).is_number()) << key << " in " << j.dump(); }
 void expect_number_or_null(const json& j, const char* key) {
@@ -41,14 +42,16 @@ esac
     chmod(fake.c_str(), 0755);
     const auto page = dir.write("page.md", std::string("old\n") + metalfit::bench::kReadingBegin + "\nMy reading.\n" +
                                                metalfit::bench::kReadingEnd + "\n");
-    const Result r = run(dir, "bench --quick --json --glpreview '" + fake.string() + "' --markdown '" + page.string() + "'");
+    const Result r =
+        run(dir, "bench --quick --json --glpreview '" + fake.string() + "' --markdown '" + page.string() + "'");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const json j = json::parse(r.out);
     EXPECT_EQ(j.at("schema"), "metalfit.bench/1");
     EXPECT_EQ(j.at("quick"), true);
     EXPECT_EQ(j.at("material"), "Au");
     EXPECT_EQ(j.at("catalog_materials"), metalfit::test::catalog_material_count());
-    for (const char* key : {"cpu", "os", "compiler", "build_type"}) EXPECT_TRUE(j.at("machine").at(key).is_string()) << key;
+    for (const char* key : {"cpu", "os", "compiler", "build_type"})
+        EXPECT_TRUE(j.at("machine").at(key).is_string()) << key;
     EXPECT_TRUE(j.at("machine").at("cores").is_number_integer());
 
     const json& rows = j.at("rows");
@@ -94,7 +97,8 @@ esac
     EXPECT_EQ(gpu.at("shaders").at("result").at("renderer"), "fake");
     EXPECT_TRUE(gpu.at("shaders").at("skipped").is_null());
     EXPECT_TRUE(gpu.at("localization").at("result").is_null());
-    EXPECT_EQ(gpu.at("localization").at("skipped"), "glpreview --bench-localization failed (exit 3): glpreview: localization not built");
+    EXPECT_EQ(gpu.at("localization").at("skipped"),
+              "glpreview --bench-localization failed (exit 3): glpreview: localization not built");
     EXPECT_EQ(j.at("convergence").at("rows").size(), 7u);
     EXPECT_EQ(j.at("thesis_table_3_2").size(), 3u);
 

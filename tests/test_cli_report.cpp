@@ -56,7 +56,8 @@ void expect_same_numbers_as_the_fit_record(const Json& report, const Json& recor
 
 TEST_F(Report, NumbersAreTheFitRecordsForTheSameOptions) {
     const fs::path dir = tmp_.path() / "r";
-    for (const std::string& options : {std::string(""), std::string(" --space ACEScg --weight cosine --metric abs --nodes 64")}) {
+    for (const std::string& options :
+         {std::string(""), std::string(" --space ACEScg --weight cosine --metric abs --nodes 64")}) {
         const auto r = run("report Au,Zn --renders off -o '" + dir.string() + "'" + options);
         ASSERT_EQ(r.exit_code, 0) << r.err;
         const Json report = report_json(dir);
@@ -106,7 +107,8 @@ TEST_F(Report, CurvesAgreeWithIndependentForms) {
     for (int ch = 0; ch < 3; ++ch) {
         double lo = 1e9, hi = -1e9;
         for (const Json& s : sources)
-            if (s.contains("F0")) lo = std::min(lo, s["F0"][ch].get<double>()), hi = std::max(hi, s["F0"][ch].get<double>());
+            if (s.contains("F0"))
+                lo = std::min(lo, s["F0"][ch].get<double>()), hi = std::max(hi, s["F0"][ch].get<double>());
         EXPECT_DOUBLE_EQ(m["data_sources"]["spread"]["F0"][ch].get<double>(), hi - lo);
     }
     EXPECT_EQ(sources[0]["F0"], show["F0"]);
@@ -148,8 +150,9 @@ TEST_F(Report, RerunsAreByteIdenticalAndNameNoPathOfThisMachine) {
     ASSERT_EQ(run("report Au,Cu --renders off -o '" + b.string() + "'").exit_code, 0);
     const auto files = files_below(a);
     ASSERT_EQ(files, files_below(b));
-    for (const char* expected : {"index.html", "materials/Au.html", "materials/Cu.html", "report.json", "assets/report-data.js",
-                                 "assets/vega.min.js", "assets/vega-lite.min.js", "assets/vega-embed.min.js", "assets/report.js"})
+    for (const char* expected :
+         {"index.html", "materials/Au.html", "materials/Cu.html", "report.json", "assets/report-data.js",
+          "assets/vega.min.js", "assets/vega-lite.min.js", "assets/vega-embed.min.js", "assets/report.js"})
         EXPECT_TRUE(std::find(files.begin(), files.end(), fs::path(expected)) != files.end()) << expected;
     for (const fs::path& f : files) EXPECT_EQ(read_file(a / f), read_file(b / f)) << f;
     const std::string json = read_file(a / "report.json");
@@ -170,7 +173,8 @@ TEST_F(Report, FailAboveListsEveryChannelAboveTheLimitAndExitsWith6) {
         for (const auto& [model, result] : record["materials"][material]["models"].items())
             for (int c = 0; c < 3; ++c)
                 if (result["fit"]["metrics"]["rel_rms"][c].get<double>() > 0.01)
-                    expected.insert(std::string(material) + ": " + model + ": " + std::array{"red", "green", "blue"}[c]);
+                    expected.insert(std::string(material) + ": " + model + ": " +
+                                    std::array{"red", "green", "blue"}[c]);
     }
     ASSERT_FALSE(expected.empty());
     std::set<std::string> listed;
@@ -186,7 +190,8 @@ TEST_F(Report, FailAboveListsEveryChannelAboveTheLimitAndExitsWith6) {
 
     const auto passing = run("report Zn --model gulbrandsen --renders off --fail-above 0.5% -o '" + dir.string() + "'");
     EXPECT_EQ(passing.exit_code, 0) << passing.err;
-    EXPECT_EQ(run("report Zn --renders off --fail-above 5 -o '" + dir.string() + "'").exit_code, 0) << "a fraction, not %";
+    EXPECT_EQ(run("report Zn --renders off --fail-above 5 -o '" + dir.string() + "'").exit_code, 0)
+        << "a fraction, not %";
     const auto bad = run("report Zn --fail-above lots -o '" + dir.string() + "'");
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_TRUE(metalfit::test::Contains(bad.err, "--fail-above"));
@@ -213,7 +218,6 @@ TEST_F(Report, FailuresAreOneLineWithTheirExitCodeAndLeaveNothing) {
     EXPECT_EQ(entries(), 1u) << "only the file made above";
     EXPECT_EQ(read_file(tmp_.path() / "file"), "x");
 }
-
 
 // The PNG's size from its IHDR chunk (bytes 16–23, big-endian).
 std::pair<int, int> png_size(const std::string& png) {
@@ -262,7 +266,9 @@ TEST_F(Report, RendersOneColumnGroupPerModelOfTheReport) {
         EXPECT_EQ(renders["rows"][m["render_row"].get<int>()]["material"], m["id"]);
     // A rerun with renders is byte-identical too (the labelled PNG included).
     const fs::path again = tmp_.path() / "again";
-    ASSERT_EQ(run("report Au,Zn --model f82-tint,schlick,conductor-rgb --renders on -o '" + again.string() + "'").exit_code, 0);
+    ASSERT_EQ(
+        run("report Au,Zn --model f82-tint,schlick,conductor-rgb --renders on -o '" + again.string() + "'").exit_code,
+        0);
     ASSERT_EQ(files_below(dir), files_below(again));
     for (const fs::path& f : files_below(dir)) EXPECT_EQ(read_file(dir / f), read_file(again / f)) << f;
 }
@@ -273,12 +279,14 @@ TEST_F(Report, WithoutGlpreviewTheRendersAreSkippedWithTheReason) {
     fs::create_directories(bin);
     fs::copy_file(METALFIT_EXE, bin / "metalfit");
     const fs::path dir = tmp_.path() / "r";
-    const auto r = metalfit::test::run_command(bin / "metalfit", "report Au --model schlick -o '" + dir.string() + "'", tmp_.path());
+    const auto r = metalfit::test::run_command(bin / "metalfit", "report Au --model schlick -o '" + dir.string() + "'",
+                                               tmp_.path());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(report_json(dir)["renders"]["skipped"], "glpreview was not built beside metalfit");
     EXPECT_FALSE(fs::exists(dir / "assets" / "renders"));
-    const auto on = metalfit::test::run_command(bin / "metalfit", "report Au --model schlick --renders on -o '" + (tmp_.path() / "on").string() + "'",
-                                                tmp_.path());
+    const auto on = metalfit::test::run_command(
+        bin / "metalfit", "report Au --model schlick --renders on -o '" + (tmp_.path() / "on").string() + "'",
+        tmp_.path());
     EXPECT_EQ(on.exit_code, 3) << on.err;
     EXPECT_FALSE(fs::exists(tmp_.path() / "on"));
 }

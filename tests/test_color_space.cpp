@@ -11,10 +11,10 @@
 #include <random>
 #include <vector>
 
+#include "libfit/base/errors.hpp"
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
 #include "libfit/color/display_transform.hpp"
-#include "libfit/base/errors.hpp"
 
 namespace metalfit {
 namespace {
@@ -54,7 +54,7 @@ TEST(ColorSpace, XyzToLinearRec709IsTheMatrixOfThePrimaries) {
     const Eigen::Matrix3d expected = rgb_to_xyz(kRec709, 0.3127, 0.3290).inverse();
     const Eigen::Matrix3d actual = converter_matrix(convert);
     EXPECT_LT((actual - expected).cwiseAbs().maxCoeff(), 1e-5) << "OCIO:\n" << actual << "\nprimaries:\n" << expected;
-    // DESIGN.md: first row 3.2409699, −1.5373832, −0.4986108 (IEC 61966-2-1 derived from its primaries and white).
+    // docs/colour.md, "The shipped config": first row 3.2409699, −1.5373832, −0.4986108 (IEC 61966-2-1 derived from its primaries and white).
     EXPECT_NEAR(actual(0, 0), 3.2409699, 1e-5);
     EXPECT_NEAR(actual(0, 1), -1.5373832, 1e-5);
     EXPECT_NEAR(actual(0, 2), -0.4986108, 1e-5);
@@ -74,7 +74,7 @@ TEST(ColorSpace, PerfectReflectorUnderD65IsWhiteInEverySpace) {
         const RGB rgb = ColorSpaceConverter::create(kShipped, space)(white);
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(rgb[c], 1.0, 1e-3) << space << " channel " << c;
     }
-    // The D65 spectrum is not exactly at (0.3127, 0.3290): the offset DESIGN.md records.
+    // The D65 spectrum is not exactly at (0.3127, 0.3290): the offset docs/colour.md records ("White balance").
     const RGB rec709 = ColorSpaceConverter::create(kShipped)(white);
     EXPECT_NEAR(rec709.r, 1.00016, 2e-5);
     EXPECT_NEAR(rec709.b, 0.99976, 2e-5);
@@ -93,22 +93,26 @@ TEST(ColorSpace, ManyColoursAtOnceAreTheValuesOfOneAtATime) {
     std::uniform_int_distribution<int> exponent(-30, 4);
     std::vector<RGB> colours;
     for (int i = 0; i < 5000; ++i) {
-        if (i % 3 == 0) colours.emplace_back(wide(random), wide(random), wide(random));
-        else if (i % 3 == 1) colours.emplace_back(in_gamut(random), in_gamut(random), in_gamut(random));
-        else colours.emplace_back(std::ldexp(in_gamut(random), exponent(random)), std::ldexp(in_gamut(random), exponent(random)),
-                                  std::ldexp(in_gamut(random), exponent(random)));
+        if (i % 3 == 0)
+            colours.emplace_back(wide(random), wide(random), wide(random));
+        else if (i % 3 == 1)
+            colours.emplace_back(in_gamut(random), in_gamut(random), in_gamut(random));
+        else
+            colours.emplace_back(std::ldexp(in_gamut(random), exponent(random)),
+                                 std::ldexp(in_gamut(random), exponent(random)),
+                                 std::ldexp(in_gamut(random), exponent(random)));
     }
     for (const char* space : {"Linear Rec.709 (sRGB)", "ACEScg", "ACES2065-1", "Linear P3-D65", "Linear Rec.2020"}) {
         const auto convert = ColorSpaceConverter::create(kShipped, space);
-        for (const std::size_t count : {std::size_t{0}, std::size_t{1}, std::size_t{3}, std::size_t{127}, std::size_t{1153},
-                                        colours.size()}) {
+        for (const std::size_t count :
+             {std::size_t{0}, std::size_t{1}, std::size_t{3}, std::size_t{127}, std::size_t{1153}, colours.size()}) {
             const std::vector<XYZ> many = convert.to_xyz(std::span<const RGB>(colours.data(), count));
             ASSERT_EQ(many.size(), count);
             for (std::size_t i = 0; i < count; ++i) {
                 const XYZ one = convert.to_xyz(colours[i]);
-                ASSERT_TRUE(many[i] == one) << space << " count " << count << " colour " << i << ": " << many[i].X << " "
-                                            << many[i].Y << " " << many[i].Z << " against " << one.X << " " << one.Y << " "
-                                            << one.Z;
+                ASSERT_TRUE(many[i] == one)
+                    << space << " count " << count << " colour " << i << ": " << many[i].X << " " << many[i].Y << " "
+                    << many[i].Z << " against " << one.X << " " << one.Y << " " << one.Z;
             }
         }
     }
@@ -166,8 +170,10 @@ TEST(ColorSpace, EnvironmentVariableWinsOverCommandLineOverDefault) {
     ::setenv("OCIO", "/env.ocio", 1);
     EXPECT_EQ(choose_ocio_config(std::filesystem::path("/cli.ocio"), "/data").path, "/env.ocio");
     EXPECT_EQ(choose_ocio_config(std::nullopt, "/data").origin, "$OCIO");
-    if (saved) ::setenv("OCIO", saved_value.c_str(), 1);
-    else ::unsetenv("OCIO");
+    if (saved)
+        ::setenv("OCIO", saved_value.c_str(), 1);
+    else
+        ::unsetenv("OCIO");
 }
 
 // The display's encoding is measured (what glpreview's PNG chunks say): the shipped sRGB display is the sRGB curve on
@@ -197,7 +203,8 @@ TEST(DisplayTransform, TheDisplaysEncodingIsMeasuredThroughOcio) {
     std::string no_role = text;
     const std::string role = "  cie_xyz_d65_interchange: CIE-XYZ-D65\n";
     no_role.erase(no_role.find(role), role.size());
-    const DisplayEncoding unmeasured = DisplayTransform::create({write_temp_config("no-role.ocio", no_role), "test"}).encoding();
+    const DisplayEncoding unmeasured =
+        DisplayTransform::create({write_temp_config("no-role.ocio", no_role), "test"}).encoding();
     EXPECT_EQ(unmeasured.kind, DisplayEncoding::Kind::other);
     EXPECT_NE(unmeasured.why.find("cie_xyz_d65_interchange"), std::string::npos) << unmeasured.why;
     std::filesystem::remove_all(std::filesystem::temp_directory_path() / "metalfit-test-ocio");

@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "libfit/color/colorimetry.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/color/colorimetry.hpp"
 
 namespace metalfit {
 namespace {

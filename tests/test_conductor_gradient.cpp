@@ -59,7 +59,8 @@ void expect_autodiff(const std::vector<std::array<double, 2>>& sets) {
             // difference of O(1) terms, rounded by ~10⁻¹⁶ absolute (in any order of the terms): where |t| is small
             // (a dielectric-like k ≈ 0 near t = 0) that is a relative 10⁻¹⁶/|t| the long-double reference lacks.
             const double n = M::kId == models::ConductorRgb::kId ? p[0] : models::Gulbrandsen::n_of(p[0], p[1]);
-            const double k2 = M::kId == models::ConductorRgb::kId ? p[1] * p[1] : models::Gulbrandsen::k2_of(p[0], p[1]);
+            const double k2 =
+                M::kId == models::ConductorRgb::kId ? p[1] * p[1] : models::Gulbrandsen::k2_of(p[0], p[1]);
             const double t = n * n - k2 - 1.0 + mu * mu;
             const double tolerance = 1e-12 * std::max(1.0, 1e-3 / mu) + 1e-16 / std::abs(t);
             for (int i = 0; i < 2; ++i) {
@@ -108,7 +109,8 @@ TEST(ConductorFresnelGradient, GulbrandsenTowardsItsUpperBoundAgreesWithJetsToIt
                 if (mu < 1e-3) continue;
                 const std::array<double, 2> p{r, g};
                 double grad[2];
-                const double value = models::Gulbrandsen::evaluate_with_gradient(p.data(), model_math::CurveNode::at(mu), grad);
+                const double value =
+                    models::Gulbrandsen::evaluate_with_gradient(p.data(), model_math::CurveNode::at(mu), grad);
                 EXPECT_EQ(value, models::Gulbrandsen::evaluate(p.data(), mu));
                 const std::array<JL, 2> q{JL(p[0], 0), JL(p[1], 1)};
                 const JL F = models::Gulbrandsen::evaluate(q.data(), JL(mu));
@@ -129,10 +131,13 @@ TEST(ConductorFresnelGradient, EtaOneReflectsNothing) {
         if (mu <= 0.0) continue;
         double g[2];
         const std::array<double, 2> conductor{1.0, 0.0};
-        EXPECT_EQ(models::ConductorRgb::evaluate_with_gradient(conductor.data(), model_math::CurveNode::at(mu), g), 0.0);
+        EXPECT_EQ(models::ConductorRgb::evaluate_with_gradient(conductor.data(), model_math::CurveNode::at(mu), g),
+                  0.0);
         for (double d : g) EXPECT_LE(std::abs(d), 1e-14 / (mu * mu)) << "mu=" << mu;
         const std::array<double, 2> gulbrandsen{0.0, 0.4};
-        EXPECT_LE(std::abs(models::Gulbrandsen::evaluate_with_gradient(gulbrandsen.data(), model_math::CurveNode::at(mu), g)), 1e-30);
+        EXPECT_LE(
+            std::abs(models::Gulbrandsen::evaluate_with_gradient(gulbrandsen.data(), model_math::CurveNode::at(mu), g)),
+            1e-30);
         for (double d : g) EXPECT_LE(std::abs(d), 1e-14 / (mu * mu)) << "mu=" << mu;
     }
 }
@@ -168,8 +173,8 @@ void expect_finite_differences(const std::vector<std::array<double, 2>>& sets) {
                 const double rounding = 1e-17 / static_cast<double>(h);
                 const double error = std::max(0.0, std::abs(g[i] - fd) - rounding) / scale;
                 worst = std::max(worst, std::abs(g[i] - fd) / scale);
-                EXPECT_LE(error, 1e-9) << M::kId << " d/d" << M::kParameters[i].name << " p=(" << p[0] << ", "
-                                       << p[1] << ") mu=" << mu << ": " << g[i] << " against " << fd;
+                EXPECT_LE(error, 1e-9) << M::kId << " d/d" << M::kParameters[i].name << " p=(" << p[0] << ", " << p[1]
+                                       << ") mu=" << mu << ": " << g[i] << " against " << fd;
                 ++checked;
             }
         }

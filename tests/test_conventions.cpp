@@ -54,7 +54,8 @@ TEST(Convention, AdobeRowsAreReproducedToTheFloatPrecisionOfOcio) {
     // per value (3.2e-7 at most over these rows): the 9th figure cannot be reached through OCIO, the 7th is.
     double worst = 0.0;
     for (const PublishedRow& row : kAdobeRows) {
-        const ReferenceCurve curve = convention_curve(Convention::adobe, row.material, row.source, "Linear Rec.709 (sRGB)");
+        const ReferenceCurve curve =
+            convention_curve(Convention::adobe, row.material, row.source, "Linear Rec.709 (sRGB)");
         const RGB f0 = curve(1.0), f82 = curve(kMuF82);
         for (int c = 0; c < 3; ++c) {
             worst = std::max({worst, std::abs(f0[c] - row.F0[c]), std::abs(f82[c] - row.F82[c])});
@@ -72,7 +73,8 @@ TEST(Convention, AdobesAluminiumRowDiffersByItsRoundedDataFile) {
     const RGB published_f0{0.915739619, 0.922626758, 0.923635124}, published_f82{0.867857051, 0.897562137, 0.920194734};
     double worst = 0.0;
     for (int c = 0; c < 3; ++c)
-        worst = std::max({worst, std::abs(curve(1.0)[c] - published_f0[c]), std::abs(curve(kMuF82)[c] - published_f82[c])});
+        worst =
+            std::max({worst, std::abs(curve(1.0)[c] - published_f0[c]), std::abs(curve(kMuF82)[c] - published_f82[c])});
     std::printf("adobe Al (Cheng): worst |metalfit - published|, F0 and F82: %.2g\n", worst);
     EXPECT_LT(worst, 3e-5);
     EXPECT_GT(worst, 1e-6);  // the difference is the data file's, not float precision
@@ -97,11 +99,14 @@ const PrintedRow kPhysicallyBasedRows[] = {
 
 TEST(Convention, PhysicallyBasedRowsAreReproducedToTheirPrintedRounding) {
     for (const PrintedRow& row : kPhysicallyBasedRows) {
-        const RGB srgb = convention_curve(Convention::physicallybased, row.material, row.source, "Linear Rec.709 (sRGB)")(1.0);
+        const RGB srgb =
+            convention_curve(Convention::physicallybased, row.material, row.source, "Linear Rec.709 (sRGB)")(1.0);
         const RGB aces = convention_curve(Convention::physicallybased, row.material, row.source, "ACEScg")(1.0);
         for (int c = 0; c < 3; ++c) {
-            EXPECT_EQ(printed(srgb[c]), row.srgb_linear[c]) << row.material << " srgb-linear " << kChannelNames[c] << " " << srgb[c];
-            EXPECT_EQ(printed(aces[c]), row.acescg[c]) << row.material << " acescg " << kChannelNames[c] << " " << aces[c];
+            EXPECT_EQ(printed(srgb[c]), row.srgb_linear[c])
+                << row.material << " srgb-linear " << kChannelNames[c] << " " << srgb[c];
+            EXPECT_EQ(printed(aces[c]), row.acescg[c])
+                << row.material << " acescg " << kChannelNames[c] << " " << aces[c];
         }
     }
     // The metalfit convention (D65 adapted through OCIO to the ACES white) misses the ACEScg rows: copper's red by 4e-4.

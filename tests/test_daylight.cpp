@@ -50,13 +50,14 @@ TEST(Daylight, TabulatedD65AndD50AreReproducedOnlyWithTheC2Correction) {
         // (data/cie/SOURCES.md: 8.2e-6 for D65 and 4.9e-6 for D50 at the 5 nm points).
         const auto corrected = daylight_spectrum(basis(), daylight_coefficients(c.nominal * kDaylightC2Correction));
         const auto integer = daylight_spectrum(basis(), daylight_coefficients(c.integer_kelvin));
-        const auto unrounded =
-            daylight_spectrum(basis(), daylight_coefficients(c.nominal * kDaylightC2Correction, DaylightRounding::unrounded));
+        const auto unrounded = daylight_spectrum(
+            basis(), daylight_coefficients(c.nominal * kDaylightC2Correction, DaylightRounding::unrounded));
         // The figures of docs/colour.md.
         std::printf("%s: T = nominal x 1.4388/1.4380: max rel. difference %.2g (5 nm), %.2g (1 nm); T = %.0f K: %.2g; "
                     "M1, M2 unrounded: %.2g\n",
-                    c.table.name().c_str(), max_relative_difference(corrected, table, 5), max_relative_difference(corrected, table, 1),
-                    c.integer_kelvin, max_relative_difference(integer, table, 5), max_relative_difference(unrounded, table, 5));
+                    c.table.name().c_str(), max_relative_difference(corrected, table, 5),
+                    max_relative_difference(corrected, table, 1), c.integer_kelvin,
+                    max_relative_difference(integer, table, 5), max_relative_difference(unrounded, table, 5));
         EXPECT_LT(max_relative_difference(corrected, table, 5), 8.5e-6) << c.table.name();
         EXPECT_LT(max_relative_difference(corrected, table, 1), 9e-6) << c.table.name();
         // T rounded to whole kelvin first: M₁ (D65) or M₂ (D50) lands on the other side of a rounding boundary.
@@ -91,7 +92,8 @@ TEST(Illuminant, NamesParseToTablesOrDaylight) {
     EXPECT_EQ(d60.kind(), Illuminant::Kind::daylight);
     EXPECT_DOUBLE_EQ(d60.kelvin(), 6000.0 * 1.4388 / 1.4380);
     EXPECT_DOUBLE_EQ(Illuminant::parse("D6500").kelvin(), 6500.0);  // kelvin as written
-    for (const char* bad : {"D", "D6", "D650", "D3000", "D30000", "d65", "F2", "D65x"}) EXPECT_THROW(Illuminant::parse(bad), UsageError) << bad;
+    for (const char* bad : {"D", "D6", "D650", "D3000", "D30000", "d65", "F2", "D65x"})
+        EXPECT_THROW(Illuminant::parse(bad), UsageError) << bad;
 }
 
 TEST(Illuminant, DaylightWhitePointsMatchTheCie) {
@@ -101,8 +103,10 @@ TEST(Illuminant, DaylightWhitePointsMatchTheCie) {
         const char* name;
         double x, y;
     };
-    for (const Case& c : {Case{"D55", 0.33242, 0.34743}, Case{"D75", 0.29902, 0.31485}, Case{"D6000", 0.32168, 0.33767}}) {
-        const XYZ w = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::parse(c.name), Adaptation::none).white();
+    for (const Case& c :
+         {Case{"D55", 0.33242, 0.34743}, Case{"D75", 0.29902, 0.31485}, Case{"D6000", 0.32168, 0.33767}}) {
+        const XYZ w =
+            Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::parse(c.name), Adaptation::none).white();
         EXPECT_NEAR(w.X / (w.X + w.Y + w.Z), c.x, 6e-5) << c.name;
         EXPECT_NEAR(w.Y / (w.X + w.Y + w.Z), c.y, 6e-5) << c.name;
     }

@@ -13,12 +13,12 @@
 #include <sstream>
 #include <thread>
 
-#include "libfit/io/catalog.hpp"
+#include "libfit/base/quadrature.hpp"
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
 #include "libfit/export/export.hpp"
+#include "libfit/io/catalog.hpp"
 #include "libfit/models/model.hpp"
-#include "libfit/base/quadrature.hpp"
 #include "libfit/reference/reference_curve.hpp"
 #include "test_support.hpp"
 
@@ -32,7 +32,9 @@ using metalfit::test::TempDir;
 using Result = metalfit::test::CommandResult;
 
 // Runs the real metalfit with `args` (shell-quoted), OCIO unset.
-Result run(const std::string& args, const fs::path& scratch) { return metalfit::test::run_command(METALFIT_EXE, args, scratch); }
+Result run(const std::string& args, const fs::path& scratch) {
+    return metalfit::test::run_command(METALFIT_EXE, args, scratch);
+}
 
 std::vector<fs::path> files_with_extension(const fs::path& dir, const std::string& ext) {
     std::vector<fs::path> files;
@@ -60,15 +62,18 @@ struct NodeDef {
 // Every <nodedef> of the MaterialX definition files copied into tests/fixtures/materialx (see its SOURCES.md).
 std::multimap<std::string, NodeDef> materialx_nodedefs() {
     std::multimap<std::string, NodeDef> defs;
-    for (const char* file : {"stdlib_defs.mtlx", "pbrlib_defs.mtlx", "open_pbr_surface.mtlx", "standard_surface.mtlx"}) {
+    for (const char* file :
+         {"stdlib_defs.mtlx", "pbrlib_defs.mtlx", "open_pbr_surface.mtlx", "standard_surface.mtlx"}) {
         pugi::xml_document doc;
         const fs::path path = metalfit::test::kFixtures / "materialx" / file;
         const pugi::xml_parse_result parsed = doc.load_file(path.c_str());
         EXPECT_TRUE(parsed) << path << ": " << parsed.description();
         for (pugi::xml_node nd : doc.child("materialx").children("nodedef")) {
             NodeDef d;
-            for (pugi::xml_node in : nd.children("input")) d.inputs[in.attribute("name").value()] = in.attribute("type").value();
-            for (pugi::xml_node o : nd.children("output")) d.outputs[o.attribute("name").value()] = o.attribute("type").value();
+            for (pugi::xml_node in : nd.children("input"))
+                d.inputs[in.attribute("name").value()] = in.attribute("type").value();
+            for (pugi::xml_node o : nd.children("output"))
+                d.outputs[o.attribute("name").value()] = o.attribute("type").value();
             defs.emplace(nd.attribute("node").value(), std::move(d));
         }
     }
@@ -80,7 +85,8 @@ std::string node_type(const NodeDef& d) { return d.outputs.size() == 1 ? d.outpu
 
 // Errors of one document: empty when every node is a known category whose nodedef (one with the node's type) has
 // each input by name and type, and every connection names an existing node and output of the right type.
-std::vector<std::string> materialx_errors(const pugi::xml_document& doc, const std::multimap<std::string, NodeDef>& defs) {
+std::vector<std::string> materialx_errors(const pugi::xml_document& doc,
+                                          const std::multimap<std::string, NodeDef>& defs) {
     std::vector<std::string> errors;
     const pugi::xml_node root = doc.child("materialx");
     if (!root) return {"no <materialx> root"};
@@ -88,7 +94,8 @@ std::vector<std::string> materialx_errors(const pugi::xml_document& doc, const s
     std::map<std::string, const NodeDef*> nodes;
     for (pugi::xml_node node : root.children()) {
         if (node.type() != pugi::node_element) continue;
-        const std::string category = node.name(), name = node.attribute("name").value(), type = node.attribute("type").value();
+        const std::string category = node.name(), name = node.attribute("name").value(),
+                          type = node.attribute("type").value();
         const auto [first, last] = defs.equal_range(category);
         if (first == last) {
             errors.push_back("unknown node category <" + category + ">");
@@ -104,13 +111,16 @@ std::vector<std::string> materialx_errors(const pugi::xml_document& doc, const s
             }
             if (all) match = &it->second;
         }
-        if (!match) errors.push_back("<" + category + " name=\"" + name + "\" type=\"" + type + "\">: no nodedef has these inputs and types");
+        if (!match)
+            errors.push_back("<" + category + " name=\"" + name + "\" type=\"" + type +
+                             "\">: no nodedef has these inputs and types");
         nodes[name] = match;
     }
     for (pugi::xml_node node : root.children())
         for (pugi::xml_node in : node.children("input")) {
             if (in.attribute("nodename").empty()) {
-                if (in.attribute("value").empty()) errors.push_back(std::string(in.attribute("name").value()) + ": neither value nor nodename");
+                if (in.attribute("value").empty())
+                    errors.push_back(std::string(in.attribute("name").value()) + ": neither value nor nodename");
                 continue;
             }
             const auto source = nodes.find(in.attribute("nodename").value());
@@ -119,11 +129,12 @@ std::vector<std::string> materialx_errors(const pugi::xml_document& doc, const s
                 continue;
             }
             const auto& outputs = source->second->outputs;
-            const std::string output = in.attribute("output").empty() ? outputs.begin()->first : in.attribute("output").value();
+            const std::string output =
+                in.attribute("output").empty() ? outputs.begin()->first : in.attribute("output").value();
             const auto o = outputs.find(output);
             if (o == outputs.end() || o->second != in.attribute("type").value())
-                errors.push_back(std::string("connection ") + in.attribute("nodename").value() + "." + output + " has no output of type " +
-                                 in.attribute("type").value());
+                errors.push_back(std::string("connection ") + in.attribute("nodename").value() + "." + output +
+                                 " has no output of type " + in.attribute("type").value());
         }
     if (!root.child("surfacematerial")) errors.push_back("no surfacematerial");
     return errors;
@@ -137,18 +148,30 @@ TEST(MaterialxDefinitions, TheCheckerRejectsWhatMaterialxLacks) {
         EXPECT_TRUE(doc.load_string(text));
         return materialx_errors(doc, defs);
     };
-    EXPECT_TRUE(errors_of(R"(<materialx version="1.39"><conductor_bsdf name="b" type="BSDF"><input name="ior" type="color3" value="1, 1, 1"/></conductor_bsdf>
+    EXPECT_TRUE(
+        errors_of(
+            R"(<materialx version="1.39"><conductor_bsdf name="b" type="BSDF"><input name="ior" type="color3" value="1, 1, 1"/></conductor_bsdf>
         <surface name="s" type="surfaceshader"><input name="bsdf" type="BSDF" nodename="b"/></surface>
         <surfacematerial name="m" type="material"><input name="surfaceshader" type="surfaceshader" nodename="s"/></surfacematerial></materialx>)")
-                    .empty());
-    EXPECT_FALSE(errors_of(R"(<materialx version="1.39"><conductor_bsdf name="b" type="BSDF"><input name="eta" type="color3" value="1, 1, 1"/></conductor_bsdf>
-        <surfacematerial name="m" type="material"/></materialx>)").empty());  // no input "eta"
-    EXPECT_FALSE(errors_of(R"(<materialx version="1.39"><conductor_bsdf name="b" type="BSDF"><input name="ior" type="float" value="1"/></conductor_bsdf>
-        <surfacematerial name="m" type="material"/></materialx>)").empty());  // ior is a color3
-    EXPECT_FALSE(errors_of(R"(<materialx version="1.39"><lazanyi_bsdf name="b" type="BSDF"/><surfacematerial name="m" type="material"/></materialx>)").empty());
+            .empty());
+    EXPECT_FALSE(
+        errors_of(
+            R"(<materialx version="1.39"><conductor_bsdf name="b" type="BSDF"><input name="eta" type="color3" value="1, 1, 1"/></conductor_bsdf>
+        <surfacematerial name="m" type="material"/></materialx>)")
+            .empty());  // no input "eta"
+    EXPECT_FALSE(
+        errors_of(
+            R"(<materialx version="1.39"><conductor_bsdf name="b" type="BSDF"><input name="ior" type="float" value="1"/></conductor_bsdf>
+        <surfacematerial name="m" type="material"/></materialx>)")
+            .empty());  // ior is a color3
+    EXPECT_FALSE(
+        errors_of(
+            R"(<materialx version="1.39"><lazanyi_bsdf name="b" type="BSDF"/><surfacematerial name="m" type="material"/></materialx>)")
+            .empty());
     EXPECT_FALSE(errors_of(R"(<materialx version="1.39"><artistic_ior name="a" type="multioutput"/>
         <conductor_bsdf name="b" type="BSDF"><input name="ior" type="color3" nodename="a" output="eta"/></conductor_bsdf>
-        <surfacematerial name="m" type="material"/></materialx>)").empty());  // artistic_ior has no output "eta"
+        <surfacematerial name="m" type="material"/></materialx>)")
+                     .empty());  // artistic_ior has no output "eta"
 }
 
 TEST_F(CatalogExport, EveryMaterialxDocumentUsesOnlyDefinedNodesInputsAndTypes) {
@@ -164,8 +187,9 @@ TEST_F(CatalogExport, EveryMaterialxDocumentUsesOnlyDefinedNodesInputsAndTypes) 
         for (const std::string& e : materialx_errors(doc, defs)) ADD_FAILURE() << f << ": " << e;
         for (pugi::xml_node n : doc.child("materialx").children()) categories.insert(n.name());
     }
-    EXPECT_EQ(categories, (std::set<std::string>{"generalized_schlick_bsdf", "conductor_bsdf", "artistic_ior", "surface",
-                                                 "surfacematerial", "open_pbr_surface", "roughness_anisotropy"}));
+    EXPECT_EQ(categories,
+              (std::set<std::string>{"generalized_schlick_bsdf", "conductor_bsdf", "artistic_ior", "surface",
+                                     "surfacematerial", "open_pbr_surface", "roughness_anisotropy"}));
 }
 
 TEST_F(CatalogExport, MaterialxMappingFollowsTheModels) {
@@ -211,7 +235,8 @@ ShaderExport parse_glsl_export(const fs::path& file) {
     if (std::regex_search(text, m, std::regex(R"(export: .* \(([^)]+)\)\n)"))) e.material = m[1];
     if (std::regex_search(text, m, std::regex(R"(// model: (\S+) )"))) e.model = m[1];
     for (const char* key : {"rel_rms", "abs_rms", "max_rel", "max_abs", "albedo_err"})
-        if (std::regex_search(text, m, std::regex(std::string("//   ") + key + R"( += ([^\n]+))"))) e.figures[key] = three(m[1]);
+        if (std::regex_search(text, m, std::regex(std::string("//   ") + key + R"( += ([^\n]+))")))
+            e.figures[key] = three(m[1]);
     const std::regex constant(R"(const vec3 METALFIT_\w+ = vec3\(([^)]+)\);)");
     for (auto it = std::sregex_iterator(text.begin(), text.end(), constant); it != std::sregex_iterator(); ++it)
         e.params.push_back(three((*it)[1]));
@@ -226,7 +251,7 @@ TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
     const Catalog catalog = Catalog::load(data);
     const Colorimetry colorimetry = Colorimetry::load(data, Observer::cie1931_2deg, Illuminant::D65);
     const ColorSpaceConverter converter = ColorSpaceConverter::create(choose_ocio_config(std::nullopt, data));
-    // Own quadrature and grid, not libfit's metrics: the definitions of DESIGN.md, written out here.
+    // Own quadrature and grid, not libfit's metrics: the definitions of docs/fitting.md ("Definitions"), written out here.
     const auto nodes = gauss_legendre_unit(128);
     std::vector<double> grid_mu;
     for (int i = 0; i <= 1024; ++i) grid_mu.push_back(i / 1024.0);
@@ -234,7 +259,8 @@ TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
 
     std::map<std::string, std::vector<ShaderExport>> by_material;
     for (const fs::path& f : files_with_extension(out() / "glsl", ".glsl"))
-        if (f.filename() != "metalfit_models.glsl") by_material[parse_glsl_export(f).material].push_back(parse_glsl_export(f));
+        if (f.filename() != "metalfit_models.glsl")
+            by_material[parse_glsl_export(f).material].push_back(parse_glsl_export(f));
     ASSERT_EQ(by_material.size(), catalog_material_count());
     int checked = 0;
     for (const auto& [id, exports] : by_material) {
@@ -267,8 +293,11 @@ TEST_F(CatalogExport, HeaderErrorFiguresAreReproducedFromTheWrittenConstants) {
                     max_abs = std::max(max_abs, std::abs(d));
                     max_rel = std::max(max_rel, std::abs(d / at_grid[i][c]));
                 }
-                const std::map<std::string, double> mine{{"rel_rms", std::sqrt(rel)}, {"abs_rms", std::sqrt(abs)},
-                                                         {"max_rel", max_rel}, {"max_abs", max_abs}, {"albedo_err", albedo}};
+                const std::map<std::string, double> mine{{"rel_rms", std::sqrt(rel)},
+                                                         {"abs_rms", std::sqrt(abs)},
+                                                         {"max_rel", max_rel},
+                                                         {"max_abs", max_abs},
+                                                         {"albedo_err", albedo}};
                 for (const auto& [key, value] : mine) {
                     ASSERT_TRUE(e.figures.count(key)) << key;
                     const double written = e.figures.at(key)[c];
@@ -286,10 +315,12 @@ TEST_F(CatalogExport, ShaderHeadersStateTheLanguageAndHalfPrecisionSafety) {
     const std::string au_conductor = read_file(out() / "glsl" / "metalfit_au_conductor_rgb.glsl");
     EXPECT_TRUE(metalfit::test::Contains(au_conductor, "GLSL >= 1.30 (tested as 3.30 and 4.50) or GLSL ES 3.00"));
     // Gold's red k (about 1097) squared is beyond half's 65504, and the fit put its n at the lower bound.
-    EXPECT_TRUE(metalfit::test::Contains(au_conductor, "half precision (16-bit float, mediump): NOT safe: k² or 4n²k² of red"));
+    EXPECT_TRUE(
+        metalfit::test::Contains(au_conductor, "half precision (16-bit float, mediump): NOT safe: k² or 4n²k² of red"));
     EXPECT_TRUE(metalfit::test::Contains(au_conductor, "n red = 0.001 is the fit's lower bound"));
     // Gulbrandsen's r = 0.99999 rounds to 1 in half.
-    EXPECT_TRUE(metalfit::test::Contains(read_file(out() / "hlsl" / "metalfit_au_gulbrandsen.hlsl"), "rounds to 1 in half"));
+    EXPECT_TRUE(
+        metalfit::test::Contains(read_file(out() / "hlsl" / "metalfit_au_gulbrandsen.hlsl"), "rounds to 1 in half"));
     const std::string cu_f82 = read_file(out() / "glsl" / "metalfit_cu_f82_tint.glsl");
     EXPECT_TRUE(metalfit::test::Contains(cu_f82, "half precision (16-bit float, mediump): in range"));
     EXPECT_TRUE(metalfit::test::Contains(cu_f82, "#ifndef METALFIT_CU_F82_TINT_GLSL"));
@@ -309,7 +340,9 @@ TEST_F(CatalogExport, MaterialxProvenanceIsTheDocOfTheMaterialAsWellAsTheComment
         while (!comment.empty() && (comment.back() == '\n' || comment.back() == ' ')) comment.pop_back();
         const std::string doc_string = doc.select_node("//surfacematerial").node().attribute("doc").value();
         EXPECT_TRUE(metalfit::test::Contains(doc_string, "data source: ")) << file;
-        EXPECT_EQ(std::regex_replace(doc_string, std::regex("- -"), "--"), std::regex_replace(comment, std::regex("- -"), "--")) << file;
+        EXPECT_EQ(std::regex_replace(doc_string, std::regex("- -"), "--"),
+                  std::regex_replace(comment, std::regex("- -"), "--"))
+            << file;
     }
 }
 
@@ -331,7 +364,9 @@ TEST_F(CatalogExport, EveryDocumentCarriesTheDefaultRoughness) {
     for (const fs::path& f : files_with_extension(out() / "mtlx", ".mtlx"))
         EXPECT_EQ(materialx_roughness(f), metalfit::kDefaultRoughness) << f;
     for (const fs::path& f : files_with_extension(out() / "openpbr", ".json"))
-        EXPECT_EQ(nlohmann::json::parse(read_file(f))["open_pbr_surface"]["specular_roughness"], metalfit::kDefaultRoughness) << f;
+        EXPECT_EQ(nlohmann::json::parse(read_file(f))["open_pbr_surface"]["specular_roughness"],
+                  metalfit::kDefaultRoughness)
+            << f;
     const auto record = nlohmann::json::parse(read_file(out() / "metalfit_export.json"));
     EXPECT_EQ(record["materials"]["Cu"]["models"]["schlick"]["export"]["roughness"], metalfit::kDefaultRoughness);
 }
@@ -339,22 +374,30 @@ TEST_F(CatalogExport, EveryDocumentCarriesTheDefaultRoughness) {
 TEST(ExportRoughness, TheGivenRoughnessIsWrittenInEveryFormatAndBadValuesAreUsageErrors) {
     TempDir tmp;
     const fs::path out = tmp.path() / "out";
-    const Result r = run("export Au --model f82-tint,conductor-rgb,gulbrandsen --format mtlx,openpbr,json --roughness 0.25 -o '" +
-                             out.string() + "'", tmp.path());
+    const Result r =
+        run("export Au --model f82-tint,conductor-rgb,gulbrandsen --format mtlx,openpbr,json --roughness 0.25 -o '" +
+                out.string() + "'",
+            tmp.path());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     for (const char* stem : {"metalfit_au_f82_tint", "metalfit_au_conductor_rgb", "metalfit_au_gulbrandsen"}) {
         EXPECT_EQ(materialx_roughness(out / "mtlx" / (std::string(stem) + ".mtlx")), 0.25) << stem;
-        EXPECT_EQ(nlohmann::json::parse(read_file(out / "openpbr" / (std::string(stem) + ".json")))["open_pbr_surface"]
-                                       ["specular_roughness"], 0.25) << stem;
+        EXPECT_EQ(nlohmann::json::parse(read_file(
+                      out / "openpbr" / (std::string(stem) + ".json")))["open_pbr_surface"]["specular_roughness"],
+                  0.25)
+            << stem;
         pugi::xml_document doc;
         ASSERT_TRUE(doc.load_file((out / "openpbr" / (std::string(stem) + ".mtlx")).c_str()));
-        EXPECT_STREQ(doc.select_node("//open_pbr_surface/input[@name='specular_roughness']").node().attribute("value").value(), "0.25");
+        EXPECT_STREQ(
+            doc.select_node("//open_pbr_surface/input[@name='specular_roughness']").node().attribute("value").value(),
+            "0.25");
     }
-    EXPECT_EQ(nlohmann::json::parse(read_file(out / "metalfit_export.json"))["materials"]["Au"]["models"]["gulbrandsen"]
-                                   ["export"]["roughness"], 0.25);
+    EXPECT_EQ(nlohmann::json::parse(read_file(
+                  out / "metalfit_export.json"))["materials"]["Au"]["models"]["gulbrandsen"]["export"]["roughness"],
+              0.25);
     for (const char* bad : {"1.5", "-0.1", "rough", "nan"}) {
         const Result e = run(std::string("export Au --model schlick --format json --roughness ") + bad + " -o '" +
-                                 (tmp.path() / "bad").string() + "'", tmp.path());
+                                 (tmp.path() / "bad").string() + "'",
+                             tmp.path());
         EXPECT_EQ(e.exit_code, 2) << bad;
         EXPECT_TRUE(metalfit::test::Contains(e.err, "--roughness")) << e.err;
         EXPECT_FALSE(fs::exists(tmp.path() / "bad"));
@@ -374,7 +417,8 @@ TEST_F(CatalogExport, JsonIsTheFitRecordWithTheWrittenParameters) {
     // The GLSL constants are the floats nearest the same numbers, as the shortest text of that float (<= 9 digits).
     const ShaderExport g = parse_glsl_export(out() / "glsl" / "metalfit_au_f82_tint.glsl");
     for (int c = 0; c < 3; ++c)
-        EXPECT_EQ(static_cast<float>(g.params[0][c]), static_cast<float>(au["export"]["params"]["F0"][c].get<double>()));
+        EXPECT_EQ(static_cast<float>(g.params[0][c]),
+                  static_cast<float>(au["export"]["params"]["F0"][c].get<double>()));
     const std::string text = read_file(out() / "glsl" / "metalfit_au_f82_tint.glsl");
     std::smatch m;
     ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(_F0 = vec3\(([-0-9.e]+),)")));
@@ -388,7 +432,9 @@ TEST(ExportGamut, ClipAndScaleWriteInGamutColoursAndTheirOwnErrors) {
     std::map<std::string, nlohmann::json> records;
     for (const char* policy : {"keep", "clip", "scale"}) {
         const fs::path dir = tmp.path() / policy;
-        const Result r = run(std::string("export gold --model f82-tint,schlick --format json --gamut ") + policy + " -o '" + dir.string() + "'", tmp.path());
+        const Result r = run(std::string("export gold --model f82-tint,schlick --format json --gamut ") + policy +
+                                 " -o '" + dir.string() + "'",
+                             tmp.path());
         ASSERT_EQ(r.exit_code, 0) << r.err;
         records[policy] = nlohmann::json::parse(read_file(dir / "metalfit_export.json"))["materials"]["Au"]["models"];
     }
@@ -407,8 +453,10 @@ TEST(ExportGamut, ClipAndScaleWriteInGamutColoursAndTheirOwnErrors) {
         // The figures are those of the written values.
         EXPECT_NE(clip["metrics"]["rel_rms"][0], keep["metrics"]["rel_rms"][0]);
         // Schlick's green is in gamut: clipping leaves it alone (f82-tint's green tint, 1.003, is clipped too).
-        if (std::string(model) == "schlick") EXPECT_EQ(clip["metrics"]["rel_rms"][1], keep["metrics"]["rel_rms"][1]);
-        else EXPECT_NE(clip["metrics"]["rel_rms"][1], keep["metrics"]["rel_rms"][1]);
+        if (std::string(model) == "schlick")
+            EXPECT_EQ(clip["metrics"]["rel_rms"][1], keep["metrics"]["rel_rms"][1]);
+        else
+            EXPECT_NE(clip["metrics"]["rel_rms"][1], keep["metrics"]["rel_rms"][1]);
         EXPECT_NE(scale["metrics"]["rel_rms"][1], keep["metrics"]["rel_rms"][1]);
         EXPECT_EQ(keep["metrics"], records["keep"][model]["fit"]["metrics"]);
     }
@@ -421,10 +469,11 @@ TEST(ExportHlsl, TranslationIsATokenMapping) {
         "// vec3 mix equal stay in comments\nvec3 f(vec3 a, bvec3 b, float mu) { vec3 c = vec3(1e-30) + vec3 (mu); "
         "return mix(a, c, greaterThanEqual(a, c)) + vec3(equal(a, c).x ? 1.0 : 0.0); }\n");
     const std::string body = hlsl.substr(hlsl.find("// vec3 mix"));
-    EXPECT_EQ(body,
-              "// vec3 mix equal stay in comments\nfloat3 f(float3 a, bool3 b, float mu) { float3 c = metalfit_vec3(1e-30) + "
-              "metalfit_vec3 (mu); return metalfit_mix(a, c, metalfit_greaterThanEqual(a, c)) + "
-              "metalfit_vec3(metalfit_equal(a, c).x ? 1.0 : 0.0); }\n");
+    EXPECT_EQ(
+        body,
+        "// vec3 mix equal stay in comments\nfloat3 f(float3 a, bool3 b, float mu) { float3 c = metalfit_vec3(1e-30) + "
+        "metalfit_vec3 (mu); return metalfit_mix(a, c, metalfit_greaterThanEqual(a, c)) + "
+        "metalfit_vec3(metalfit_equal(a, c).x ? 1.0 : 0.0); }\n");
 }
 
 // ---- Failures: one line, non-zero exit, nothing left behind --------------------------------------------------------
@@ -470,20 +519,21 @@ TEST(ExportErrors, AnUnwritableDestinationLeavesNoPartialFiles) {
     EXPECT_EQ(r.exit_code, 3) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     std::vector<std::string> left;
-    for (const auto& e : fs::recursive_directory_iterator(dir)) left.push_back(e.path().lexically_relative(dir).string());
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        left.push_back(e.path().lexically_relative(dir).string());
     EXPECT_EQ(left, std::vector<std::string>{"hlsl"});
 }
 
 TEST(ExportErrors, ClosedParametersThatDoNotExistAreAnErrorNamingTheReason) {
     TempDir tmp;
-    const Result r = run("export Au --model lazanyi-comp --params closed --format glsl -o '" + (tmp.path() / "out").string() + "'",
-                         tmp.path());
+    const Result r =
+        run("export Au --model lazanyi-comp --params closed --format glsl -o '" + (tmp.path() / "out").string() + "'",
+            tmp.path());
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find("no closed form is defined"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(tmp.path() / "out"));
 }
-
 
 TEST(MaterialxColorspace, MatchesTheSpacesNameOrAliasesCaseInsensitively) {
     using metalfit::materialx_colorspace;
@@ -560,7 +610,8 @@ TEST(ExportMerge, ParallelExportsIntoOneNewNestedFolderAllSucceed) {
         runs.emplace_back([&, i] {
             const fs::path scratch = tmp.path() / ("s" + std::to_string(i));
             fs::create_directories(scratch);
-            results[i] = run("export " + materials[i] + " --model f82-tint --format json,cpp -o '" + dir.string() + "'", scratch);
+            results[i] = run("export " + materials[i] + " --model f82-tint --format json,cpp -o '" + dir.string() + "'",
+                             scratch);
         });
     for (auto& t : runs) t.join();
     for (const Result& r : results) EXPECT_EQ(r.exit_code, 0) << r.err;

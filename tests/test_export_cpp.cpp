@@ -37,13 +37,16 @@ TEST(ExportCpp, HeaderFunctionsEvaluateLikeLibfitAtThousandsOfMu) {
             }
         }
     }
-    std::printf("export cpp: worst |header (float) - libfit (double)| = %.3g over 2001 mu, every material and model\n", worst);
+    std::printf("export cpp: worst |header (float) - libfit (double)| = %.3g over 2001 mu, every material and model\n",
+                worst);
 }
 
 // Issue 12 item 3: the exported functions (the GLSL text) are defined at μ a hair outside [0, 1] and give the value at
 // the end of the range (lazanyi-comp was NaN above 1; every model exceeded 1 below 0).
 TEST(ExportCpp, MuOutsideTheUnitIntervalGivesTheEndValue) {
-    const auto same = [](metalfit_shader::vec3 a, metalfit_shader::vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+    const auto same = [](metalfit_shader::vec3 a, metalfit_shader::vec3 b) {
+        return a.x == b.x && a.y == b.y && a.z == b.z;
+    };
     for (const metalfit_materials::Entry& e : metalfit_materials::all) {
         SCOPED_TRACE(std::string(e.material) + " " + e.model);
         const metalfit_shader::vec3 at0 = e.evaluate(0.0f), at1 = e.evaluate(1.0f);

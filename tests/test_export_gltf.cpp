@@ -29,7 +29,7 @@ metalfit::test::CommandResult run(const std::string& args, const fs::path& scrat
     return metalfit::test::run_command(METALFIT_EXE, args, scratch);
 }
 
-// F0 = F(mu = 1) of a model from its written parameters, in the forms the models define it (FORMULAS.md) rather than
+// F0 = F(mu = 1) of a model from its written parameters, in the forms the models define it (docs/fitting.md, "Models") rather than
 // through the models' code: F0 itself, Gulbrandsen's reflectivity r, or the normal-incidence Fresnel of n, k (the
 // compensation term a mu (1 - mu)^alpha of lazanyi-comp vanishes at mu = 1). Empty for the other models.
 std::optional<double> independent_f0(const std::string& model, const Json& params, int c) {
@@ -48,7 +48,8 @@ std::optional<double> independent_f0(const std::string& model, const Json& param
 double libfit_f0(const std::string& model_id, const Json& params, int c) {
     const metalfit::Model& model = metalfit::find_model(model_id);
     metalfit::ChannelParameters channel;
-    for (const auto& parameter : model.parameters()) channel.push_back(params.at(std::string(parameter.name)).at(c).get<double>());
+    for (const auto& parameter : model.parameters())
+        channel.push_back(params.at(std::string(parameter.name)).at(c).get<double>());
     return model.evaluate(std::span<const double>(channel), 1.0);
 }
 
@@ -125,7 +126,8 @@ TEST(ExportGltf, GamutScaleScalesTheColourAndTheRoughnessIsTheOneAsked) {
     TempDir tmp;
     const fs::path out = tmp.path() / "out";
     const auto r = run("export Au --model f82-tint,conductor-rgb --format gltf --gamut scale --roughness 0.25 -o '" +
-                           out.string() + "'", tmp.path());
+                           out.string() + "'",
+                       tmp.path());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     // The catalog export is the same fit, kept: scaling divides its F0 by the largest channel.
     const Json record = Json::parse(read_file(kCatalogExport / "metalfit_export.json"));
@@ -134,7 +136,8 @@ TEST(ExportGltf, GamutScaleScalesTheColourAndTheRoughnessIsTheOneAsked) {
     ASSERT_GT(max, 1.0);
     const Json gltf = Json::parse(read_file(out / "gltf" / "metalfit_au_f82_tint.gltf"));
     const Json& pbr = gltf["materials"][0]["pbrMetallicRoughness"];
-    for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(pbr["baseColorFactor"][c].get<double>(), keep[c].get<double>() / max) << c;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_DOUBLE_EQ(pbr["baseColorFactor"][c].get<double>(), keep[c].get<double>() / max) << c;
     EXPECT_EQ(pbr["roughnessFactor"], 0.25);
     EXPECT_EQ(gltf["materials"][0]["extras"]["metalfit"]["gamut"], "scale");
     // n, k give F0 < 1 at normal incidence: nothing to scale.
@@ -142,7 +145,8 @@ TEST(ExportGltf, GamutScaleScalesTheColourAndTheRoughnessIsTheOneAsked) {
     const Json& nk_params = record["materials"]["Au"]["models"]["conductor-rgb"]["export"]["params"];
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(nk["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"][c].get<double>(),
-                    *independent_f0("conductor-rgb", nk_params, c), 1e-12) << c;
+                    *independent_f0("conductor-rgb", nk_params, c), 1e-12)
+            << c;
     EXPECT_EQ(nk["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"], 0.25);
 }
 
@@ -199,7 +203,8 @@ TEST(ExportGltf, AnotherColourSpaceIsRefusedBeforeAnyWork) {
     const fs::path out = tmp.path() / "out";
     for (const char* formats : {"gltf", "json,gltf"}) {
         const auto r = run(std::string("export Au --model schlick --format ") + formats + " --space ACEScg -o '" +
-                               out.string() + "'", tmp.path());
+                               out.string() + "'",
+                           tmp.path());
         EXPECT_EQ(r.exit_code, 2) << formats << ": " << r.err;
         EXPECT_TRUE(metalfit::test::Contains(r.err, "glTF 2.0's colours are linear Rec.709")) << r.err;
         EXPECT_TRUE(metalfit::test::Contains(r.err, "'ACEScg'")) << r.err;

@@ -23,7 +23,8 @@ constexpr int kMu = 1025;  // μ = i / 1024, both ends included
 // A compute shader: per invocation one (parameter set, μ); parameters as 4 vec4 per set, F written as vec4.
 std::string compute_source(const metalfit::Model& model) {
     std::string call = std::string(model.glsl_function()) + "(";
-    for (std::size_t i = 0; i < model.parameters().size(); ++i) call += "p[4u * set + " + std::to_string(i) + "u].xyz, ";
+    for (std::size_t i = 0; i < model.parameters().size(); ++i)
+        call += "p[4u * set + " + std::to_string(i) + "u].xyz, ";
     call += "mu)";
     return "#version 450\n" + model.glsl_source() +
            "\nlayout(local_size_x = 64) in;\n"
@@ -33,9 +34,15 @@ std::string compute_source(const metalfit::Model& model) {
            "void main() {\n"
            "    uint i = gl_GlobalInvocationID.x;\n"
            "    if (i >= count) return;\n"
-           "    uint set = i / " + std::to_string(kMu) + "u;\n"
-           "    float mu = float(i % " + std::to_string(kMu) + "u) / " + std::to_string(kMu - 1) + ".0;\n"
-           "    f[i] = vec4(" + call + ", 0.0);\n"
+           "    uint set = i / " +
+           std::to_string(kMu) +
+           "u;\n"
+           "    float mu = float(i % " +
+           std::to_string(kMu) + "u) / " + std::to_string(kMu - 1) +
+           ".0;\n"
+           "    f[i] = vec4(" +
+           call +
+           ", 0.0);\n"
            "}\n";
 }
 
@@ -93,7 +100,8 @@ TEST(ExportGlsl, ModelFunctionsOnTheGpuEqualTheCppModels) {
                 }
             }
         std::printf("export GLSL on GL (%s): %s worst |GPU - C++| = %.3g over %d materials x %d mu\n",
-                    context.renderer().c_str(), std::string(model->id()).c_str(), worst, static_cast<int>(sets.size()), kMu);
+                    context.renderer().c_str(), std::string(model->id()).c_str(), worst, static_cast<int>(sets.size()),
+                    kMu);
     }
 }
 

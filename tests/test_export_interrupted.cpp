@@ -44,13 +44,16 @@ void copy_tree(const fs::path& from, const fs::path& to) {
 TEST(ExportInterrupted, AKilledExportLeavesTheOldFolderOrTheNewOne) {
     TempDir tmp;
     const fs::path old_dir = tmp.path() / "old", work = tmp.path() / "work", dir = work / "out";
-    const std::vector<std::string> old_args{"export", "--all", "--model", "f82-tint", "--format", "json,glsl", "-o", old_dir.string()};
+    const std::vector<std::string> old_args{"export",   "--all",     "--model", "f82-tint",
+                                            "--format", "json,glsl", "-o",      old_dir.string()};
     ASSERT_EQ(wait_for(start_export(old_args)), 0);
     const auto old_tree = tree(old_dir);
     // The closed forms: the writing of ~1200 files, which the kills aim at, dominates the run (no Ceres solves, which
     // take minutes under the sanitizers).
-    const std::vector<std::string> new_args{"export", "--all", "--model", "schlick,lazanyi,f82-tint,conductor-rgb,gulbrandsen",
-                                            "--params", "closed", "--format", "all", "-o", dir.string()};
+    const std::vector<std::string> new_args{
+        "export",   "--all",     "--model",  "schlick,lazanyi,f82-tint,conductor-rgb,gulbrandsen",
+        "--params", "closed",    "--format", "all",
+        "-o",       dir.string()};
     fs::create_directories(work);
     copy_tree(old_dir, dir);
     const auto started = std::chrono::steady_clock::now();

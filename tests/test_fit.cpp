@@ -23,19 +23,20 @@
 #include <string>
 #include <vector>
 
-#include "libfit/io/catalog.hpp"
-#include "libfit/color/color_space.hpp"
-#include "libfit/color/colorimetry.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/interleaved_timer.hpp"
+#include "libfit/base/quadrature.hpp"
+#include "libfit/color/color_space.hpp"
+#include "libfit/color/colorimetry.hpp"
 #include "libfit/fit/catalog_summary.hpp"
 #include "libfit/fit/fit.hpp"
 #include "libfit/fit/fit_record.hpp"
-#include "libfit/optics/fresnel.hpp"
-#include "libfit/io/csv.hpp"
 #include "libfit/fit/metrics.hpp"
+#include "libfit/fit/parameter_source.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/io/csv.hpp"
 #include "libfit/models/model.hpp"
-#include "libfit/base/quadrature.hpp"
+#include "libfit/optics/fresnel.hpp"
 #include "libfit/reference/reference_curve.hpp"
 #include "libfit/reference/sampled_reference.hpp"
 
@@ -180,8 +181,8 @@ struct ChannelObjective {
     int operator()(const Eigen::VectorXd& u, Eigen::VectorXd& r) const {
         const ChannelParameters p = parameters(u);
         for (std::size_t i = 0; i < target->mu.size(); ++i) {
-            const double d = target->scale[i] * (model->evaluate(std::span<const double>(p), target->mu[i]) -
-                                                 target->value[i]);
+            const double d =
+                target->scale[i] * (model->evaluate(std::span<const double>(p), target->mu[i]) - target->value[i]);
             r[static_cast<Eigen::Index>(i)] = std::isfinite(d) ? d : 1e6;
         }
         return 0;
@@ -216,7 +217,9 @@ Linear2 box_least_squares(const std::vector<double>& A, const std::vector<double
         AA += A[i] * A[i], AB += A[i] * B[i], BB += B[i] * B[i];
         Ac += A[i] * c[i], Bc += B[i] * c[i], cc += c[i] * c[i];
     }
-    const auto f = [&](double x, double y) { return cc - 2 * (x * Ac + y * Bc) + x * x * AA + 2 * x * y * AB + y * y * BB; };
+    const auto f = [&](double x, double y) {
+        return cc - 2 * (x * Ac + y * Bc) + x * x * AA + 2 * x * y * AB + y * y * BB;
+    };
     Linear2 best;
     const auto consider = [&](double x, double y) {
         const double v = f(x, y);
@@ -309,16 +312,19 @@ Optimum exact_lazanyi_comp(const Model& comp, const ChannelTarget& t, double F0_
     const double g = (std::sqrt(5.0) - 1) / 2;
     for (int it = 0; it < 60; ++it) {
         const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-        if (solve(alpha_at(m1)).value < solve(alpha_at(m2)).value) hi = m2;
-        else lo = m1;
+        if (solve(alpha_at(m1)).value < solve(alpha_at(m2)).value)
+            hi = m2;
+        else
+            lo = m1;
     }
     Optimum o;
     for (double s : {double(best), 0.5 * (lo + hi)}) {
         const double alpha = alpha_at(s);
         const Linear2 x = solve(alpha);
-        o.keep_better({rms_of(t, [&](double mu) { return x.x + (1 - x.x) * w5(mu) - x.y * mu * std::pow(1 - mu, alpha); }),
-                       {x.x, x.y, alpha},
-                       "variable projection: (F0, a, alpha) ="});
+        o.keep_better(
+            {rms_of(t, [&](double mu) { return x.x + (1 - x.x) * w5(mu) - x.y * mu * std::pow(1 - mu, alpha); }),
+             {x.x, x.y, alpha},
+             "variable projection: (F0, a, alpha) ="});
     }
     o.how += " " + params_text(o.params);
     return o;
@@ -351,15 +357,19 @@ Optimum exact_free_compensation(const ChannelTarget& t, const std::vector<double
         const double g = (std::sqrt(5.0) - 1) / 2;
         for (int it = 0; it < 50; ++it) {
             const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-            if (solve(alpha_at(m1)).value < solve(alpha_at(m2)).value) hi = m2;
-            else lo = m1;
+            if (solve(alpha_at(m1)).value < solve(alpha_at(m2)).value)
+                hi = m2;
+            else
+                lo = m1;
         }
         for (double s : {double(best), 0.5 * (lo + hi)}) {
             const double alpha = alpha_at(s);
             const Linear2 x = solve(alpha);
-            o.keep_better({rms_of(t, [&](double mu) {
-                               return x.x + (1 - x.x) * std::pow(1 - mu, power) - x.y * mu * std::pow(1 - mu, alpha);
-                           }),
+            o.keep_better({rms_of(t,
+                                  [&](double mu) {
+                                      return x.x + (1 - x.x) * std::pow(1 - mu, power) -
+                                             x.y * mu * std::pow(1 - mu, alpha);
+                                  }),
                            {x.x, power, x.y, alpha},
                            "variable projection: (F0, p, a, alpha) ="});
         }
@@ -389,10 +399,11 @@ Optimum exact_comp_linear(const Model& model, const ChannelTarget& t) {
     const Eigen::VectorXd x = eigen_least_squares(A, y);
     const ChannelParameters p{x[0], x[1], x[2]};
     if (!within_bounds(model, p)) return {};
-    return {rms_of(t, [&](double mu) {
-                return x[0] + (1 - x[0]) * std::pow(1 - mu, 5.0) - x[1] * mu * std::pow(1 - mu, 4.0) -
-                       x[2] * mu * std::pow(1 - mu, 9.0);
-            }),
+    return {rms_of(t,
+                   [&](double mu) {
+                       return x[0] + (1 - x[0]) * std::pow(1 - mu, 5.0) - x[1] * mu * std::pow(1 - mu, 4.0) -
+                              x[2] * mu * std::pow(1 - mu, 9.0);
+                   }),
             p, "exact linear least squares (Eigen QR) in (F0, b1, b2)"};
 }
 
@@ -429,7 +440,8 @@ std::vector<ChannelParameters> lm_starts(std::string_view id) {
         // F0-equivalent (n, k): n = 1, k = 2 sqrt(F0 / (1 − F0)) for F0 = 0.3, 0.7, 0.95.
         for (double F0 : {0.3, 0.7, 0.95})
             for (double alpha : {0.2, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0})
-                for (double a : {-1.0, -0.3, 0.0, 0.3, 1.0}) s.push_back({1.0, 2.0 * std::sqrt(F0 / (1 - F0)), a, alpha});
+                for (double a : {-1.0, -0.3, 0.0, 0.3, 1.0})
+                    s.push_back({1.0, 2.0 * std::sqrt(F0 / (1 - F0)), a, alpha});
     if (id == "f82-tint")
         for (double F0 : {0.1, 0.5, 0.9, 1.05})
             for (double tint : {0.5, 1.0, 1.5, 3.0}) s.push_back({F0, tint});
@@ -463,8 +475,10 @@ std::vector<ChannelParameters> scan_starts(const Model& model, const ChannelTarg
     for (int i = 0; i <= 24; ++i)
         for (int j = 0; j <= 24; ++j) {
             ChannelParameters p;
-            if (model.id() == "conductor-rgb") p = {0.01 * std::pow(1e3, i / 24.0), 0.05 * std::pow(4e3, j / 24.0)};
-            else p = {1.0 - std::pow(1e-4, (i + 0.5) / 25.0), j / 24.0};
+            if (model.id() == "conductor-rgb")
+                p = {0.01 * std::pow(1e3, i / 24.0), 0.05 * std::pow(4e3, j / 24.0)};
+            else
+                p = {1.0 - std::pow(1e-4, (i + 0.5) / 25.0), j / 24.0};
             p[0] = std::clamp(p[0], b[0].lower, b[0].upper);
             scored.push_back({channel_rms(model, p, t), p});
         }
@@ -479,7 +493,8 @@ Optimum independent_optimum(const Model& model, const ChannelTarget& t) {
         for (const auto& s : scan_starts(model, t)) starts.push_back(s);
     for (const ChannelParameters& s : starts) best.keep_better(eigen_lm(model, t, s));
     const double F0_max = lazanyi_F0_max(find_model("lazanyi"));
-    if (model.id() == "schlick") best.keep_better(exact_schlick(t, model.parameters()[0].lower, model.parameters()[0].upper));
+    if (model.id() == "schlick")
+        best.keep_better(exact_schlick(t, model.parameters()[0].lower, model.parameters()[0].upper));
     if (model.id() == "lazanyi") {
         // Realised in the model's own (n, k): the rms is Model::evaluate's.
         const Optimum e = exact_schlick(t, 0.0, F0_max);
@@ -542,7 +557,8 @@ int expect_independent_optimum(const Fitted& f, const std::string& label, int& o
             if (ours > 1.001 * o.rms + 1e-7)
                 std::printf("  ours worse by %5.2f %%: %-22s %-13s %-5s ours %.6g %s, independent %.6g at %s\n",
                             100 * (ours / o.rms - 1), label.c_str(), std::string(model->id()).c_str(), kChannel[c],
-                            ours, params_text(result.fit.value.params[c]).c_str(), o.rms, params_text(o.params).c_str());
+                            ours, params_text(result.fit.value.params[c]).c_str(), o.rms,
+                            params_text(o.params).c_str());
             if (ours < 0.99 * o.rms - 1e-6) {
                 ++ours_better;
                 std::printf("  ours better: %-22s %-13s %-5s ours %.6g %s, independent %.6g (%s)\n", label.c_str(),
@@ -573,8 +589,8 @@ TEST(FitOptimum, AlternateSourcesMatchAnIndependentOptimum) {
     int checked = 0, ours_better = 0, files = 0;
     for (const CatalogEntry& entry : env().catalog.entries())
         for (const CatalogSource& alternate : entry.alternates) {
-            checked += expect_independent_optimum(fitted(entry.id, alternate.source),
-                                                  entry.id + "/" + alternate.source, ours_better);
+            checked += expect_independent_optimum(fitted(entry.id, alternate.source), entry.id + "/" + alternate.source,
+                                                  ours_better);
             ++files;
         }
     std::printf("  %d alternate files, %d channel fits checked (%d notably better than the independent optimum)\n",
@@ -602,7 +618,7 @@ TEST(FitOptimum, IndependentSolversAgreeWithEachOther) {
     }
 }
 
-// Model::evaluate against the formulas of FORMULAS.md written out here (and libfit's complex-form Fresnel for the
+// Model::evaluate against the formulas of docs/fitting.md ("Models") written out here (and libfit's complex-form Fresnel for the
 // exact families), in double and float.
 TEST(FitOptimum, ModelsEvaluateTheirPublishedFormulas) {
     const auto S = [](double F0, double mu) { return F0 + (1 - F0) * w5(mu); };
@@ -658,7 +674,8 @@ TEST(FitClosedForms, FitIsNeverWorseThanAnyClosedFormForEveryCatalogMetal) {
                     EXPECT_EQ(inside, !Contains(form.outside_bounds, std::string(kChannelNames[c]) + ": "))
                         << what << " closed " << form.id << ": " << form.outside_bounds;
                     if (inside) {
-                        EXPECT_LE(fit[c], closed[c] * (1 + 1e-12)) << what << " closed " << form.id << " " << kChannel[c];
+                        EXPECT_LE(fit[c], closed[c] * (1 + 1e-12))
+                            << what << " closed " << form.id << " " << kChannel[c];
                     } else if (closed[c] < fit[c]) {
                         // Outside the bounds and better: never kept (issue 13 item 11), and the record says so.
                         EXPECT_TRUE(Contains(r.fit.unrepresentable[c], "cannot represent"))
@@ -691,8 +708,8 @@ TEST(FitClosedForms, FitIsNeverWorseThanAnyClosedFormForEveryCatalogMetal) {
 // 3. F0 > 1: gold (Johnson) and copper (McPeak; Johnson's copper has R(1) red = 0.93, inside the gamut).
 
 TEST(FitHardCases, GoldAndCopperKeepTheirOutOfGamutRedF0) {
-    const FitRecordContext context{kShipped, env().converter.space(), Observer::cie1931_2deg, Illuminant::D65,
-                                   SpectralOptions{}, ErrorSettings{}};
+    const FitRecordContext context{kShipped,        env().converter.space(), Observer::cie1931_2deg,
+                                   Illuminant::D65, SpectralOptions{},       ErrorSettings{}};
     for (const auto& [id, source] : {std::pair<std::string, std::string>{"Au", ""}, {"Cu", "McPeak"}}) {
         const Fitted& f = fitted(id, source);
         const RGB F0 = (*f.curve)(1.0);
@@ -872,8 +889,8 @@ TEST(FitHardCases, DivergentCompensationClosedFormsAreReportedNotEmitted) {
                     continue;
                 }
                 EXPECT_TRUE(all_finite(*ch.params)) << id << " " << form.id << " " << kChannel[c];
-                EXPECT_TRUE(within_bounds(comp, *ch.params)) << id << " " << form.id << " " << kChannel[c] << " "
-                                                             << params_text(*ch.params);
+                EXPECT_TRUE(within_bounds(comp, *ch.params))
+                    << id << " " << form.id << " " << kChannel[c] << " " << params_text(*ch.params);
                 EXPECT_GE((*ch.params)[2], bounds[2].lower);
                 EXPECT_LE((*ch.params)[3], bounds[3].upper);
             }
@@ -921,15 +938,16 @@ void expect_single_start_reaches_optimum(std::string_view model_id, const Channe
             EXPECT_TRUE(within_bounds(model, fit.params)) << id << " " << model_id << " " << kChannel[c];
             EXPECT_LE(rms, 1.01 * best + 1e-6)
                 << id << " " << model_id << " " << kChannel[c] << " from " << params_text(start) << ": reached " << rms
-                << " at " << params_text(fit.params) << " (" << fit.solver.termination << ", "
-                << fit.solver.iterations << " iterations), fit_model " << best << " at "
-                << params_text(f.result(model_id).fit.value.params[c]) << " (start "
-                << f.result(model_id).fit.solver[c].start << ")";
+                << " at " << params_text(fit.params) << " (" << fit.solver.termination << ", " << fit.solver.iterations
+                << " iterations), fit_model " << best << " at " << params_text(f.result(model_id).fit.value.params[c])
+                << " (start " << f.result(model_id).fit.solver[c].start << ")";
         }
     }
 }
 
-TEST(FitSolver, TerribleF82TintStartStillReachesTheOptimum) { expect_single_start_reaches_optimum("f82-tint", {0.05, 3.0}); }
+TEST(FitSolver, TerribleF82TintStartStillReachesTheOptimum) {
+    expect_single_start_reaches_optimum("f82-tint", {0.05, 3.0});
+}
 
 TEST(FitSolver, TerribleConductorStartStillReachesTheOptimum) {
     expect_single_start_reaches_optimum("conductor-rgb", {5.0, 0.1});
@@ -991,10 +1009,14 @@ TEST(FitSolver, RecoversTheParametersOfASyntheticCurve) {
 // the parameters to 1e-6 and the curve to 1e-9 on a 4097-point grid.
 TEST(FitSolver, NewFamiliesRecoverSyntheticCurvesOfTheirOwnForm) {
     const std::vector<std::pair<std::string_view, ChannelParameters>> cases{
-        {"schlick-comp-linear", {0.91, 0.35, -0.8}}, {"schlick-comp-linear", {1.04, -0.2, 1.1}},
-        {"schlick-comp", {0.95, 0.3, 3.4}},          {"schlick-comp", {0.62, -0.15, 12.0}},
-        {"schlick-comp-general", {0.72, 4.2, 0.4, 7.5}}, {"schlick-comp-general", {1.03, 6.5, -0.3, 2.5}},
-        {"rational", {-2.6, 7.4, -2.5, 7.1}},        {"rational", {0.7, 6.6, 1.9, 8.5}}};
+        {"schlick-comp-linear", {0.91, 0.35, -0.8}},
+        {"schlick-comp-linear", {1.04, -0.2, 1.1}},
+        {"schlick-comp", {0.95, 0.3, 3.4}},
+        {"schlick-comp", {0.62, -0.15, 12.0}},
+        {"schlick-comp-general", {0.72, 4.2, 0.4, 7.5}},
+        {"schlick-comp-general", {1.03, 6.5, -0.3, 2.5}},
+        {"rational", {-2.6, 7.4, -2.5, 7.1}},
+        {"rational", {0.7, 6.6, 1.9, 8.5}}};
     for (const auto& [id, truth] : cases) {
         SCOPED_TRACE(std::string(id) + " " + params_text(truth));
         const Model& model = find_model(id);
@@ -1009,7 +1031,8 @@ TEST(FitSolver, NewFamiliesRecoverSyntheticCurvesOfTheirOwnForm) {
         for (int i = 0; i <= 4096; ++i) {
             const double mu = i / 4096.0;
             EXPECT_NEAR(model.evaluate(std::span<const double>(fit.params), mu),
-                        model.evaluate(std::span<const double>(truth), mu), 1e-9) << "mu=" << mu;
+                        model.evaluate(std::span<const double>(truth), mu), 1e-9)
+                << "mu=" << mu;
         }
     }
 }
@@ -1025,7 +1048,8 @@ TEST(FitSolver, LinearCompensationStartIsTheExactLeastSquaresSolution) {
             if (!std::isfinite(exact.rms)) continue;  // outside the bounds: not a pure linear problem
             const auto starts = model.target_starts(t);
             ASSERT_EQ(starts.size(), 1u);
-            for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(starts[0][i], exact.params[i], 1e-9) << id << " " << kChannel[c];
+            for (std::size_t i = 0; i < 3; ++i)
+                EXPECT_NEAR(starts[0][i], exact.params[i], 1e-9) << id << " " << kChannel[c];
             EXPECT_NEAR(channel_rms(model, f.result("schlick-comp-linear").fit.value.params[c], t), exact.rms, 1e-12);
         }
     }
@@ -1143,7 +1167,8 @@ TEST(FitBounds, ClosedFormsOutsideTheBoundsAreNeverTheFit) {
         }
     }
     const auto record = model_record(g);
-    if (std::any_of(g.fit.unrepresentable.begin(), g.fit.unrepresentable.end(), [](const std::string& u) { return !u.empty(); })) {
+    if (std::any_of(g.fit.unrepresentable.begin(), g.fit.unrepresentable.end(),
+                    [](const std::string& u) { return !u.empty(); })) {
         EXPECT_TRUE(record["fit"].contains("unrepresentable"));
     }
     // Every catalog fit of every model stays inside its bounds.
@@ -1151,15 +1176,16 @@ TEST(FitBounds, ClosedFormsOutsideTheBoundsAreNeverTheFit) {
         for (const ModelResult& r : fitted(entry.id).fit->models)
             for (int c = 0; c < 3; ++c)
                 EXPECT_TRUE(within_bounds(*r.model, r.fit.value.params[c]))
-                    << entry.id << " " << r.model->id() << " " << kChannel[c] << " " << params_text(r.fit.value.params[c]);
+                    << entry.id << " " << r.model->id() << " " << kChannel[c] << " "
+                    << params_text(r.fit.value.params[c]);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
 // 12. Determinism: the same input gives the same record, byte for byte.
 
 TEST(FitRecord, TwoRunsOfGoldAreByteIdentical) {
-    const FitRecordContext context{kShipped, env().converter.space(), Observer::cie1931_2deg, Illuminant::D65,
-                                   SpectralOptions{}, ErrorSettings{}};
+    const FitRecordContext context{kShipped,        env().converter.space(), Observer::cie1931_2deg,
+                                   Illuminant::D65, SpectralOptions{},       ErrorSettings{}};
     const Material gold = load_material(env().catalog, "Au");
     const MaterialFit first = fit_material(gold, env().colorimetry, env().converter, request());
     const MaterialFit second = fit_material(gold, env().colorimetry, env().converter, request());
@@ -1186,13 +1212,56 @@ TEST(InterleavedTimer, OneCallPerSampleRunsEachJobOnceToWarmUpThenOncePerRoundIn
     std::string calls;
     const std::vector<TimedJob> jobs{{[&] { calls += 'a'; }, 1}, {[&] { calls += 'b'; }, 1}};
     const std::vector<JobTiming> timings = time_interleaved(jobs, {3, 0.0});
-    EXPECT_EQ(calls, "ab" "ababab");
+    EXPECT_EQ(calls, "ab"
+                     "ababab");
     ASSERT_EQ(timings.size(), 2u);
     for (const JobTiming& t : timings) {
         ASSERT_EQ(t.ns_per_item.size(), 3u);
         for (double ns : t.ns_per_item) EXPECT_GE(ns, 0.0);
         EXPECT_EQ(t.median_ns, median(t.ns_per_item));
     }
+}
+
+// The one place that says which constraints combine (FitConstraints::check_combination): pin F0 with the gamut
+// constraint cannot be met wherever R(1) leaves [0, 1]; each alone, or neither, passes.
+TEST(FitConstraints, PinF0AndGamutFitDoNotCombine) {
+    for (const bool pin : {false, true})
+        for (const bool gamut : {false, true}) {
+            FitConstraints c;
+            c.pin_f0 = pin;
+            c.gamut_fit = gamut;
+            if (pin && gamut) {
+                try {
+                    c.check_combination();
+                    ADD_FAILURE() << "pin F0 and gamut fit accepted together";
+                } catch (const UsageError& e) {
+                    EXPECT_NE(std::string(e.what()).find("--pin F0 and --gamut-fit together"), std::string::npos)
+                        << e.what();
+                }
+            } else {
+                EXPECT_NO_THROW(c.check_combination()) << pin << gamut;
+            }
+        }
+}
+
+// One "fit or best closed form" (choose_parameters): the fit, else the best defined closed form, else nothing.
+TEST(ParameterChoice, FitOrBestClosedForm) {
+    ModelResult r;
+    r.fit.value.params[0] = {0.5, 0.5};
+    r.closed_forms.push_back({"r1", "", std::nullopt, "no data at 700 nm", ""});
+    r.closed_forms.push_back({"r2", "", EvaluatedParameters{}, "", ""});
+    r.closed_forms[1].value->params[0] = {0.25, 0.75};
+    const auto fit = choose_parameters(r, ParameterSource::fit);
+    ASSERT_TRUE(fit);
+    EXPECT_EQ(fit->value, &r.fit.value);
+    EXPECT_EQ(fit->origin, "fit");
+    EXPECT_FALSE(choose_parameters(r, ParameterSource::closed)) << "no best closed form was chosen";
+    r.best_closed = 1;
+    const auto closed = choose_parameters(r, ParameterSource::closed);
+    ASSERT_TRUE(closed);
+    EXPECT_EQ(closed->value, &*r.closed_forms[1].value);
+    EXPECT_EQ(closed->origin, "closed r2");
+    EXPECT_EQ(undefined_closed_forms(r), "r1: no data at 700 nm; r2: ");
 }
 
 }  // namespace metalfit

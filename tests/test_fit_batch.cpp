@@ -42,7 +42,9 @@ const Environment& env() {
 }
 
 // Two cheap models: the batch's order and bounds do not depend on which.
-MaterialFitRequest cheap_request() { return {SpectralOptions{}, ErrorSettings{}, {&find_model("schlick"), &find_model("lazanyi")}}; }
+MaterialFitRequest cheap_request() {
+    return {SpectralOptions{}, ErrorSettings{}, {&find_model("schlick"), &find_model("lazanyi")}};
+}
 
 // `count` materials cycling through the catalog, renamed "m<i>", each loader counting its calls in `started`;
 // `failing` (if < count) throws an InputError naming "m<failing>".
@@ -101,8 +103,9 @@ TEST(FitBatch, StopsAtTheFirstErrorInInputOrderAfterHandingOnEveryMaterialBefore
     std::atomic<std::size_t> started{0};
     std::vector<std::size_t> handed;
     try {
-        fit_materials_in_order(counted_loaders(20, started, 7), env().colour(), cheap_request(), 2,
-                               [&](std::size_t index, MaterialFit&&) { handed.push_back(index); }, {}, 4);
+        fit_materials_in_order(
+            counted_loaders(20, started, 7), env().colour(), cheap_request(), 2,
+            [&](std::size_t index, MaterialFit&&) { handed.push_back(index); }, {}, 4);
         FAIL() << "no error";
     } catch (const InputError& e) {
         EXPECT_TRUE(Contains(e.what(), "m7"));
@@ -115,11 +118,13 @@ TEST(FitBatch, StopsAtTheFirstErrorInInputOrderAfterHandingOnEveryMaterialBefore
 TEST(FitBatch, AnErrorOfTheSinkStopsTheBatch) {
     std::atomic<std::size_t> started{0};
     std::size_t calls = 0;
-    EXPECT_THROW(fit_materials_in_order(counted_loaders(20, started), env().colour(), cheap_request(), 2,
-                                        [&](std::size_t index, MaterialFit&&) {
-                                            ++calls;
-                                            if (index == 3) throw std::runtime_error("disk full");
-                                        }, {}, 4),
+    EXPECT_THROW(fit_materials_in_order(
+                     counted_loaders(20, started), env().colour(), cheap_request(), 2,
+                     [&](std::size_t index, MaterialFit&&) {
+                         ++calls;
+                         if (index == 3) throw std::runtime_error("disk full");
+                     },
+                     {}, 4),
                  std::runtime_error);
     EXPECT_EQ(calls, 4u);
     EXPECT_LE(started.load(), 3u + 4u);
@@ -129,7 +134,8 @@ TEST(FitBatch, AnErrorOfTheSinkStopsTheBatch) {
 // The streamed record against fit_record, byte for byte.
 
 FitRecordContext context() {
-    return {kShipped, env().converter.space(), Observer::cie1931_2deg, Illuminant::D65, SpectralOptions{}, ErrorSettings{}};
+    return {kShipped,        env().converter.space(), Observer::cie1931_2deg,
+            Illuminant::D65, SpectralOptions{},       ErrorSettings{}};
 }
 
 std::string streamed(const std::vector<MaterialFit>& fits, const FitRecordContext& c,
@@ -149,7 +155,8 @@ std::string streamed(const std::vector<MaterialFit>& fits, const FitRecordContex
 std::vector<MaterialFit> catalog_fits(const std::vector<std::string>& ids) {
     std::vector<MaterialFit> fits;
     for (const std::string& id : ids)
-        fits.push_back(fit_material(load_material(env().catalog, id, ""), env().colorimetry, env().converter, cheap_request()));
+        fits.push_back(
+            fit_material(load_material(env().catalog, id, ""), env().colorimetry, env().converter, cheap_request()));
     return fits;
 }
 

@@ -12,7 +12,7 @@ namespace {
 
 using C = std::complex<double>;
 
-// The thesis' real form (FORMULAS.md §1), valid for μ > 0: an independent route to F.
+// The thesis' real form (Lazányi 2008, ch. 3; docs/colour.md, "Exact Fresnel reflectance"), valid for μ > 0: an independent route to F.
 double thesis_real_form(double mu, double n, double k) {
     const double s2 = 1.0 - mu * mu, s = std::sqrt(s2);
     const double t = n * n - k * k - s2;
@@ -37,7 +37,8 @@ TEST(Fresnel, NormalIncidenceMatchesClosedForm) {
 }
 
 TEST(Fresnel, GrazingIncidenceReflectsEverything) {
-    for (C eta : {C(0.2, 3.0), C(1.5, 0.0), C(0.5, 0.0), C(0.05, 0.0), C(1.0, 1e-9), C(1.0 + 1e-9, 0.0), C(1.1, 1000.0)}) {
+    for (C eta :
+         {C(0.2, 3.0), C(1.5, 0.0), C(0.5, 0.0), C(0.05, 0.0), C(1.0, 1e-9), C(1.0 + 1e-9, 0.0), C(1.1, 1000.0)}) {
         const auto r = fresnel_reflectance(0.0, eta);
         EXPECT_DOUBLE_EQ(r.s, 1.0) << eta;
         EXPECT_DOUBLE_EQ(r.p, 1.0) << eta;
@@ -125,8 +126,8 @@ TEST(Fresnel, DenseSweepStaysFiniteAndInUnitInterval) {
                 const auto r = fresnel_reflectance(mu, {n, k});
                 const double f = r.unpolarized();
                 ++samples;
-                const bool ok = std::isfinite(f) && f >= 0.0 && f <= 1.0 && r.s >= 0.0 && r.s <= 1.0 &&
-                                r.p >= 0.0 && r.p <= 1.0;
+                const bool ok =
+                    std::isfinite(f) && f >= 0.0 && f <= 1.0 && r.s >= 0.0 && r.s <= 1.0 && r.p >= 0.0 && r.p <= 1.0;
                 if (!ok && ++bad < 10) ADD_FAILURE() << "n=" << n << " k=" << k << " mu=" << mu << " F=" << f;
             }
         }

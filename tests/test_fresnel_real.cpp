@@ -45,15 +45,18 @@ TEST(FresnelReal, MatchesTheComplexFormToRoundingOverConductorsAndDielectrics) {
             for (int i = 0; i <= 2000; ++i) {
                 const double mu = i / 2000.0, got = fresnel_real(mu, e);
                 if (fresnel(mu, eta) < 0.01) {
-                    ASSERT_NEAR(got, complex_form_long_double(mu, eta), 1e-14) << "n " << n << " k " << k << " mu " << mu;
+                    ASSERT_NEAR(got, complex_form_long_double(mu, eta), 1e-14)
+                        << "n " << n << " k " << k << " mu " << mu;
                     continue;
                 }
                 const double d = relative_difference(got, fresnel(mu, eta));
                 worst = std::max(worst, d);
-                ASSERT_LE(d, 1e-12) << "n " << n << " k " << k << " mu " << mu << ": " << got << " vs " << fresnel(mu, eta);
+                ASSERT_LE(d, 1e-12) << "n " << n << " k " << k << " mu " << mu << ": " << got << " vs "
+                                    << fresnel(mu, eta);
             }
         }
-    EXPECT_GT(worst, 0.0) << "the two forms round differently somewhere; identical everywhere would mean one is tested against itself";
+    EXPECT_GT(worst, 0.0)
+        << "the two forms round differently somewhere; identical everywhere would mean one is tested against itself";
 }
 
 TEST(FresnelReal, LimitsAsTheComplexForm) {
@@ -91,22 +94,25 @@ TEST(FresnelReal, FloatFollowsDoubleToFloatRounding) {
 // exact: at its corners and edges within 4e-15 of the long-double form at every μ. Just outside it they are not:
 // |η²|² overflows at n or k ≈ 1e77 (NaN), and near η = 0 the μ = 1 end loses its digits.
 TEST(FresnelReal, ExactInsideTheImportRange) {
-    const double edge[][2] = {{1e6, 0.0}, {0.0, 1e6}, {1e6, 1e6}, {1e6, 1e-6}, {1e-6, 1e6}, {1e-6, 0.0}, {0.0, 1e-6},
-                              {1e-6, 1e-6}, {1e-6, 3.0}, {0.05, 1e6}, {1e3, 1e3}};
+    const double edge[][2] = {{1e6, 0.0},  {0.0, 1e6},   {1e6, 1e6},  {1e6, 1e-6}, {1e-6, 1e6}, {1e-6, 0.0},
+                              {0.0, 1e-6}, {1e-6, 1e-6}, {1e-6, 3.0}, {0.05, 1e6}, {1e3, 1e3}};
     double worst = 0.0;
     for (const auto& [n, k] : edge) {
         const SquaredIndex<double> e = squared_index(C(n, k));
         for (int i = 0; i <= 256; ++i) {
             const double mu = i / 256.0, truth = complex_form_long_double(mu, C(n, k));
             ASSERT_TRUE(std::isfinite(fresnel_real(mu, e)) && std::isfinite(fresnel(mu, C(n, k)))) << n << " " << k;
-            worst = std::max({worst, relative_difference(fresnel_real(mu, e), truth), relative_difference(fresnel(mu, C(n, k)), truth)});
+            worst = std::max({worst, relative_difference(fresnel_real(mu, e), truth),
+                              relative_difference(fresnel(mu, C(n, k)), truth)});
         }
     }
     EXPECT_LT(worst, 4e-15);
     // Outside: NaN at 1e78 (what the reference curves integrate), and a reflectance off by a factor near |η| = 1e-80
     // (the real form's μ = 1 end).
     EXPECT_TRUE(std::isnan(fresnel_real(0.5, squared_index(C(1e78, 1e78)))));
-    EXPECT_GT(relative_difference(fresnel_real(1.0, squared_index(C(1e-80, 0.0))), complex_form_long_double(1.0, C(1e-80, 0.0))), 0.1);
+    EXPECT_GT(relative_difference(fresnel_real(1.0, squared_index(C(1e-80, 0.0))),
+                                  complex_form_long_double(1.0, C(1e-80, 0.0))),
+              0.1);
 }
 
 }  // namespace

@@ -2,8 +2,8 @@
 // documented exit code and a one-line message naming the file, within 512 MiB of peak memory (the child's
 // ru_maxrss from wait4) and 10 s of wall time. The bounds are an order of magnitude above what the refusals cost
 // (a few MiB, milliseconds); before the checks these inputs cost 1.5 to 6 GB and 13 to 47 s.
-#include <gtest/gtest.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -12,8 +12,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -88,7 +88,9 @@ void expect_refused(const ChildRun& r, int exit_code, const std::string& named) 
     std::printf("  exit %d, peak %.1f MiB, %.3f s: %s", r.exit_code, r.peak_kib / 1024.0, r.seconds, r.err.c_str());
 }
 
-ChildRun metalfit_show(const TempDir& dir, const fs::path& yml) { return run_child(METALFIT_EXE, {"show", yml.string(), "--json"}, dir.path()); }
+ChildRun metalfit_show(const TempDir& dir, const fs::path& yml) {
+    return run_child(METALFIT_EXE, {"show", yml.string(), "--json"}, dir.path());
+}
 ChildRun metalfit_with_config(const TempDir& dir, const fs::path& config) {
     return run_child(METALFIT_EXE, {"--ocio-config", config.string(), "show", "Au", "--json"}, dir.path());
 }
@@ -126,7 +128,8 @@ TEST(HostileInputs, AYamlBillionLaughs) {
     TempDir dir;
     std::string text = "a0: &a0 [x, x, x, x, x, x, x, x, x, x]\n";
     for (int i = 1; i < 30; ++i)
-        text += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [" + repeat("*a" + std::to_string(i - 1) + ", ", 40) + "x]\n";  // 8 aliases
+        text += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " [" +
+                repeat("*a" + std::to_string(i - 1) + ", ", 40) + "x]\n";  // 8 aliases
     text += "DATA: [*a29]\n";
     const fs::path f = dir.write("laughs.yml", text);
     expect_refused(metalfit_show(dir, f), 3, f.string() + ":8: YAML aliases expand to more than 16 MiB");
@@ -157,8 +160,8 @@ TEST(HostileInputs, AnOcioConfigOfAliasesToAliases) {
     TempDir dir;
     std::string text = shipped_config() + "\nx0: &x0 [!<MatrixTransform> {}, !<MatrixTransform> {}]\n";
     for (int i = 1; i < 40; ++i)
-        text += "x" + std::to_string(i) + ": &x" + std::to_string(i) + " !<GroupTransform> {children: [*x" + std::to_string(i - 1) +
-                ", *x" + std::to_string(i - 1) + "]}\n";
+        text += "x" + std::to_string(i) + ": &x" + std::to_string(i) + " !<GroupTransform> {children: [*x" +
+                std::to_string(i - 1) + ", *x" + std::to_string(i - 1) + "]}\n";
     const fs::path f = dir.write("laughs.ocio", text);
     expect_refused(metalfit_with_config(dir, f), 4, f.string());
 }
@@ -168,7 +171,8 @@ TEST(HostileInputs, AnOcioConfigOfTooManyColourSpaces) {  // OCIO took 22 s to l
     std::string text = shipped_config();
     std::string spaces;
     for (int i = 0; i < 9000; ++i)
-        spaces += "  - !<ColorSpace>\n    name: cs" + std::to_string(i) + "\n    from_scene_reference: !<MatrixTransform> {}\n";
+        spaces += "  - !<ColorSpace>\n    name: cs" + std::to_string(i) +
+                  "\n    from_scene_reference: !<MatrixTransform> {}\n";
     text.insert(text.find("\ncolorspaces:\n") + 14, spaces);
     const fs::path f = dir.write("many.ocio", text);
     expect_refused(metalfit_with_config(dir, f), 4, f.string() + ": more than 2000 colour spaces");
@@ -179,8 +183,8 @@ fs::path config_with_lut(const TempDir& dir, const std::string& lut) {
     std::string text = shipped_config();
     const std::size_t at = text.find("\ncolorspaces:\n");
     EXPECT_NE(at, std::string::npos);
-    text.insert(at + 14, "  - !<ColorSpace>\n    name: lut space\n    from_scene_reference: !<FileTransform> {src: " + lut +
-                             ", interpolation: linear}\n\n");
+    text.insert(at + 14, "  - !<ColorSpace>\n    name: lut space\n    from_scene_reference: !<FileTransform> {src: " +
+                             lut + ", interpolation: linear}\n\n");
     return dir.write("lut.ocio", text);
 }
 
@@ -188,7 +192,8 @@ TEST(HostileInputs, AnOcioFileTransformOfDevZero) {
     TempDir dir;
     const fs::path f = config_with_lut(dir, "/dev/zero");
     expect_refused(metalfit_with_config(dir, f), 4, f.string());
-    EXPECT_TRUE(Contains(run_child(METALFIT_EXE, {"--ocio-config", f.string(), "spaces"}, dir.path()).err, "/dev/zero: not a regular file"));
+    EXPECT_TRUE(Contains(run_child(METALFIT_EXE, {"--ocio-config", f.string(), "spaces"}, dir.path()).err,
+                         "/dev/zero: not a regular file"));
 }
 
 TEST(HostileInputs, AnOcioFileTransformOfAMissingFile) {
@@ -209,19 +214,21 @@ TEST(HostileInputs, AnOcioFileTransformOfARegularLutIsRead) {
 
 fs::path scene_with(const TempDir& dir, const std::string& image) {
     return dir.write("scene.json", R"({"image": {"width": 16, "height": 16},
-        "environment": {"type": "equirect", "file": ")" + image + R"("},
+        "environment": {"type": "equirect", "file": ")" +
+                                       image + R"("},
         "spheres": [{"center": [0, 0, 0], "radius": 0.5, "reflection": "classic"}]})");
 }
 
 #ifndef GLPREVIEW_EXE
 #define GLPREVIEW_EXE ""  // built without glpreview: its tests skip
 #endif
-#define SKIP_WITHOUT_GLPREVIEW() \
+#define SKIP_WITHOUT_GLPREVIEW()                                                                                       \
     if (std::string(GLPREVIEW_EXE).empty()) GTEST_SKIP() << "glpreview is not built"
 
 ChildRun glpreview_on(const TempDir& dir, const std::string& image_name, const std::string& bytes) {
     dir.write(image_name, bytes);
-    return run_child(GLPREVIEW_EXE, {scene_with(dir, image_name).string(), "-o", (dir.path() / "out").string()}, dir.path());
+    return run_child(GLPREVIEW_EXE, {scene_with(dir, image_name).string(), "-o", (dir.path() / "out").string()},
+                     dir.path());
 }
 
 std::string u32(std::uint32_t v) { return {char(v & 255), char((v >> 8) & 255), char((v >> 16) & 255), char(v >> 24)}; }
@@ -231,18 +238,21 @@ std::string attribute(const std::string& name, const std::string& type, const st
 // An EXR header: one half channel R, the data window given, and `extra` attributes.
 std::string exr_header(int width, int height, const std::string& extra = {}) {
     std::string ch = std::string("R") + '\0' + u32(1) + std::string(4, '\0') + u32(1) + u32(1) + '\0';
-    std::string box = u32(0) + u32(0) + u32(static_cast<std::uint32_t>(width - 1)) + u32(static_cast<std::uint32_t>(height - 1));
-    return u32(20000630) + u32(2) + attribute("channels", "chlist", ch) + attribute("compression", "compression", std::string(1, '\0')) +
-           attribute("dataWindow", "box2i", box) + attribute("displayWindow", "box2i", box) +
-           attribute("lineOrder", "lineOrder", std::string(1, '\0')) + attribute("pixelAspectRatio", "float", u32(0x3f800000)) +
-           attribute("screenWindowCenter", "v2f", std::string(8, '\0')) + attribute("screenWindowWidth", "float", u32(0x3f800000)) +
-           extra + '\0';
+    std::string box =
+        u32(0) + u32(0) + u32(static_cast<std::uint32_t>(width - 1)) + u32(static_cast<std::uint32_t>(height - 1));
+    return u32(20000630) + u32(2) + attribute("channels", "chlist", ch) +
+           attribute("compression", "compression", std::string(1, '\0')) + attribute("dataWindow", "box2i", box) +
+           attribute("displayWindow", "box2i", box) + attribute("lineOrder", "lineOrder", std::string(1, '\0')) +
+           attribute("pixelAspectRatio", "float", u32(0x3f800000)) +
+           attribute("screenWindowCenter", "v2f", std::string(8, '\0')) +
+           attribute("screenWindowWidth", "float", u32(0x3f800000)) + extra + '\0';
 }
 
 TEST(HostileInputs, ARadianceHeaderDeclaringTheLargestImage) {
     TempDir dir;
     SKIP_WITHOUT_GLPREVIEW();
-    expect_refused(glpreview_on(dir, "env.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8192 +X 16384\n"), 3, "env.hdr");
+    expect_refused(glpreview_on(dir, "env.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8192 +X 16384\n"), 3,
+                   "env.hdr");
 }
 
 // A flat Radiance image, run-length coded: 8 bytes per 127 pixels of a scanline per channel.
@@ -250,7 +260,8 @@ std::string flat_hdr(int width, int height) {
     std::string line = {2, 2, char(width >> 8), char(width & 255)};
     for (unsigned char value : {128, 100, 80, 129})
         for (int left = width; left > 0; left -= 127) line += {char(128 + std::min(127, left)), char(value)};
-    std::string out = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " + std::to_string(width) + "\n";
+    std::string out =
+        "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + std::to_string(height) + " +X " + std::to_string(width) + "\n";
     for (int y = 0; y < height; ++y) out += line;
     return out;
 }
@@ -265,7 +276,8 @@ TEST(HostileInputs, AFlatImageWithinTheFreePixelsIsRead) {  // in bands of rows 
 TEST(HostileInputs, AFlatImageBeyondTheFreePixelsNeedsTheBytes) {  // 8192 x 4096 in 2 MB
     TempDir dir;
     SKIP_WITHOUT_GLPREVIEW();
-    expect_refused(glpreview_on(dir, "env.hdr", flat_hdr(8192, 4096)), 3, "env.hdr: the header declares 8192 x 4096 pixels");
+    expect_refused(glpreview_on(dir, "env.hdr", flat_hdr(8192, 4096)), 3,
+                   "env.hdr: the header declares 8192 x 4096 pixels");
 }
 
 TEST(HostileInputs, AWebPHeaderDeclaringALargeImage) {
@@ -275,7 +287,8 @@ TEST(HostileInputs, AWebPHeaderDeclaringALargeImage) {
     const std::uint32_t bits = (16383u - 1) | ((8192u - 1) << 14);
     std::string vp8l = std::string(1, '\x2f') + u32(bits) + std::string(1200, '\x55');
     std::string riff = "WEBPVP8L" + u32(static_cast<std::uint32_t>(vp8l.size())) + vp8l;
-    expect_refused(glpreview_on(dir, "env.webp", "RIFF" + u32(static_cast<std::uint32_t>(riff.size())) + riff), 3, "env.webp");
+    expect_refused(glpreview_on(dir, "env.webp", "RIFF" + u32(static_cast<std::uint32_t>(riff.size())) + riff), 3,
+                   "env.webp");
 }
 
 TEST(HostileInputs, AnExrDataWindowBeyondWhatTheFileHolds) {
@@ -295,8 +308,9 @@ TEST(HostileInputs, AnExrAttributeDeclaringTwoGigabytes) {
 TEST(HostileInputs, AnExrPreviewDeclaringMorePixelsThanItHolds) {
     TempDir dir;
     SKIP_WITHOUT_GLPREVIEW();
-    expect_refused(glpreview_on(dir, "env.exr", exr_header(4, 4, attribute("preview", "preview", u32(30000) + u32(30000) + "x"))), 3,
-                   "env.exr");
+    expect_refused(
+        glpreview_on(dir, "env.exr", exr_header(4, 4, attribute("preview", "preview", u32(30000) + u32(30000) + "x"))),
+        3, "env.exr");
 }
 
 }  // namespace

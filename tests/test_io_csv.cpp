@@ -108,15 +108,14 @@ INSTANTIATE_TEST_SUITE_P(IoCsv, IoCsvMalformed,
 
 TEST(IoCsv, CommentsAndBlankLinesAreIgnoredAndLinesStillCounted) {
     TempDir dir;
-    const fs::path file = dir.write("table.csv",
-                                    "# a comment\n"
-                                    "\n"
-                                    "wavelength_nm,n,k\n"
-                                    "400,1.5,2.0\n"
-                                    "# another\n"
-                                    "500,1.0,3.0\n"
-                                    "\n"
-                                    "600,x,4.0\n");
+    const fs::path file = dir.write("table.csv", "# a comment\n"
+                                                 "\n"
+                                                 "wavelength_nm,n,k\n"
+                                                 "400,1.5,2.0\n"
+                                                 "# another\n"
+                                                 "500,1.0,3.0\n"
+                                                 "\n"
+                                                 "600,x,4.0\n");
     try {
         (void)load_nk_csv(file);
         FAIL();

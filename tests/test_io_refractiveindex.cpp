@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "libfit/io/catalog.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
+#include "libfit/io/catalog.hpp"
 #include "libfit/io/csv.hpp"
 #include "libfit/io/refractiveindex.hpp"
 
@@ -144,9 +144,9 @@ TEST(IoRefractiveIndexFormula, Formula2SchottNbk7) {
     EXPECT_EQ(m.index.n.kind(), "formula 2");
     EXPECT_NEAR(m.index.range().min_nm, 300.0, 1e-9);
     EXPECT_NEAR(m.index.range().max_nm, 2500.0, 1e-9);
-    const std::vector<std::pair<double, double>> expected{
-        {300.0, 1.552770},    {486.1327, 1.522376}, {587.5618, 1.516800},
-        {656.2725, 1.514322}, {1000.0, 1.507502},   {2500.0, 1.486018}};
+    const std::vector<std::pair<double, double>> expected{{300.0, 1.552770},    {486.1327, 1.522376},
+                                                          {587.5618, 1.516800}, {656.2725, 1.514322},
+                                                          {1000.0, 1.507502},   {2500.0, 1.486018}};
     for (const auto& [nm, n] : expected) {
         EXPECT_NEAR(m.index(nm).real(), n, 1e-6) << nm;
         EXPECT_EQ(m.index(nm).imag(), 0.0) << nm;
@@ -313,22 +313,21 @@ TEST_P(IoRefractiveIndexMalformed, ThrowsOneLineInputErrorNamingFileLineAndField
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    IoRefractiveIndex, IoRefractiveIndexMalformed,
-    ::testing::Values(Malformed{"bad-non-numeric.yml", {28}, "DATA[0].data", "1.2x3"},
-                      Malformed{"bad-negative-k.yml", {28}, "DATA[0].data", "-2.455"},
-                      Malformed{"bad-empty-data.yml", {12}, "DATA[0].data", ""},
-                      Malformed{"bad-no-data.yml", {}, "DATA", "missing"},
-                      Malformed{"bad-unknown-type.yml", {11}, "DATA[0].type", "tabulated xyz"},
-                      Malformed{"bad-truncated.yml", {12, 18}, "", ""},
-                      Malformed{"bad-wrong-columns.yml", {28}, "DATA[0].data", "found 2"}),
-    [](const ::testing::TestParamInfo<Malformed>& info) {
-        std::string name = info.param.file;
-        name = name.substr(0, name.find('.'));
-        for (char& ch : name)
-            if (ch == '-') ch = '_';
-        return name;
-    });
+INSTANTIATE_TEST_SUITE_P(IoRefractiveIndex, IoRefractiveIndexMalformed,
+                         ::testing::Values(Malformed{"bad-non-numeric.yml", {28}, "DATA[0].data", "1.2x3"},
+                                           Malformed{"bad-negative-k.yml", {28}, "DATA[0].data", "-2.455"},
+                                           Malformed{"bad-empty-data.yml", {12}, "DATA[0].data", ""},
+                                           Malformed{"bad-no-data.yml", {}, "DATA", "missing"},
+                                           Malformed{"bad-unknown-type.yml", {11}, "DATA[0].type", "tabulated xyz"},
+                                           Malformed{"bad-truncated.yml", {12, 18}, "", ""},
+                                           Malformed{"bad-wrong-columns.yml", {28}, "DATA[0].data", "found 2"}),
+                         [](const ::testing::TestParamInfo<Malformed>& info) {
+                             std::string name = info.param.file;
+                             name = name.substr(0, name.find('.'));
+                             for (char& ch : name)
+                                 if (ch == '-') ch = '_';
+                             return name;
+                         });
 
 TEST(IoRefractiveIndexMessages, NegativeKSaysNegative) {
     try {
@@ -342,12 +341,11 @@ TEST(IoRefractiveIndexMessages, NegativeKSaysNegative) {
 
 TEST(IoRefractiveIndexMessages, UnsupportedFormulaIsNamed) {
     TempDir dir;
-    const fs::path file = dir.write("formula5.yml",
-                                    "REFERENCES: test\n"
-                                    "DATA:\n"
-                                    "  - type: formula 5\n"
-                                    "    wavelength_range: 0.3 2.5\n"
-                                    "    coefficients: 1 2 3\n");
+    const fs::path file = dir.write("formula5.yml", "REFERENCES: test\n"
+                                                    "DATA:\n"
+                                                    "  - type: formula 5\n"
+                                                    "    wavelength_range: 0.3 2.5\n"
+                                                    "    coefficients: 1 2 3\n");
     try {
         (void)load_refractiveindex_yaml(file);
         FAIL() << "formula 5 must be refused";

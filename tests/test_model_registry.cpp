@@ -51,7 +51,8 @@ TYPED_TEST(EveryModel, TheRuntimeModelIsTheStruct) {
     EXPECT_EQ(model.materialx_form(), M::kMaterialx);
     EXPECT_EQ(model.is_f82_tint_curve(), F82TintCurve<M>);
     for (const ChannelParameters& p : sample_parameters<M>())
-        for (double mu : {0.0, 0.1, 0.5, 0.9, 1.0}) EXPECT_EQ(model.evaluate(std::span<const double>(p), mu), M::evaluate(p.data(), mu)) << mu;
+        for (double mu : {0.0, 0.1, 0.5, 0.9, 1.0})
+            EXPECT_EQ(model.evaluate(std::span<const double>(p), mu), M::evaluate(p.data(), mu)) << mu;
     // Over an array of μ (what the metrics evaluate): the values one at a time, bit for bit.
     std::vector<double> mu{-0.1, 0.0, 1e-9, 1.0 / 3.0, 0.999, 1.0, 1.5};
     for (int i = 0; i <= 1024; ++i) mu.push_back(i / 1024.0);
@@ -122,7 +123,7 @@ TYPED_TEST(EveryModel, AnalyticGradientIsAutodiffs) {
 }
 
 TYPED_TEST(EveryModel, GrazingIsOneAndFloatAgreesWithDouble) {
-    // F(0) = 1 is built into every model (DESIGN.md); the float overload (what shaders and the bench evaluate) follows
+    // F(0) = 1 is built into every model (docs/colour.md, "White balance"); the float overload (what shaders and the bench evaluate) follows
     // the double one to float precision on curves of order 1.
     using M = TypeParam;
     for (const ChannelParameters& p : sample_parameters<M>()) {
@@ -150,7 +151,8 @@ TYPED_TEST(EveryModel, MuOutsideTheUnitIntervalGivesTheValueAtItsEnd) {
             EXPECT_EQ(M::evaluate(p.data(), mu), at0) << "mu=" << mu;
         for (double mu : {std::nextafter(1.0, 2.0), 1.0000001, 1.01, 2.0})
             EXPECT_EQ(M::evaluate(p.data(), mu), at1) << "mu=" << mu;
-        for (float mu : {std::nextafter(0.0f, -1.0f), -0.01f}) EXPECT_EQ(M::evaluate(pf.data(), mu), at0f) << "mu=" << mu;
+        for (float mu : {std::nextafter(0.0f, -1.0f), -0.01f})
+            EXPECT_EQ(M::evaluate(pf.data(), mu), at0f) << "mu=" << mu;
         for (float mu : {std::nextafter(1.0f, 2.0f), 1.01f}) EXPECT_EQ(M::evaluate(pf.data(), mu), at1f) << "mu=" << mu;
         EXPECT_EQ(model_of<M>().evaluate(std::span<const double>(p), 1.01), at1);
         EXPECT_TRUE(std::isfinite(at1f) || !std::isfinite(at1));
@@ -181,7 +183,8 @@ TYPED_TEST(EveryModel, F82TintMappingIsTheSameCurve) {
             // Evaluated by the F82-tint model, the mapped parameters give the model's own curve.
             for (int i = 0; i <= 64; ++i) {
                 const double mu = i / 64.0;
-                EXPECT_NEAR(models::F82Tint::evaluate(f82->data(), mu), M::evaluate(p.data(), mu), 1e-12) << "mu=" << mu;
+                EXPECT_NEAR(models::F82Tint::evaluate(f82->data(), mu), M::evaluate(p.data(), mu), 1e-12)
+                    << "mu=" << mu;
             }
         }
     }
@@ -210,7 +213,8 @@ struct FreeExponentSchlick {
     static constexpr std::string_view kGlslFunction = "metalfit_schlick_p";
     static constexpr std::array<std::string_view, 1> kGlslFiles{"schlick_p"};
     static constexpr MaterialxForm kMaterialx = MaterialxForm::stand_in;
-    static constexpr std::string_view kMaterialxStandIn = "generalized_schlick_bsdf's exponent is a scalar, p is per channel";
+    static constexpr std::string_view kMaterialxStandIn =
+        "generalized_schlick_bsdf's exponent is a scalar, p is per channel";
     template <class T>
     static T evaluate(const T* p, const T& mu) {
         using std::pow;
@@ -232,7 +236,9 @@ struct WithoutMaterialxForm {
     static constexpr std::string_view kGlslFunction = "metalfit_x";
     static constexpr std::array<std::string_view, 1> kGlslFiles{"x"};
     template <class T>
-    static T evaluate(const T* p, const T&) { return p[0]; }
+    static T evaluate(const T* p, const T&) {
+        return p[0];
+    }
     static std::vector<ClosedForm> closed_forms(const ClosedFormInput&) { return {}; }
     static std::vector<ChannelParameters> neutral_starts() { return {{0.5}}; }
 };
@@ -248,7 +254,8 @@ TEST(ModelRegistry, TheTestModelEvaluatesItsOwnCurve) {
     const double p[2] = {0.3, 5.0};
     EXPECT_DOUBLE_EQ(FreeExponentSchlick::evaluate(p, 0.0), 1.0);
     EXPECT_DOUBLE_EQ(FreeExponentSchlick::evaluate(p, 1.0), 0.3);
-    for (double mu : {0.1, 0.4, 0.8}) EXPECT_NEAR(FreeExponentSchlick::evaluate(p, mu), models::Schlick::evaluate(p, mu), 1e-15);
+    for (double mu : {0.1, 0.4, 0.8})
+        EXPECT_NEAR(FreeExponentSchlick::evaluate(p, mu), models::Schlick::evaluate(p, mu), 1e-15);
 }
 
 }  // namespace

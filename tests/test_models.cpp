@@ -1,5 +1,5 @@
 // Cheap Fresnel models: each checked against an independent form written here (the complex-form exact Fresnel,
-// the published formulas of FORMULAS.md §2–4), against finite differences (Ceres Jets), and its GLSL text parsed.
+// the published formulas: docs/fitting.md, "Models", and docs/references.md), against finite differences (Ceres Jets), and its GLSL text parsed.
 #include <ceres/jet.h>
 #include <gtest/gtest.h>
 
@@ -17,9 +17,9 @@
 #include "libfit/base/errors.hpp"
 #include "libfit/base/quadrature.hpp"
 #include "libfit/models/lazanyi_comp/lazanyi_comp.hpp"
-#include "libfit/optics/fresnel.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/models/registry.hpp"
+#include "libfit/optics/fresnel.hpp"
 #include "test_support.hpp"
 
 namespace metalfit {
@@ -28,7 +28,7 @@ namespace {
 using C = std::complex<double>;
 using Params = std::vector<double>;
 
-// ---- independent forms (FORMULAS.md), written without the library's helpers ----
+// ---- independent forms (docs/fitting.md, "Models"), written without the library's helpers ----
 
 double schlick(double f0, double mu) { return f0 + (1.0 - f0) * std::pow(1.0 - mu, 5.0); }
 
@@ -41,7 +41,9 @@ double lazanyi_comp(double n, double k, double a, double alpha, double mu) {
 }
 
 double eval(const Model& m, const Params& p, double mu) { return m.evaluate(std::span<const double>(p), mu); }
-float eval_f(const Model& m, const std::vector<float>& p, float mu) { return m.evaluate(std::span<const float>(p), mu); }
+float eval_f(const Model& m, const std::vector<float>& p, float mu) {
+    return m.evaluate(std::span<const float>(p), mu);
+}
 
 // μ = 0, 1e-6, 1e-3, 0.01, 0.02, …, 1.
 std::vector<double> mu_grid() {
@@ -397,8 +399,8 @@ void check_jet_derivatives(const std::vector<JetCase>& cases, const std::vector<
                 };
                 const bool forward = !c.kind.empty() && c.kind[i] == Difference::forward;
                 // Second order either way: central (f(+h) − f(−h))/2h, forward (−3f(0) + 4f(h) − f(2h))/2h.
-                const double fd = forward ? (-3.0 * at(0.0) + 4.0 * at(h) - at(2.0 * h)) / (2.0 * h)
-                                          : (at(h) - at(-h)) / (2.0 * h);
+                const double fd =
+                    forward ? (-3.0 * at(0.0) + 4.0 * at(h) - at(2.0 * h)) / (2.0 * h) : (at(h) - at(-h)) / (2.0 * h);
                 const double tol = std::max(1e-8, 1e-5 * std::abs(fd));
                 EXPECT_NEAR(d, fd, tol) << M::kId << " d/d" << M::kParameters[i].name << " p=(" << c.p[0]
                                         << (P > 1 ? ", " + std::to_string(c.p[1]) : std::string())
@@ -505,7 +507,8 @@ TEST(ModelRegistry, AllModelsInFixedOrder) {
         EXPECT_EQ(&find_model(registered[i]), models[i]);
         EXPECT_FALSE(models[i]->title().empty()) << registered[i];
     }
-    const std::vector<std::string_view> published{"schlick", "lazanyi", "lazanyi-comp", "f82-tint", "conductor-rgb", "gulbrandsen"};
+    const std::vector<std::string_view> published{"schlick",  "lazanyi",       "lazanyi-comp",
+                                                  "f82-tint", "conductor-rgb", "gulbrandsen"};
     ASSERT_GE(registered.size(), published.size());
     EXPECT_TRUE(std::equal(published.begin(), published.end(), registered.begin()));
 }
@@ -606,7 +609,8 @@ std::vector<GlslFunction> glsl_definitions(const std::string& src) {
         std::size_t start = 0;
         while (start <= params.size()) {
             const auto comma = params.find(',', start);
-            const std::string one = trim(params.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+            const std::string one =
+                trim(params.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
             if (!one.empty()) {
                 const auto space = one.find_last_of(" \t");
                 f.params.emplace_back(space == std::string::npos ? "" : trim(one.substr(0, space)),
@@ -657,8 +661,8 @@ TEST(ModelGlsl, SourceDefinesTheModelFunctionAndEverythingItCalls) {
 TEST(ModelGlsl, SignatureMatchesParameterNames) {
     for (const Model* m : all_models()) {
         const auto defs = glsl_definitions(strip_comments(m->glsl_source()));
-        const auto it = std::find_if(defs.begin(), defs.end(),
-                                     [&](const GlslFunction& f) { return f.name == m->glsl_function(); });
+        const auto it =
+            std::find_if(defs.begin(), defs.end(), [&](const GlslFunction& f) { return f.name == m->glsl_function(); });
         ASSERT_NE(it, defs.end()) << m->id();
         EXPECT_EQ(it->return_type, "vec3") << m->id();
         const auto params = m->parameters();

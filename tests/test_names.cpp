@@ -55,17 +55,20 @@ TEST(Names, CommentTextIsOneVisibleLineThatNoLineCommentCanContinue) {
     EXPECT_EQ(text.find("\u202E"), std::string::npos);  // direction override shown, not applied
     EXPECT_NE(text.find("<U+202E>"), std::string::npos);
     EXPECT_NE(text.find("<U+2028>"), std::string::npos);
-    EXPECT_NE(text.back(), '\\');  // "// ...\" would swallow the next line of a shader
+    EXPECT_NE(text.back(), '\\');                            // "// ...\" would swallow the next line of a shader
     EXPECT_NE(text.find("#define X 1"), std::string::npos);  // kept as text, on the comment's line
     // Plain text and UTF-8 letters pass unchanged; a backslash inside the line stays.
-    EXPECT_EQ(comment_text("Gold (Au), Johnson & Christy 1972: n, k; Å \\ ok"), "Gold (Au), Johnson & Christy 1972: n, k; Å \\ ok");
+    EXPECT_EQ(comment_text("Gold (Au), Johnson & Christy 1972: n, k; Å \\ ok"),
+              "Gold (Au), Johnson & Christy 1972: n, k; Å \\ ok");
     EXPECT_EQ(comment_text("ends in \\"), "ends in \\x5C");
 }
 
 TEST(Names, CStringLiteralsReadBackAsTheBytesGiven) {
-    for (const std::string& s : {std::string(""), std::string("Au"), std::string("a\"b\\c"), std::string("line\n#error x"),
-                                std::string("\u202E right-to-left"), std::string("octal \1""23 then digits 456"),
-                                std::string("nul\0inside", 10)}) {
+    for (const std::string& s : {std::string(""), std::string("Au"), std::string("a\"b\\c"),
+                                 std::string("line\n#error x"), std::string("\u202E right-to-left"),
+                                 std::string("octal \1"
+                                             "23 then digits 456"),
+                                 std::string("nul\0inside", 10)}) {
         const std::string literal = c_string_literal(s);
         EXPECT_EQ(read_c_string_literal(literal), s) << literal;
     }

@@ -50,8 +50,10 @@ const Mat kP3 = rgb_to_xyz({{{0.680, 0.320}, {0.265, 0.690}, {0.150, 0.060}}}, k
 const Mat kRec2020 = rgb_to_xyz({{{0.708, 0.292}, {0.170, 0.797}, {0.131, 0.046}}}, kD65);
 const Mat kAdobeRgb = rgb_to_xyz({{{0.64, 0.33}, {0.21, 0.71}, {0.15, 0.06}}}, kD65);
 // AP0 and AP1 with the ACES white, seen from D65 XYZ through the Bradford adaptation (what the _BFD builtins do).
-const Mat kAp0 = bradford(kAcesWhite, kD65) * rgb_to_xyz({{{0.7347, 0.2653}, {0.0, 1.0}, {0.0001, -0.0770}}}, kAcesWhite);
-const Mat kAp1 = bradford(kAcesWhite, kD65) * rgb_to_xyz({{{0.713, 0.293}, {0.165, 0.830}, {0.128, 0.044}}}, kAcesWhite);
+const Mat kAp0 =
+    bradford(kAcesWhite, kD65) * rgb_to_xyz({{{0.7347, 0.2653}, {0.0, 1.0}, {0.0001, -0.0770}}}, kAcesWhite);
+const Mat kAp1 =
+    bradford(kAcesWhite, kD65) * rgb_to_xyz({{{0.713, 0.293}, {0.165, 0.830}, {0.128, 0.044}}}, kAcesWhite);
 
 // IEC 61966-2-1 encoding (linear → sRGB-encoded).
 double srgb_encode(double v) { return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055; }
@@ -107,8 +109,8 @@ Vec apply(const OCIO::ConstConfigRcPtr& config, const std::string& from, const s
 }
 
 // Linear Rec.709 values in [0, 1] (encoded spaces are defined there), each channel distinct, plus mid grey.
-const std::array<Vec, 6> kLinearRec709{Vec(0.5, 0.5, 0.5), Vec(0.18, 0.02, 0.9), Vec(0.002, 0.25, 0.05),
-                                        Vec(0.8, 0.6, 0.4), Vec(0.05, 0.05, 0.05), Vec(0.35, 0.7, 0.2)};
+const std::array<Vec, 6> kLinearRec709{Vec(0.5, 0.5, 0.5), Vec(0.18, 0.02, 0.9),  Vec(0.002, 0.25, 0.05),
+                                       Vec(0.8, 0.6, 0.4), Vec(0.05, 0.05, 0.05), Vec(0.35, 0.7, 0.2)};
 
 TEST(ShippedOcioConfig, PassesOcioValidation) {
     EXPECT_NO_THROW(shipped()->validate());
@@ -158,12 +160,18 @@ TEST(ShippedOcioConfig, EveryMaterialxColourSpaceNameResolvesToItsSpace) {
     // MaterialX 1.39's colour spaces (libraries/cmlib/cmlib_defs.mtlx, the *_to_lin_rec709 transforms; lin_srgb and
     // lin_ap1 are its aliases of lin_rec709 and acescg).
     const std::map<std::string, std::string> materialx{
-        {"srgb_texture", "sRGB - Texture"},     {"lin_rec709", "Linear Rec.709 (sRGB)"},
-        {"lin_srgb", "Linear Rec.709 (sRGB)"},  {"g22_rec709", "Gamma 2.2 Rec.709"},
-        {"g18_rec709", "Gamma 1.8 Rec.709"},    {"rec709_display", "Gamma 2.4 Rec.709"},
-        {"acescg", "ACEScg"},                   {"lin_ap1", "ACEScg"},
-        {"g22_ap1", "Gamma 2.2 AP1"},           {"srgb_displayp3", "sRGB Encoded P3-D65"},
-        {"lin_displayp3", "Linear P3-D65"},     {"adobergb", "AdobeRGB"},
+        {"srgb_texture", "sRGB - Texture"},
+        {"lin_rec709", "Linear Rec.709 (sRGB)"},
+        {"lin_srgb", "Linear Rec.709 (sRGB)"},
+        {"g22_rec709", "Gamma 2.2 Rec.709"},
+        {"g18_rec709", "Gamma 1.8 Rec.709"},
+        {"rec709_display", "Gamma 2.4 Rec.709"},
+        {"acescg", "ACEScg"},
+        {"lin_ap1", "ACEScg"},
+        {"g22_ap1", "Gamma 2.2 AP1"},
+        {"srgb_displayp3", "sRGB Encoded P3-D65"},
+        {"lin_displayp3", "Linear P3-D65"},
+        {"adobergb", "AdobeRGB"},
         {"lin_adobergb", "Linear AdobeRGB"},
     };
     for (const auto& [name, space] : materialx) {

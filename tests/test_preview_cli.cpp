@@ -3,8 +3,8 @@
 
 #include <cstdio>
 #include <fstream>
-#include <set>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include <sys/stat.h>
 
@@ -20,7 +20,9 @@ namespace {
 
 using CommandRun = CommandResult;
 
-CommandRun glpreview(const std::string& arguments, const TempDir& dir) { return run_command(GLPREVIEW_EXE, arguments, dir.path()); }
+CommandRun glpreview(const std::string& arguments, const TempDir& dir) {
+    return run_command(GLPREVIEW_EXE, arguments, dir.path());
+}
 
 TEST(PreviewCli, MalformedSceneIsOneLineErrorExit3AndWritesNothing) {
     TempDir dir;
@@ -46,11 +48,13 @@ TEST(PreviewCli, BatchRendersEveryScenesFilesAsSeparateRunsDo) {
         "spheres": [{"center": [0, 1, 0], "radius": 0.5, "material": "Cu", "fresnel": "schlick"}]})");
     const fs::path rough = dir.write("rough.json", R"({"image": {"width": 32, "height": 24},
         "spheres": [{"center": [0, 1, 0], "radius": 0.5, "roughness": 0.4}], "outputs": {"reference_samples": 8}})");
-    const CommandRun batch = glpreview("--batch " + room.string() + " " + rough.string() + " -o " + (dir.path() / "batch").string(), dir);
+    const CommandRun batch =
+        glpreview("--batch " + room.string() + " " + rough.string() + " -o " + (dir.path() / "batch").string(), dir);
     ASSERT_EQ(batch.exit_code, 0) << batch.err;
     for (const char* stem : {"room", "rough"}) {
         const CommandRun single = glpreview((dir.path() / (std::string(stem) + ".json")).string() + " -o " +
-                                                (dir.path() / "single" / stem).string(), dir);
+                                                (dir.path() / "single" / stem).string(),
+                                            dir);
         ASSERT_EQ(single.exit_code, 0) << single.err;
         // One GL context for both scenes changes nothing in what each writes (PNGs carry no date).
         for (const char* file : {"beauty.png", "reference.png", "difference.png"})
@@ -104,9 +108,11 @@ TEST(PreviewCli, WritesTheRequestedFilesAndMetrics) {
     const CommandRun run = glpreview(scene.string() + " -o " + (dir.path() / "out").string(), dir);
     ASSERT_EQ(run.exit_code, 0) << run.err;
     std::vector<std::string> files;
-    for (const auto& entry : fs::directory_iterator(dir.path() / "out")) files.push_back(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(dir.path() / "out"))
+        files.push_back(entry.path().filename().string());
     std::sort(files.begin(), files.end());
-    EXPECT_EQ(files, (std::vector<std::string>{"beauty.exr", "difference.exr", "metrics.json", "reference.exr", "timings.json"}));
+    EXPECT_EQ(files, (std::vector<std::string>{"beauty.exr", "difference.exr", "metrics.json", "reference.exr",
+                                               "timings.json"}));
     const auto metrics = nlohmann::json::parse(read_file(dir.path() / "out" / "metrics.json"));
     const auto timings = nlohmann::json::parse(read_file(dir.path() / "out" / "timings.json"));
     ASSERT_EQ(metrics["spheres"].size(), 2u);
@@ -131,7 +137,8 @@ TEST(PreviewCli, WritesTheRequestedFilesAndMetrics) {
 // Issue 18 item 5, issue 13 items 7–9 end to end: the exit codes and one-line messages.
 TEST(PreviewCli, SceneValidationGaps) {
     TempDir dir;
-    const fs::path scene = dir.write("s.json", R"({"image": {"width": 24, "height": 16}, "spheres": [{"center": [0, 1, 0]}],
+    const fs::path scene =
+        dir.write("s.json", R"({"image": {"width": 24, "height": 16}, "spheres": [{"center": [0, 1, 0]}],
                                                   "outputs": {"png": false}})");
     CommandRun run = glpreview(scene.string() + " --size 8193x10 --explain", dir);
     EXPECT_EQ(run.exit_code, 2);
@@ -142,22 +149,28 @@ TEST(PreviewCli, SceneValidationGaps) {
     const fs::path overflow = dir.write("overflow.json", R"({"spheres": [{"center": [0, 1, 1e999]}]})");
     run = glpreview(overflow.string() + " --explain", dir);
     EXPECT_EQ(run.exit_code, 3);
-    EXPECT_TRUE(Contains(run.err, "overflow.json:1: spheres[0].center[2]: number beyond the range of a double")) << run.err;
+    EXPECT_TRUE(Contains(run.err, "overflow.json:1: spheres[0].center[2]: number beyond the range of a double"))
+        << run.err;
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
 
-    const fs::path outside = dir.write("outside.json", R"({"spheres": [{"center": [0, 1, 0], "material": "/etc/hostname.csv"}]})");
+    const fs::path outside =
+        dir.write("outside.json", R"({"spheres": [{"center": [0, 1, 0], "material": "/etc/hostname.csv"}]})");
     run = glpreview(outside.string() + " --explain", dir);
     EXPECT_EQ(run.exit_code, 3);
-    EXPECT_TRUE(Contains(run.err, "spheres[0].material: a path outside the scene's folder and the database")) << run.err;
+    EXPECT_TRUE(Contains(run.err, "spheres[0].material: a path outside the scene's folder and the database"))
+        << run.err;
     EXPECT_EQ(glpreview(outside.string() + " --explain --allow-paths-outside", dir).exit_code, 0);
 
     // A sphere behind the camera: "not visible", not "nan"; warnings for what the scene asks that means nothing.
-    const fs::path hidden = dir.write("hidden.json", R"({"image": {"width": 24, "height": 16}, "camera": {"position": [0, 1.2, 2.5]},
+    const fs::path hidden =
+        dir.write("hidden.json", R"({"image": {"width": 24, "height": 16}, "camera": {"position": [0, 1.2, 2.5]},
         "spheres": [{"center": [0, 1, 0], "radius": 0.4, "reflection": "classic", "iterations": 3}, {"center": [0, 1, 2.9], "radius": 0.05}],
         "outputs": {"png": false, "localization": true}})");
     run = glpreview(hidden.string() + " -o " + (dir.path() / "out").string(), dir);
     ASSERT_EQ(run.exit_code, 0) << run.err;
-    EXPECT_TRUE(Contains(run.out, "sphere 1 gold         reference     distance-impostor  not visible (no pixel shows it)")) << run.out;
+    EXPECT_TRUE(
+        Contains(run.out, "sphere 1 gold         reference     distance-impostor  not visible (no pixel shows it)"))
+        << run.out;
     EXPECT_FALSE(Contains(run.out, "nan"));
     EXPECT_TRUE(Contains(run.err, "warning: " + hidden.string() + ": spheres[0].iterations: ignored")) << run.err;
     EXPECT_TRUE(fs::exists(dir.path() / "out" / "localization.exr"));
@@ -167,7 +180,8 @@ TEST(PreviewCli, SceneValidationGaps) {
 // a one-line error naming the file, exit 3, and no temporary file left behind.
 TEST(PreviewCli, AnOutputThatCannotBeWrittenIsAnErrorAndLeavesNoPartialFile) {
     TempDir dir;
-    const fs::path scene = dir.write("s.json", R"({"image": {"width": 16, "height": 16}, "spheres": [{"center": [0, 1.5, 0]}],
+    const fs::path scene =
+        dir.write("s.json", R"({"image": {"width": 16, "height": 16}, "spheres": [{"center": [0, 1.5, 0]}],
                                                   "outputs": {"png": false, "reference": false, "difference": false, "metrics": false}})");
     fs::create_directories(dir.path() / "out" / "beauty.exr" / "occupied");
     const CommandRun run = glpreview(scene.string() + " -o " + (dir.path() / "out").string(), dir);
@@ -175,21 +189,24 @@ TEST(PreviewCli, AnOutputThatCannotBeWrittenIsAnErrorAndLeavesNoPartialFile) {
     EXPECT_TRUE(Contains(run.err, "beauty.exr")) << run.err;
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
     std::vector<std::string> left;
-    for (const auto& entry : fs::directory_iterator(dir.path() / "out")) left.push_back(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(dir.path() / "out"))
+        left.push_back(entry.path().filename().string());
     EXPECT_EQ(left, (std::vector<std::string>{"beauty.exr"}));
 }
 
 // issue 13, item 4: the outputs are one unit: when a later one cannot be written, the earlier ones are not left.
 TEST(PreviewCli, ALaterOutputThatFailsLeavesNoEarlierOne) {
     TempDir dir;
-    const fs::path scene = dir.write("s.json", R"({"image": {"width": 16, "height": 16}, "spheres": [{"center": [0, 1.5, 0]}],
+    const fs::path scene =
+        dir.write("s.json", R"({"image": {"width": 16, "height": 16}, "spheres": [{"center": [0, 1.5, 0]}],
                                                   "outputs": {"png": false, "difference": false}})");
     fs::create_directories(dir.path() / "out" / "metrics.json" / "occupied");  // written after beauty and reference
     const CommandRun run = glpreview(scene.string() + " -o " + (dir.path() / "out").string(), dir);
     EXPECT_EQ(run.exit_code, 3) << run.err;
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
     std::vector<std::string> left;
-    for (const auto& entry : fs::directory_iterator(dir.path() / "out")) left.push_back(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(dir.path() / "out"))
+        left.push_back(entry.path().filename().string());
     EXPECT_EQ(left, (std::vector<std::string>{"metrics.json"}));  // no beauty.exr, no reference.exr
 }
 
@@ -226,7 +243,8 @@ TEST(PreviewCli, BenchmarkModesPrintTheirJson) {
         }
         for (const auto& r : rows)
             if (r["mode"] == "distance-impostor" && r["iterations"] == 4) {
-                EXPECT_LT(r["rmse"].get<double>(), rows[0]["rmse"].get<double>()) << room["room"] << " " << r["strategy"];
+                EXPECT_LT(r["rmse"].get<double>(), rows[0]["rmse"].get<double>())
+                    << room["room"] << " " << r["strategy"];
             }
     }
 }
@@ -253,7 +271,8 @@ TEST(PreviewCli, TheLightsBenchmarkPrintsItsRatiosToTheMirrorFrame) {
 fs::path write_equirect_sheet_scene(const TempDir& dir) {
     return dir.write("sky-sheet.json", R"({"image": {"width": 48, "height": 48},
         "camera": {"position": [0, 0.2, 3.0], "look_at": [0, 0.2, 0], "fov_y_deg": 30},
-        "environment": {"type": "equirect", "file": ")" + (kData / "scenes" / "sky.hdr").string() + R"(", "intensity": 1.0},
+        "environment": {"type": "equirect", "file": ")" +
+                                           (kData / "scenes" / "sky.hdr").string() + R"(", "intensity": 1.0},
         "spheres": [{"center": [0, 0.2, 0], "radius": 0.5, "reflection": "classic"}]})");
 }
 
@@ -272,7 +291,8 @@ TEST(PreviewCli, SheetRendersUnderAnEquirectEnvironment) {
 // box; what each texel holds is what the CPU tracer sees along that texel's direction.
 TEST(PreviewCli, CaptureProbeWritesTheRoomAsAnEquirectOnItsOwnBox) {
     TempDir dir;
-    const fs::path room = dir.write("room.json", R"({"environment": {"type": "room", "min": [-2, 0, -3], "max": [4, 2.5, 3],
+    const fs::path room =
+        dir.write("room.json", R"({"environment": {"type": "room", "min": [-2, 0, -3], "max": [4, 2.5, 3],
         "ceiling": [0.3, 0.4, 0.5], "panels": [], "wall_x_max": [0.1, 0.2, 0.7], "reference_point": [0.5, 1.25, 0.25], "cube_size": 64},
         "spheres": [{"center": [0, 1, 0], "radius": 0.5, "material": "Cu", "roughness": 0.3}]})");
     const CommandRun run = glpreview(room.string() + " --capture-probe 64x32 -o " + (dir.path() / "out").string(), dir);
@@ -300,7 +320,8 @@ TEST(PreviewCli, CaptureProbeWritesTheRoomAsAnEquirectOnItsOwnBox) {
     const glpreview::EnvironmentTracer tracer(source.environment);
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
-            const RGB seen = tracer.trace(source.environment.reference(), glpreview::equirect_direction(x, y, 64, 32)).radiance;
+            const RGB seen =
+                tracer.trace(source.environment.reference(), glpreview::equirect_direction(x, y, 64, 32)).radiance;
             ASSERT_NEAR(image.at(x, y).b, seen.b, 1e-3 * seen.b + 1e-6) << x << "," << y;  // half floats
         }
     // Independent of the tracer: the top row looks at the plain ceiling, the texel at u = 0.75 on the middle rows at
@@ -312,11 +333,13 @@ TEST(PreviewCli, CaptureProbeWritesTheRoomAsAnEquirectOnItsOwnBox) {
     // A sphere room gives its sphere; an image at infinity has no proxy; the size is checked.
     const fs::path sphere_room = dir.write("sphere-room.json", R"({"environment": {"type": "sphere-room", "radius": 6},
         "spheres": [{"center": [0, 0, 0], "radius": 0.5}]})");
-    ASSERT_EQ(glpreview(sphere_room.string() + " --capture-probe 16x8 -o " + (dir.path() / "sphere").string(), dir).exit_code, 0);
+    ASSERT_EQ(
+        glpreview(sphere_room.string() + " --capture-probe 16x8 -o " + (dir.path() / "sphere").string(), dir).exit_code,
+        0);
     const glpreview::Scene sphere_probe = glpreview::load_scene(dir.path() / "sphere" / "probe.json");
     EXPECT_EQ(std::get<glpreview::SphereProxy>(*sphere_probe.environment.equirect.proxy).radius, 6);
-    const CommandRun infinity = glpreview(write_equirect_sheet_scene(dir).string() + " --capture-probe 16x8 -o " +
-                                              (dir.path() / "sky").string(), dir);
+    const CommandRun infinity = glpreview(
+        write_equirect_sheet_scene(dir).string() + " --capture-probe 16x8 -o " + (dir.path() / "sky").string(), dir);
     EXPECT_EQ(infinity.exit_code, 2);
     EXPECT_TRUE(Contains(infinity.err, "image at infinity")) << infinity.err;
     EXPECT_EQ(std::count(infinity.err.begin(), infinity.err.end(), '\n'), 1) << infinity.err;
@@ -329,7 +352,8 @@ TEST(PreviewCli, CaptureProbeWritesTheRoomAsAnEquirectOnItsOwnBox) {
 TEST(PreviewCli, ExplainWithSheetPrintsTheSheetsPlan) {
     TempDir dir;
     const fs::path scene = write_equirect_sheet_scene(dir);
-    const CommandRun run = glpreview(scene.string() + " --sheet Au,Cu --explain -o " + (dir.path() / "out").string(), dir);
+    const CommandRun run =
+        glpreview(scene.string() + " --sheet Au,Cu --explain -o " + (dir.path() / "out").string(), dir);
     ASSERT_EQ(run.exit_code, 0) << run.err;
     EXPECT_TRUE(Contains(run.out, "sheet-fresnel")) << run.out;
     EXPECT_TRUE(Contains(run.out, "Au, Cu")) << run.out;
@@ -421,7 +445,8 @@ TEST(PreviewImageInput, HostileHeadersAndSpecialFilesAreBadInputNotMemoryOrAHang
         }
         return "";
     };
-    const fs::path huge = dir.write("huge.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 20000 +X 20000\n" + std::string(200, '\x02'));
+    const fs::path huge =
+        dir.write("huge.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 20000 +X 20000\n" + std::string(200, '\x02'));
     const std::string h = message_of(huge);
     EXPECT_TRUE(h.starts_with(huge.string() + ": ")) << h;
     EXPECT_TRUE(Contains(h, "20000 x 20000")) << h;

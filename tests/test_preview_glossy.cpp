@@ -87,7 +87,8 @@ RGB direct_integral(const SphereFresnel& f, double mu, double roughness) {
 }
 
 TEST(DfgTable, EqualsADirectIntegralOfTheSpheresOwnFresnel) {
-    for (const auto& [material, model] : {std::pair{"Au", "reference"}, std::pair{"Cu", "f82-tint"}, std::pair{"Al", "schlick"}}) {
+    for (const auto& [material, model] :
+         {std::pair{"Au", "reference"}, std::pair{"Cu", "f82-tint"}, std::pair{"Al", "schlick"}}) {
         const SphereFresnel& f = fresnel_of(material, model);
         const DfgTable table = make_dfg_table(f);
         // Roughness 0: F(μ) itself.
@@ -100,7 +101,8 @@ TEST(DfgTable, EqualsADirectIntegralOfTheSpheresOwnFresnel) {
                 const double mu = i / double(DfgTable::kMuSize - 1), r = j / double(DfgTable::kRoughnessSize - 1);
                 const RGB expected = direct_integral(f, mu, r), got = table.at(i, j);
                 for (int c = 0; c < 3; ++c)
-                    EXPECT_NEAR(got[c], expected[c], 2e-3) << material << " " << model << " mu " << mu << " roughness " << r << " channel " << c;
+                    EXPECT_NEAR(got[c], expected[c], 2e-3)
+                        << material << " " << model << " mu " << mu << " roughness " << r << " channel " << c;
             }
     }
 }
@@ -112,7 +114,8 @@ TEST(DfgTable, DiffersBetweenModelsOfTheSameMaterial) {
     double largest = 0;
     for (double mu : {0.05, 0.2, 0.5})
         for (double r : {0.25, 0.5, 1.0})
-            for (int c = 0; c < 3; ++c) largest = std::max(largest, std::abs(dfg_integral(a, mu, r)[c] - dfg_integral(b, mu, r)[c]));
+            for (int c = 0; c < 3; ++c)
+                largest = std::max(largest, std::abs(dfg_integral(a, mu, r)[c] - dfg_integral(b, mu, r)[c]));
     EXPECT_GT(largest, 1e-3);
 }
 
@@ -188,7 +191,8 @@ TEST(MonteCarloReference, ItsStandardErrorDescribesItsDeviation) {
     for (std::size_t p = 0; p < analytic.sphere_id.size(); ++p) {
         if (analytic.sphere_id[p] < 0) continue;
         for (int c = 0; c < 3; ++c) {
-            deviation += std::pow(double(few.render.image.rgb[3 * p + c]) - double(many.render.image.rgb[3 * p + c]), 2);
+            deviation +=
+                std::pow(double(few.render.image.rgb[3 * p + c]) - double(many.render.image.rgb[3 * p + c]), 2);
             error += std::pow(double(few.standard_error.rgb[3 * p + c]), 2);
             ++count;
         }
@@ -301,12 +305,14 @@ TEST(PreviewGlossy, RoughnessZeroGivesTodaysImagesByteForByte) {
     const std::string spheres = R"([{"center": [-0.6, 0.9, 0], "radius": 0.45, "reflection": "classic"},
         {"center": [0.0, 0.9, 0], "radius": 0.45, "material": "Cu", "fresnel": "schlick", "reflection": "box-parallax"},
         {"center": [0.6, 0.9, 0], "radius": 0.45, "material": "Al"}])";
-    const std::string with_key = R"([{"center": [-0.6, 0.9, 0], "radius": 0.45, "reflection": "classic", "roughness": 0},
+    const std::string with_key =
+        R"([{"center": [-0.6, 0.9, 0], "radius": 0.45, "reflection": "classic", "roughness": 0},
         {"center": [0.0, 0.9, 0], "radius": 0.45, "material": "Cu", "fresnel": "schlick", "reflection": "box-parallax", "roughness": 0, "glossy": "prefiltered"},
         {"center": [0.6, 0.9, 0], "radius": 0.45, "material": "Al", "roughness": 0.0}])";
     auto run = [&](const std::string& s, const std::string& dir) {
-        const Scene scene = parse_scene(R"({"image": {"width": 64, "height": 48}, "environment": {"cube_size": 64}, "spheres": )" + s + "}",
-                                        "scene.json");
+        const Scene scene = parse_scene(
+            R"({"image": {"width": 64, "height": 48}, "environment": {"cube_size": 64}, "spheres": )" + s + "}",
+            "scene.json");
         PreviewOptions options{kData, choose_ocio_config(std::nullopt, kData), dir, 0};
         return run_preview(scene, options, &gl());
     };
@@ -319,7 +325,8 @@ TEST(PreviewGlossy, RoughnessZeroGivesTodaysImagesByteForByte) {
     EXPECT_EQ(today.beauty->rgb, zero.beauty->rgb);
     EXPECT_EQ(today.reference->image.rgb, zero.reference->image.rgb);
     // The files are the same bytes: the pixels, and the headers (the capture date is $SOURCE_DATE_EPOCH's).
-    for (const char* file : {"beauty.exr", "beauty.png", "reference.exr", "reference.png", "difference.exr", "difference.png"})
+    for (const char* file :
+         {"beauty.exr", "beauty.png", "reference.exr", "reference.png", "difference.exr", "difference.png"})
         EXPECT_EQ(test::read_file(dir.path() / "a" / file), test::read_file(dir.path() / "b" / file)) << file;
     const Imf::InputFile exr((dir.path() / "b" / "beauty.exr").c_str());
     ASSERT_TRUE(Imf::hasCapDate(exr.header()));
@@ -335,7 +342,8 @@ TEST(PreviewGlossy, ARoughSceneRunsThroughTheGraphWithItsNoiseInTheMetrics) {
     const Scene scene = parse_scene(R"({"image": {"width": 48, "height": 36}, "environment": {"cube_size": 64},
         "spheres": [{"center": [-0.5, 0.9, 0], "radius": 0.45, "roughness": 0.3},
                     {"center": [0.5, 0.9, 0], "radius": 0.45, "material": "Cu", "fresnel": "f82-tint", "roughness": 0.6, "reflection": "box-parallax"}],
-        "outputs": {"reference_samples": 32, "png": false}})", "scene.json");
+        "outputs": {"reference_samples": 32, "png": false}})",
+                                    "scene.json");
     test::TempDir dir;
     PreviewOptions options{kData, choose_ocio_config(std::nullopt, kData), dir.path(), 0};
     const PreviewResult result = run_preview(scene, options, &gl());
@@ -373,9 +381,9 @@ Scene localized(Scene scene, int m) {
 TEST(PreviewLocalizedGlossy, FurnaceEqualsTheDfgTablesIntegral) {
     gl();
     const DfgTable table = make_dfg_table(unit_fresnel());
-    for (const auto& [roughness, m] : {std::pair{0.5, 4}, std::pair{0.75, 16}, std::pair{1.0, 8}, std::pair{1.0, 16}, std::pair{0.55, 4},
-                                       std::pair{0.55, 6}, std::pair{0.55, 12}, std::pair{0.9, 4}, std::pair{0.9, 6}, std::pair{0.9, 12},
-                                       std::pair{0.75, 6}, std::pair{1.0, 12}}) {
+    for (const auto& [roughness, m] : {std::pair{0.5, 4}, std::pair{0.75, 16}, std::pair{1.0, 8}, std::pair{1.0, 16},
+                                       std::pair{0.55, 4}, std::pair{0.55, 6}, std::pair{0.55, 12}, std::pair{0.9, 4},
+                                       std::pair{0.9, 6}, std::pair{0.9, 12}, std::pair{0.75, 6}, std::pair{1.0, 12}}) {
         const Scene scene = localized(furnace_scene(roughness), m);
         GpuRenderer gpu(scene, plan_features(scene), {&unit_fresnel()}, nullptr);
         gpu.capture_environment();
@@ -393,8 +401,8 @@ TEST(PreviewLocalizedGlossy, FurnaceEqualsTheDfgTablesIntegral) {
                 ++n;
             }
         ASSERT_GT(n, 500);
-        std::printf("furnace, localized, roughness %.2f, M = %2d (k = %d): mean |error| %.5f, worst %.5f\n", roughness, m,
-                    localized_subdivisions(roughness, m), sum / n, worst);
+        std::printf("furnace, localized, roughness %.2f, M = %2d (k = %d): mean |error| %.5f, worst %.5f\n", roughness,
+                    m, localized_subdivisions(roughness, m), sum / n, worst);
         EXPECT_LT(sum / n, 1e-3) << roughness << " " << m;
         EXPECT_LT(worst, 1e-2) << roughness << " " << m;
     }
@@ -420,7 +428,9 @@ TEST(PreviewLocalizedGlossy, TheThesisSumsFurnaceErrorDecomposes) {
         }
     };
     auto corner = [](double s, double t) { return std::atan2(s * t, std::sqrt(s * s + t * t + 1)); };
-    auto rect = [&](double s0, double s1, double t0, double t1) { return corner(s1, t1) - corner(s0, t1) - corner(s1, t0) + corner(s0, t0); };
+    auto rect = [&](double s0, double s1, double t0, double t1) {
+        return corner(s1, t1) - corner(s0, t1) - corner(s1, t0) + corner(s0, t0);
+    };
     const int S = 64;
     const double room = 4;
     for (const auto& [roughness, m] : {std::pair{0.75, 16}, std::pair{1.0, 8}}) {
@@ -431,7 +441,11 @@ TEST(PreviewLocalizedGlossy, TheThesisSumsFurnaceErrorDecomposes) {
             const double nh = dot(n, normalize(v + l)), d = nh * nh * (a2 - 1) + 1;
             return a2 / (pi * d * d) / (1 + lambda(mu) + lambda(dot(n, l))) / (4 * mu);
         };
-        struct Light { Vec3 y; double dw; int face, i, j; };
+        struct Light {
+            Vec3 y;
+            double dw;
+            int face, i, j;
+        };
         std::vector<Light> lights;
         const int b = S / m;
         for (int f = 0; f < 6; ++f)
@@ -439,7 +453,8 @@ TEST(PreviewLocalizedGlossy, TheThesisSumsFurnaceErrorDecomposes) {
                 for (int i = 0; i < m; ++i) {
                     Vec3 y{0, 0, 0};
                     for (int q = j * b; q < (j + 1) * b; ++q)
-                        for (int p = i * b; p < (i + 1) * b; ++p) y = y + room * normalize(cube(f, 2.0 * (p + 0.5) / S - 1, 2.0 * (q + 0.5) / S - 1));
+                        for (int p = i * b; p < (i + 1) * b; ++p)
+                            y = y + room * normalize(cube(f, 2.0 * (p + 0.5) / S - 1, 2.0 * (q + 0.5) / S - 1));
                     const double s0 = -1 + 2.0 * i / m, t0 = -1 + 2.0 * j / m;
                     lights.push_back({(1.0 / (b * b)) * y, rect(s0, s0 + 2.0 / m, t0, t0 + 2.0 / m), f, i, j});
                 }
@@ -455,7 +470,8 @@ TEST(PreviewLocalizedGlossy, TheThesisSumsFurnaceErrorDecomposes) {
                 const Vec3 oc = basis.position - scene.spheres[0].center;
                 const double bb = dot(oc, d), disc = bb * bb - (dot(oc, oc) - 0.25);
                 if (disc < 0) continue;
-                const Vec3 p = basis.position + (-bb - std::sqrt(disc)) * d, nrm = normalize(p - scene.spheres[0].center), v = -d;
+                const Vec3 p = basis.position + (-bb - std::sqrt(disc)) * d,
+                           nrm = normalize(p - scene.spheres[0].center), v = -d;
                 const double mu = dot(v, nrm);
                 if (mu < 0.05) continue;
                 const Vec3 x = p - o;
@@ -479,7 +495,8 @@ TEST(PreviewLocalizedGlossy, TheThesisSumsFurnaceErrorDecomposes) {
                             const Vec3 w = room * dir - x;
                             const double rw = std::sqrt(dot(w, w));
                             const Vec3 lw = (1 / rw) * w;
-                            const double omega = rect(s0, s0 + 1.0 / S, t0, t0 + 1.0 / S) * room * room / (rw * rw) * dot(dir, lw);
+                            const double omega =
+                                rect(s0, s0 + 1.0 / S, t0, t0 + 1.0 / S) * room * room / (rw * rw) * dot(dir, lw);
                             region += omega;
                             region_integral += lobe(nrm, v, lw, mu) * omega;
                             (dot(nrm, lw) > 0 ? above : below) += 1;
@@ -494,14 +511,15 @@ TEST(PreviewLocalizedGlossy, TheThesisSumsFurnaceErrorDecomposes) {
                 ++n;
             }
         ASSERT_GT(n, 100);
-        std::printf("thesis's sum, roughness %.2f, M = %2d: error %+.5f = A (dw*) %+.5f + B (horizon) %+.5f + C (BRDF over the light) %+.5f"
-                    " + table %+.5f; sum of dw* %.4f, of the tiles %.4f (4 pi %.4f); the tiles' sum: mean |error| %.5f\n",
-                    roughness, m, error / n, A / n, B / n, C / n, T / n, discs / n, tiles / n, 4 * pi, tile_error / n);
-        EXPECT_GT(error / n, 1e-3);                       // the thesis's sum misses the issue's 1e-3
-        EXPECT_GT(A / n, 1e-3);                           // and Δω* is its largest term
-        EXPECT_GT(discs / n - 4 * pi, 3e-3 * 4 * pi);      // the discs cover more than the sphere
-        EXPECT_NEAR(tiles / n, 4 * pi, 1e-4 * 4 * pi);     // the patches tile it
-        EXPECT_NEAR(T / n, 0, 1e-4);                      // the table is not the cause
+        std::printf(
+            "thesis's sum, roughness %.2f, M = %2d: error %+.5f = A (dw*) %+.5f + B (horizon) %+.5f + C (BRDF over the light) %+.5f"
+            " + table %+.5f; sum of dw* %.4f, of the tiles %.4f (4 pi %.4f); the tiles' sum: mean |error| %.5f\n",
+            roughness, m, error / n, A / n, B / n, C / n, T / n, discs / n, tiles / n, 4 * pi, tile_error / n);
+        EXPECT_GT(error / n, 1e-3);                     // the thesis's sum misses the issue's 1e-3
+        EXPECT_GT(A / n, 1e-3);                         // and Δω* is its largest term
+        EXPECT_GT(discs / n - 4 * pi, 3e-3 * 4 * pi);   // the discs cover more than the sphere
+        EXPECT_NEAR(tiles / n, 4 * pi, 1e-4 * 4 * pi);  // the patches tile it
+        EXPECT_NEAR(T / n, 0, 1e-4);                    // the table is not the cause
         EXPECT_LT(tile_error / n, 5e-4);
     }
 }
@@ -542,7 +560,8 @@ TEST(PreviewLocalizedGlossy, GrowingMApproachesTheMonteCarloReference) {
         GpuRenderer gpu(s, plan_features(s), fresnel, nullptr);
         gpu.capture_environment();
         rmse[m] = sphere_errors(gpu.render(), mc.render, 1)[0].rmse;
-        std::printf("localized M = %2d: RMSE %.5f against the Monte-Carlo reference (its noise %.5f)\n", m, rmse[m], noise);
+        std::printf("localized M = %2d: RMSE %.5f against the Monte-Carlo reference (its noise %.5f)\n", m, rmse[m],
+                    noise);
     }
     EXPECT_GT(rmse[2], rmse[4]);
     EXPECT_GT(rmse[4], rmse[8]);

@@ -32,7 +32,8 @@ TEST(PreviewGlossyBench, TheTableHasEveryRoughnessAndMethodAndItsRmseIsThePrevie
         EXPECT_GT(rows[i].at("rmse").get<double>(), 0);
     }
     for (double r : {0.05, 0.1, 0.2, 0.4, 0.8})
-        for (const char* m : {"prefiltered box-parallax", "prefiltered distance-impostor", "localized M=2", "localized M=4", "localized M=8"})
+        for (const char* m : {"prefiltered box-parallax", "prefiltered distance-impostor", "localized M=2",
+                              "localized M=4", "localized M=8"})
             EXPECT_TRUE(cells.count({r, m})) << r << " " << m;
     EXPECT_EQ(cells.size(), 25u);
     ASSERT_EQ(result.at("mirror_scenes").size(), 5u);
@@ -49,9 +50,11 @@ TEST(PreviewGlossyBench, TheTableHasEveryRoughnessAndMethodAndItsRmseIsThePrevie
         ASSERT_FALSE(preview.metrics.is_null());
         const auto& sphere = preview.metrics.at("spheres").at(0);
         EXPECT_EQ(sphere.at("roughness").get<double>(), v.roughness);
-        EXPECT_NEAR(sphere.at("rmse").get<double>(), rows[i].at("rmse").get<double>(), 1e-12) << glossy_variant_name(v) << " " << v.roughness;
+        EXPECT_NEAR(sphere.at("rmse").get<double>(), rows[i].at("rmse").get<double>(), 1e-12)
+            << glossy_variant_name(v) << " " << v.roughness;
         EXPECT_NEAR(sphere.at("mean_abs").get<double>(), rows[i].at("mean_abs").get<double>(), 1e-12) << i;
-        EXPECT_NEAR(sphere.at("reference_noise").get<double>(), rows[i].at("reference_noise").get<double>(), 1e-12) << i;
+        EXPECT_NEAR(sphere.at("reference_noise").get<double>(), rows[i].at("reference_noise").get<double>(), 1e-12)
+            << i;
     }
 }
 

@@ -4,28 +4,28 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <variant>
 #include <map>
-#include <cmath>
 #include <numbers>
 #include <random>
+#include <variant>
 
-#include "glpreview/scene/camera.hpp"
+#include "glpreview/gl/gl_context.hpp"
+#include "glpreview/io/image_io.hpp"
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/environment.hpp"
-#include "glpreview/gl/gl_context.hpp"
 #include "glpreview/render/gpu_bench.hpp"
 #include "glpreview/effects/reflection_lookup.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
-#include "glpreview/io/image_io.hpp"
-#include "glpreview/render/sphere_fresnel.hpp"
 #include "glpreview/render/preview.hpp"
+#include "glpreview/render/sphere_fresnel.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
-#include "libfit/models/model.hpp"
-#include "libfit/color/color_space.hpp"
+#include "glpreview/scene/camera.hpp"
 #include "libfit/base/version.hpp"
+#include "libfit/color/color_space.hpp"
+#include "libfit/models/model.hpp"
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
@@ -60,9 +60,7 @@ Scene difficult_scene() {
                        {{1.35, 0.0, -1.65}, {1.85, 3.0, -1.15}, {0.8, 0.8, 0.85}}});
 }
 
-double angle_between(Vec3 a, Vec3 b) {
-    return std::acos(std::clamp(dot(normalize(a), normalize(b)), -1.0, 1.0));
-}
+double angle_between(Vec3 a, Vec3 b) { return std::acos(std::clamp(dot(normalize(a), normalize(b)), -1.0, 1.0)); }
 
 // Random shaded points x (relative to o) within `spread` of o, and random unit directions.
 std::vector<std::array<Vec3, 2>> random_rays(int count, double spread, unsigned seed) {
@@ -148,8 +146,9 @@ TEST(PreviewGpu, CapturedCubeMatchesTheCpuTracerAtTexelCentres) {
                 const float* v = &texels[4 * (static_cast<std::size_t>(j) * n + i)];
                 ++total;
                 worst_distance = std::max(worst_distance, std::abs(v[3] - hit.t) / hit.t);
-                const double radiance_error = std::max({std::abs(v[0] - hit.radiance.r), std::abs(v[1] - hit.radiance.g),
-                                                        std::abs(v[2] - hit.radiance.b)});
+                const double radiance_error =
+                    std::max({std::abs(v[0] - hit.radiance.r), std::abs(v[1] - hit.radiance.g),
+                              std::abs(v[2] - hit.radiance.b)});
                 if (radiance_error > 1e-4) ++mismatched;  // a checker edge crossed in float
             }
     }
@@ -180,7 +179,7 @@ TEST(PreviewGpu, ClassicLookupsReadTheDistanceAlongR) {
     EXPECT_LT(worst, 1e-2);
 }
 
-// In the empty box room the distance impostor converges to box projection (FORMULAS.md §5). Secant converges
+// In the empty box room the distance impostor converges to box projection (Lazányi 2008, ch. 4; Lagarde & Zanuttini 2012; docs/references.md). Secant converges
 // superlinearly: every lookup direction is within 1e-3 rad of box projection's after 4 iterations. False position
 // (and mixed, which continues with false-position steps) converges linearly, as regula falsi does when one end of
 // the bracket sticks: after 4 iterations 90% of the rays are within 1e-3, after 16 iterations 99%; the worst ray
@@ -198,15 +197,19 @@ TEST(PreviewGpu, DistanceImpostorConvergesToBoxProjectionInTheEmptyRoom) {
     parallax.reflection = ReflectionMode::box_parallax;
     const auto box = probe_reflection_lookups(gpu, parallax, rays);
     for (std::size_t i = 0; i < rays.size(); ++i)
-        ASSERT_LT(angle_between(box[i].lookup, box_projection(scene.environment.room, o, rays[i][0], rays[i][1])), 1e-5);
+        ASSERT_LT(angle_between(box[i].lookup, box_projection(scene.environment.room, o, rays[i][0], rays[i][1])),
+                  1e-5);
     for (Strategy strategy : {Strategy::secant, Strategy::false_position, Strategy::mixed}) {
         std::map<int, std::vector<double>> angles;  // sorted, per iteration count
         for (int iterations : {1, 4, 16}) {
             const auto results = probe_reflection_lookups(gpu, impostor(strategy, iterations), rays);
-            for (std::size_t i = 0; i < rays.size(); ++i) angles[iterations].push_back(angle_between(results[i].lookup, box[i].lookup));
+            for (std::size_t i = 0; i < rays.size(); ++i)
+                angles[iterations].push_back(angle_between(results[i].lookup, box[i].lookup));
             std::sort(angles[iterations].begin(), angles[iterations].end());
         }
-        auto quantile = [&](int iterations, double q) { return angles[iterations][static_cast<std::size_t>(q * (rays.size() - 1))]; };
+        auto quantile = [&](int iterations, double q) {
+            return angles[iterations][static_cast<std::size_t>(q * (rays.size() - 1))];
+        };
         SCOPED_TRACE(to_string(strategy));
         if (strategy == Strategy::secant) {
             EXPECT_LT(quantile(4, 1.0), 1e-3);
@@ -303,9 +306,8 @@ TEST(PreviewGpu, AnEquirectImageIsConvertedFromItsColorspaceIntoTheScenesSpace) 
     scene.space = "Linear Rec.709 (sRGB)";
     const PreviewResult named = run_preview(scene, options(), &gl());
     ASSERT_TRUE(untagged.reference && tagged.reference && named.reference);
-    constexpr double M[3][3] = {{1.7048586, -0.6217160, -0.0832993},
-                                {-0.1300768, 1.1407357, -0.0105598},
-                                {-0.0239640, -0.1289755, 1.1530216}};
+    constexpr double M[3][3] = {
+        {1.7048586, -0.6217160, -0.0832993}, {-0.1300768, 1.1407357, -0.0105598}, {-0.0239640, -0.1289755, 1.1530216}};
     const RGB corner_untagged = untagged.reference->image.at(0, 0), corner = tagged.reference->image.at(0, 0);
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(corner_untagged[c], sky_acescg[c], 1e-3);  // half-float EXR: 3 decimal digits
@@ -327,7 +329,8 @@ Mat3 mul(const Mat3& a, const Mat3& b) {
     return m;
 }
 Mat3 inverse(const Mat3& a) {
-    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                       a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
                        a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
     Mat3 m;
     for (int i = 0; i < 3; ++i)
@@ -383,7 +386,8 @@ TEST(PreviewGpu, ExrOutputsCarryTheChromaticitiesOfTheScenesSpace) {
     const std::array<double, 8> rec709{0.64, 0.33, 0.30, 0.60, 0.15, 0.06, 0.3127, 0.3290};
     const std::array<double, 8> ap1{0.713, 0.293, 0.165, 0.830, 0.128, 0.044, 0.32168, 0.33767};
     EXPECT_NEAR(adapted_chromaticities(rec709)[0], 0.64, 1e-12);  // the adaptation of D65 to D65 changes nothing
-    for (const Case& c : {Case{"", "Linear Rec.709 (sRGB)", rec709}, Case{"ACEScg", "ACEScg", adapted_chromaticities(ap1)}}) {
+    for (const Case& c :
+         {Case{"", "Linear Rec.709 (sRGB)", rec709}, Case{"ACEScg", "ACEScg", adapted_chromaticities(ap1)}}) {
         scene.space = c.space;
         PreviewOptions o = options();
         o.output_dir = dir.path() / ("out-" + c.name.substr(0, 6));
@@ -392,7 +396,8 @@ TEST(PreviewGpu, ExrOutputsCarryTheChromaticitiesOfTheScenesSpace) {
         ASSERT_TRUE(colour) << c.name;
         EXPECT_EQ(colour->space, c.name);
         const auto& k = colour->chromaticities;
-        const std::array<double, 8> got{k.red[0], k.red[1], k.green[0], k.green[1], k.blue[0], k.blue[1], k.white[0], k.white[1]};
+        const std::array<double, 8> got{k.red[0],  k.red[1],  k.green[0], k.green[1],
+                                        k.blue[0], k.blue[1], k.white[0], k.white[1]};
         for (int i = 0; i < 8; ++i) EXPECT_NEAR(got[i], c.xy[i], 5e-4) << c.name << " " << i;
     }
     // An EXR written without them has none.
@@ -408,7 +413,8 @@ std::map<std::string, std::string> png_chunks(const std::filesystem::path& file)
     EXPECT_EQ(bytes.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
     for (std::size_t at = 8; at + 12 <= bytes.size();) {
         const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(bytes[i]); };
-        const std::size_t length = (std::size_t(byte(at)) << 24) | (byte(at + 1) << 16) | (byte(at + 2) << 8) | byte(at + 3);
+        const std::size_t length =
+            (std::size_t(byte(at)) << 24) | (byte(at + 1) << 16) | (byte(at + 2) << 8) | byte(at + 3);
         chunks[bytes.substr(at + 4, 4)] += bytes.substr(at + 8, length);
         at += 12 + length;
     }
@@ -417,8 +423,10 @@ std::map<std::string, std::string> png_chunks(const std::filesystem::path& file)
 std::vector<unsigned> big_endian_words(const std::string& data) {
     std::vector<unsigned> words;
     for (std::size_t i = 0; i + 4 <= data.size(); i += 4)
-        words.push_back((unsigned(static_cast<unsigned char>(data[i])) << 24) | (unsigned(static_cast<unsigned char>(data[i + 1])) << 16) |
-                        (unsigned(static_cast<unsigned char>(data[i + 2])) << 8) | unsigned(static_cast<unsigned char>(data[i + 3])));
+        words.push_back((unsigned(static_cast<unsigned char>(data[i])) << 24) |
+                        (unsigned(static_cast<unsigned char>(data[i + 1])) << 16) |
+                        (unsigned(static_cast<unsigned char>(data[i + 2])) << 8) |
+                        unsigned(static_cast<unsigned char>(data[i + 3])));
     return words;
 }
 
@@ -459,16 +467,24 @@ TEST(PreviewGpu, ExrHeadersNameEverySphereAndPngsCarryTheirSrgbChunks) {
         std::map<std::string, std::variant<std::string, float, int>> got;
         for (const ExrAttribute& a : read_image_metadata(o.output_dir / image, "metalfit/")) got[a.name] = a.value;
         using V = std::variant<std::string, float, int>;
-        const std::map<std::string, V> expected{
-            {"metalfit/version", V(std::string(METALFIT_VERSION))}, {"metalfit/image", V(image)},
-            {"metalfit/scene", V(std::string("scene.json"))}, {"metalfit/spheres", V(2)},
-            {"metalfit/sphere0/material", V(std::string("Au"))}, {"metalfit/sphere0/name", V(std::string("gold"))},
-            {"metalfit/sphere0/source", V(std::string("Johnson"))}, {"metalfit/sphere0/model", V(std::string("reference"))},
-            {"metalfit/sphere0/roughness", V(0.0f)}, {"metalfit/sphere0/reflection", V(std::string("classic"))},
-            {"metalfit/sphere1/material", V(std::string("Cu"))}, {"metalfit/sphere1/name", V(std::string("copper"))},
-            {"metalfit/sphere1/source", V(std::string("Johnson"))}, {"metalfit/sphere1/model", V(std::string("f82-tint"))},
-            {"metalfit/sphere1/params", V(std::string("fit"))}, {"metalfit/sphere1/parameters", V(parameters)},
-            {"metalfit/sphere1/roughness", V(0.25f)}, {"metalfit/sphere1/reflection", V(std::string("box-parallax"))}};
+        const std::map<std::string, V> expected{{"metalfit/version", V(std::string(METALFIT_VERSION))},
+                                                {"metalfit/image", V(image)},
+                                                {"metalfit/scene", V(std::string("scene.json"))},
+                                                {"metalfit/spheres", V(2)},
+                                                {"metalfit/sphere0/material", V(std::string("Au"))},
+                                                {"metalfit/sphere0/name", V(std::string("gold"))},
+                                                {"metalfit/sphere0/source", V(std::string("Johnson"))},
+                                                {"metalfit/sphere0/model", V(std::string("reference"))},
+                                                {"metalfit/sphere0/roughness", V(0.0f)},
+                                                {"metalfit/sphere0/reflection", V(std::string("classic"))},
+                                                {"metalfit/sphere1/material", V(std::string("Cu"))},
+                                                {"metalfit/sphere1/name", V(std::string("copper"))},
+                                                {"metalfit/sphere1/source", V(std::string("Johnson"))},
+                                                {"metalfit/sphere1/model", V(std::string("f82-tint"))},
+                                                {"metalfit/sphere1/params", V(std::string("fit"))},
+                                                {"metalfit/sphere1/parameters", V(parameters)},
+                                                {"metalfit/sphere1/roughness", V(0.25f)},
+                                                {"metalfit/sphere1/reflection", V(std::string("box-parallax"))}};
         EXPECT_EQ(got, expected) << image;
     }
     for (const std::string image : {"beauty.png", "reference.png", "difference.png"}) {
@@ -499,7 +515,8 @@ TEST(PreviewGpu, ErrorFallsFromClassicToOneToFourIterationsInTheDifficultRoom) {
     std::vector<double> rmse;
     for (int iterations : {-1, 1, 4}) {
         Sphere s = classic;
-        if (iterations >= 0) s = impostor(Strategy::false_position, iterations), s.center = classic.center, s.radius = classic.radius;
+        if (iterations >= 0)
+            s = impostor(Strategy::false_position, iterations), s.center = classic.center, s.radius = classic.radius;
         scene.spheres = {s};
         const PreviewResult result = run_preview(scene, options(), &gl());
         rmse.push_back(result.metrics["spheres"][0]["rmse"].get<double>());
@@ -525,12 +542,12 @@ TEST(PreviewGpu, GoldenImage) {
     std::size_t failing = 0;
     for (std::size_t p = 0; p < expected.rgb.size() / 3; ++p) {
         int worst = 0;
-        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(actual.rgb[3 * p + c]) - int(expected.rgb[3 * p + c])));
+        for (int c = 0; c < 3; ++c)
+            worst = std::max(worst, std::abs(int(actual.rgb[3 * p + c]) - int(expected.rgb[3 * p + c])));
         if (worst > 5) ++failing;
     }
     EXPECT_LE(failing, expected.rgb.size() / 3 / 1000) << failing << " pixels differ by more than 5/255";
 }
-
 
 // The shader benchmark through its pass graph: one row per libfit model and the reference LUT, each timed, and the
 // exact pass's paired ratio to itself is 1.

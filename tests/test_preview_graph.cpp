@@ -79,13 +79,17 @@ TEST(PreviewGraph, OrdersTopologically) {
     PassGraph g;
     const Handle<int> late = g.declare<int>("late");
     auto log = [](std::string name) { return [name](const Nothing&, Resources&) { events.push_back(name); }; };
-    g.add_pass<Nothing>({"consumer", "", Processor::cpu}, [&](Builder& b, Nothing&) {
-        b.read(late);
-        b.write_file("out");
-    }, log("consumer"));
-    g.add_pass<Nothing>({"independent", "", Processor::cpu}, [&](Builder& b, Nothing&) { b.write_file("other"); },
-                        log("independent"));
-    g.add_pass<Nothing>({"producer", "", Processor::cpu}, [&](Builder& b, Nothing&) { b.write(late); }, log("producer"));
+    g.add_pass<Nothing>(
+        {"consumer", "", Processor::cpu},
+        [&](Builder& b, Nothing&) {
+            b.read(late);
+            b.write_file("out");
+        },
+        log("consumer"));
+    g.add_pass<Nothing>(
+        {"independent", "", Processor::cpu}, [&](Builder& b, Nothing&) { b.write_file("other"); }, log("independent"));
+    g.add_pass<Nothing>(
+        {"producer", "", Processor::cpu}, [&](Builder& b, Nothing&) { b.write(late); }, log("producer"));
     g.compile();
     ASSERT_EQ(g.passes().size(), 3u);
     EXPECT_EQ(g.passes()[0].name, "independent");
@@ -103,8 +107,13 @@ TEST(PreviewGraph, CreatesAtFirstUseAndFreesAfterLastUse) {
     {
         PassGraph g;
         const auto& made = g.add_pass<Texture>(
-            {"make", "", Processor::gpu}, [](Builder& b, Texture& d) { d.texture = b.create<FakeTexture>("cube", {"cube", 8}); },
-            [](const Texture& d, Resources& r) { events.push_back("run make, size " + std::to_string(r.get(d.texture).size)); });
+            {"make", "", Processor::gpu},
+            [](Builder& b, Texture& d) {
+                d.texture = b.create<FakeTexture>("cube", {"cube", 8});
+            },
+            [](const Texture& d, Resources& r) {
+                events.push_back("run make, size " + std::to_string(r.get(d.texture).size));
+            });
         const auto& kept = g.add_pass<Texture>(
             {"reader", "", Processor::gpu},
             [&](Builder& b, Texture& d) {
@@ -139,15 +148,21 @@ TEST(PreviewGraph, CreatesAtFirstUseAndFreesAfterLastUse) {
 TEST(PreviewGraph, CycleIsAnErrorNamingThePasses) {
     PassGraph g;
     const Handle<int> x = g.declare<int>("x");
-    const auto& a = g.add_pass<Single>({"A", "", Processor::cpu}, [&](Builder& b, Single& d) {
-        b.read(x);
-        d.out = b.produce<int>("a");
-    }, [](const Single&, Resources&) {});
-    g.add_pass<Nothing>({"B", "", Processor::cpu}, [&](Builder& b, Nothing&) {
-        b.read(a.out);
-        b.write(x);
-        b.write_file("out");
-    }, [](const Nothing&, Resources&) {});
+    const auto& a = g.add_pass<Single>(
+        {"A", "", Processor::cpu},
+        [&](Builder& b, Single& d) {
+            b.read(x);
+            d.out = b.produce<int>("a");
+        },
+        [](const Single&, Resources&) {});
+    g.add_pass<Nothing>(
+        {"B", "", Processor::cpu},
+        [&](Builder& b, Nothing&) {
+            b.read(a.out);
+            b.write(x);
+            b.write_file("out");
+        },
+        [](const Nothing&, Resources&) {});
     try {
         g.compile();
         FAIL() << "no error";
@@ -159,12 +174,15 @@ TEST(PreviewGraph, CycleIsAnErrorNamingThePasses) {
 TEST(PreviewGraph, ReadOfANeverWrittenResourceIsAnError) {
     PassGraph g;
     const Handle<int> orphan = g.declare<int>("orphan");
-    const Handle<int> imported = g.import<int>("scene", 3);
-    g.add_pass<Nothing>({"reader", "", Processor::cpu}, [&](Builder& b, Nothing&) {
-        b.read(imported);  // imports need no writer
-        b.read(orphan);
-        b.write_file("out");
-    }, [](const Nothing&, Resources&) {});
+    const Handle<int> imported = g.import <int>("scene", 3);
+    g.add_pass<Nothing>(
+        {"reader", "", Processor::cpu},
+        [&](Builder& b, Nothing&) {
+            b.read(imported);  // imports need no writer
+            b.read(orphan);
+            b.write_file("out");
+        },
+        [](const Nothing&, Resources&) {});
     try {
         g.compile();
         FAIL() << "no error";
@@ -175,16 +193,20 @@ TEST(PreviewGraph, ReadOfANeverWrittenResourceIsAnError) {
 
 TEST(PreviewGraph, TwoWritersAndUndeclaredAccessAreErrors) {
     PassGraph g;
-    const auto& a = g.add_pass<Single>({"A", "", Processor::cpu}, [](Builder& b, Single& d) { d.out = b.produce<int>("v"); },
-                                       [](const Single&, Resources&) {});
-    EXPECT_THROW(g.add_pass<Nothing>({"B", "", Processor::cpu}, [&](Builder& b, Nothing&) { b.write(a.out); },
-                                     [](const Nothing&, Resources&) {}),
+    const auto& a = g.add_pass<Single>(
+        {"A", "", Processor::cpu}, [](Builder& b, Single& d) { d.out = b.produce<int>("v"); },
+        [](const Single&, Resources&) {});
+    EXPECT_THROW(g.add_pass<Nothing>(
+                     {"B", "", Processor::cpu}, [&](Builder& b, Nothing&) { b.write(a.out); },
+                     [](const Nothing&, Resources&) {}),
                  GraphError);
     PassGraph h;
-    const auto& p = h.add_pass<Single>({"P", "", Processor::cpu}, [](Builder& b, Single& d) { d.out = b.produce<int>("v"); },
-                                       [](const Single& d, Resources& r) { r.emplace(d.out, 5); });
-    h.add_pass<Nothing>({"sneaky", "", Processor::cpu}, [](Builder& b, Nothing&) { b.write_file("out"); },
-                        [h_out = p.out](const Nothing&, Resources& r) { r.get(h_out); });
+    const auto& p = h.add_pass<Single>(
+        {"P", "", Processor::cpu}, [](Builder& b, Single& d) { d.out = b.produce<int>("v"); },
+        [](const Single& d, Resources& r) { r.emplace(d.out, 5); });
+    h.add_pass<Nothing>(
+        {"sneaky", "", Processor::cpu}, [](Builder& b, Nothing&) { b.write_file("out"); },
+        [h_out = p.out](const Nothing&, Resources& r) { r.get(h_out); });
     h.compile();
     try {
         h.execute();

@@ -2,6 +2,7 @@
 // half pixels, the header's attributes and their types); OpenImageIO only in the module, loaded when a run needs it.
 #include <gtest/gtest.h>
 
+#include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFloatAttribute.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -9,7 +10,6 @@
 #include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
-#include <Imath/half.h>
 
 #include "glpreview/io/image_io.hpp"
 #include "libfit/base/errors.hpp"
@@ -24,8 +24,10 @@ using glpreview::Image;
 TEST(PreviewImageIo, AnExrCarriesHalfPixelsChromaticitiesAndTypedAttributesAsOpenExrReadsThem) {
     TempDir dir;
     Image image(3, 2);
-    for (std::size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = 0.1f * static_cast<float>(i) + 1e-4f;  // not halves
-    const ExrColour colour{{{{0.708, 0.292}}, {{0.170, 0.797}}, {{0.131, 0.046}}, {{0.3127, 0.3290}}}, "Linear Rec.2020"};
+    for (std::size_t i = 0; i < image.rgb.size(); ++i)
+        image.rgb[i] = 0.1f * static_cast<float>(i) + 1e-4f;  // not halves
+    const ExrColour colour{{{{0.708, 0.292}}, {{0.170, 0.797}}, {{0.131, 0.046}}, {{0.3127, 0.3290}}},
+                           "Linear Rec.2020"};
     const glpreview::ExrMetadata metadata{{"metalfit/sphere0/material", std::string("Au")},
                                           {"metalfit/sphere0/roughness", 0.25f},
                                           {"metalfit/spheres", 1}};
@@ -58,8 +60,9 @@ TEST(PreviewImageIo, AnExrCarriesHalfPixelsChromaticitiesAndTypedAttributesAsOpe
     std::vector<Imath::half> read(image.rgb.size());
     Imf::FrameBuffer frame;
     for (int c = 0; c < 3; ++c)
-        frame.insert(std::string(1, "RGB"[c]), Imf::Slice(Imf::HALF, reinterpret_cast<char*>(read.data() + c), 3 * sizeof(Imath::half),
-                                                         3 * sizeof(Imath::half) * image.width));
+        frame.insert(std::string(1, "RGB"[c]),
+                     Imf::Slice(Imf::HALF, reinterpret_cast<char*>(read.data() + c), 3 * sizeof(Imath::half),
+                                3 * sizeof(Imath::half) * image.width));
     in.setFrameBuffer(frame);
     in.readPixels(0, image.height - 1);
     for (std::size_t i = 0; i < read.size(); ++i) EXPECT_EQ(read[i].bits(), Imath::half(image.rgb[i]).bits()) << i;
@@ -91,24 +94,25 @@ TEST(PreviewImageIo, AnExrThatIsNotOneIsBadInputNamingTheFile) {
 
 // The scene of the two runs below: EXR and PNG outputs, an environment from `environment`.
 fs::path write_scene(const TempDir& dir, const std::string& environment) {
-    return dir.write("scene.json", R"({"image": {"width": 24, "height": 16}, )" + environment +
-                                       R"("spheres": [{"center": [0, 1, 0], "radius": 0.5, "reflection": "classic"}]})");
+    return dir.write("scene.json",
+                     R"({"image": {"width": 24, "height": 16}, )" + environment +
+                         R"("spheres": [{"center": [0, 1, 0], "radius": 0.5, "reflection": "classic"}]})");
 }
 
 TEST(PreviewImageIo, OpenImageIoIsLoadedOnlyByARunThatNeedsIt) {
     TempDir dir;
     // The dynamic linker names every library it loads (LD_DEBUG=libs, on stderr).
     const fs::path plain = write_scene(dir, "");
-    const CommandResult exr_png = run_command(GLPREVIEW_EXE, plain.string() + " -o " + (dir.path() / "a").string(), dir.path(),
-                                              "OCIO= LD_DEBUG=libs");
+    const CommandResult exr_png = run_command(GLPREVIEW_EXE, plain.string() + " -o " + (dir.path() / "a").string(),
+                                              dir.path(), "OCIO= LD_DEBUG=libs");
     ASSERT_EQ(exr_png.exit_code, 0) << exr_png.err;
     EXPECT_TRUE(fs::exists(dir.path() / "a" / "beauty.exr") && fs::exists(dir.path() / "a" / "beauty.png"));
     EXPECT_TRUE(Contains(exr_png.err, "libOpenEXR")) << "LD_DEBUG gave no library names";
     EXPECT_FALSE(Contains(exr_png.err, "libOpenImageIO"));
     const fs::path sky = write_scene(dir, R"("environment": {"type": "equirect", "file": ")" +
                                               (kData / "scenes" / "sky.hdr").string() + R"("}, )");
-    const CommandResult hdr = run_command(GLPREVIEW_EXE, sky.string() + " -o " + (dir.path() / "b").string(), dir.path(),
-                                          "OCIO= LD_DEBUG=libs");
+    const CommandResult hdr = run_command(GLPREVIEW_EXE, sky.string() + " -o " + (dir.path() / "b").string(),
+                                          dir.path(), "OCIO= LD_DEBUG=libs");
     ASSERT_EQ(hdr.exit_code, 0) << hdr.err;
     EXPECT_TRUE(Contains(hdr.err, "libmetalfit_glpreview_oiio.so"));
     EXPECT_TRUE(Contains(hdr.err, "libOpenImageIO"));
@@ -119,7 +123,8 @@ TEST(PreviewImageIo, AMissingOpenImageIoModuleIsOneLineNamingIt) {
     // A glpreview without the module beside it (and none installed): EXR and PNG still work, a .hdr does not.
     const fs::path lone = dir.path() / "glpreview";
     fs::copy_file(GLPREVIEW_EXE, lone);
-    const CommandResult exr_png = run_command(lone, write_scene(dir, "").string() + " -o " + (dir.path() / "a").string(), dir.path());
+    const CommandResult exr_png =
+        run_command(lone, write_scene(dir, "").string() + " -o " + (dir.path() / "a").string(), dir.path());
     ASSERT_EQ(exr_png.exit_code, 0) << exr_png.err;
     const fs::path sky = write_scene(dir, R"("environment": {"type": "equirect", "file": ")" +
                                               (kData / "scenes" / "sky.hdr").string() + R"("}, )");

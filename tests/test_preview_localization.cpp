@@ -7,13 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <random>
-#include <array>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -107,7 +107,9 @@ public:
     }
 
 private:
-    std::vector<const SphereFresnel*> fresnel() const { return std::vector<const SphereFresnel*>(scene_.spheres.size(), unit_fresnel()); }
+    std::vector<const SphereFresnel*> fresnel() const {
+        return std::vector<const SphereFresnel*>(scene_.spheres.size(), unit_fresnel());
+    }
     void apply(const Setting& s) {
         for (Sphere& sphere : scene_.spheres) {
             sphere.reflection = s.mode;
@@ -149,8 +151,8 @@ Scene long_empty_room() {
     scene.camera.position = {0, 1.3, 3.6};
     scene.camera.look_at = {0, 1.0, 0};
     scene.camera.fov_y_deg = 55;
-    scene.spheres = {sphere_at({-0.8, 0.8, 1.0}, 0.35), sphere_at({0.0, 1.0, 0.3}, 0.35), sphere_at({0.8, 0.6, 1.4}, 0.35),
-                     sphere_at({0.1, 0.35, 2.2}, 0.3)};
+    scene.spheres = {sphere_at({-0.8, 0.8, 1.0}, 0.35), sphere_at({0.0, 1.0, 0.3}, 0.35),
+                     sphere_at({0.8, 0.6, 1.4}, 0.35), sphere_at({0.1, 0.35, 2.2}, 0.3)};
     return scene;
 }
 
@@ -166,7 +168,8 @@ Scene sphere_beside_a_column() {
     scene.camera.position = {-0.2, 1.3, 1.9};
     scene.camera.look_at = {0.1, 0.9, -0.1};
     scene.camera.fov_y_deg = 60;
-    scene.spheres = {sphere_at({0.0, 0.9, -0.25}, 0.28), sphere_at({-0.6, 0.9, -0.4}, 0.28), sphere_at({0.55, 0.35, 0.4}, 0.28)};
+    scene.spheres = {sphere_at({0.0, 0.9, -0.25}, 0.28), sphere_at({-0.6, 0.9, -0.4}, 0.28),
+                     sphere_at({0.55, 0.35, 0.4}, 0.28)};
     return scene;
 }
 
@@ -181,8 +184,8 @@ Scene off_centre_reference_point() {
     scene.camera.position = {0.2, 1.4, 2.2};
     scene.camera.look_at = {-0.2, 0.9, -0.4};
     scene.camera.fov_y_deg = 60;
-    scene.spheres = {sphere_at({-0.9, 0.9, -0.5}, 0.35), sphere_at({0.2, 0.9, -0.2}, 0.35), sphere_at({0.9, 0.5, 0.6}, 0.3),
-                     sphere_at({-1.2, 1.5, -0.9}, 0.3)};
+    scene.spheres = {sphere_at({-0.9, 0.9, -0.5}, 0.35), sphere_at({0.2, 0.9, -0.2}, 0.35),
+                     sphere_at({0.9, 0.5, 0.6}, 0.3), sphere_at({-1.2, 1.5, -0.9}, 0.3)};
     return scene;
 }
 
@@ -202,8 +205,8 @@ Scene occluder_maze() {
     scene.camera.position = {0, 1.5, 2.6};
     scene.camera.look_at = {0, 0.8, -0.5};
     scene.camera.fov_y_deg = 60;
-    scene.spheres = {sphere_at({-0.8, 0.6, -0.6}, 0.35), sphere_at({0.25, 0.9, -0.7}, 0.35), sphere_at({1.0, 0.5, -0.2}, 0.3),
-                     sphere_at({-0.2, 0.35, 0.5}, 0.3)};
+    scene.spheres = {sphere_at({-0.8, 0.6, -0.6}, 0.35), sphere_at({0.25, 0.9, -0.7}, 0.35),
+                     sphere_at({1.0, 0.5, -0.2}, 0.3), sphere_at({-0.2, 0.35, 0.5}, 0.3)};
     return scene;
 }
 
@@ -234,11 +237,11 @@ Scene difficult_room() { return shipped("difficult-room.json"); }
 Scene shipped_empty_room() { return shipped("empty-room.json"); }
 const std::vector<RoomCase>& rooms() {
     static const std::vector<RoomCase> r{{"long-empty", long_empty_room, true},
-                                     {"beside-a-column", sphere_beside_a_column, false},
-                                     {"off-centre-reference", off_centre_reference_point, true},
-                                     {"occluder-maze", occluder_maze, false},
-                                     {"shipped-difficult", difficult_room, false},
-                                     {"shipped-empty", shipped_empty_room, true}};
+                                         {"beside-a-column", sphere_beside_a_column, false},
+                                         {"off-centre-reference", off_centre_reference_point, true},
+                                         {"occluder-maze", occluder_maze, false},
+                                         {"shipped-difficult", difficult_room, false},
+                                         {"shipped-empty", shipped_empty_room, true}};
     return r;
 }
 
@@ -260,7 +263,8 @@ TEST_P(PreviewLocalization, TheDefaultStrategyHoldsItsClaimsOnEverySphere) {
     std::printf("%s classic%s\n%s box-parallax%s\n", GetParam().name, describe(classic_error).c_str(), GetParam().name,
                 describe(parallax_error).c_str());
     for (std::size_t k = 0; k < limits.size(); ++k)
-        std::printf("%s %s %d%s\n", GetParam().name, to_string(kDefaultStrategy), limits[k], describe(by_limit[k]).c_str());
+        std::printf("%s %s %d%s\n", GetParam().name, to_string(kDefaultStrategy), limits[k],
+                    describe(by_limit[k]).c_str());
     for (std::size_t s = 0; s < bench.spheres(); ++s) {
         SCOPED_TRACE("sphere " + std::to_string(s));
         ASSERT_GT(classic_error[s].pixels, 150u);
@@ -284,7 +288,8 @@ TEST_P(PreviewLocalization, TheDefaultStrategyHoldsItsClaimsOnEverySphere) {
         // bilinear between texel centres, so "equal" is up to that filtering at panel and checker edges).
         const auto gap = bench.between(impostor(kDefaultStrategy, 32), box_parallax());
         const auto gap_default = bench.between(impostor(kDefaultStrategy, kDefaultIterations), box_parallax());
-        std::printf("%s vs box-parallax: 32 steps%s, default%s\n", GetParam().name, describe(gap).c_str(), describe(gap_default).c_str());
+        std::printf("%s vs box-parallax: 32 steps%s, default%s\n", GetParam().name, describe(gap).c_str(),
+                    describe(gap_default).c_str());
         for (std::size_t s = 0; s < bench.spheres(); ++s) {
             EXPECT_LT(gap[s].rmse, 0.01) << "sphere " << s;
             EXPECT_LT(gap_default[s].rmse, 0.02) << "sphere " << s;
@@ -306,7 +311,8 @@ TEST_P(PreviewLocalization, SafeguardedStrategiesConvergeToBoxProjectionInEmptyR
     for (Strategy strategy : {Strategy::illinois, Strategy::safe_secant}) {
         SCOPED_TRACE(to_string(strategy));
         const double at16 = worst_gap(impostor(strategy, 16, 0)), at32 = worst_gap(impostor(strategy, 32, 0));
-        std::printf("%s %s worst gap to box-parallax: 16 steps %.5f, 32 steps %.5f\n", GetParam().name, to_string(strategy), at16, at32);
+        std::printf("%s %s worst gap to box-parallax: 16 steps %.5f, 32 steps %.5f\n", GetParam().name,
+                    to_string(strategy), at16, at32);
         EXPECT_LT(at16, 0.01);
         EXPECT_LT(at32, 0.01);
     }
@@ -345,7 +351,8 @@ TEST(PreviewLocalizationProbe, SafeguardedStrategiesConvergeOnEveryRay) {
     gl();
     Scene scene = long_empty_room();
     scene.environment.cube_size = 512;
-    GpuRenderer gpu(scene, plan_features(scene), std::vector<const SphereFresnel*>(scene.spheres.size(), unit_fresnel()), nullptr);
+    GpuRenderer gpu(scene, plan_features(scene),
+                    std::vector<const SphereFresnel*>(scene.spheres.size(), unit_fresnel()), nullptr);
     gpu.capture_environment();
     const Room& room = scene.environment.room;
     const Vec3 o = scene.environment.reference();
@@ -365,11 +372,13 @@ TEST(PreviewLocalizationProbe, SafeguardedStrategiesConvergeOnEveryRay) {
     auto box_hit = [&](Vec3 x, Vec3 r) {
         double t = std::numeric_limits<double>::infinity();
         for (int i = 0; i < 3; ++i)
-            if (r[i] != 0) t = std::min(t, std::max((room.max[i] - o[i] - x[i]) / r[i], (room.min[i] - o[i] - x[i]) / r[i]));
+            if (r[i] != 0)
+                t = std::min(t, std::max((room.max[i] - o[i] - x[i]) / r[i], (room.min[i] - o[i] - x[i]) / r[i]));
         return x + t * r;
     };
     auto angle = [](Vec3 a, Vec3 b) { return std::acos(std::clamp(dot(normalize(a), normalize(b)), -1.0, 1.0)); };
-    for (Strategy strategy : {Strategy::secant, Strategy::false_position, Strategy::mixed, Strategy::illinois, Strategy::safe_secant}) {
+    for (Strategy strategy :
+         {Strategy::secant, Strategy::false_position, Strategy::mixed, Strategy::illinois, Strategy::safe_secant}) {
         Sphere settings;
         settings.strategy = strategy;
         settings.iterations = 32;
@@ -382,8 +391,9 @@ TEST(PreviewLocalizationProbe, SafeguardedStrategiesConvergeOnEveryRay) {
             worst = std::max(worst, a);
             if (a > 1e-2) ++off;
         }
-        std::printf("long room probes, %s, 32 steps: worst angle to box projection %.4f rad, %zu of %zu rays beyond 0.01 rad\n",
-                    to_string(strategy), worst, off, rays.size());
+        std::printf(
+            "long room probes, %s, 32 steps: worst angle to box projection %.4f rad, %zu of %zu rays beyond 0.01 rad\n",
+            to_string(strategy), worst, off, rays.size());
         if (strategy == Strategy::illinois || strategy == Strategy::safe_secant) {
             EXPECT_LT(worst, 5e-3) << to_string(strategy);
         }

@@ -29,7 +29,8 @@ GlContext& gl() {
     return context;
 }
 
-std::string parse_error(const std::string& environment, const std::string& spheres = R"([{"center": [0, 0, 0], "reflection": "classic"}])") {
+std::string parse_error(const std::string& environment,
+                        const std::string& spheres = R"([{"center": [0, 0, 0], "reflection": "classic"}])") {
     try {
         parse_scene(R"({"environment": )" + environment + R"(, "spheres": )" + spheres + "}", "s.json");
     } catch (const InputError& e) {
@@ -39,58 +40,79 @@ std::string parse_error(const std::string& environment, const std::string& spher
 }
 
 TEST(PreviewProxy, TheProxyIsParsedAndMalformedOnesNameTheirField) {
-    const Scene box = parse_scene(R"({"environment": {"type": "equirect", "file": "sky.hdr", "reference_point": [0, 1, 0],
+    const Scene box =
+        parse_scene(R"({"environment": {"type": "equirect", "file": "sky.hdr", "reference_point": [0, 1, 0],
         "proxy": {"box": {"min": [-3, 0, -3], "max": [3, 3, 3]}}}, "spheres": [{"center": [0, 1, 0], "reflection": "box-parallax", "roughness": 0.3}]})",
-                                  "s.json");
+                    "s.json");
     ASSERT_TRUE(box.environment.equirect.proxy);
     EXPECT_EQ(std::get<BoxProxy>(*box.environment.equirect.proxy).max.y, 3);
     EXPECT_TRUE(box.environment.captured());
     EXPECT_EQ(box.environment.parallax_box()->min.x, -3);
-    const Scene sphere = parse_scene(R"({"environment": {"type": "equirect", "file": "sky.hdr", "proxy": {"sphere": 50}},
-        "spheres": [{"center": [0, 1, 0], "roughness": 0.5, "glossy": "localized"}]})", "s.json");
+    const Scene sphere =
+        parse_scene(R"({"environment": {"type": "equirect", "file": "sky.hdr", "proxy": {"sphere": 50}},
+        "spheres": [{"center": [0, 1, 0], "roughness": 0.5, "glossy": "localized"}]})",
+                    "s.json");
     EXPECT_EQ(std::get<SphereProxy>(*sphere.environment.equirect.proxy).radius, 50);
     EXPECT_FALSE(sphere.environment.parallax_box());
     // A camera outside the box proxy sees the painted box from behind: one warning (none inside, none for a sphere).
     EXPECT_TRUE(box.warnings.empty());
-    const std::string outside = R"({"camera": {"position": [0, 1, 4]}, "environment": {"type": "equirect", "file": "sky.hdr", "reference_point": [0, 1, 0],
+    const std::string outside =
+        R"({"camera": {"position": [0, 1, 4]}, "environment": {"type": "equirect", "file": "sky.hdr", "reference_point": [0, 1, 0],
         "proxy": PROXY}, "spheres": [{"center": [0, 1, 0], "reflection": "box-parallax"}]})";
-    auto with_proxy = [&](const std::string& proxy) { return std::string(outside).replace(outside.find("PROXY"), 5, proxy); };
+    auto with_proxy = [&](const std::string& proxy) {
+        return std::string(outside).replace(outside.find("PROXY"), 5, proxy);
+    };
     const Scene behind = parse_scene(with_proxy(R"({"box": {"min": [-3, 0, -3], "max": [3, 3, 3]}})"), "s.json");
     ASSERT_EQ(behind.warnings.size(), 1u);
-    EXPECT_EQ(behind.warnings[0], "s.json: camera.position: outside the proxy box (environment.proxy.box: the view shows the painted box from behind)");
-    EXPECT_TRUE(parse_scene(with_proxy(R"({"box": {"min": [-3, 0, -3], "max": [3, 3, 5]}})"), "s.json").warnings.empty());
+    EXPECT_EQ(
+        behind.warnings[0],
+        "s.json: camera.position: outside the proxy box (environment.proxy.box: the view shows the painted box from behind)");
+    EXPECT_TRUE(
+        parse_scene(with_proxy(R"({"box": {"min": [-3, 0, -3], "max": [3, 3, 5]}})"), "s.json").warnings.empty());
 
     const std::string sky = R"({"type": "equirect", "file": "sky.hdr", )";
     EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": 3})"), "environment.proxy: expected an object"));
-    EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {}})"), "environment.proxy: expected exactly one of 'box' or 'sphere'"));
-    EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"sphere": 2, "box": {}}})"), "environment.proxy: expected exactly one"));
+    EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {}})"),
+                               "environment.proxy: expected exactly one of 'box' or 'sphere'"));
+    EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"sphere": 2, "box": {}}})"),
+                               "environment.proxy: expected exactly one"));
     EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"cube": 2}})"), "environment.proxy.cube: unknown key"));
-    EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"sphere": -1}})"), "environment.proxy.sphere: must be in"));
-    EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"sphere": "big"}})"), "environment.proxy.sphere: expected a number"));
-    EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"box": {"min": [-1, -1, -1]}}})"), "environment.proxy.box.max: missing"));
+    EXPECT_TRUE(
+        test::Contains(parse_error(sky + R"("proxy": {"sphere": -1}})"), "environment.proxy.sphere: must be in"));
+    EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"sphere": "big"}})"),
+                               "environment.proxy.sphere: expected a number"));
+    EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"box": {"min": [-1, -1, -1]}}})"),
+                               "environment.proxy.box.max: missing"));
     EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"box": {"min": [-1, -1, -1], "max": [1, 1]}}})"),
                                "environment.proxy.box.max: expected an array of 3 numbers"));
     EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"box": {"min": [-1, -1, -1], "max": [1, -1, 1]}}})"),
                                "environment.proxy.box.max: must exceed min"));
     EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"box": {"min": [1, 1, 1], "max": [2, 2, 2]}}})"),
                                "environment.proxy.box: the capture point"));
-    EXPECT_TRUE(test::Contains(parse_error(sky + R"("reference_point": [5, 0, 0], "proxy": {"box": {"min": [-1, -1, -1], "max": [1, 1, 1]}}})"),
-                               "environment.reference_point: the capture point"));
+    EXPECT_TRUE(test::Contains(
+        parse_error(sky +
+                    R"("reference_point": [5, 0, 0], "proxy": {"box": {"min": [-1, -1, -1], "max": [1, 1, 1]}}})"),
+        "environment.reference_point: the capture point"));
     // What a proxy makes possible stays refused without one, and box-parallax needs a box.
-    EXPECT_TRUE(test::Contains(parse_error(sky + "\"intensity\": 1}", R"([{"center": [0, 0, 0], "roughness": 0.2, "reflection": "classic"}])"),
-                               "spheres[0].roughness: rough spheres need a captured environment"));
-    EXPECT_TRUE(test::Contains(parse_error(sky + "\"intensity\": 1}", R"([{"center": [0, 0, 0]}])"), "spheres[0].reflection: an equirect environment is at infinity without a proxy"));
-    EXPECT_TRUE(test::Contains(parse_error(sky + R"("proxy": {"sphere": 5}})", R"([{"center": [0, 0, 0], "reflection": "box-parallax"}])"),
-                               "spheres[0].reflection: box-parallax needs a room environment or an equirect with a box proxy"));
+    EXPECT_TRUE(test::Contains(
+        parse_error(sky + "\"intensity\": 1}", R"([{"center": [0, 0, 0], "roughness": 0.2, "reflection": "classic"}])"),
+        "spheres[0].roughness: rough spheres need a captured environment"));
+    EXPECT_TRUE(test::Contains(parse_error(sky + "\"intensity\": 1}", R"([{"center": [0, 0, 0]}])"),
+                               "spheres[0].reflection: an equirect environment is at infinity without a proxy"));
+    EXPECT_TRUE(test::Contains(
+        parse_error(sky + R"("proxy": {"sphere": 5}})", R"([{"center": [0, 0, 0], "reflection": "box-parallax"}])"),
+        "spheres[0].reflection: box-parallax needs a room environment or an equirect with a box proxy"));
     // Capture settings without a proxy mean nothing: warnings.
     const Scene plain = parse_scene(R"({"environment": {"type": "equirect", "file": "sky.hdr", "cube_size": 64},
-        "spheres": [{"center": [0, 1, 0], "reflection": "classic"}]})", "s.json");
+        "spheres": [{"center": [0, 1, 0], "reflection": "classic"}]})",
+                                    "s.json");
     ASSERT_EQ(plain.warnings.size(), 1u);
     EXPECT_TRUE(test::Contains(plain.warnings[0], "environment.cube_size: ignored"));
 }
 
 TEST(PreviewProxy, AProxyPlansTheCaptureOfTheImageAndThePlainEquirectDoesNot) {
-    const std::string sky = R"({"image": {"width": 8, "height": 8}, "environment": {"type": "equirect", "file": "sky.hdr")";
+    const std::string sky =
+        R"({"image": {"width": 8, "height": 8}, "environment": {"type": "equirect", "file": "sky.hdr")";
     const std::string spheres = R"(, "spheres": [{"center": [0, 1, 0], "reflection": "classic"}]})";
     const Scene plain = parse_scene(sky + "}" + spheres, "s.json");
     const Scene proxied = parse_scene(sky + R"(, "proxy": {"sphere": 10}})" + spheres, "s.json");
@@ -161,7 +183,8 @@ RoomAsProbe capture_room(const fs::path& scene_file, const fs::path& dir, int wi
 PreviewOptions options() { return {kData, choose_ocio_config(std::nullopt, kData), {}, 0}; }
 
 // Per sphere RMSE between two beauty images over the mask of `reference`.
-std::vector<SphereError> beauty_difference(const Image& a, const Image& b, const ReferenceRender& mask, std::size_t spheres) {
+std::vector<SphereError> beauty_difference(const Image& a, const Image& b, const ReferenceRender& mask,
+                                           std::size_t spheres) {
     ReferenceRender as_reference = mask;
     as_reference.image = b;
     return sphere_errors(a, as_reference, spheres);
@@ -181,8 +204,9 @@ TEST(PreviewProxy, ABoxProxyEqualToTheRoomGivesTheRoomsOwnBoxParallaxReflections
         GlossyMethod glossy;
     };
     std::optional<ReferenceRender> mask;  // the spheres' pixels, from the first (mirror) case's reference
-    for (const Case c : {Case{"mirror", 0, GlossyMethod::prefiltered}, Case{"prefiltered 0.3", 0.3, GlossyMethod::prefiltered},
-                         Case{"localized 0.6", 0.6, GlossyMethod::localized}}) {
+    for (const Case c :
+         {Case{"mirror", 0, GlossyMethod::prefiltered}, Case{"prefiltered 0.3", 0.3, GlossyMethod::prefiltered},
+          Case{"localized 0.6", 0.6, GlossyMethod::localized}}) {
         for (Scene* s : {&r.room, &r.probe})
             for (Sphere& sphere : s->spheres) {
                 sphere.roughness = c.roughness;
@@ -198,8 +222,9 @@ TEST(PreviewProxy, ABoxProxyEqualToTheRoomGivesTheRoomsOwnBoxParallaxReflections
         ASSERT_TRUE(mask);
         const auto errors = beauty_difference(probe.beauty.value(), room.beauty.value(), *mask, r.room.spheres.size());
         for (std::size_t i = 0; i < errors.size(); ++i) {
-            std::printf("room as a box-proxy probe, %s, sphere %zu: RMSE %.4f, mean |diff| %.4f against the room's own render\n", c.name, i,
-                        errors[i].rmse, errors[i].mean_abs);
+            std::printf(
+                "room as a box-proxy probe, %s, sphere %zu: RMSE %.4f, mean |diff| %.4f against the room's own render\n",
+                c.name, i, errors[i].rmse, errors[i].mean_abs);
             // The lookup's geometry is the room's; the image is the room resampled twice (half-float 1024 × 512
             // texels, then the 128² cube), which moves checker edges and the radiance-6 panels' borders by up to a
             // cube texel: on mirrors a few edge pixels carry the RMSE (measured 0.016–0.057, mean |diff|
@@ -214,11 +239,14 @@ TEST(PreviewProxy, ABoxProxyEqualToTheRoomGivesTheRoomsOwnBoxParallaxReflections
         }
         if (c.roughness == 0) {  // the control: the same image on a wrong box
             Scene wrong = r.probe;
-            wrong.environment.equirect.proxy = BoxProxy{r.room.environment.room.min - Vec3{0.5, 0.5, 0.5}, r.room.environment.room.max + Vec3{0.5, 0.5, 0.5}};
+            wrong.environment.equirect.proxy = BoxProxy{r.room.environment.room.min - Vec3{0.5, 0.5, 0.5},
+                                                        r.room.environment.room.max + Vec3{0.5, 0.5, 0.5}};
             const PreviewResult off = run_preview(wrong, options(), &gl());
-            const auto off_errors = beauty_difference(off.beauty.value(), room.beauty.value(), *mask, r.room.spheres.size());
+            const auto off_errors =
+                beauty_difference(off.beauty.value(), room.beauty.value(), *mask, r.room.spheres.size());
             for (std::size_t i = 0; i < off_errors.size(); ++i) {
-                std::printf("  the same on a box 0.5 m too large, sphere %zu: RMSE %.4f, mean |diff| %.4f\n", i, off_errors[i].rmse, off_errors[i].mean_abs);
+                std::printf("  the same on a box 0.5 m too large, sphere %zu: RMSE %.4f, mean |diff| %.4f\n", i,
+                            off_errors[i].rmse, off_errors[i].mean_abs);
                 EXPECT_GT(off_errors[i].mean_abs, 2 * 0.012) << i;
             }
         }
@@ -238,8 +266,8 @@ TEST(PreviewProxy, TheCpuReferenceOfTheProxyIsTheRoomsInAnEmptyRoom) {
     ASSERT_TRUE(room.reference && probe.reference);
     const auto errors = sphere_errors(probe.reference->image, *room.reference, r.room.spheres.size());
     for (std::size_t i = 0; i < errors.size(); ++i) {
-        std::printf("empty room as a box-proxy probe, CPU reference, sphere %zu: RMSE %.4f, mean |diff| %.4f\n", i, errors[i].rmse,
-                    errors[i].mean_abs);
+        std::printf("empty room as a box-proxy probe, CPU reference, sphere %zu: RMSE %.4f, mean |diff| %.4f\n", i,
+                    errors[i].rmse, errors[i].mean_abs);
         EXPECT_LT(errors[i].mean_abs, 0.01) << i;  // the exact trace of the same walls through the image's texels
     }
 }
@@ -262,13 +290,15 @@ TEST(PreviewProxy, ASphereProxyOfHugeRadiusApproachesThePlainEquirectAtInfinity)
         ASSERT_TRUE(result.beauty && result.reference);
         double worst_cpu = 0, worst_gpu = 0;
         const auto cpu = sphere_errors(result.reference->image, *at_infinity.reference, plain.spheres.size());
-        const auto gpu = beauty_difference(*result.beauty, *at_infinity.beauty, *at_infinity.reference, plain.spheres.size());
+        const auto gpu =
+            beauty_difference(*result.beauty, *at_infinity.beauty, *at_infinity.reference, plain.spheres.size());
         for (std::size_t i = 0; i < cpu.size(); ++i) {
             worst_cpu = std::max(worst_cpu, cpu[i].rmse);
             worst_gpu = std::max(worst_gpu, gpu[i].rmse);
         }
-        std::printf("sky on a sphere proxy of radius %g: worst sphere RMSE against the plain equirect: CPU reference %.5f, GPU %.5f\n",
-                    radius, worst_cpu, worst_gpu);
+        std::printf(
+            "sky on a sphere proxy of radius %g: worst sphere RMSE against the plain equirect: CPU reference %.5f, GPU %.5f\n",
+            radius, worst_cpu, worst_gpu);
         EXPECT_LT(worst_cpu, previous);
         previous = worst_cpu;
         if (radius == 1e4) {

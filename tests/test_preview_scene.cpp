@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <set>
 
@@ -51,8 +51,9 @@ TEST(PreviewScene, MalformedScenesAreOneLineErrorsNamingTheField) {
                                "spheres[0].colour: unknown key"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1]}]})"),
                                "spheres[0].center: expected an array of 3 numbers"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "strategy": "bisection"}]})"),
-                               "spheres[0].strategy: unknown value 'bisection' (known: secant, false-position, mixed, illinois, safe-secant)"));
+    EXPECT_TRUE(test::Contains(
+        parse_error(R"({"spheres": [{"center": [0, 1, 0], "strategy": "bisection"}]})"),
+        "spheres[0].strategy: unknown value 'bisection' (known: secant, false-position, mixed, illinois, safe-secant)"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "iterations": 2.5}]})"),
                                "spheres[0].iterations: expected an integer"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": []})"), "spheres: at least one sphere"));
@@ -60,17 +61,23 @@ TEST(PreviewScene, MalformedScenesAreOneLineErrorsNamingTheField) {
                                "image.width: must be in [1, 8192]"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"type": "cave"}, "spheres": [{"center": [0,1,0]}]})"),
                                "environment.type: unknown value 'cave'"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"boxes": [{"min": [0,0,0], "max": [1,-1,1]}]}, "spheres": [{"center": [0,1,0]}]})"),
-                               "environment.boxes[0].max: min must be below max"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"type": "equirect", "file": "sky.exr"}, "spheres": [{"center": [0,1,0]}]})"),
-                               "spheres[0].reflection: an equirect environment is at infinity"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"camera": {"position": [0,1,0], "look_at": [0,2,0]}, "spheres": [{"center": [0,1,0]}]})"),
-                               "camera.up: is parallel"));
-    EXPECT_TRUE(test::Contains(parse_error("{\n  \"spheres\": [\n  {\"center\": [0, 1, 0],}\n]}"), "bad.json:3: invalid JSON"));
+    EXPECT_TRUE(test::Contains(
+        parse_error(
+            R"({"environment": {"boxes": [{"min": [0,0,0], "max": [1,-1,1]}]}, "spheres": [{"center": [0,1,0]}]})"),
+        "environment.boxes[0].max: min must be below max"));
+    EXPECT_TRUE(test::Contains(
+        parse_error(R"({"environment": {"type": "equirect", "file": "sky.exr"}, "spheres": [{"center": [0,1,0]}]})"),
+        "spheres[0].reflection: an equirect environment is at infinity"));
+    EXPECT_TRUE(test::Contains(
+        parse_error(R"({"camera": {"position": [0,1,0], "look_at": [0,2,0]}, "spheres": [{"center": [0,1,0]}]})"),
+        "camera.up: is parallel"));
+    EXPECT_TRUE(
+        test::Contains(parse_error("{\n  \"spheres\": [\n  {\"center\": [0, 1, 0],}\n]}"), "bad.json:3: invalid JSON"));
 }
 
 Scene scene_with(const std::string& spheres, const std::string& outputs = "{}", const std::string& environment = "{}") {
-    return parse_scene(R"({"environment": )" + environment + R"(, "spheres": )" + spheres + R"(, "outputs": )" + outputs + "}",
+    return parse_scene(R"({"environment": )" + environment + R"(, "spheres": )" + spheres + R"(, "outputs": )" +
+                           outputs + "}",
                        "s.json");
 }
 
@@ -84,7 +91,8 @@ TEST(PreviewScene, ANumberBeyondDoubleRangeNamesTheFileLineAndField) {
 
 TEST(PreviewScene, MessagesQuoteAtMostAShortSanitisedExcerpt) {
     const std::string long_value(5000, 'x');
-    const std::string e = parse_error(R"({"spheres": [{"center": [0, 1, 0], "strategy": ")" + long_value + "\\u0001\"}]}");
+    const std::string e =
+        parse_error(R"({"spheres": [{"center": [0, 1, 0], "strategy": ")" + long_value + "\\u0001\"}]}");
     EXPECT_LT(e.size(), 200u) << e;
     EXPECT_TRUE(test::Contains(e, "unknown value 'xxxx")) << e;
     const std::string key = parse_error("{\"spheres\": [{\"center\": [0, 1, 0], \"\\u001b[31mred\": 1}]}");
@@ -98,19 +106,25 @@ TEST(PreviewScene, MessagesQuoteAtMostAShortSanitisedExcerpt) {
 TEST(PreviewScene, LimitsOnImageSizeSpheresAndRoomObjects) {
     EXPECT_TRUE(test::Contains(parse_error(R"({"image": {"width": 8193}, "spheres": [{"center": [0, 1, 0]}]})"),
                                "image.width: must be in [1, 8192]"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"image": {"width": 8192, "height": 4096}, "spheres": [{"center": [0, 1, 0]}]})"),
-                               "image: 8192 x 4096 is more than 16777216 pixels"));
-    EXPECT_NO_THROW(parse_scene(R"({"image": {"width": 8192, "height": 2048}, "spheres": [{"center": [0, 1, 0]}]})", "s.json"));
+    EXPECT_TRUE(
+        test::Contains(parse_error(R"({"image": {"width": 8192, "height": 4096}, "spheres": [{"center": [0, 1, 0]}]})"),
+                       "image: 8192 x 4096 is more than 16777216 pixels"));
+    EXPECT_NO_THROW(
+        parse_scene(R"({"image": {"width": 8192, "height": 2048}, "spheres": [{"center": [0, 1, 0]}]})", "s.json"));
     std::string many = R"({"spheres": [)";
-    for (std::size_t i = 0; i <= kMaxSpheres; ++i) many += std::string(i ? "," : "") + R"({"center": [0, 1, 0], "radius": 0.01})";
+    for (std::size_t i = 0; i <= kMaxSpheres; ++i)
+        many += std::string(i ? "," : "") + R"({"center": [0, 1, 0], "radius": 0.01})";
     EXPECT_TRUE(test::Contains(parse_error(many + "]}"), "spheres: at most 256 spheres"));
     std::string columns = R"({"environment": {"columns": [)";
     for (std::size_t i = 0; i <= kMaxRoomBoxes; ++i) columns += std::string(i ? "," : "") + R"({"center": [0, 0]})";
     EXPECT_TRUE(test::Contains(parse_error(columns + R"(]}, "spheres": [{"center": [0, 1, 0]}]})"),
                                "environment.columns[32]: at most 32 boxes and columns together"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"type": "sphere-room"}, "spheres": [{"center": [0, 1, 0], "reflection": "box-parallax"}]})"),
-                               "spheres[0].reflection: box-parallax needs a room environment"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "tolerance": 2}]})"), "spheres[0].tolerance: must be in [0, 1]"));
+    EXPECT_TRUE(test::Contains(
+        parse_error(
+            R"({"environment": {"type": "sphere-room"}, "spheres": [{"center": [0, 1, 0], "reflection": "box-parallax"}]})"),
+        "spheres[0].reflection: box-parallax needs a room environment"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "tolerance": 2}]})"),
+                               "spheres[0].tolerance: must be in [0, 1]"));
 }
 
 TEST(PreviewScene, SettingsThatMeanNothingOrLookWrongAreWarnings) {
@@ -118,10 +132,13 @@ TEST(PreviewScene, SettingsThatMeanNothingOrLookWrongAreWarnings) {
     EXPECT_TRUE(quiet.warnings.empty());
     const Scene scene = parse_scene(R"({"camera": {"position": [0, 1, 5]},
         "spheres": [{"center": [0, 1, 0], "reflection": "classic", "iterations": 3, "strategy": "secant"},
-                    {"center": [2.8, 1, 0]}, {"center": [0, 1, 0], "tolerance": 0.001}]})", "s.json");
+                    {"center": [2.8, 1, 0]}, {"center": [0, 1, 0], "tolerance": 0.001}]})",
+                                    "s.json");
     ASSERT_EQ(scene.warnings.size(), 4u);
-    EXPECT_EQ(scene.warnings[0], "s.json: spheres[0].strategy: ignored: only the distance impostor refines (reflection 'classic')");
-    EXPECT_EQ(scene.warnings[1], "s.json: spheres[0].iterations: ignored: only the distance impostor refines (reflection 'classic')");
+    EXPECT_EQ(scene.warnings[0],
+              "s.json: spheres[0].strategy: ignored: only the distance impostor refines (reflection 'classic')");
+    EXPECT_EQ(scene.warnings[1],
+              "s.json: spheres[0].iterations: ignored: only the distance impostor refines (reflection 'classic')");
     EXPECT_EQ(scene.warnings[2], "s.json: camera.position: outside the room (the view shows the walls from behind)");
     EXPECT_TRUE(test::Contains(scene.warnings[3], "s.json: spheres[1]: not inside the room"));
     EXPECT_EQ(scene.spheres[2].tolerance, 0.001);
@@ -138,15 +155,18 @@ TEST(PreviewScene, ScenePathsStayInTheScenesFolderOrTheDatabase) {
         return parse_scene(R"({"spheres": [{"center": [0, 1, 0], "material": ")" + material + R"("}]})", scene_file);
     };
     const PathPolicy policy{test::kData, false};
-    EXPECT_NO_THROW(confine_scene_paths(scene_with("Au"), policy));               // a catalog name
-    EXPECT_NO_THROW(confine_scene_paths(scene_with("mine.csv"), policy));         // beside the scene
+    EXPECT_NO_THROW(confine_scene_paths(scene_with("Au"), policy));                              // a catalog name
+    EXPECT_NO_THROW(confine_scene_paths(scene_with("mine.csv"), policy));                        // beside the scene
     EXPECT_NO_THROW(confine_scene_paths(scene_with((test::kData / "x.yml").string()), policy));  // in the database
-    for (const std::string& outside : {std::string("../outside.csv"), (dir.path() / "outside.csv").string(), std::string("/etc/passwd.csv")}) {
+    for (const std::string& outside :
+         {std::string("../outside.csv"), (dir.path() / "outside.csv").string(), std::string("/etc/passwd.csv")}) {
         try {
             confine_scene_paths(scene_with(outside), policy);
             ADD_FAILURE() << outside << " accepted";
         } catch (const InputError& e) {
-            EXPECT_TRUE(test::Contains(e.what(), "spheres[0].material: a path outside the scene's folder and the database")) << e.what();
+            EXPECT_TRUE(
+                test::Contains(e.what(), "spheres[0].material: a path outside the scene's folder and the database"))
+                << e.what();
         }
         EXPECT_NO_THROW(confine_scene_paths(scene_with(outside), PathPolicy{test::kData, true}));
     }
@@ -154,7 +174,8 @@ TEST(PreviewScene, ScenePathsStayInTheScenesFolderOrTheDatabase) {
     std::filesystem::create_symlink(dir.path() / "outside.csv", dir.path() / "scenes" / "link.csv");
     EXPECT_THROW(confine_scene_paths(scene_with("link.csv"), policy), InputError);
     const Scene sky = parse_scene(R"({"environment": {"type": "equirect", "file": "../sky.hdr"},
-                                      "spheres": [{"center": [0, 1, 0], "reflection": "classic"}]})", scene_file);
+                                      "spheres": [{"center": [0, 1, 0], "reflection": "classic"}]})",
+                                  scene_file);
     EXPECT_THROW(confine_scene_paths(sky, policy), InputError);
 }
 
@@ -176,26 +197,31 @@ TEST(PreviewScene, ScenePathsAreCheckedOnTheOpenDescriptorAndReadThroughIt) {
         std::filesystem::remove(dir.path() / "scenes" / "mine.csv");
         std::filesystem::create_symlink(dir.path() / "outside.csv", dir.path() / "scenes" / "mine.csv");
         EXPECT_EQ(test::read_file(file.path()), "inside\n");
-        EXPECT_EQ(file.in_original_terms("x " + file.path().string() + ":3: bad"), "x " + file.original().string() + ":3: bad");
+        EXPECT_EQ(file.in_original_terms("x " + file.path().string() + ":3: bad"),
+                  "x " + file.original().string() + ":3: bad");
     }
     // Now mine.csv is a link leading outside: refused on the descriptor, whatever the path looked like.
     try {
         (void)ConfinedFile::open(scene_file, policy, "mine.csv", "spheres[0].material");
         ADD_FAILURE() << "a link leading outside was opened";
     } catch (const InputError& e) {
-        EXPECT_TRUE(test::Contains(e.what(), "s.json: spheres[0].material: a path outside the scene's folder")) << e.what();
+        EXPECT_TRUE(test::Contains(e.what(), "s.json: spheres[0].material: a path outside the scene's folder"))
+            << e.what();
     }
     // Allowed outside, or no policy (library use): read.
-    EXPECT_EQ(test::read_file(ConfinedFile::open(scene_file, PathPolicy{test::kData, true}, "mine.csv", "f").path()), "outside\n");
+    EXPECT_EQ(test::read_file(ConfinedFile::open(scene_file, PathPolicy{test::kData, true}, "mine.csv", "f").path()),
+              "outside\n");
     EXPECT_EQ(test::read_file(ConfinedFile::open(scene_file, std::nullopt, "mine.csv", "f").path()), "outside\n");
     // A FIFO beside the scene: refused at once (opening it for reading would wait for a writer), a missing file named.
     ASSERT_EQ(::mkfifo((dir.path() / "scenes" / "pipe.hdr").c_str(), 0600), 0);
-    for (const auto& [name, why] : {std::pair{"pipe.hdr", "not a regular file"}, std::pair{"missing.hdr", "cannot open it"}}) {
+    for (const auto& [name, why] :
+         {std::pair{"pipe.hdr", "not a regular file"}, std::pair{"missing.hdr", "cannot open it"}}) {
         try {
             (void)ConfinedFile::open(scene_file, policy, name, "environment.file");
             ADD_FAILURE() << name << " opened";
         } catch (const InputError& e) {
-            EXPECT_TRUE(test::Contains(e.what(), "s.json: environment.file: " + (dir.path() / "scenes" / name).string() + ": " + why))
+            EXPECT_TRUE(test::Contains(
+                e.what(), "s.json: environment.file: " + (dir.path() / "scenes" / name).string() + ": " + why))
                 << e.what();
         }
     }
@@ -207,7 +233,8 @@ TEST(PreviewPlan, FeaturesFollowTheScene) {
     EXPECT_FALSE(f.distance_channel);  // nobody uses the impostor
     EXPECT_TRUE(f.reference_lut);
     EXPECT_FALSE(f.model_fits);
-    f = plan_features(scene_with(R"([{"center": [0,1,0], "fresnel": "f82-tint"}, {"center": [1,1,0], "fresnel": "schlick", "reflection": "box-parallax"}])"));
+    f = plan_features(scene_with(
+        R"([{"center": [0,1,0], "fresnel": "f82-tint"}, {"center": [1,1,0], "fresnel": "schlick", "reflection": "box-parallax"}])"));
     EXPECT_TRUE(f.distance_channel);
     EXPECT_FALSE(f.reference_lut);
     EXPECT_EQ(f.models, (std::set<std::string>{"f82-tint", "schlick"}));
@@ -228,21 +255,24 @@ TEST(PreviewPlan, PassesNobodyReadsAreCulled) {
     EXPECT_FALSE(plan.runs("timing"));
     EXPECT_EQ(plan.outputs, (std::vector<std::string>{"reference.exr"}));
     // Only the beauty image: no CPU reference, no timing.
-    plan = build_plan(scene_with(R"([{"center": [0,1,0]}])", R"({"reference": false, "difference": false, "metrics": false})"));
+    plan = build_plan(
+        scene_with(R"([{"center": [0,1,0]}])", R"({"reference": false, "difference": false, "metrics": false})"));
     EXPECT_TRUE(plan.runs("beauty"));
     EXPECT_TRUE(plan.runs("capture-environment"));
     EXPECT_FALSE(plan.runs("cpu-reference"));
     EXPECT_FALSE(plan.runs("timing"));
     EXPECT_FALSE(plan.runs("localization"));
     // The localization diagnostics alone: one GPU frame and its file, no CPU reference.
-    plan = build_plan(scene_with(R"([{"center": [0,1,0]}])",
-                                 R"({"beauty": false, "reference": false, "difference": false, "metrics": false, "localization": true})"));
+    plan = build_plan(scene_with(
+        R"([{"center": [0,1,0]}])",
+        R"({"beauty": false, "reference": false, "difference": false, "metrics": false, "localization": true})"));
     EXPECT_TRUE(plan.runs("localization"));
     EXPECT_FALSE(plan.runs("beauty"));
     EXPECT_FALSE(plan.runs("cpu-reference"));
     EXPECT_EQ(plan.outputs, (std::vector<std::string>{"localization.exr"}));
     // Metrics need the reference, the beauty and the frame times, even when no image is written.
-    plan = build_plan(scene_with(R"([{"center": [0,1,0]}])", R"({"beauty": false, "reference": false, "difference": false})"));
+    plan = build_plan(
+        scene_with(R"([{"center": [0,1,0]}])", R"({"beauty": false, "reference": false, "difference": false})"));
     for (const char* pass : {"beauty", "cpu-reference", "timing", "metrics", "capture-environment", "localization"})
         EXPECT_TRUE(plan.runs(pass)) << pass;
     EXPECT_FALSE(plan.runs("difference"));
@@ -270,7 +300,8 @@ TEST(PreviewScene, RoughnessAndGlossyMethodAreParsedStrictly) {
     EXPECT_EQ(mirror.spheres[0].glossy, GlossyMethod::prefiltered);  // the documented default
     EXPECT_EQ(mirror.outputs.reference_samples, 256);
     const Scene rough = parse_scene(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.25, "glossy": "prefiltered"}],
-                                        "outputs": {"reference_samples": 32}})", "s.json");
+                                        "outputs": {"reference_samples": 32}})",
+                                    "s.json");
     EXPECT_DOUBLE_EQ(rough.spheres[0].roughness, 0.25);
     EXPECT_TRUE(rough.spheres[0].rough());
     EXPECT_EQ(rough.outputs.reference_samples, 32);
@@ -279,22 +310,31 @@ TEST(PreviewScene, RoughnessAndGlossyMethodAreParsedStrictly) {
                                "bad.json: spheres[0].roughness: must be in [0, 1]"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 1.5}]})"),
                                "spheres[0].roughness: must be in [0, 1]"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0]}, {"center": [0, 1, 0], "roughness": "matte"}]})"),
-                               "spheres[1].roughness: expected a number"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": "blurry"}]})"),
-                               "spheres[0].glossy: unknown value 'blurry' (known: prefiltered, localized)"));
+    EXPECT_TRUE(test::Contains(
+        parse_error(R"({"spheres": [{"center": [0, 1, 0]}, {"center": [0, 1, 0], "roughness": "matte"}]})"),
+        "spheres[1].roughness: expected a number"));
+    EXPECT_TRUE(
+        test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": "blurry"}]})"),
+                       "spheres[0].glossy: unknown value 'blurry' (known: prefiltered, localized)"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": 3}]})"),
                                "spheres[0].glossy: expected a string"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0]}], "outputs": {"reference_samples": 0}})"),
-                               "outputs.reference_samples: must be in [1, 65536]"));
+    EXPECT_TRUE(
+        test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0]}], "outputs": {"reference_samples": 0}})"),
+                       "outputs.reference_samples: must be in [1, 65536]"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"type": "equirect", "file": "sky.exr"},
                                               "spheres": [{"center": [0, 1, 0], "reflection": "classic", "roughness": 0.3}]})"),
                                "spheres[0].roughness: rough spheres need a captured environment"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": "localized", "localized_size": 1}]})"),
-                               "spheres[0].localized_size: must be in [2, 16]"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": "localized", "localized_size": 32}]})"),
-                               "spheres[0].localized_size: must be in [2, 16]"));
-    const Scene thesis = parse_scene(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.5, "glossy": "localized", "localized_size": 4}]})", "s.json");
+    EXPECT_TRUE(test::Contains(
+        parse_error(
+            R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": "localized", "localized_size": 1}]})"),
+        "spheres[0].localized_size: must be in [2, 16]"));
+    EXPECT_TRUE(test::Contains(
+        parse_error(
+            R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": "localized", "localized_size": 32}]})"),
+        "spheres[0].localized_size: must be in [2, 16]"));
+    const Scene thesis = parse_scene(
+        R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.5, "glossy": "localized", "localized_size": 4}]})",
+        "s.json");
     EXPECT_EQ(thesis.spheres[0].glossy, GlossyMethod::localized);
     EXPECT_EQ(thesis.spheres[0].localized_size, 4);
     // A method on a mirror means nothing: a warning naming the field.
@@ -305,7 +345,8 @@ TEST(PreviewScene, RoughnessAndGlossyMethodAreParsedStrictly) {
 
 // Issue 17 item 4: the planner adds the glossy passes only where a sphere is rough.
 TEST(PreviewPlan, AMirrorOnlyScenePlansNoGlossyPass) {
-    const Plan plan = build_plan(scene_with(R"([{"center": [0,1,0]}, {"center": [1,1,0], "fresnel": "schlick", "roughness": 0}])"));
+    const Plan plan =
+        build_plan(scene_with(R"([{"center": [0,1,0]}, {"center": [1,1,0], "fresnel": "schlick", "roughness": 0}])"));
     for (const Pass& p : plan.passes) {
         EXPECT_NE(p.name, "prefilter-environment");
         EXPECT_NE(p.name, "monte-carlo-reference");
@@ -362,7 +403,8 @@ TEST(PreviewPlan, OneRoughReferenceSpherePlansOneDfgTableNotSix) {
     EXPECT_FALSE(two.runs("cpu-reference"));
     EXPECT_FALSE(two.runs("downsample-environment 8"));
     // Localized spheres: one downsample pass per M, no prefilter or table for them; the cube stores distances.
-    const Plan thesis = build_plan(scene_with(R"([{"center": [0,1,0], "roughness": 0.5, "glossy": "localized", "reflection": "classic"},
+    const Plan thesis =
+        build_plan(scene_with(R"([{"center": [0,1,0], "roughness": 0.5, "glossy": "localized", "reflection": "classic"},
         {"center": [1,1,0], "roughness": 0.5, "glossy": "localized", "localized_size": 4, "reflection": "classic"},
         {"center": [1,1,0], "roughness": 0.7, "glossy": "localized", "localized_size": 4, "reflection": "classic"}])"));
     EXPECT_TRUE(thesis.runs("downsample-environment 8"));
@@ -372,7 +414,8 @@ TEST(PreviewPlan, OneRoughReferenceSpherePlansOneDfgTableNotSix) {
     EXPECT_TRUE(thesis.features.distance_channel);
     EXPECT_TRUE(thesis.runs("monte-carlo-reference"));
     const std::string thesis_text = explain(thesis, scene_with(R"([{"center": [0,1,0]}])"));
-    EXPECT_TRUE(test::Contains(thesis_text, "downsample-environment 4 [GPU]: sphere(s) 1, 2 rough with glossy 'localized'"));
+    EXPECT_TRUE(
+        test::Contains(thesis_text, "downsample-environment 4 [GPU]: sphere(s) 1, 2 rough with glossy 'localized'"));
 }
 
 // The CPU tracer against geometry worked out by hand.
@@ -433,14 +476,14 @@ TEST(PreviewEnvironment, EquirectSamplesTexelCentresExactlyAndWraps) {
     EXPECT_NEAR(sample_equirect(image, seam).r, 3.5, 1e-9);
 }
 
-
 // Colours are parsed into libfit RGB with the messages the Vec3 reading gave.
 TEST(PreviewScene, ColoursAreRgbWithTheSameMessages) {
     EXPECT_EQ(parse_error(R"({"environment": {"ceiling": [0.1, -0.2, 0.3]}, "spheres": [{"center": [0,1,0]}]})"),
               "bad.json: environment.ceiling: radiance must not be negative");
     EXPECT_EQ(parse_error(R"({"environment": {"ceiling": [0.1, 0.2]}, "spheres": [{"center": [0,1,0]}]})"),
               "bad.json: environment.ceiling: expected an array of 3 numbers");
-    const Scene scene = parse_scene(R"({"environment": {"ceiling": [0.1, 0.2, 0.3]}, "spheres": [{"center": [0,1,0]}]})", "s.json");
+    const Scene scene =
+        parse_scene(R"({"environment": {"ceiling": [0.1, 0.2, 0.3]}, "spheres": [{"center": [0,1,0]}]})", "s.json");
     EXPECT_EQ(scene.environment.room.ceiling, (RGB{0.1, 0.2, 0.3}));
 }
 
@@ -449,12 +492,14 @@ TEST(PreviewScene, ColoursAreRgbWithTheSameMessages) {
 TEST(PreviewScene, FresnelIsParsedIntoATypedChoice) {
     const std::string bad = "bad.json: spheres[0].";
     EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "fresnel": 3}]})"), bad + "fresnel: expected a string");
-    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "fresnel": ""}]})"), bad + "fresnel: must not be empty");
+    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "fresnel": ""}]})"),
+              bad + "fresnel: must not be empty");
     EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "fresnel": "schlick", "params": "closd"}]})"),
               bad + "params: unknown value 'closd' (known: fit, closed)");
     EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "params": "closd"}]})"),
               bad + "params: unknown value 'closd' (known: fit, closed)");
-    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "params": true}]})"), bad + "params: expected a string");
+    EXPECT_EQ(parse_error(R"({"spheres": [{"center": [0, 1, 0], "params": true}]})"),
+              bad + "params: expected a string");
 
     const Scene scene = scene_with(R"([{"center": [0,1,0], "fresnel": "f82-tint", "params": "closed"},
                                        {"center": [1,1,0], "fresnel": "schlick"},
@@ -482,14 +527,17 @@ TEST(PreviewScene, SpaceAndImageColorspaceAreReadAndChecked) {
     EXPECT_EQ(scene.space, "ACEScg");
     EXPECT_EQ(scene.environment.equirect.colorspace, "Linear Rec.2020");
     EXPECT_TRUE(parse_scene(R"({"spheres": [{"center": [0,1,0]}]})", "scene.json").space.empty());
-    EXPECT_TRUE(test::Contains(parse_error(R"({"space": "", "spheres": [{"center": [0,1,0]}]})"), "bad.json: space: must not be empty"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"space": 709, "spheres": [{"center": [0,1,0]}]})"), "bad.json: space: expected a string"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"space": "", "spheres": [{"center": [0,1,0]}]})"),
+                               "bad.json: space: must not be empty"));
+    EXPECT_TRUE(test::Contains(parse_error(R"({"space": 709, "spheres": [{"center": [0,1,0]}]})"),
+                               "bad.json: space: expected a string"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"type": "equirect", "file": "sky.exr", "colorspace": ""},
                                               "spheres": [{"center": [0,1,0], "reflection": "classic"}]})"),
                                "bad.json: environment.colorspace: must not be empty"));
     // colorspace belongs to an image: a room has none.
-    EXPECT_TRUE(test::Contains(parse_error(R"({"environment": {"colorspace": "ACEScg"}, "spheres": [{"center": [0,1,0]}]})"),
-                               "environment.colorspace"));
+    EXPECT_TRUE(
+        test::Contains(parse_error(R"({"environment": {"colorspace": "ACEScg"}, "spheres": [{"center": [0,1,0]}]})"),
+                       "environment.colorspace"));
 }
 
 // The Fresnel of a scene in ACEScg is the Rec.709 one through the published Rec.709 → ACEScg matrix (Bradford
@@ -501,9 +549,8 @@ TEST(PreviewScene, TheFresnelIsComputedInTheScenesSpace) {
     Sphere gold;  // reference Fresnel of Au
     const SphereFresnel& a = rec709.get(gold, "spheres[0]");
     const SphereFresnel& b = acescg.get(gold, "spheres[0]");
-    constexpr double M[3][3] = {{0.6130974, 0.3395231, 0.0473795},
-                                {0.0701937, 0.9163539, 0.0134524},
-                                {0.0206156, 0.1095698, 0.8698147}};
+    constexpr double M[3][3] = {
+        {0.6130974, 0.3395231, 0.0473795}, {0.0701937, 0.9163539, 0.0134524}, {0.0206156, 0.1095698, 0.8698147}};
     for (const double mu : {1.0, 0.5, 0.1}) {
         const RGB x = a(mu), y = b(mu);
         for (int c = 0; c < 3; ++c)
@@ -527,7 +574,8 @@ TEST(PreviewScene, AnUnknownModelIsReportedWhenItsFresnelIsMadeWithTheSameMessag
         library.get(sphere, "spheres[1]");
         ADD_FAILURE() << "no error";
     } catch (const InputError& e) {
-        EXPECT_TRUE(test::Contains(e.what(), "scene.json: spheres[1].fresnel: unknown model 'nope' (known: ")) << e.what();
+        EXPECT_TRUE(test::Contains(e.what(), "scene.json: spheres[1].fresnel: unknown model 'nope' (known: "))
+            << e.what();
         EXPECT_TRUE(test::Contains(e.what(), ") (or 'reference')")) << e.what();
     }
 }
@@ -541,7 +589,8 @@ std::vector<std::string> pass_names(const graph::PassGraph& g) {
 }
 const graph::Lifetime& lifetime(const graph::PassGraph& g, const std::string& resource) {
     const auto& all = g.lifetimes();
-    const auto it = std::find_if(all.begin(), all.end(), [&](const graph::Lifetime& l) { return l.resource == resource; });
+    const auto it =
+        std::find_if(all.begin(), all.end(), [&](const graph::Lifetime& l) { return l.resource == resource; });
     if (it == all.end()) throw std::runtime_error("no lifetime of " + resource);
     return *it;
 }
@@ -551,14 +600,19 @@ bool culled(const graph::PassGraph& g, const std::string& pass) {
 }
 
 TEST(PreviewBenchGraph, TheShaderBenchmarkRunsOnlyItsPasses) {
-    GpuBenchRun run{{test::kData, choose_ocio_config(std::nullopt, test::kData), {}, 0}, true, nullptr, localization_rooms(test::kData, true), {}, {}};
+    GpuBenchRun run{{test::kData, choose_ocio_config(std::nullopt, test::kData), {}, 0},
+                    true,
+                    nullptr,
+                    localization_rooms(test::kData, true),
+                    {},
+                    {}};
     graph::PassGraph g;
     const GpuBenchHandles records = add_gpu_bench_passes(g, run);
     g.request(records.shaders);
     g.compile();
     EXPECT_EQ(pass_names(g), (std::vector<std::string>{"model-cost-programs", "shader-timing", "shader-record"}));
-    for (const char* pass : {"bench-fresnel", "cpu-reference empty", "capture-environment difficult", "localization-timing empty",
-                             "localization-record"})
+    for (const char* pass : {"bench-fresnel", "cpu-reference empty", "capture-environment difficult",
+                             "localization-timing empty", "localization-record"})
         EXPECT_TRUE(culled(g, pass)) << pass;
     EXPECT_EQ(lifetime(g, "cost-target").first, 1u);  // made for the timing pass, freed after it
     EXPECT_EQ(lifetime(g, "cost-target").last, 1u);
@@ -566,7 +620,12 @@ TEST(PreviewBenchGraph, TheShaderBenchmarkRunsOnlyItsPasses) {
 }
 
 TEST(PreviewBenchGraph, TheLocalizationBenchmarkFreesEachRoomsCubeBeforeTheNextIsMade) {
-    GpuBenchRun run{{test::kData, choose_ocio_config(std::nullopt, test::kData), {}, 0}, true, nullptr, localization_rooms(test::kData, true), {}, {}};
+    GpuBenchRun run{{test::kData, choose_ocio_config(std::nullopt, test::kData), {}, 0},
+                    true,
+                    nullptr,
+                    localization_rooms(test::kData, true),
+                    {},
+                    {}};
     ASSERT_EQ(run.rooms.size(), 2u);
     EXPECT_TRUE(run.rooms[0].scene.environment.room.boxes.empty());
     EXPECT_FALSE(run.rooms[1].scene.environment.room.boxes.empty());
@@ -574,15 +633,15 @@ TEST(PreviewBenchGraph, TheLocalizationBenchmarkFreesEachRoomsCubeBeforeTheNextI
     const GpuBenchHandles records = add_gpu_bench_passes(g, run);
     g.request(records.localization);
     g.compile();
-    EXPECT_EQ(pass_names(g), (std::vector<std::string>{"bench-fresnel", "cpu-reference empty", "capture-environment empty",
-                                                       "localization-timing empty", "cpu-reference difficult",
-                                                       "capture-environment difficult", "localization-timing difficult",
-                                                       "localization-record"}));
-    for (const char* pass : {"model-cost-programs", "shader-timing", "shader-record"}) EXPECT_TRUE(culled(g, pass)) << pass;
+    EXPECT_EQ(pass_names(g), (std::vector<std::string>{"bench-fresnel", "cpu-reference empty",
+                                                       "capture-environment empty", "localization-timing empty",
+                                                       "cpu-reference difficult", "capture-environment difficult",
+                                                       "localization-timing difficult", "localization-record"}));
+    for (const char* pass : {"model-cost-programs", "shader-timing", "shader-record"})
+        EXPECT_TRUE(culled(g, pass)) << pass;
     EXPECT_LT(lifetime(g, "environment-cube empty").last, lifetime(g, "environment-cube difficult").first);
     EXPECT_EQ(lifetime(g, "renderer empty").last, lifetime(g, "environment-cube empty").last);
 }
-
 
 // The PNGs' display transform is libfit's: scene-linear → sRGB display, clamped, 8 bits; a config it cannot use is
 // a ColorConfigError naming the config and no command-line flag.

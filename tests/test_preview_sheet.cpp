@@ -15,7 +15,9 @@ namespace {
 
 using namespace metalfit::glpreview;
 
-CommandResult glpreview(const std::string& arguments, const TempDir& dir) { return run_command(GLPREVIEW_EXE, arguments, dir.path()); }
+CommandResult glpreview(const std::string& arguments, const TempDir& dir) {
+    return run_command(GLPREVIEW_EXE, arguments, dir.path());
+}
 
 // The shipped sheet room, small.
 std::string sheet_scene() { return (kData / "scenes" / "sheet.json").string(); }
@@ -30,8 +32,10 @@ TEST(SheetLayout, OneColumnGroupPerModelWithEveryRoughness) {
     for (std::size_t c = 0; c < columns.size(); ++c) {
         const SheetColumn& col = columns[c];
         EXPECT_EQ(sheet_column(col.kind, col.group, col.roughness, 2), static_cast<int>(c));
-        if (col.kind == SheetCellKind::reference) ++reference;
-        else ++per_group[col.group];
+        if (col.kind == SheetCellKind::reference)
+            ++reference;
+        else
+            ++per_group[col.group];
     }
     EXPECT_EQ(reference, 2);
     ASSERT_EQ(per_group.size(), 3u);
@@ -53,7 +57,8 @@ TEST(SheetLayout, BadRequestsAreUsageErrorsNamingTheOption) {
         }
         return {};
     };
-    EXPECT_TRUE(Contains(message({{"Au"}, {"f82-tint", "no-such-model"}, {}}), "--sheet-models: unknown model 'no-such-model'"));
+    EXPECT_TRUE(Contains(message({{"Au"}, {"f82-tint", "no-such-model"}, {}}),
+                         "--sheet-models: unknown model 'no-such-model'"));
     EXPECT_TRUE(Contains(message({{"Au"}, {"schlick", "schlick"}, {}}), "named twice"));
     EXPECT_TRUE(Contains(message({{"Au"}, {}, {0.0, 1.5}}), "--sheet-roughness"));
     EXPECT_TRUE(Contains(message({{"Au"}, {}, {0.2, 0.2}}), "--sheet-roughness"));
@@ -145,15 +150,17 @@ TEST(PreviewSheet, LabelsChangeOnlyTheLabelBandsOfThePng) {
         }
     EXPECT_GT(differing, 10) << "'gold: f82-tint' and 'gold: schlick' look alike";
     // The EXR holds the renders only, labelled or not.
-    const Image exr_on = read_image(dir.path() / "on" / "sheet.exr"), exr_off = read_image(dir.path() / "off" / "sheet.exr");
+    const Image exr_on = read_image(dir.path() / "on" / "sheet.exr"),
+                exr_off = read_image(dir.path() / "off" / "sheet.exr");
     EXPECT_EQ(exr_on.rgb, exr_off.rgb);
 }
 
 TEST(PreviewSheet, OneColumnGroupPerModelAndOneColumnPerRoughness) {
     TempDir dir;
-    const CommandResult run = glpreview(sheet_scene() + " --sheet Au,Cu --sheet-models f82-tint,schlick,conductor-rgb "
-                                                        "--sheet-roughness 0,0.5 --sheet-labels off" + kSize +
-                                            " -o " + (dir.path() / "out").string(),
+    const CommandResult run = glpreview(sheet_scene() +
+                                            " --sheet Au,Cu --sheet-models f82-tint,schlick,conductor-rgb "
+                                            "--sheet-roughness 0,0.5 --sheet-labels off" +
+                                            kSize + " -o " + (dir.path() / "out").string(),
                                         dir);
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto record = nlohmann::json::parse(read_file(dir.path() / "out" / "sheet.json"));
@@ -190,9 +197,11 @@ TEST(PreviewSheet, TheRoughnessZeroColumnsAreTodaysSheet) {
     TempDir dir;
     const std::string common = sheet_scene() + " --sheet Au --sheet-models f82-tint --sheet-labels off" + kSize;
     ASSERT_EQ(glpreview(common + " -o " + (dir.path() / "mirror").string(), dir).exit_code, 0);
-    const CommandResult rough = glpreview(common + " --sheet-roughness 0,0.2 -o " + (dir.path() / "rough").string(), dir);
+    const CommandResult rough =
+        glpreview(common + " --sheet-roughness 0,0.2 -o " + (dir.path() / "rough").string(), dir);
     ASSERT_EQ(rough.exit_code, 0) << rough.err;
-    const Image mirror = read_image(dir.path() / "mirror" / "sheet.exr"), both = read_image(dir.path() / "rough" / "sheet.exr");
+    const Image mirror = read_image(dir.path() / "mirror" / "sheet.exr"),
+                both = read_image(dir.path() / "rough" / "sheet.exr");
     ASSERT_EQ(mirror.width, 3 * kCell);
     ASSERT_EQ(both.width, 6 * kCell);
     // mirror: reference | f82-tint | diff; rough: ref 0 | ref 0.2 | f82-tint 0 | diff 0 | f82-tint 0.2 | diff 0.2.
@@ -207,9 +216,10 @@ TEST(PreviewSheet, TheRoughnessZeroColumnsAreTodaysSheet) {
 TEST(PreviewSheet, UnknownModelOrBadRoughnessIsAOneLineUsageError) {
     TempDir dir;
     const fs::path out = dir.path() / "out";
-    for (const std::string& bad : {std::string(" --sheet Au --sheet-models f82-tint,no-such-model"), std::string(" --sheet Au --sheet-roughness 0,2"),
-                                   std::string(" --sheet Au --sheet-roughness 0,rough"), std::string(" --sheet-models schlick"),
-                                   std::string(" --sheet Au --sheet-labels maybe")}) {
+    for (const std::string& bad :
+         {std::string(" --sheet Au --sheet-models f82-tint,no-such-model"),
+          std::string(" --sheet Au --sheet-roughness 0,2"), std::string(" --sheet Au --sheet-roughness 0,rough"),
+          std::string(" --sheet-models schlick"), std::string(" --sheet Au --sheet-labels maybe")}) {
         const CommandResult run = glpreview(sheet_scene() + bad + kSize + " -o " + out.string(), dir);
         EXPECT_EQ(run.exit_code, 2) << bad << ": " << run.err;
         EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << bad << ": " << run.err;
@@ -226,7 +236,8 @@ TEST(PreviewSheet, ExplainShowsTheRoughPassesAndTheLabels) {
     ASSERT_EQ(mirror.exit_code, 0) << mirror.err;
     EXPECT_TRUE(Contains(mirror.out, "sheet-labels")) << mirror.out;
     EXPECT_TRUE(Contains(mirror.out, "prefilter-environment: no roughness column")) << mirror.out;
-    const CommandResult rough = glpreview(sheet_scene() + " --sheet Au --sheet-roughness 0,0.5 --sheet-labels off --explain", dir);
+    const CommandResult rough =
+        glpreview(sheet_scene() + " --sheet Au --sheet-roughness 0,0.5 --sheet-labels off --explain", dir);
     ASSERT_EQ(rough.exit_code, 0) << rough.err;
     EXPECT_TRUE(Contains(rough.out, "sheet-labels: --sheet-labels off")) << rough.out;
     EXPECT_TRUE(Contains(rough.out, "at roughness 0, 0.5")) << rough.out;

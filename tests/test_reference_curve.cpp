@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "libfit/io/catalog.hpp"
 #include "libfit/base/errors.hpp"
-#include "libfit/optics/fresnel.hpp"
+#include "libfit/io/catalog.hpp"
 #include "libfit/io/csv.hpp"
+#include "libfit/optics/fresnel.hpp"
 #include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit {
@@ -103,8 +103,11 @@ RGB independent_rgb(const Spectrum& n, const Spectrum& k, double mu) {
     const double primaries[3][2] = {{0.64, 0.33}, {0.30, 0.60}, {0.15, 0.06}};
     Eigen::Matrix3d m;
     for (int c = 0; c < 3; ++c)
-        m.col(c) = Eigen::Vector3d(primaries[c][0] / primaries[c][1], 1.0, (1 - primaries[c][0] - primaries[c][1]) / primaries[c][1]);
-    m = m * m.colPivHouseholderQr().solve(Eigen::Vector3d(0.3127 / 0.3290, 1.0, (1 - 0.3127 - 0.3290) / 0.3290)).asDiagonal();
+        m.col(c) = Eigen::Vector3d(primaries[c][0] / primaries[c][1], 1.0,
+                                   (1 - primaries[c][0] - primaries[c][1]) / primaries[c][1]);
+    m = m * m.colPivHouseholderQr()
+                .solve(Eigen::Vector3d(0.3127 / 0.3290, 1.0, (1 - 0.3127 - 0.3290) / 0.3290))
+                .asDiagonal();
     const Eigen::Vector3d rgb = m.inverse() * xyz, rgb_white = m.inverse() * white;
     return {rgb(0) / rgb_white(0), rgb(1) / rgb_white(1), rgb(2) / rgb_white(2)};
 }
@@ -141,10 +144,12 @@ TEST_F(ReferenceCurveTest, RealFormIntegralMatchesTheComplexFormOnEveryCatalogMa
         ASSERT_EQ(batch.size(), mus.size());
         for (std::size_t j = 0; j < mus.size(); ++j) {
             const double mu = mus[j];
-            const XYZ expected = colorimetry.integrate(eta.map([mu](const std::complex<double>& e) { return fresnel(mu, e); }));
+            const XYZ expected =
+                colorimetry.integrate(eta.map([mu](const std::complex<double>& e) { return fresnel(mu, e); }));
             const XYZ single = r.xyz(mu);
             for (int c = 0; c < 3; ++c) {
-                EXPECT_LE(std::abs(single[c] - expected[c]), 1e-12 * std::abs(expected[c])) << entry.id << " mu=" << mu << " c=" << c;
+                EXPECT_LE(std::abs(single[c] - expected[c]), 1e-12 * std::abs(expected[c]))
+                    << entry.id << " mu=" << mu << " c=" << c;
                 EXPECT_EQ(batch[j][c], single[c]) << entry.id << " mu=" << mu;
             }
         }
@@ -191,23 +196,27 @@ TEST_F(ReferenceCurveTest, DataNotCoveringTheVisibleRangeIsAnErrorNamingTheFile)
         EXPECT_NE(what.find("--extrapolate"), std::string::npos) << what;
     }
     // Asked for explicitly, end values are held outside the data, and the curve says where.
-    const ReferenceCurve extrapolated = curve(m, {}, Observer::cie1931_2deg, Illuminant::D65, {Interpolation::linear, OutOfRange::clamp});
+    const ReferenceCurve extrapolated =
+        curve(m, {}, Observer::cie1931_2deg, Illuminant::D65, {Interpolation::linear, OutOfRange::clamp});
     EXPECT_GT(extrapolated(1.0).r, 0.9);
-    EXPECT_EQ(extrapolated.held_constant(),
-              (std::vector<std::string>{"n held at its 400 nm value over 360–400 nm (--extrapolate; measured 400–700 nm)",
-                                        "n held at its 700 nm value over 700–830 nm (--extrapolate; measured 400–700 nm)",
-                                        "k held at its 400 nm value over 360–400 nm (--extrapolate; measured 400–700 nm)",
-                                        "k held at its 700 nm value over 700–830 nm (--extrapolate; measured 400–700 nm)"}));
+    EXPECT_EQ(
+        extrapolated.held_constant(),
+        (std::vector<std::string>{"n held at its 400 nm value over 360–400 nm (--extrapolate; measured 400–700 nm)",
+                                  "n held at its 700 nm value over 700–830 nm (--extrapolate; measured 400–700 nm)",
+                                  "k held at its 400 nm value over 360–400 nm (--extrapolate; measured 400–700 nm)",
+                                  "k held at its 700 nm value over 700–830 nm (--extrapolate; measured 400–700 nm)"}));
     // Data that cover the grid hold nothing, with or without --extrapolate.
-    EXPECT_TRUE(curve(material("Au"), {}, Observer::cie1931_2deg, Illuminant::D65, {Interpolation::linear, OutOfRange::clamp})
-                    .held_constant()
-                    .empty());
+    EXPECT_TRUE(
+        curve(material("Au"), {}, Observer::cie1931_2deg, Illuminant::D65, {Interpolation::linear, OutOfRange::clamp})
+            .held_constant()
+            .empty());
 }
 
 TEST_F(ReferenceCurveTest, PchipIsCloseToLinearButNotIdentical) {
     const Material gold = material("Au");
     const RGB linear = curve(gold)(1.0);
-    const RGB pchip = curve(gold, {}, Observer::cie1931_2deg, Illuminant::D65, {Interpolation::pchip, OutOfRange::error})(1.0);
+    const RGB pchip =
+        curve(gold, {}, Observer::cie1931_2deg, Illuminant::D65, {Interpolation::pchip, OutOfRange::error})(1.0);
     double largest = 0.0;
     for (int c = 0; c < 3; ++c) largest = std::max(largest, std::abs(linear[c] - pchip[c]));
     EXPECT_GT(largest, 1e-5);
@@ -215,7 +224,7 @@ TEST_F(ReferenceCurveTest, PchipIsCloseToLinearButNotIdentical) {
 }
 
 TEST_F(ReferenceCurveTest, AluminiumHasItsMinimumNearGrazing) {
-    // Aluminium's reflectance is not monotone in μ: it dips below F0 before rising to 1 (FORMULAS.md §2).
+    // Aluminium's reflectance is not monotone in μ: it dips below F0 before rising to 1 (Lazányi 2008, ch. 3; docs/references.md).
     const ReferenceCurve r = curve(material("Al"));
     const double f0 = r(1.0).g;
     double minimum = 1.0, at = 1.0;

@@ -3,9 +3,9 @@
 
 #include <thread>
 
-#include "test_support.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/report/report.hpp"
+#include "test_support.hpp"
 
 namespace {
 
@@ -13,7 +13,9 @@ namespace fs = std::filesystem;
 using metalfit::ReportFile;
 using metalfit::test::read_file;
 
-std::size_t entries(const fs::path& dir) { return std::distance(fs::directory_iterator(dir), fs::directory_iterator()); }
+std::size_t entries(const fs::path& dir) {
+    return std::distance(fs::directory_iterator(dir), fs::directory_iterator());
+}
 
 TEST(ReportFolder, WritesEveryFileAndReplacesAnOldFolderWhole) {
     const metalfit::test::TempDir tmp;
@@ -52,7 +54,8 @@ TEST(ReportFolder, ParallelWritersOfOneFolderAllSucceed) {
         writers.emplace_back([&, i] {
             try {
                 const std::string n = std::to_string(i);
-                metalfit::write_report_folder(dir, std::vector<ReportFile>{{"index.html", n}, {"materials/" + n + ".html", n}});
+                metalfit::write_report_folder(
+                    dir, std::vector<ReportFile>{{"index.html", n}, {"materials/" + n + ".html", n}});
             } catch (const std::exception& e) {
                 errors[static_cast<std::size_t>(i)] = e.what();
             }

@@ -90,8 +90,7 @@ TEST(SpectrumConstruction, IdenticalDuplicatesAreDropped) {
 
 TEST(SpectrumConstruction, ConflictingDuplicatesAreAveraged) {
     // Documented rule: rows with different values at one wavelength are replaced by their mean.
-    const Spectrum s = make({400.0, 500.0, 600.0, 500.0, 700.0, 700.0, 700.0},
-                            {1.0, 2.0, 3.0, 3.0, 1.0, 2.0, 6.0});
+    const Spectrum s = make({400.0, 500.0, 600.0, 500.0, 700.0, 700.0, 700.0}, {1.0, 2.0, 3.0, 3.0, 1.0, 2.0, 6.0});
     ASSERT_EQ(s.size(), 4u);
     EXPECT_EQ(s.conflicting_duplicates(), 3u);  // one extra at 500, two extra at 700
     EXPECT_EQ(s.identical_duplicates(), 0u);
@@ -118,8 +117,7 @@ TEST(SpectrumConstruction, NonFiniteSampleThrowsInvalidArgument) {
 TEST(SpectrumLinear, EqualsTheLineBetweenTwoSamples) {
     const Spectrum s = make({400.0, 450.0, 520.0, 600.0}, {1.0, 3.0, 2.0, 2.5});
     // Between (450, 3) and (520, 2): y = 3 + (x − 450)·(2 − 3)/70.
-    for (double x : {450.0, 460.0, 485.0, 500.0, 519.0, 520.0})
-        EXPECT_NEAR(s(x), 3.0 - (x - 450.0) / 70.0, 1e-14) << x;
+    for (double x : {450.0, 460.0, 485.0, 500.0, 519.0, 520.0}) EXPECT_NEAR(s(x), 3.0 - (x - 450.0) / 70.0, 1e-14) << x;
     EXPECT_DOUBLE_EQ(s(485.0), 2.5);
     // Between (520, 2) and (600, 2.5).
     EXPECT_DOUBLE_EQ(s(560.0), 2.25);
@@ -188,8 +186,7 @@ TEST(SpectrumPchip, ReproducesAStraightLineExactly) {
     std::vector<double> y;
     for (double xi : x) y.push_back(0.02 * xi - 3.0);
     const Spectrum s = make(x, y);
-    for (double t = 360.0; t <= 830.0; t += 1.0)
-        EXPECT_NEAR(s(t, Interpolation::pchip), 0.02 * t - 3.0, 1e-12) << t;
+    for (double t = 360.0; t <= 830.0; t += 1.0) EXPECT_NEAR(s(t, Interpolation::pchip), 0.02 * t - 3.0, 1e-12) << t;
 }
 
 TEST(SpectrumPchip, MatchesHandComputedFritschCarlsonEqualSpacing) {

@@ -56,8 +56,8 @@ struct CommandResult {
 inline CommandResult run_command(const fs::path& executable, const std::string& args, const fs::path& scratch,
                                  const std::string& env = "OCIO=") {
     const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-    const std::string command = "env " + env + " '" + executable.string() + "' " + args + " >'" + out.string() + "' 2>'" +
-                                err.string() + "' </dev/null";
+    const std::string command = "env " + env + " '" + executable.string() + "' " + args + " >'" + out.string() +
+                                "' 2>'" + err.string() + "' </dev/null";
     const int status = std::system(command.c_str());
     CommandResult result{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
     fs::remove(out);

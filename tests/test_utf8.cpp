@@ -11,8 +11,9 @@ namespace metalfit {
 namespace {
 
 TEST(Utf8, WellFormedTextPasses) {
-    for (const char* text : {"", "plain ASCII", "\xc2\xb5m \xce\xb5\xe2\x82\x81 \xc3\x85 \xe2\x84\xab", "\xef\xbb\xbfwith BOM",
-                             "\xf0\x9f\x98\x80 U+1F600", "\xf4\x8f\xbf\xbf U+10FFFF", "\xed\x9f\xbf U+D7FF", "\xee\x80\x80 U+E000"})
+    for (const char* text :
+         {"", "plain ASCII", "\xc2\xb5m \xce\xb5\xe2\x82\x81 \xc3\x85 \xe2\x84\xab", "\xef\xbb\xbfwith BOM",
+          "\xf0\x9f\x98\x80 U+1F600", "\xf4\x8f\xbf\xbf U+10FFFF", "\xed\x9f\xbf U+D7FF", "\xee\x80\x80 U+E000"})
         EXPECT_TRUE(is_utf8(text)) << text;
 }
 
@@ -25,9 +26,9 @@ TEST(Utf8, EveryIllFormedClassIsFoundWithItsPlaceAndReason) {
     };
     const Case cases[] = {
         {"ab\xff", 2, 1, "byte 0xFF is not UTF-8"},
-        {"a\nb\n\x80", 4, 3, "byte 0x80 is not UTF-8"},                            // stray continuation byte
-        {"caf\xe9 x", 3, 1, "byte 0xE9 is not UTF-8"},                             // Latin-1
-        {"x\xe2\x82", 1, 1, "byte 0xE2 is not UTF-8"},                              // truncated at the end
+        {"a\nb\n\x80", 4, 3, "byte 0x80 is not UTF-8"},  // stray continuation byte
+        {"caf\xe9 x", 3, 1, "byte 0xE9 is not UTF-8"},   // Latin-1
+        {"x\xe2\x82", 1, 1, "byte 0xE2 is not UTF-8"},   // truncated at the end
         {"\xc0\xaf", 0, 1, "overlong encoding C0 AF of U+002F"},
         {"\xe0\x80\xaf", 0, 1, "overlong encoding E0 80 AF of U+002F"},
         {"\xf0\x80\x80\xaf", 0, 1, "overlong encoding F0 80 80 AF of U+002F"},
@@ -35,7 +36,7 @@ TEST(Utf8, EveryIllFormedClassIsFoundWithItsPlaceAndReason) {
         {"\xed\xbf\xbf", 0, 1, "UTF-16 surrogate U+DFFF (ED BF BF) in UTF-8"},
         {"\xf4\x90\x80\x80", 0, 1, "code point U+110000 (F4 90 80 80) above U+10FFFF"},
         {"\xf7\xbf\xbf\xbf", 0, 1, "code point U+1FFFFF (F7 BF BF BF) above U+10FFFF"},
-        {"\xf8\x88\x80\x80\x80", 0, 1, "byte 0xF8 is not UTF-8"},                  // 5-byte forms are gone
+        {"\xf8\x88\x80\x80\x80", 0, 1, "byte 0xF8 is not UTF-8"},  // 5-byte forms are gone
     };
     for (const Case& c : cases) {
         const auto problem = find_invalid_utf8(c.text);
@@ -59,7 +60,8 @@ TEST(Utf8, CommandLineValuesAreUsageErrorsNamingTheArgument) {
         require_utf8_arguments(5, argv);
         FAIL() << "no error";
     } catch (const UsageError& e) {
-        EXPECT_EQ(sanitised_message(e.what()), "argument 3 (after --name) is not UTF-8 (byte 0xE9 is not UTF-8): caf\\xE9");
+        EXPECT_EQ(sanitised_message(e.what()),
+                  "argument 3 (after --name) is not UTF-8 (byte 0xE9 is not UTF-8): caf\\xE9");
     }
     const char* fine[] = {"metalfit", "show", "--name", "caf\xc3\xa9"};
     EXPECT_NO_THROW(require_utf8_arguments(4, fine));

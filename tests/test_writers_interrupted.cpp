@@ -35,12 +35,13 @@ using metalfit::test::Tree;
 using metalfit::test::tree;
 
 // Starts `exe args` with $OCIO unset and stdin, stdout and stderr on /dev/null.
-pid_t start(const std::string& exe, const std::vector<std::string>& args) { return metalfit::test::spawn_quietly(exe, args); }
+pid_t start(const std::string& exe, const std::vector<std::string>& args) {
+    return metalfit::test::spawn_quietly(exe, args);
+}
 
 int wait_for(pid_t pid) {
     int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
     return status;
 }
 
@@ -50,7 +51,7 @@ bool exited_ok(int status) { return WIFEXITED(status) && WEXITSTATUS(status) == 
 struct Writer {
     std::string exe;
     std::vector<std::string> args;
-    fs::path target;       // in its own folder `work`, which holds nothing else but the planted look-alike
+    fs::path target;  // in its own folder `work`, which holds nothing else but the planted look-alike
     bool folder = false;
     std::function<void()> restore_old;  // puts the old target in place
     std::function<bool(const Tree&)> is_old, is_new;
@@ -102,7 +103,8 @@ void kill_at_random_points(const Writer& w, int trials, std::uint32_t seed) {
         const Tree now = target_state(w);
         const bool is_old = w.is_old(now), is_new = w.is_new(now);
         EXPECT_TRUE(is_old || is_new) << name << " trial " << trial << " (signal " << signal << " at " << at << " s of "
-                                      << seconds << "): " << now.size() << " files, neither the old target nor the new one";
+                                      << seconds << "): " << now.size()
+                                      << " files, neither the old target nor the new one";
         old_seen += is_old;
         new_seen += is_new;
         for (const std::string& left : names_in(work)) {
@@ -120,14 +122,14 @@ void kill_at_random_points(const Writer& w, int trials, std::uint32_t seed) {
     EXPECT_EQ(names_in(work), (std::vector<std::string>{look_alike, name}))
         << "staging left beside " << name << " after a successful run";
     EXPECT_EQ(read_file(work / look_alike), "the user's");
-    std::cout << name << ": kills that left the old target " << old_seen << ", the new one " << new_seen << " (a run takes "
-              << seconds << " s)\n";
+    std::cout << name << ": kills that left the old target " << old_seen << ", the new one " << new_seen
+              << " (a run takes " << seconds << " s)\n";
 }
 
 // A folder target: the old one is `old_files` (made by hand); the new one has exactly the names a finished run
 // writes (kept_extra: plus the old files it keeps) and none of the old contents.
-Writer folder_writer(const std::string& exe, std::vector<std::string> args, const fs::path& target, const Tree& old_files,
-                     const Tree& full_run, bool keeps_other_files) {
+Writer folder_writer(const std::string& exe, std::vector<std::string> args, const fs::path& target,
+                     const Tree& old_files, const Tree& full_run, bool keeps_other_files) {
     Writer w{exe, std::move(args), target, true, {}, {}, {}};
     w.restore_old = [target, old_files] {
         fs::remove_all(target);
@@ -167,8 +169,9 @@ Writer file_writer(std::vector<std::string> args, const fs::path& target) {
 
 // metalfit report needs the chart libraries compiled in (node_modules/ at configure time, scripts/install-deps.sh).
 bool report_is_built(const fs::path& scratch) {
-    const auto r = metalfit::test::run_command(METALFIT_EXE, "report Au --model schlick --renders off -o '" +
-                                                                 (scratch / "probe-report").string() + "'", scratch);
+    const auto r = metalfit::test::run_command(
+        METALFIT_EXE, "report Au --model schlick --renders off -o '" + (scratch / "probe-report").string() + "'",
+        scratch);
     fs::remove_all(scratch / "probe-report");
     return !Contains(r.err, "built without the chart libraries");
 }
@@ -178,7 +181,8 @@ TEST(WritersInterrupted, ReportIsTheOldFolderOrTheNewOne) {
     if (!report_is_built(tmp.path())) GTEST_SKIP() << "metalfit was built without the report's chart libraries";
     const fs::path work = tmp.path() / "work", dir = work / "report";
     fs::create_directories(work);
-    const std::vector<std::string> args{"report", "Au,Cu", "--model", "schlick,f82-tint", "--renders", "off", "-o", dir.string()};
+    const std::vector<std::string> args{"report",    "Au,Cu", "--model", "schlick,f82-tint",
+                                        "--renders", "off",   "-o",      dir.string()};
     ASSERT_TRUE(exited_ok(wait_for(start(METALFIT_EXE, args))));
     const Tree full_run = tree(dir);
     ASSERT_GT(full_run.size(), 3u);
@@ -191,8 +195,8 @@ TEST(WritersInterrupted, FitToAFileIsTheOldFileOrTheNewOne) {
     const fs::path work = tmp.path() / "work";
     fs::create_directories(work);
     const fs::path out = work / "fit.json";
-    kill_at_random_points(file_writer({"fit", "--all", "--model", "schlick,f82-tint", "--json", "-o", out.string()}, out),
-                          6, 3002u);
+    kill_at_random_points(
+        file_writer({"fit", "--all", "--model", "schlick,f82-tint", "--json", "-o", out.string()}, out), 6, 3002u);
 }
 
 TEST(WritersInterrupted, TableAndShowToAFileAreTheOldFileOrTheNewOne) {
@@ -234,8 +238,8 @@ TEST(WritersInterrupted, BatchSceneNamesCannotNameTheParentOfTheOutput) {
     std::ofstream(parent / "precious.txt") << "mine";
     for (const char* name : {"...json", "..json"}) {  // stems ".." and "."
         const fs::path scene = tmp.write(name, kSmallScene);
-        const auto r = metalfit::test::run_command(GLPREVIEW_EXE, "--batch '" + scene.string() + "' -o '" + (parent / "out").string() + "'",
-                                                   tmp.path());
+        const auto r = metalfit::test::run_command(
+            GLPREVIEW_EXE, "--batch '" + scene.string() + "' -o '" + (parent / "out").string() + "'", tmp.path());
         EXPECT_EQ(r.exit_code, 2) << name << ": " << r.err;
         EXPECT_TRUE(Contains(r.err, "cannot name its output folder")) << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -251,7 +255,8 @@ TEST(WritersInterrupted, AFullStdoutWritesNothing) {
     if (!report_is_built(tmp.path())) GTEST_SKIP() << "metalfit was built without the report's chart libraries";
     const auto full = [&](const std::string& exe, const std::string& args) {
         const fs::path err = tmp.path() / "err.txt";
-        const std::string command = "env OCIO= '" + exe + "' " + args + " >/dev/full 2>'" + err.string() + "' </dev/null";
+        const std::string command =
+            "env OCIO= '" + exe + "' " + args + " >/dev/full 2>'" + err.string() + "' </dev/null";
         const int status = std::system(command.c_str());
         const std::string text = read_file(err);
         fs::remove(err);
@@ -267,7 +272,8 @@ TEST(WritersInterrupted, AFullStdoutWritesNothing) {
     full(GLPREVIEW_EXE, "'" + scene.string() + "' -o '" + (tmp.path() / "out").string() + "'");
     full(GLPREVIEW_EXE, "--batch '" + scene.string() + "' -o '" + (tmp.path() / "batch").string() + "'");
     full(GLPREVIEW_EXE, "'" + (metalfit::test::kData / "scenes" / "sheet.json").string() +
-                            "' --sheet Au --sheet-models schlick --size 24x24 -o '" + (tmp.path() / "sheet").string() + "'");
+                            "' --sheet Au --sheet-models schlick --size 24x24 -o '" + (tmp.path() / "sheet").string() +
+                            "'");
     EXPECT_EQ(names_in(tmp.path()), std::vector<std::string>{"s.json"});
 #endif
 }
@@ -281,8 +287,8 @@ TEST(WritersInterrupted, ASymlinkedSubfolderOfTheOutputIsRefused) {
     fs::create_directories(dir);
     std::ofstream(dir / "mine.txt") << "mine";
     fs::create_directory_symlink(outside, dir / "glsl");
-    const auto r = metalfit::test::run_command(METALFIT_EXE, "export gold --model schlick --format json,glsl -o '" + dir.string() + "'",
-                                               tmp.path());
+    const auto r = metalfit::test::run_command(
+        METALFIT_EXE, "export gold --model schlick --format json,glsl -o '" + dir.string() + "'", tmp.path());
     EXPECT_EQ(r.exit_code, 3) << r.err;
     EXPECT_TRUE(Contains(r.err, (dir / "glsl").string() + ": is a link")) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -39,8 +39,10 @@ void mark_front(std::vector<CostRow>& rows, const ParetoTolerance& tolerance, bo
 }  // namespace
 
 void mark_pareto_fronts(std::vector<CostRow>& rows, const ParetoTolerance& tolerance) {
-    mark_front(rows, tolerance, [](const CostRow& r) { return r.kind == "model"; }, &CostRow::front_models);
-    mark_front(rows, tolerance, [](const CostRow&) { return true; }, &CostRow::front_all);
+    mark_front(
+        rows, tolerance, [](const CostRow& r) { return r.kind == "model"; }, &CostRow::front_models);
+    mark_front(
+        rows, tolerance, [](const CostRow&) { return true; }, &CostRow::front_all);
 }
 
 BenchReport run_bench(const BenchOptions& o) {
@@ -93,13 +95,15 @@ BenchReport run_bench(const BenchOptions& o) {
         row.kind = k.kind;
         row.description = k.description;
         row.params_per_channel = k.params_per_channel;
-        const AccuracySummary* a = accuracy.find(k.id == "exact-complex" || k.id == "exact-real" ? std::string(kBaselineKernel) : k.id);
+        const AccuracySummary* a =
+            accuracy.find(k.id == "exact-complex" || k.id == "exact-real" ? std::string(kBaselineKernel) : k.id);
         if (a) {
             row.median_rel_rms = a->median;
             row.worst_rel_rms = a->worst;
             row.accuracy_source = k.kind == "lut" ? "the table against the reference at the 128 nodes"
-                                  : k.id == "exact-complex" || k.id == "exact-real" ? "conductor-rgb's fit (the same function)"
-                                                            : "the fit of every catalog material";
+                                  : k.id == "exact-complex" || k.id == "exact-real"
+                                      ? "conductor-rgb's fit (the same function)"
+                                      : "the fit of every catalog material";
             if (k.kind == "model") row.fit_ms = 1e3 * a->fit_seconds_median;
         } else {
             row.accuracy_source = "exact by definition";
@@ -128,7 +132,8 @@ BenchReport run_bench(const BenchOptions& o) {
     report.convergence_reference_nodes = convergence.reference_nodes;
     report.convergence_models = convergence.models;
     for (std::size_t i = 0; i < convergence.nodes.size(); ++i)
-        report.convergence.push_back({convergence.nodes[i], convergence.integration_ms[i], convergence.rel_rms_change[i]});
+        report.convergence.push_back(
+            {convergence.nodes[i], convergence.integration_ms[i], convergence.rel_rms_change[i]});
 
     say("GPU: " + (o.glpreview.empty() ? std::string("no glpreview") : o.glpreview.string()));
     report.shaders = run_shader_bench(o.glpreview, o.quick);
@@ -144,7 +149,8 @@ BenchReport run_bench(const BenchOptions& o) {
 }
 
 std::vector<ThesisComparison> thesis_comparison(const BenchReport& report) {
-    const std::array<std::pair<const char*, double>, 3> thesis{{{models::Schlick::kId.data(), 28}, {models::Lazanyi::kId.data(), 33}, {models::LazanyiComp::kId.data(), 54}}};
+    const std::array<std::pair<const char*, double>, 3> thesis{
+        {{models::Schlick::kId.data(), 28}, {models::Lazanyi::kId.data(), 33}, {models::LazanyiComp::kId.data(), 54}}};
     const CostRow* base = nullptr;
     for (const CostRow& r : report.rows)
         if (r.id == kBaselineKernel) base = &r;
@@ -186,14 +192,18 @@ nlohmann::json to_json(const BenchReport& r) {
                         {"fit_ms_per_material", optional(row.fit_ms)},
                         {"spirv_ops", optional(row.spirv_ops)},
                         {"shader_ratio", optional(row.shader_ratio)},
-                        {"pareto", {{"models", {{"cpu", row.front_models.cpu}, {"gpu", optional(row.front_models.gpu)}}},
-                                    {"all", {{"cpu", row.front_all.cpu}, {"gpu", optional(row.front_all.gpu)}}}}}});
+                        {"pareto",
+                         {{"models", {{"cpu", row.front_models.cpu}, {"gpu", optional(row.front_models.gpu)}}},
+                          {"all", {{"cpu", row.front_all.cpu}, {"gpu", optional(row.front_all.gpu)}}}}}});
     json spirv = json::array();
     for (const SpirvRow& s : r.spirv) {
         json e{{"id", s.id}};
         if (s.counts)
-            e.update({{"arithmetic", s.counts->arithmetic}, {"transcendental", s.counts->transcendental},
-                      {"texture", s.counts->texture}, {"other", s.counts->other}, {"counted", s.counts->compute()}});
+            e.update({{"arithmetic", s.counts->arithmetic},
+                      {"transcendental", s.counts->transcendental},
+                      {"texture", s.counts->texture},
+                      {"other", s.counts->other},
+                      {"counted", s.counts->compute()}});
         else
             e["error"] = s.error;
         spirv.push_back(e);
@@ -201,15 +211,18 @@ nlohmann::json to_json(const BenchReport& r) {
     json convergence = json::array();
     for (const ConvergenceRow& c : r.convergence) {
         json change = json::object();
-        for (std::size_t m = 0; m < r.convergence_models.size(); ++m) change[r.convergence_models[m]] = number(c.rel_rms_change[m]);
+        for (std::size_t m = 0; m < r.convergence_models.size(); ++m)
+            change[r.convergence_models[m]] = number(c.rel_rms_change[m]);
         convergence.push_back({{"nodes", c.nodes}, {"integration_ms", c.integration_ms}, {"rel_rms_change", change}});
     }
     json thesis = json::array();
     for (const ThesisComparison& t : thesis_comparison(r))
-        thesis.push_back({{"model", t.model}, {"thesis_percent", t.thesis_percent},
+        thesis.push_back({{"model", t.model},
+                          {"thesis_percent", t.thesis_percent},
                           {"cpu_scalar_percent", optional(t.cpu_scalar_percent)},
                           {"cpu_array_percent", optional(t.cpu_array_percent)},
-                          {"spirv_percent", optional(t.spirv_percent)}, {"shader_percent", optional(t.shader_percent)}});
+                          {"spirv_percent", optional(t.spirv_percent)},
+                          {"shader_percent", optional(t.shader_percent)}});
     const auto gpu = [](const auto& section) {
         return section.value ? json{{"result", to_json(*section.value)}, {"skipped", nullptr}}
                              : json{{"result", nullptr}, {"skipped", section.skipped}};
@@ -220,16 +233,19 @@ nlohmann::json to_json(const BenchReport& r) {
             {"quick", r.quick},
             {"material", r.material},
             {"catalog_materials", r.catalog_materials},
-            {"timing", {{"rounds", r.timing.rounds}, {"seconds_per_sample", r.timing.seconds_per_sample},
-                        {"baseline", kBaselineKernel}}},
-            {"pareto_tolerance", {{"cost", r.tolerance.cost}, {"error", r.tolerance.error},
-                                  {"error_floor", r.tolerance.error_floor}}},
+            {"timing",
+             {{"rounds", r.timing.rounds},
+              {"seconds_per_sample", r.timing.seconds_per_sample},
+              {"baseline", kBaselineKernel}}},
+            {"pareto_tolerance",
+             {{"cost", r.tolerance.cost}, {"error", r.tolerance.error}, {"error_floor", r.tolerance.error_floor}}},
             {"rows", rows},
-            {"spirv", {{"validator", r.spirv_validator.empty() ? json(nullptr) : json(r.spirv_validator)},
-                       {"skipped", r.spirv_skipped.empty() ? json(nullptr) : json(r.spirv_skipped)},
-                       {"shaders", spirv}}},
-            {"convergence", {{"material", r.material}, {"reference_nodes", r.convergence_reference_nodes},
-                             {"rows", convergence}}},
+            {"spirv",
+             {{"validator", r.spirv_validator.empty() ? json(nullptr) : json(r.spirv_validator)},
+              {"skipped", r.spirv_skipped.empty() ? json(nullptr) : json(r.spirv_skipped)},
+              {"shaders", spirv}}},
+            {"convergence",
+             {{"material", r.material}, {"reference_nodes", r.convergence_reference_nodes}, {"rows", convergence}}},
             {"gpu", {{"shaders", gpu(r.shaders)}, {"localization", gpu(r.localization)}}},
             {"thesis_table_3_2", thesis},
             {"seconds", r.seconds}};

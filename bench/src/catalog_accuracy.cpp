@@ -6,9 +6,9 @@
 #include <limits>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/interleaved_timer.hpp"
 #include "libfit/fit/catalog_summary.hpp"
 #include "libfit/fit/fit.hpp"
-#include "libfit/base/interleaved_timer.hpp"
 #include "metalfit_bench/reference_lut.hpp"
 
 namespace metalfit::bench {
@@ -53,7 +53,8 @@ CatalogAccuracy catalog_accuracy(const Environment& env, std::span<const int> lu
             result.models[m].worst_rel_rms.push_back(worst_channel(r.fit.value.metrics.rel_rms));
         }
         for (std::size_t l = 0; l < lut_entries.size(); ++l)
-            result.luts[l].worst_rel_rms.push_back(worst_channel(ReferenceLut(curve, lut_entries[l]).rel_rms(reference)));
+            result.luts[l].worst_rel_rms.push_back(
+                worst_channel(ReferenceLut(curve, lut_entries[l]).rel_rms(reference)));
         if (progress) progress(e + 1, count);
     }
     for (std::size_t m = 0; m < models.size(); ++m) {

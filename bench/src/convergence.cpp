@@ -32,7 +32,8 @@ Convergence gauss_legendre_convergence(const std::function<double(double)>& f, s
         const auto start = std::chrono::steady_clock::now();
         const double estimate = integrate(f, n);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        c.points.push_back({n, estimate, std::abs(estimate - previous), std::abs(estimate - c.reference_estimate), seconds});
+        c.points.push_back(
+            {n, estimate, std::abs(estimate - previous), std::abs(estimate - c.reference_estimate), seconds});
         previous = estimate;
     }
     return c;
@@ -51,7 +52,8 @@ FittedConvergence fitted_rel_rms_convergence(const PreparedMaterial& material, i
     for (int n : out.nodes) {
         const auto start = std::chrono::steady_clock::now();
         for (const QuadratureNode& q : gauss_legendre_unit(n)) reference(q.mu);  // the first use of these nodes
-        out.integration_ms.push_back(1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        out.integration_ms.push_back(1e3 *
+                                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     out.rel_rms_change.assign(out.nodes.size(), {});
     for (const Model* model : all_models()) {

@@ -12,8 +12,8 @@ Environment Environment::load(const std::filesystem::path& data_dir,
     OcioConfigChoice config = choose_ocio_config(ocio_config, data_dir, "--ocio-config");
     Colorimetry colorimetry = Colorimetry::load(data_dir, Observer::cie1931_2deg, Illuminant::D65);
     ColorSpaceConverter converter = ColorSpaceConverter::create(config);
-    return {std::move(catalog), std::move(config), std::move(colorimetry), std::move(converter), SpectralOptions{},
-            ErrorSettings{}};
+    return {std::move(catalog),   std::move(config), std::move(colorimetry),
+            std::move(converter), SpectralOptions{}, ErrorSettings{}};
 }
 
 PreparedMaterial PreparedMaterial::prepare(const Environment& env, const std::string& material_id) {

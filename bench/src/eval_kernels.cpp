@@ -5,10 +5,10 @@
 #include <memory>
 #include <random>
 
-#include "libfit/optics/fresnel.hpp"
-#include "libfit/models/registry.hpp"
-#include "metalfit_bench/reference_lut.hpp"
 #include "exact_real_kernel.hpp"
+#include "libfit/models/registry.hpp"
+#include "libfit/optics/fresnel.hpp"
+#include "metalfit_bench/reference_lut.hpp"
 #include "model_kernels.hpp"
 #include "opaque.hpp"
 
@@ -45,7 +45,8 @@ EvalKernel lut_kernel(const PreparedMaterial& material, int entries) {
     EvalKernel k;
     k.id = "lut-" + std::to_string(entries);
     k.kind = "lut";
-    k.description = "1D table of the exact curve, " + std::to_string(entries) + " float RGB entries, linear interpolation";
+    k.description =
+        "1D table of the exact curve, " + std::to_string(entries) + " float RGB entries, linear interpolation";
     k.params_per_channel = entries;
     k.scalar = [lut](std::span<const float> mu, std::span<float> out) {
         for (std::size_t i = 0; i < mu.size(); ++i) {
@@ -75,7 +76,8 @@ EvalKernel spectral_kernel(const PreparedMaterial& material) {
     EvalKernel k;
     k.id = "spectral-reference";
     k.kind = "exact";
-    k.description = "exact spectral reference: complex Fresnel at 471 wavelengths x CMF x D65, OCIO, white balance (double)";
+    k.description =
+        "exact spectral reference: complex Fresnel at 471 wavelengths x CMF x D65, OCIO, white balance (double)";
     k.batch = 16;
     const auto run = [curve](std::span<const float> mu, std::span<float> out) {
         for (std::size_t i = 0; i < mu.size(); ++i) {

@@ -28,7 +28,8 @@ EvalKernel exact_real_kernel(const PreparedMaterial& material) {
     EvalKernel k;
     k.id = "exact-real";
     k.kind = "exact";
-    k.description = "exact conductor Fresnel, real branch-free form (libfit fresnel_real(), float), conductor-rgb's fitted n,k";
+    k.description =
+        "exact conductor Fresnel, real branch-free form (libfit fresnel_real(), float), conductor-rgb's fitted n,k";
     k.params_per_channel = 2;
     k.scalar = [eta2](std::span<const float> mu, std::span<float> out) {
         for (std::size_t i = 0; i < mu.size(); ++i) {

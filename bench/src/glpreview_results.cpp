@@ -56,7 +56,8 @@ template <class T, class Parse>
 GpuSection<T> run(const std::filesystem::path& glpreview, const char* mode, bool quick, Parse parse) {
     GpuSection<T> section;
     if (glpreview.empty() || access(glpreview.c_str(), X_OK) != 0) {
-        section.skipped = "no glpreview executable at " + (glpreview.empty() ? std::string("(none)") : glpreview.string());
+        section.skipped =
+            "no glpreview executable at " + (glpreview.empty() ? std::string("(none)") : glpreview.string());
         return section;
     }
     std::vector<std::string> args{mode};
@@ -114,12 +115,16 @@ LocalizationBench parse_localization_bench(const json& j) {
             LocalizationRow row;
             row.mode = string_field(rows[i], path, "mode");
             const json& strategy = field(rows[i], path, "strategy");
-            if (strategy.is_string()) row.strategy = strategy.get<std::string>();
-            else if (!strategy.is_null()) throw std::runtime_error(path + ".strategy: expected a string or null");
+            if (strategy.is_string())
+                row.strategy = strategy.get<std::string>();
+            else if (!strategy.is_null())
+                throw std::runtime_error(path + ".strategy: expected a string or null");
             row.iterations = int_field(rows[i], path, "iterations");
             const json& tolerance = field(rows[i], path, "tolerance");
-            if (tolerance.is_number()) row.tolerance = tolerance.get<double>();
-            else if (!tolerance.is_null()) throw std::runtime_error(path + ".tolerance: expected a number or null");
+            if (tolerance.is_number())
+                row.tolerance = tolerance.get<double>();
+            else if (!tolerance.is_null())
+                throw std::runtime_error(path + ".tolerance: expected a number or null");
             row.mean_iterations = number_field(rows[i], path, "mean_iterations");
             row.ms_per_frame = number_field(rows[i], path, "ms_per_frame");
             row.ratio_to_classic = number_field(rows[i], path, "ratio_to_classic");
@@ -136,9 +141,14 @@ LocalizationBench parse_localization_bench(const json& j) {
 json to_json(const ShaderBench& b) {
     json models = json::array();
     for (const ShaderTiming& t : b.models)
-        models.push_back({{"model", t.model}, {"ms_per_frame", t.ms_per_frame}, {"ratio_to_conductor_rgb", t.ratio_to_conductor_rgb}});
-    return {{"renderer", b.renderer}, {"size", {b.width, b.height}}, {"frames", b.frames},
-            {"evaluations_per_pixel", b.evaluations_per_pixel}, {"models", models}};
+        models.push_back({{"model", t.model},
+                          {"ms_per_frame", t.ms_per_frame},
+                          {"ratio_to_conductor_rgb", t.ratio_to_conductor_rgb}});
+    return {{"renderer", b.renderer},
+            {"size", {b.width, b.height}},
+            {"frames", b.frames},
+            {"evaluations_per_pixel", b.evaluations_per_pixel},
+            {"models", models}};
 }
 
 json to_json(const LocalizationBench& b) {
@@ -146,10 +156,15 @@ json to_json(const LocalizationBench& b) {
     for (const LocalizationRoom& room : b.rooms) {
         json rows = json::array();
         for (const LocalizationRow& r : room.rows)
-            rows.push_back({{"mode", r.mode}, {"strategy", r.strategy ? json(*r.strategy) : json(nullptr)},
-                            {"iterations", r.iterations}, {"tolerance", r.tolerance ? json(*r.tolerance) : json(nullptr)},
-                            {"mean_iterations", r.mean_iterations}, {"ms_per_frame", r.ms_per_frame},
-                            {"ratio_to_classic", r.ratio_to_classic}, {"ratio_noise", r.ratio_noise}, {"rmse", r.rmse},
+            rows.push_back({{"mode", r.mode},
+                            {"strategy", r.strategy ? json(*r.strategy) : json(nullptr)},
+                            {"iterations", r.iterations},
+                            {"tolerance", r.tolerance ? json(*r.tolerance) : json(nullptr)},
+                            {"mean_iterations", r.mean_iterations},
+                            {"ms_per_frame", r.ms_per_frame},
+                            {"ratio_to_classic", r.ratio_to_classic},
+                            {"ratio_noise", r.ratio_noise},
+                            {"rmse", r.rmse},
                             {"mean_abs", r.mean_abs}});
         rooms.push_back({{"room", room.room}, {"rows", rows}});
     }

@@ -40,12 +40,13 @@ Machine Machine::describe() {
 
 std::string Machine::one_line() const {
     return cpu + ", " + std::to_string(cores) + " cores, " + os + "; " + compiler + ", " +
-           (build_type.empty() ? std::string("no build type") : build_type + " build") + (flags.empty() ? "" : " (" + flags + ")");
+           (build_type.empty() ? std::string("no build type") : build_type + " build") +
+           (flags.empty() ? "" : " (" + flags + ")");
 }
 
 nlohmann::json to_json(const Machine& m) {
-    return {{"cpu", m.cpu}, {"cores", m.cores}, {"os", m.os}, {"compiler", m.compiler}, {"build_type", m.build_type},
-            {"flags", m.flags}};
+    return {{"cpu", m.cpu},           {"cores", m.cores},           {"os", m.os},
+            {"compiler", m.compiler}, {"build_type", m.build_type}, {"flags", m.flags}};
 }
 
 }  // namespace metalfit::bench

@@ -24,7 +24,8 @@ std::vector<bool> pareto_front(std::span<const ParetoPoint> points, const Pareto
     std::vector<bool> front(points.size(), false);
     for (std::size_t i = 0; i < points.size(); ++i) {
         if (!valid(points[i])) continue;
-        front[i] = std::none_of(points.begin(), points.end(), [&](const ParetoPoint& p) { return dominates(p, points[i], t); });
+        front[i] = std::none_of(points.begin(), points.end(),
+                                [&](const ParetoPoint& p) { return dominates(p, points[i], t); });
     }
     return front;
 }

@@ -1,6 +1,6 @@
+#include "libfit/base/version.hpp"
 #include "metalfit_bench/bench_report.hpp"
 #include "report_tables.hpp"
-#include "libfit/base/version.hpp"
 
 namespace metalfit::bench {
 namespace {

@@ -3,32 +3,31 @@
 #include <cmath>
 #include <cstdio>
 
+#include "libfit/base/number_text.hpp"
 #include "metalfit_bench/eval_kernels.hpp"
 
 namespace metalfit::bench::detail {
 namespace {
 
-std::string format(const char* spec, double v) {
-    if (std::isnan(v)) return "-";
-    char text[64];
-    std::snprintf(text, sizeof text, spec, v);
-    return text;
-}
+// The table's numbers; "-" for NaN (not measured).
+std::string fixed(double v, int decimals) { return std::isnan(v) ? "-" : fixed_text(v, decimals); }
+std::string significant(double v, int digits) { return std::isnan(v) ? "-" : significant_text(v, digits); }
+std::string scientific(double v, int decimals) { return std::isnan(v) ? "-" : scientific_text(v, decimals); }
 
 // rel_rms in % with three significant digits (0.0213, 1.09, 10.8).
 std::string percent(double v) {
     if (std::isnan(v)) return "-";
     if (v == 0) return "0";
     const double p = 100 * v;
-    return format(p >= 10 ? "%.1f" : p >= 1 ? "%.2f" : p >= 0.1 ? "%.3f" : "%.2g", p);
+    return p >= 0.1 ? fixed(p, p >= 10 ? 1 : p >= 1 ? 2 : 3) : significant(p, 2);
 }
 
-std::string ns(double v) { return format(v >= 100 ? "%.0f" : v >= 10 ? "%.1f" : "%.2f", v); }
+std::string ns(double v) { return fixed(v, v >= 100 ? 0 : v >= 10 ? 1 : 2); }
 
 // Three significant digits (0.0712, 1.00, 7.38, 1038) and the noise with the same number of decimals.
 std::string ratio_text(const Ratio& r) {
-    const char* spec = r.median >= 100 ? "%.0f" : r.median >= 10 ? "%.1f" : r.median >= 1 ? "%.2f" : r.median >= 0.1 ? "%.3f" : "%.4f";
-    return format(spec, r.median) + " ±" + format(spec, r.noise);
+    const int decimals = r.median >= 100 ? 0 : r.median >= 10 ? 1 : r.median >= 1 ? 2 : r.median >= 0.1 ? 3 : 4;
+    return fixed(r.median, decimals) + " ±" + fixed(r.noise, decimals);
 }
 
 std::string front_text(const CostRow::Front& f) {
@@ -41,10 +40,11 @@ std::string front_text(const CostRow::Front& f) {
 }  // namespace
 
 std::string run_line(const BenchReport& r) {
-    return std::string(r.quick ? "quick run" : "full run") + ": evaluation of " + r.material + "'s fitted parameters, " +
-           std::to_string(r.timing.rounds) + " interleaved rounds of " + format("%.0f", 1e3 * r.timing.seconds_per_sample) +
-           " ms per kernel; accuracy over " + std::to_string(r.catalog_materials) +
-           " catalog materials (worst channel rel_rms, 128 nodes); wall " + format("%.1f", r.seconds) + " s";
+    return std::string(r.quick ? "quick run" : "full run") + ": evaluation of " + r.material +
+           "'s fitted parameters, " + std::to_string(r.timing.rounds) + " interleaved rounds of " +
+           fixed(1e3 * r.timing.seconds_per_sample, 0) + " ms per kernel; accuracy over " +
+           std::to_string(r.catalog_materials) + " catalog materials (worst channel rel_rms, 128 nodes); wall " +
+           fixed(r.seconds, 1) + " s";
 }
 
 std::vector<std::string> skipped_lines(const BenchReport& r) {
@@ -69,13 +69,12 @@ std::vector<Table> report_tables(const BenchReport& r) {
                {},
                {}};
     for (const CostRow& row : r.rows)
-        main.rows.push_back({row.id, row.params_per_channel ? std::to_string(*row.params_per_channel) : "-",
-                             percent(row.median_rel_rms), percent(row.worst_rel_rms), ns(row.ns_scalar),
-                             ns(row.ns_array), ratio_text(row.ratio_scalar), ratio_text(row.ratio_array),
-                             row.fit_ms ? format("%.1f", *row.fit_ms) : "-",
-                             row.spirv_ops ? std::to_string(*row.spirv_ops) : "-",
-                             row.shader_ratio ? format("%.2f", *row.shader_ratio) : "-", front_text(row.front_models),
-                             front_text(row.front_all)});
+        main.rows.push_back(
+            {row.id, row.params_per_channel ? std::to_string(*row.params_per_channel) : "-",
+             percent(row.median_rel_rms), percent(row.worst_rel_rms), ns(row.ns_scalar), ns(row.ns_array),
+             ratio_text(row.ratio_scalar), ratio_text(row.ratio_array), row.fit_ms ? fixed(*row.fit_ms, 1) : "-",
+             row.spirv_ops ? std::to_string(*row.spirv_ops) : "-", row.shader_ratio ? fixed(*row.shader_ratio, 2) : "-",
+             front_text(row.front_models), front_text(row.front_all)});
     main.notes = {
         "ns/eval: one RGB evaluation (3 channels), float, one μ at a time; array: a loop over 1024 μ the compiler may "
         "vectorise. Ratios: median over rounds of the per-round ratio, ± half its interquartile range.",
@@ -86,28 +85,32 @@ std::vector<Table> report_tables(const BenchReport& r) {
         "fit ms: fit_model() per material (closed forms, every Ceres start, metrics), median over the catalog.",
         "Pareto front (*): no other row is both cheaper and more accurate (median rel_rms), among the models only and "
         "among all rows; CPU on the scalar ratio, GPU on the shader ratio; costs within " +
-        format("%.0f", 100 * r.tolerance.cost) + " % and errors within " + format("%.0f", 100 * r.tolerance.error) +
-        " % are ties."};
+            fixed(100 * r.tolerance.cost, 0) + " % and errors within " + fixed(100 * r.tolerance.error, 0) +
+            " % are ties."};
     tables.push_back(std::move(main));
 
     Table thesis{"Against the thesis's Table 3.2 (time relative to the exact Fresnel, %)",
-                 {"model", "thesis", "CPU scalar", "CPU array", "SPIR-V ops", "GPU shader"}, {}, {}};
-    const auto pct = [](const std::optional<double>& v) { return v ? format("%.0f", *v) : std::string("-"); };
+                 {"model", "thesis", "CPU scalar", "CPU array", "SPIR-V ops", "GPU shader"},
+                 {},
+                 {}};
+    const auto pct = [](const std::optional<double>& v) { return v ? fixed(*v, 0) : std::string("-"); };
     for (const ThesisComparison& t : thesis_comparison(r))
-        thesis.rows.push_back({t.model, format("%.0f", t.thesis_percent), pct(t.cpu_scalar_percent),
-                               pct(t.cpu_array_percent), pct(t.spirv_percent), pct(t.shader_percent)});
+        thesis.rows.push_back({t.model, fixed(t.thesis_percent, 0), pct(t.cpu_scalar_percent), pct(t.cpu_array_percent),
+                               pct(t.spirv_percent), pct(t.shader_percent)});
     thesis.notes = {"The exact Fresnel here is conductor-rgb (the thesis's real form, float); SPIR-V ops: counted "
                     "instructions relative to conductor-rgb's."};
     tables.push_back(std::move(thesis));
 
     if (!r.spirv.empty()) {
         Table spirv{"SPIR-V instructions per category (glslangValidator -V -Os, fragment shader around each function)",
-                    {"shader", "arithmetic", "transcendental", "texture", "other", "counted"}, {}, {}};
+                    {"shader", "arithmetic", "transcendental", "texture", "other", "counted"},
+                    {},
+                    {}};
         for (const SpirvRow& s : r.spirv) {
             if (s.counts)
-                spirv.rows.push_back({s.id, std::to_string(s.counts->arithmetic), std::to_string(s.counts->transcendental),
-                                      std::to_string(s.counts->texture), std::to_string(s.counts->other),
-                                      std::to_string(s.counts->compute())});
+                spirv.rows.push_back({s.id, std::to_string(s.counts->arithmetic),
+                                      std::to_string(s.counts->transcendental), std::to_string(s.counts->texture),
+                                      std::to_string(s.counts->other), std::to_string(s.counts->compute())});
             else
                 spirv.rows.push_back({s.id, "error: " + s.error, "", "", "", ""});
         }
@@ -116,13 +119,17 @@ std::vector<Table> report_tables(const BenchReport& r) {
         tables.push_back(std::move(spirv));
     }
 
-    Table convergence{"Gauss–Legendre convergence on " + r.material + " (spectral integration cost; change of each "
-                      "fit's worst-channel rel_rms against " + std::to_string(r.convergence_reference_nodes) + " nodes)",
-                      {"nodes", "integration ms"}, {}, {}};
+    Table convergence{"Gauss–Legendre convergence on " + r.material +
+                          " (spectral integration cost; change of each "
+                          "fit's worst-channel rel_rms against " +
+                          std::to_string(r.convergence_reference_nodes) + " nodes)",
+                      {"nodes", "integration ms"},
+                      {},
+                      {}};
     for (const std::string& m : r.convergence_models) convergence.headers.push_back(m);
     for (const ConvergenceRow& c : r.convergence) {
-        std::vector<std::string> row{std::to_string(c.nodes), format("%.2f", c.integration_ms)};
-        for (double v : c.rel_rms_change) row.push_back(format("%.1e", v));
+        std::vector<std::string> row{std::to_string(c.nodes), fixed(c.integration_ms, 2)};
+        for (double v : c.rel_rms_change) row.push_back(scientific(v, 1));
         convergence.rows.push_back(std::move(row));
     }
     convergence.notes = {"integration ms: the exact spectral reference at the N nodes (N × 471 wavelengths + OCIO), "
@@ -133,9 +140,11 @@ std::vector<Table> report_tables(const BenchReport& r) {
         const ShaderBench& b = *r.shaders.value;
         Table t{"GPU: full-screen model pass at " + std::to_string(b.width) + "x" + std::to_string(b.height) + ", " +
                     std::to_string(b.frames) + " frames (" + b.renderer + ")",
-                {"shader", "ms/frame", "ratio to conductor-rgb"}, {}, {}};
+                {"shader", "ms/frame", "ratio to conductor-rgb"},
+                {},
+                {}};
         for (const ShaderTiming& s : b.models)
-            t.rows.push_back({s.model, format("%.3f", s.ms_per_frame), format("%.2f", s.ratio_to_conductor_rgb)});
+            t.rows.push_back({s.model, fixed(s.ms_per_frame, 3), fixed(s.ratio_to_conductor_rgb, 2)});
         t.notes = {"each pixel evaluates the model " + std::to_string(b.evaluations_per_pixel) +
                    " time(s) at different μ, so that the pass measures the model rather than the framebuffer write; "
                    "frames of all shaders interleaved round-robin, median per shader; reference-lut: a 256-texel "
@@ -144,26 +153,28 @@ std::vector<Table> report_tables(const BenchReport& r) {
     }
     if (r.localization.value) {
         const LocalizationBench& b = *r.localization.value;
-        Table t{"GPU: localization at " + std::to_string(b.width) + "x" + std::to_string(b.height) + " (" + b.renderer +
-                    "), error against the CPU ray-traced reference",
-                {"room", "mode", "strategy", "iterations (limit)", "mean steps", "ms/frame", "ratio to classic ± noise", "rmse",
-                 "mean abs"},
-                {},
-                {"iterations: the most refinement steps a pixel may take; mean steps: those its pixels took (each stops once "
-                 "|rho - 1| < the tolerance); noise: half the interquartile range of the per-round ratios."}};
+        Table t{
+            "GPU: localization at " + std::to_string(b.width) + "x" + std::to_string(b.height) + " (" + b.renderer +
+                "), error against the CPU ray-traced reference",
+            {"room", "mode", "strategy", "iterations (limit)", "mean steps", "ms/frame", "ratio to classic ± noise",
+             "rmse", "mean abs"},
+            {},
+            {"iterations: the most refinement steps a pixel may take; mean steps: those its pixels took (each stops once "
+             "|rho - 1| < the tolerance); noise: half the interquartile range of the per-round ratios."}};
         bool implausible = false;
         for (const LocalizationRoom& room : b.rooms)
             for (const LocalizationRow& row : room.rows) {
                 t.rows.push_back({room.room, row.mode, row.strategy.value_or("-"), std::to_string(row.iterations),
-                                  format("%.2f", row.mean_iterations), format("%.3f", row.ms_per_frame),
-                                  format("%.2f", row.ratio_to_classic) + " ± " + format("%.2f", row.ratio_noise), format("%.4g", row.rmse),
-                                  format("%.4g", row.mean_abs)});
+                                  fixed(row.mean_iterations, 2), fixed(row.ms_per_frame, 3),
+                                  fixed(row.ratio_to_classic, 2) + " ± " + fixed(row.ratio_noise, 2),
+                                  significant(row.rmse, 4), significant(row.mean_abs, 4)});
                 // A lookup that costs more than classic's cannot be cheaper beyond its noise: the machine's load is.
                 if (row.mean_iterations > 0 && row.ratio_to_classic + row.ratio_noise < 1.0) implausible = true;
             }
         if (implausible)
-            t.notes.push_back("warning: some impostor rows are cheaper than classic beyond their noise: the timings are "
-                              "dominated by load on the machine; rerun on an idle one.");
+            t.notes.push_back(
+                "warning: some impostor rows are cheaper than classic beyond their noise: the timings are "
+                "dominated by load on the machine; rerun on an idle one.");
         tables.push_back(std::move(t));
     }
     return tables;

@@ -30,7 +30,8 @@ SpectralCurve scaled(const SpectralCurve& curve, double factor) {
     const Spectrum* table = curve.tabulated();
     if (!table) return curve;
     std::vector<SpectrumSample> samples;
-    for (std::size_t i = 0; i < table->size(); ++i) samples.push_back({table->wavelengths()[i], table->values()[i] * factor});
+    for (std::size_t i = 0; i < table->size(); ++i)
+        samples.push_back({table->wavelengths()[i], table->values()[i] * factor});
     return Spectrum(std::move(samples));
 }
 
@@ -54,7 +55,8 @@ std::string join_models(const std::vector<std::string>& models) {
 
 }  // namespace
 
-std::vector<std::function<Material()>> synthetic_materials(const Catalog& catalog, std::size_t count, std::uint64_t seed) {
+std::vector<std::function<Material()>> synthetic_materials(const Catalog& catalog, std::size_t count,
+                                                           std::uint64_t seed) {
     // The catalog's tables are read once and shared by the loaders (a few hundred kB in all).
     auto bases = std::make_shared<std::vector<Material>>();
     for (const CatalogEntry& entry : catalog.entries()) bases->push_back(load_material(catalog, entry.id, ""));
@@ -64,7 +66,8 @@ std::vector<std::function<Material()>> synthetic_materials(const Catalog& catalo
         loaders.push_back([bases, i, seed] {
             std::mt19937_64 generator(seed + i);
             Material m = (*bases)[i % bases->size()];
-            const double n_factor = 1.0 + 0.1 * symmetric_unit(generator), k_factor = 1.0 + 0.1 * symmetric_unit(generator);
+            const double n_factor = 1.0 + 0.1 * symmetric_unit(generator),
+                         k_factor = 1.0 + 0.1 * symmetric_unit(generator);
             m.index.n = scaled(m.index.n, n_factor);
             m.index.k = scaled(m.index.k, k_factor);
             m.id = "synthetic-" + std::to_string(i) + "-" + m.id;
@@ -93,8 +96,8 @@ ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, 
     const MaterialFitRequest request{env.spectral, env.error, chosen};
     const BatchColour colour{env.config, env.colorimetry, env.converter};
     // The record as `metalfit fit --all --json` streams it, its text counted and let go.
-    const FitRecordContext context{env.config, env.converter.space(), Observer::cie1931_2deg, Illuminant::D65,
-                                   env.spectral, env.error};
+    const FitRecordContext context{env.config,      env.converter.space(), Observer::cie1931_2deg,
+                                   Illuminant::D65, env.spectral,          env.error};
     std::size_t record_bytes = 0;
     double record_cpu = 0;
     FitRecordStream record(context, [&record_bytes](std::string_view text) { record_bytes += text.size(); });
@@ -103,14 +106,15 @@ ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, 
     const double cpu0 = process_cpu_seconds();
     const auto wall0 = std::chrono::steady_clock::now();
     // Streamed, as `metalfit fit --all` runs: each fit counted, written and let go in input order.
-    fit_materials_in_order(loaders, colour, request, threads,
-                           [&](std::size_t, MaterialFit&& fit) {
-                               cell.fits += fit.models.size();
-                               const double t0 = thread_cpu_seconds();
-                               record.add(fit);
-                               record_cpu += thread_cpu_seconds() - t0;
-                           },
-                           {}, 0, &statistics);
+    fit_materials_in_order(
+        loaders, colour, request, threads,
+        [&](std::size_t, MaterialFit&& fit) {
+            cell.fits += fit.models.size();
+            const double t0 = thread_cpu_seconds();
+            record.add(fit);
+            record_cpu += thread_cpu_seconds() - t0;
+        },
+        {}, 0, &statistics);
     record.finish();
     cell.setup_cpu_s = setup_cpu;
     cell.record_cpu_s = record_cpu;
@@ -127,9 +131,15 @@ ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, 
 }
 
 nlohmann::json to_json(const ScalingCell& c) {
-    return {{"materials", c.materials},   {"threads", c.threads},           {"fits", c.fits},
-            {"wall_s", c.wall_s},         {"cpu_s", c.cpu_s},               {"peak_mib", c.peak_mib},
-            {"setup_cpu_s", c.setup_cpu_s}, {"record_cpu_s", c.record_cpu_s}, {"record_mib", c.record_mib},
+    return {{"materials", c.materials},
+            {"threads", c.threads},
+            {"fits", c.fits},
+            {"wall_s", c.wall_s},
+            {"cpu_s", c.cpu_s},
+            {"peak_mib", c.peak_mib},
+            {"setup_cpu_s", c.setup_cpu_s},
+            {"record_cpu_s", c.record_cpu_s},
+            {"record_mib", c.record_mib},
             {"window_wait_s", c.window_wait_s}};
 }
 
@@ -165,8 +175,8 @@ ScalingTable run_scaling(const ScalingOptions& o) {
         for (int threads : o.threads) {
             std::vector<std::string> args{"--data-dir", o.data_dir.string()};
             if (o.ocio_config) args.insert(args.end(), {"--ocio-config", o.ocio_config->string()});
-            args.insert(args.end(), {"bench", "--scaling-cell", std::to_string(size), "--threads", std::to_string(threads),
-                                     "--scaling-models", join_models(o.models)});
+            args.insert(args.end(), {"bench", "--scaling-cell", std::to_string(size), "--threads",
+                                     std::to_string(threads), "--scaling-models", join_models(o.models)});
             const std::string cell = std::to_string(size) + " materials on " + std::to_string(threads) + " threads";
             if (o.progress) o.progress("scaling: " + cell);
             const ProcessResult r = run_process(o.metalfit, args);
@@ -193,8 +203,9 @@ nlohmann::json to_json(const ScalingTable& t) {
 }
 
 std::string to_text(const ScalingTable& t) {
-    std::string text = "metalfit bench --scaling: fit on synthetic materials (catalog tables, n and k scaled by 1 ± 0.1, seed " +
-                       std::to_string(t.seed) + "), models " + join_models(t.models) + "\n" + t.machine + "\n";
+    std::string text =
+        "metalfit bench --scaling: fit on synthetic materials (catalog tables, n and k scaled by 1 ± 0.1, seed " +
+        std::to_string(t.seed) + "), models " + join_models(t.models) + "\n" + t.machine + "\n";
     char line[256];
     std::snprintf(line, sizeof line, "| %9s | %7s | %9s | %9s | %9s | %13s | %11s | %11s | %12s | %10s | %13s |\n",
                   "materials", "threads", "wall s", "CPU s", "peak MiB", "fits / CPU s", "wall / mat", "set-up CPU s",
@@ -203,12 +214,13 @@ std::string to_text(const ScalingTable& t) {
     text += "|----------:|--------:|----------:|----------:|----------:|--------------:|------------:|------------:|"
             "-------------:|-----------:|--------------:|\n";
     for (const ScalingCell& c : t.cells) {
-        std::snprintf(line, sizeof line,
-                      "| %9zu | %7d | %9.3f | %9.3f | %9.1f | %13.1f | %8.2f ms | %11.3f | %12.3f | %10.1f | %13.3f |\n",
-                      c.materials, c.threads, c.wall_s, c.cpu_s, c.peak_mib,
-                      c.cpu_s > 0 ? static_cast<double>(c.fits) / c.cpu_s : 0.0,
-                      c.materials ? 1e3 * c.wall_s / static_cast<double>(c.materials) : 0.0, c.setup_cpu_s, c.record_cpu_s,
-                      c.record_mib, c.window_wait_s);
+        std::snprintf(
+            line, sizeof line,
+            "| %9zu | %7d | %9.3f | %9.3f | %9.1f | %13.1f | %8.2f ms | %11.3f | %12.3f | %10.1f | %13.3f |\n",
+            c.materials, c.threads, c.wall_s, c.cpu_s, c.peak_mib,
+            c.cpu_s > 0 ? static_cast<double>(c.fits) / c.cpu_s : 0.0,
+            c.materials ? 1e3 * c.wall_s / static_cast<double>(c.materials) : 0.0, c.setup_cpu_s, c.record_cpu_s,
+            c.record_mib, c.window_wait_s);
         text += line;
     }
     std::snprintf(line, sizeof line, "fit throughput: %.1f materials x models per CPU second (largest 1-thread cell)\n",

@@ -16,14 +16,32 @@ namespace {
 constexpr std::uint32_t kMagic = 0x07230203;
 
 enum Op : std::uint32_t {
-    OpNop = 0, OpLine = 8, OpExtInstImport = 11, OpExtInst = 12, OpFunction = 54, OpFunctionParameter = 55,
-    OpFunctionEnd = 56, OpVariable = 59, OpLoopMerge = 246, OpSelectionMerge = 247, OpLabel = 248, OpNoLine = 317,
+    OpNop = 0,
+    OpLine = 8,
+    OpExtInstImport = 11,
+    OpExtInst = 12,
+    OpFunction = 54,
+    OpFunctionParameter = 55,
+    OpFunctionEnd = 56,
+    OpVariable = 59,
+    OpLoopMerge = 246,
+    OpSelectionMerge = 247,
+    OpLabel = 248,
+    OpNoLine = 317,
 };
 
 bool is_structural(std::uint32_t op) {
     switch (op) {
-        case OpNop: case OpLine: case OpNoLine: case OpFunction: case OpFunctionParameter: case OpFunctionEnd:
-        case OpVariable: case OpLabel: case OpSelectionMerge: case OpLoopMerge: return true;
+        case OpNop:
+        case OpLine:
+        case OpNoLine:
+        case OpFunction:
+        case OpFunctionParameter:
+        case OpFunctionEnd:
+        case OpVariable:
+        case OpLabel:
+        case OpSelectionMerge:
+        case OpLoopMerge: return true;
         default: return false;
     }
 }
@@ -78,9 +96,12 @@ SpirvCounts count_spirv(std::span<const std::uint32_t> words) {
         if (op == OpExtInst) {
             if (length < 5) throw std::runtime_error("malformed SPIR-V: short OpExtInst");
             const auto set = ext_sets.find(inst[3]);
-            if (set == ext_sets.end() || set->second != "GLSL.std.450") ++counts.other;
-            else if (is_transcendental_glsl450(inst[4])) ++counts.transcendental;
-            else ++counts.arithmetic;
+            if (set == ext_sets.end() || set->second != "GLSL.std.450")
+                ++counts.other;
+            else if (is_transcendental_glsl450(inst[4]))
+                ++counts.transcendental;
+            else
+                ++counts.arithmetic;
         } else if (is_arithmetic(op)) {
             ++counts.arithmetic;
         } else if (is_texture(op)) {
@@ -100,8 +121,9 @@ std::string model_fragment_shader(const Model& model) {
 }
 
 std::string lut_fragment_shader() {
-    return wrapper("", "layout(binding = 1) uniform sampler1D metalfit_bench_lut;\n"
-                       "layout(std140, binding = 0) uniform MetalfitBenchLut { float metalfit_bench_lut_size; };\n",
+    return wrapper("",
+                   "layout(binding = 1) uniform sampler1D metalfit_bench_lut;\n"
+                   "layout(std140, binding = 0) uniform MetalfitBenchLut { float metalfit_bench_lut_size; };\n",
                    "texture(metalfit_bench_lut, (metalfit_bench_mu * (metalfit_bench_lut_size - 1.0) + 0.5) / "
                    "metalfit_bench_lut_size).rgb");
 }

@@ -43,14 +43,16 @@ ProcessResult run_process(const std::filesystem::path& program, const std::vecto
     ProcessResult result;
     std::random_device random;
     const std::filesystem::path err_file =
-        std::filesystem::temp_directory_path() / ("metalfit-bench-" + std::to_string(getpid()) + "-" + std::to_string(random()) + ".err");
+        std::filesystem::temp_directory_path() /
+        ("metalfit-bench-" + std::to_string(getpid()) + "-" + std::to_string(random()) + ".err");
     std::string command = quoted(program.string());
     for (const std::string& a : arguments) command += " " + quoted(a);
     command += " 2>" + quoted(err_file.string());
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;
     std::array<char, 4096> buffer{};
-    for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;) result.out.append(buffer.data(), n);
+    for (std::size_t n; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;)
+        result.out.append(buffer.data(), n);
     const int status = pclose(pipe);
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     {

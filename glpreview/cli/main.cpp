@@ -25,6 +25,7 @@
 #include "libfit/base/sample_statistics.hpp"
 #include "libfit/base/utf8.hpp"
 #include "libfit/base/version.hpp"
+#include "libfit/export/roughness.hpp"
 #include "libfit/io/catalog.hpp"
 
 namespace {
@@ -41,18 +42,10 @@ std::vector<std::string> split_list(const std::string& text) {
     return items;
 }
 
-// One value of --sheet-roughness (the range is checked with the request).
+// One value of --sheet-roughness: libfit's roughness, a number in [0, 1].
 double parse_roughness(const std::string& text) {
-    std::size_t used = 0;
-    double value = 0;
-    try {
-        value = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size())
-        throw metalfit::UsageError("--sheet-roughness: expected numbers in [0, 1], e.g. 0,0.2,0.5 (got '" + text.substr(0, 40) + "')");
-    return value;
+    if (const std::optional<double> value = metalfit::roughness_from_text(text)) return *value;
+    throw metalfit::UsageError("--sheet-roughness: expected numbers in [0, 1], e.g. 0,0.2,0.5 (got '" + text.substr(0, 40) + "')");
 }
 
 }  // namespace

@@ -22,7 +22,8 @@ int main() {
         const MaterialFitRequest request{{}, {}, {&find_model("f82-tint")}};
         const MaterialFit fit = fit_material(gold, colorimetry, converter, request);
 
-        std::cout << "version " << METALFIT_VERSION << "\n" << "data_dir " << data.string() << "\n";
+        std::cout << "version " << METALFIT_VERSION << "\n"
+                  << "data_dir " << data.string() << "\n";
         const ModelParameters& p = fit.models.at(0).fit.value.params;
         const RGB F0 = p.parameter(0), tint = p.parameter(1);
         for (int c = 0; c < 3; ++c) {

@@ -42,8 +42,11 @@ std::vector<std::string> split_models(const std::string& list) {
 void run_scaling_command(const BenchCommandOptions& o, const GlobalOptions& global) {
     if (o.scaling_cell) {
         const bench::Environment env = bench::Environment::load(global.data_dir, global.ocio_config);
-        emit(bench::to_json(bench::measure_scaling_cell(env, *o.scaling_cell, o.threads, split_models(o.scaling_models))).dump() + "\n",
-             o.output);
+        emit(
+            bench::to_json(bench::measure_scaling_cell(env, *o.scaling_cell, o.threads, split_models(o.scaling_models)))
+                    .dump() +
+                "\n",
+            o.output);
         return;
     }
     bench::ScalingOptions options;
@@ -54,7 +57,8 @@ void run_scaling_command(const BenchCommandOptions& o, const GlobalOptions& glob
     if (!o.scaling_threads.empty()) options.threads = o.scaling_threads;
     if (!o.scaling_models.empty()) options.models = split_models(o.scaling_models);
     options.command_line = "metalfit bench --scaling";
-    if (isatty(STDERR_FILENO)) options.progress = [](const std::string& line) { std::cerr << "metalfit bench: " << line << "\n"; };
+    if (isatty(STDERR_FILENO))
+        options.progress = [](const std::string& line) { std::cerr << "metalfit bench: " << line << "\n"; };
     const bench::ScalingTable table = bench::run_scaling(options);
     emit(o.json ? bench::to_json(table).dump(2) + "\n" : bench::to_text(table), o.output);
 }
@@ -78,7 +82,8 @@ void run_bench_command(const BenchCommandOptions& o, const GlobalOptions& global
     options.command_line = "metalfit bench" + std::string(o.quick ? " --quick" : "") +
                            (o.material != "Au" ? " --material " + o.material : "") +
                            (o.markdown.empty() ? "" : " --markdown " + o.markdown.string());
-    if (isatty(STDERR_FILENO)) options.progress = [](const std::string& line) { std::cerr << "metalfit bench: " << line << "\n"; };
+    if (isatty(STDERR_FILENO))
+        options.progress = [](const std::string& line) { std::cerr << "metalfit bench: " << line << "\n"; };
 
     const bench::BenchReport report = bench::run_bench(options);
     if (!o.markdown.empty()) write_file_atomically(o.markdown, bench::to_markdown(report, read_if_exists(o.markdown)));
@@ -91,13 +96,17 @@ std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions& glob
     auto o = std::make_shared<BenchCommandOptions>();
     app.add_flag("--quick", o->quick, "Fewer timing rounds (well under a minute); glpreview gets --quick too");
     app.add_flag("--json", o->json, "Print the report as JSON (schema metalfit.bench/1, docs/cli.md)");
-    app.add_option("--markdown", o->markdown, "Also write the report as a Markdown page (keeps its hand-written reading)");
-    app.add_option("--material", o->material, "Material whose fitted parameters the evaluation timings use (default: Au)");
-    app.add_option("--glpreview", o->glpreview, "The glpreview executable for the GPU sections (default: next to metalfit)");
+    app.add_option("--markdown", o->markdown,
+                   "Also write the report as a Markdown page (keeps its hand-written reading)");
+    app.add_option("--material", o->material,
+                   "Material whose fitted parameters the evaluation timings use (default: Au)");
+    app.add_option("--glpreview", o->glpreview,
+                   "The glpreview executable for the GPU sections (default: next to metalfit)");
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout (- for stdout)");
-    app.add_flag("--scaling", o->scaling,
-                 "Only the scaling table: fit on 1, 29, 300, 3000 synthetic materials (catalog tables, n and k perturbed) on "
-                 "1 and 2 threads: wall, CPU, peak memory, fits per CPU second (minutes)");
+    app.add_flag(
+        "--scaling", o->scaling,
+        "Only the scaling table: fit on 1, 29, 300, 3000 synthetic materials (catalog tables, n and k perturbed) on "
+        "1 and 2 threads: wall, CPU, peak memory, fits per CPU second (minutes)");
     app.add_option("--scaling-sizes", o->scaling_sizes, "Material counts of --scaling (default: 1,29,300,3000)")
         ->delimiter(',')
         ->check(CLI::PositiveNumber);

@@ -7,13 +7,14 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
-#include "material_selection.hpp"
-#include "progress.hpp"
-#include "libfit/io/catalog.hpp"
+#include "export_options.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/export/export.hpp"
 #include "libfit/fit/budget.hpp"
 #include "libfit/fit/model_cost.hpp"
+#include "libfit/io/catalog.hpp"
+#include "material_selection.hpp"
+#include "progress.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -48,8 +49,10 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     } else if (!o.costs.empty()) {
         throw UsageError("export: --costs needs --model best:BUDGET");
     }
-    ExportRequest request{parse_export_formats(o.formats), best ? parse_model_list("all") : parse_model_list(o.models),
-                          parse_parameter_source(o.params), parse_gamut_policy(o.gamut),
+    ExportRequest request{parse_export_formats(o.formats),
+                          best ? parse_model_list("all") : parse_model_list(o.models),
+                          parse_parameter_source(o.params),
+                          parse_gamut_policy(o.gamut),
                           o.roughness.empty() ? kDefaultRoughness : parse_roughness(o.roughness),
                           parse_id_prefix(o.id_prefix)};
     const CostTable costs = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
@@ -64,7 +67,8 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     context.constraints = constraints;
     const std::string materialx_space = materialx_colorspace(context.config, context.space);  // reads the config once
     if (o.formats == "all")
-        if (const std::string left_out = leave_out_formats_the_space_cannot_carry(request, context.space, materialx_space);
+        if (const std::string left_out =
+                leave_out_formats_the_space_cannot_carry(request, context.space, materialx_space);
             !left_out.empty())
             warn(left_out);
     require_export_space(request, context.space, materialx_space);  // glTF: Linear Rec.709 only, refused before fitting
@@ -77,10 +81,10 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     if (budget) {
         const BudgetChoice choice = choose_model(fits.front().models, costs, *budget);
         if (!choice.chosen)
-            throw UsageError(fits.front().material.id + ": no model meets " + budget_text(*budget) + " in every channel (" +
-                             choice.summary() + "; cost table: " + choice.cost_source + ")");
-        warn(fits.front().material.id + ": --model best:" + o.models.substr(kBest.size()) + " chose " + choice.summary() +
-             "; cost table: " + choice.cost_source);
+            throw UsageError(fits.front().material.id + ": no model meets " + budget_text(*budget) +
+                             " in every channel (" + choice.summary() + "; cost table: " + choice.cost_source + ")");
+        warn(fits.front().material.id + ": --model best:" + o.models.substr(kBest.size()) + " chose " +
+             choice.summary() + "; cost table: " + choice.cost_source);
         request.models = {choice.chosen};
     }
     write_export(o.output, export_files(fits, context, request, materialx_space));
@@ -91,19 +95,26 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
 std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<ExportOptions>();
     o->selection.add_options(app, true);
-    app.add_option("--model", o->models, "Models, comma-separated, or all (" + model_ids() +
-                       "), or best:BUDGET (e.g. best:0.5%: the cheapest model meeting that error in every channel)")->required();
-    app.add_option("--budget-metric", o->budget_metric, "Metric of --model best:BUDGET: rel_rms, max_rel or de2000_max");
-    app.add_option("--costs", o->costs, "Cost table for --model best:BUDGET: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");
+    app.add_option("--model", o->models,
+                   "Models, comma-separated, or all (" + model_ids() +
+                       "), or best:BUDGET (e.g. best:0.5%: the cheapest model meeting that error in every channel)")
+        ->required();
+    app.add_option("--budget-metric", o->budget_metric,
+                   "Metric of --model best:BUDGET: rel_rms, max_rel or de2000_max");
+    app.add_option(
+        "--costs", o->costs,
+        "Cost table for --model best:BUDGET: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");
     // --params and --gamut are checked by libfit's parsers: one line naming the value, like every other error.
     app.add_option("--params", o->params, "Parameters written: fit (Ceres) or closed (best closed form)");
-    app.add_option("--format", o->formats, "Formats, comma-separated, or all: json, glsl, hlsl, mtlx, openpbr, cpp, gltf")->required();
+    app.add_option("--format", o->formats, "Formats, comma-separated, or all: " + export_format_list())->required();
     app.add_option("--gamut", o->gamut, "Colour parameters outside [0, 1]: keep (flagged), clip, or scale by 1/max");
-    app.add_flag("--gamut-fit", o->gamut_fit,
-                 "Fit every channel's curve inside [0, 1] at every angle (constrained, so --gamut has nothing left to do)");
+    app.add_flag(
+        "--gamut-fit", o->gamut_fit,
+        "Fit every channel's curve inside [0, 1] at every angle (constrained, so --gamut has nothing left to do)");
     app.add_option("--roughness", o->roughness,
                    "Surface roughness R in [0, 1] written with the Fresnel parameters (MaterialX, OpenPBR, JSON; "
-                   "OpenPBR's specular_roughness, MaterialX alpha = R^2); default " + std::string(kDefaultRoughnessText));
+                   "OpenPBR's specular_roughness, MaterialX alpha = R^2); default " +
+                       std::string(kDefaultRoughnessText));
     app.add_option("--id-prefix", o->id_prefix,
                    "Prefix of every per-material identifier and file (<prefix>_<material>_<model>, <prefix>_materials; "
                    "the shared model functions keep theirs): [a-z][a-z0-9_]{0,30}");

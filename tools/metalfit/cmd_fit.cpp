@@ -12,18 +12,18 @@
 #include "colour_options.hpp"
 #include "commands.hpp"
 #include "error_options.hpp"
-#include "material_selection.hpp"
-#include "progress.hpp"
-#include "libfit/io/catalog.hpp"
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/fit/budget.hpp"
-#include "libfit/fit/fit.hpp"
-#include "libfit/fit/model_cost.hpp"
 #include "libfit/fit/catalog_summary.hpp"
+#include "libfit/fit/fit.hpp"
 #include "libfit/fit/fit_batch.hpp"
 #include "libfit/fit/fit_record.hpp"
 #include "libfit/fit/fit_record_stream.hpp"
+#include "libfit/fit/model_cost.hpp"
+#include "libfit/io/catalog.hpp"
+#include "material_selection.hpp"
+#include "progress.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -42,7 +42,7 @@ struct FitOptions {
     bool gamut_fit = false;         // --gamut-fit
     std::string budget;             // --budget 0.5%
     std::string budget_metric = "rel_rms";
-    std::filesystem::path costs;    // --costs BENCH.json
+    std::filesystem::path costs;  // --costs BENCH.json
 };
 
 std::string params_text(const Model& model, const ModelParameters& p) {
@@ -74,8 +74,8 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
     s << fit.material.name << " (" << fit.material.id << ", " << fit.material.source << ") in " << context.space << ", "
       << to_string(context.observer) << ", " << to_string(context.illuminant) << ", adaptation "
       << describe_adaptation(context.adaptation, context.adapted, context.illuminant) << ", convention "
-      << to_string(context.convention) << "; " << to_string(e.metric)
-      << " metric, " << to_string(e.weight) << " weight, " << e.nodes << " nodes\n";
+      << to_string(context.convention) << "; " << to_string(e.metric) << " metric, " << to_string(e.weight)
+      << " weight, " << e.nodes << " nodes\n";
     if (!fit.material.provenance.note.empty()) s << "  caveat: " << fit.material.provenance.note << "\n";
     s << "  F0 = (" << fixed(fit.F0.r, 5) << ", " << fixed(fit.F0.g, 5) << ", " << fixed(fit.F0.b, 5) << ")";
     if (fit.F0.max() > 1.0 || fit.F0.min() < 0.0) s << "  out of gamut, kept";
@@ -92,8 +92,8 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
             rel += (c ? " " : "") + fixed(100 * v.metrics.rel_rms[c], 2);
             abs += (c ? " " : "") + fixed(100 * v.metrics.abs_rms[c], 2);
         }
-        s << pad(rel, 23) << pad(abs, 23) << pad(fixed(v.metrics.de2000_max, 2), 10) << params_text(m, v.params)
-          << note << "\n";
+        s << pad(rel, 23) << pad(abs, 23) << pad(fixed(v.metrics.de2000_max, 2), 10) << params_text(m, v.params) << note
+          << "\n";
     };
     for (const ModelResult& r : fit.models) {
         const Model& m = *r.model;
@@ -102,14 +102,17 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
             row(std::string(m.id()), "closed " + best.id, *best.value, m, "");
         }
         for (const ClosedFormResult& form : r.closed_forms)
-            if (!form.value) s << "  " << pad(r.best_closed ? "" : std::string(m.id()), width) << "closed " << form.id
-                               << " undefined: " << form.undefined << "\n";
+            if (!form.value)
+                s << "  " << pad(r.best_closed ? "" : std::string(m.id()), width) << "closed " << form.id
+                  << " undefined: " << form.undefined << "\n";
         std::string note;
         for (int c = 0; c < 3; ++c)
-            if (!r.fit.fallback[c].empty()) note += std::string(note.empty() ? "  (" : ", ") + "RGB"[c] + " kept closed " + r.fit.fallback[c];
+            if (!r.fit.fallback[c].empty())
+                note += std::string(note.empty() ? "  (" : ", ") + "RGB"[c] + " kept closed " + r.fit.fallback[c];
         for (int c = 0; c < 3; ++c)
             if (!r.fit.unrepresentable[c].empty())
-                note += std::string(note.empty() ? "  (" : ", ") + "RGB"[c] + " cannot be represented within the bounds";
+                note +=
+                    std::string(note.empty() ? "  (" : ", ") + "RGB"[c] + " cannot be represented within the bounds";
         if (!note.empty()) note += ")";
         row(r.best_closed ? "" : std::string(m.id()), "fit", r.fit.value, m, note);
     }
@@ -122,11 +125,11 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
 void print_timings(const FitTimings& sum, std::size_t materials, double wall_seconds, double process_cpu, int jobs) {
     const PhaseTime total = sum.total();
     const auto line = [&](const char* phase, const PhaseTime& t) {
-        std::fprintf(stderr, "  %-44s %8.3f s  %5.1f %%  %8.3f s\n", phase, t.cpu, total.cpu > 0 ? 100 * t.cpu / total.cpu : 0.0,
-                     t.wall);
+        std::fprintf(stderr, "  %-44s %8.3f s  %5.1f %%  %8.3f s\n", phase, t.cpu,
+                     total.cpu > 0 ? 100 * t.cpu / total.cpu : 0.0, t.wall);
     };
-    std::fprintf(stderr, "metalfit fit timings: %zu materials, %d threads, wall %.3f s, process CPU %.3f s\n", materials, jobs,
-                 wall_seconds, process_cpu);
+    std::fprintf(stderr, "metalfit fit timings: %zu materials, %d threads, wall %.3f s, process CPU %.3f s\n",
+                 materials, jobs, wall_seconds, process_cpu);
     std::fprintf(stderr, "  %-44s %10s  %7s  %10s\n", "phase", "thread CPU", "share", "wall");
     line("reference curves (spectral integration + OCIO)", sum.reference);
     line("closed forms", sum.closed_forms);
@@ -147,11 +150,12 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
         constraints.pin_f0 = true;
     }
     constraints.gamut_fit = o.gamut_fit;
-    if (constraints.pin_f0 && constraints.gamut_fit)
-        throw UsageError("--pin F0 and --gamut-fit together: F(1) = R(1) leaves [0, 1] wherever R(1) does; choose one");
+    constraints.check_combination();
     std::optional<Budget> budget;
-    if (!o.budget.empty()) budget = parse_budget(o.budget, parse_budget_metric(o.budget_metric));
-    else if (!o.costs.empty()) throw UsageError("--costs needs --budget");
+    if (!o.budget.empty())
+        budget = parse_budget(o.budget, parse_budget_metric(o.budget_metric));
+    else if (!o.costs.empty())
+        throw UsageError("--costs needs --budget");
     const CostTable costs = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
     const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models), constraints};
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -161,8 +165,10 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
     // Streamed: each material's fit is written (record or tables) and let go as it comes, in input order; the
     // output still appears as one unit when the run succeeded (docs/decisions.md, "Streamed fit output").
     std::optional<StreamedOutputFile> out;
-    if (o.output.empty() || o.output == "-") out.emplace(StreamedOutputFile::StandardOutput{});
-    else out.emplace(o.output);
+    if (o.output.empty() || o.output == "-")
+        out.emplace(StreamedOutputFile::StandardOutput{});
+    else
+        out.emplace(o.output);
     const auto write = [&out](std::string_view text) { out->write(text); };
     std::optional<FitRecordStream> record;
     if (o.json) record.emplace(context, write);
@@ -183,8 +189,8 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
         }
         std::string text = (index == 0 ? "" : "\n") + human_table(fit, context);
         if (choice)
-            text += "  budget " + budget_text(*budget) + " in every channel: " + choice->summary() + "\n  cost table: " +
-                    choice->cost_source + "\n";
+            text += "  budget " + budget_text(*budget) + " in every channel: " + choice->summary() +
+                    "\n  cost table: " + choice->cost_source + "\n";
         out->write(text);
     };
 
@@ -195,7 +201,8 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
         fit_materials_in_order(loaders, setup.batch(), request, jobs, sink, progress.callback());
     }
     if (o.timings)
-        print_timings(timings, materials, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+        print_timings(timings, materials,
+                      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                       process_cpu_seconds() - cpu_start, jobs);
     for (const std::string& w : warnings) warn(w);
 
@@ -217,17 +224,25 @@ std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global
     add_error_options(app, o->error);
     app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
     app.add_flag("--json", o->json, "Print the fit record (JSON, docs/fit-record.md)");
-    app.add_flag("--timings", o->timings, "Print where the time goes (reference curves, closed forms, Ceres, metrics) on stderr");
+    app.add_flag("--timings", o->timings,
+                 "Print where the time goes (reference curves, closed forms, Ceres, metrics) on stderr");
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout (- for stdout)");
-    app.add_option("--summary", o->summary,
-                   "Also write the catalog summary (Markdown: worst-channel rel_rms per material and model, median, worst) to this file");
-    app.add_option("--pin", o->pin, "Hold a value exactly: F0 (F(1) = R(1) in every channel, as physicallybased.info and Adobe tabulate)");
-    app.add_flag("--gamut-fit", o->gamut_fit,
-                 "Fit every channel's curve inside [0, 1] at every angle (constrained, not clipped after; not with --pin F0)");
-    app.add_option("--budget", o->budget,
-                   "Per material, the cheapest model whose fit meets this error in every channel (0.5% or 0.005; a Delta E for de2000_max)");
-    app.add_option("--budget-metric", o->budget_metric, "Metric of --budget: rel_rms, max_rel or de2000_max (default: rel_rms)");
-    app.add_option("--costs", o->costs, "Cost table for --budget: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");
+    app.add_option(
+        "--summary", o->summary,
+        "Also write the catalog summary (Markdown: worst-channel rel_rms per material and model, median, worst) to this file");
+    app.add_option(
+        "--pin", o->pin,
+        "Hold a value exactly: F0 (F(1) = R(1) in every channel, as physicallybased.info and Adobe tabulate)");
+    app.add_flag(
+        "--gamut-fit", o->gamut_fit,
+        "Fit every channel's curve inside [0, 1] at every angle (constrained, not clipped after; not with --pin F0)");
+    app.add_option(
+        "--budget", o->budget,
+        "Per material, the cheapest model whose fit meets this error in every channel (0.5% or 0.005; a Delta E for de2000_max)");
+    app.add_option("--budget-metric", o->budget_metric,
+                   "Metric of --budget: rel_rms, max_rel or de2000_max (default: rel_rms)");
+    app.add_option("--costs", o->costs,
+                   "Cost table for --budget: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");
     return [o, &global] { run_fit(*o, global); };
 }
 

@@ -40,8 +40,9 @@ nlohmann::json describe(const CatalogEntry& entry, const CatalogCoverage& covera
 
 std::string table(const nlohmann::json& rows) {
     std::ostringstream out;
-    out << std::left << std::setw(16) << "id" << std::setw(18) << "name" << std::setw(22) << "source"
-        << std::setw(18) << "range (nm)" << std::setw(8) << "points" << "alternates\n";
+    out << std::left << std::setw(16) << "id" << std::setw(18) << "name" << std::setw(22) << "source" << std::setw(18)
+        << "range (nm)" << std::setw(8) << "points"
+        << "alternates\n";
     for (const auto& row : rows) {
         std::ostringstream range;
         range << std::fixed << std::setprecision(0) << row["range_nm"][0].get<double>() << "–"

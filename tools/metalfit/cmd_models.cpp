@@ -5,8 +5,9 @@
 #include <sstream>
 
 #include "commands.hpp"
-#include "libfit/models/model.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/version.hpp"
+#include "libfit/models/model.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -18,11 +19,7 @@ struct ModelsOptions {
     std::filesystem::path output;
 };
 
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
+std::string number(double v) { return significant_text(v, 6); }
 
 std::string signature(const Model& m) {
     std::string s = "vec3 " + std::string(m.glsl_function()) + "(";
@@ -33,7 +30,8 @@ std::string signature(const Model& m) {
 void run_models(const ModelsOptions& o) {
     const std::vector<const Model*> models = parse_model_list(o.models);
     if (o.glsl) {
-        emit("// metalfit " METALFIT_VERSION " Fresnel models (libfit/models): F(mu), mu = cos(theta), per RGB channel.\n" +
+        emit("// metalfit " METALFIT_VERSION
+             " Fresnel models (libfit/models): F(mu), mu = cos(theta), per RGB channel.\n" +
                  glsl_library(models),
              o.output);
         return;
@@ -64,7 +62,8 @@ std::function<void()> add_models_command(CLI::App& app, const GlobalOptions&) {
     auto o = std::make_shared<ModelsOptions>();
     app.add_option("--model", o->models, "Models, comma-separated, or all: " + model_ids());
     CLI::Option* json = app.add_flag("--json", o->json, "Print a JSON array");
-    app.add_flag("--glsl", o->glsl, "Print the GLSL functions of the models (each shared function once)")->excludes(json);
+    app.add_flag("--glsl", o->glsl, "Print the GLSL functions of the models (each shared function once)")
+        ->excludes(json);
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout (- for stdout)");
     return [o] { run_models(*o); };
 }

@@ -8,18 +8,18 @@
 #include "colour_options.hpp"
 #include "commands.hpp"
 #include "error_options.hpp"
-#include "material_selection.hpp"
-#include "progress.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/standard_output.hpp"
 #include "libfit/color/display_transform.hpp"
-#include "libfit/fit/fit_batch.hpp"
-#include "libfit/io/catalog.hpp"
 #include "libfit/fit/budget.hpp"
+#include "libfit/fit/fit_batch.hpp"
 #include "libfit/fit/model_cost.hpp"
+#include "libfit/io/catalog.hpp"
 #include "libfit/report/fail_above.hpp"
 #include "libfit/report/model_costs.hpp"
 #include "libfit/report/report.hpp"
+#include "material_selection.hpp"
+#include "progress.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -41,7 +41,8 @@ struct ReportOptions {
 
 void run_report(const ReportOptions& o, const GlobalOptions& global) {
     const RenderMode render_mode = parse_render_mode(o.renders);
-    const double fail_above = o.fail_above.empty() ? 0.0 : parse_relative_limit(o.fail_above, "--fail-above");  // 0: no gate
+    const double fail_above =
+        o.fail_above.empty() ? 0.0 : parse_relative_limit(o.fail_above, "--fail-above");  // 0: no gate
     std::optional<Budget> budget;
     if (!o.budget.empty()) budget = parse_budget(o.budget, parse_budget_metric(o.budget_metric));
     const CostTable cost_table = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
@@ -60,19 +61,25 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
 
     // glpreview renders catalog materials from their primary source, a column group per model of the report.
-    SphereRenderRequest render_request{glpreview_beside_this_program(), global.data_dir / "scenes" / "sheet.json", {}, {},
-                                       global.data_dir, setup.config};
+    SphereRenderRequest render_request{glpreview_beside_this_program(),
+                                       global.data_dir / "scenes" / "sheet.json",
+                                       {},
+                                       {},
+                                       global.data_dir,
+                                       setup.config};
     for (const Model* m : request.models) render_request.models.emplace_back(m->id());
     for (const MaterialFit& f : fits)
-        if (const CatalogEntry* e = catalog.find(f.material.id); e && e->id == f.material.id && e->primary.file == f.material.provenance.file)
+        if (const CatalogEntry* e = catalog.find(f.material.id);
+            e && e->id == f.material.id && e->primary.file == f.material.provenance.file)
             render_request.materials.push_back(f.material.id);
     const SphereRenders renders = render_spheres(render_request, render_mode);
-    if (!renders.sheet && render_mode == RenderMode::auto_) std::cerr << "metalfit: renders skipped: " << renders.skipped << "\n";
+    if (!renders.sheet && render_mode == RenderMode::auto_)
+        std::cerr << "metalfit: renders skipped: " << renders.skipped << "\n";
 
     const FitRecordContext context = setup.record_context(error);
     const CostAndBudget cost = report_costs(fits, cost_table, budget);
-    const ReportInputs inputs{context, setup.colorimetry, setup.converter, display, catalog, cost, renders,
-                              o.sources == "all"};
+    const ReportInputs inputs{context, setup.colorimetry, setup.converter,   display, catalog,
+                              cost,    renders,           o.sources == "all"};
     std::vector<ReportFile> files = report_files(fits, inputs);
     std::cout << (o.output / "index.html").string() << "\n";
     flush_standard_output();  // a stdout that fails: nothing written
@@ -94,8 +101,9 @@ std::function<void()> add_report_command(CLI::App& app, const GlobalOptions& glo
     add_colour_options(app, o->colour);
     add_error_options(app, o->error);
     app.add_option("-j,--jobs", o->jobs, "Threads for --all (default: all cores)")->check(CLI::NonNegativeNumber);
-    app.add_option("--renders", o->renders,
-                   "Sphere renders through glpreview: auto (skip, saying why, when they cannot be made), on (fail then), off");
+    app.add_option(
+        "--renders", o->renders,
+        "Sphere renders through glpreview: auto (skip, saying why, when they cannot be made), on (fail then), off");
     app.add_option("--sources", o->sources,
                    "Data sources of a catalog material: all (F0 and F82 of every measurement the catalog holds, their "
                    "spread next to each model's error) or primary (only the one fitted)")

@@ -7,11 +7,11 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
-#include "material_selection.hpp"
 #include "libfit/base/text.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/reference/reference_curve.hpp"
 #include "libfit/reference/reflectance_summary.hpp"
+#include "material_selection.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -51,11 +51,11 @@ std::string show_text(const Material& material, const ReferenceCurve& curve, con
       << "\n"
       << "  colour      " << to_string(colorimetry.observer()) << ", " << to_string(colorimetry.illuminant()) << ", "
       << curve.converter().space() << " (" << config.path.string() << ", " << config.origin << ")\n"
-      << "  adaptation  " << describe_adaptation(colorimetry.adaptation(), colorimetry.adapted(), colorimetry.illuminant())
+      << "  adaptation  "
+      << describe_adaptation(colorimetry.adaptation(), colorimetry.adapted(), colorimetry.illuminant())
       << "; convention " << to_string(setup.convention) << "\n"
-      << held_constant_lines(curve)
-      << "  white       raw perfect reflector (" << fixed(white.r, 6) << ", " << fixed(white.g, 6) << ", "
-      << fixed(white.b, 6) << "); curves are divided by it\n\n"
+      << held_constant_lines(curve) << "  white       raw perfect reflector (" << fixed(white.r, 6) << ", "
+      << fixed(white.g, 6) << ", " << fixed(white.b, 6) << "); curves are divided by it\n\n"
       << "  reflectance as a fraction of 1; mu = cos θ, θ in degrees from the normal\n"
       << "                mu    θ deg            R         G         B\n";
     for (const auto& sample : samples) {
@@ -66,7 +66,8 @@ std::string show_text(const Material& material, const ReferenceCurve& curve, con
         s << "\n";
     }
     for (const OutOfGamutValue& g : summary.out_of_gamut)
-        s << "  out of gamut: " << g.quantity << " " << "RGB"[g.channel] << " = " << fixed(g.value) << " (kept, not clipped)\n";
+        s << "  out of gamut: " << g.quantity << " "
+          << "RGB"[g.channel] << " = " << fixed(g.value) << " (kept, not clipped)\n";
     return s.str();
 }
 
@@ -83,13 +84,16 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
         for (const auto& w : curve.held_constant()) warn(loaders.size() > 1 ? material.id + ": " + w : w);
         const ReflectanceSummary summary = summarize_reflectance(curve);
         if (o.json)
-            records.push_back(reflectance_record(material, curve, summary, setup.colorimetry, setup.config, setup.spectral, setup.convention));
+            records.push_back(reflectance_record(material, curve, summary, setup.colorimetry, setup.config,
+                                                 setup.spectral, setup.convention));
         else
             text += (text.empty() ? "" : "\n") + show_text(material, curve, summary, setup, o);
     }
     // One material: its record; several (or --all): an array of records.
-    if (o.json) emit((loaders.size() == 1 && !o.selection.all ? records.front() : records).dump(2) + "\n", o.output);
-    else emit(text, o.output);
+    if (o.json)
+        emit((loaders.size() == 1 && !o.selection.all ? records.front() : records).dump(2) + "\n", o.output);
+    else
+        emit(text, o.output);
 }
 
 }  // namespace

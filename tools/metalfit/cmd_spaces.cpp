@@ -40,12 +40,13 @@ void run_spaces(const SpacesOptions& o, const GlobalOptions& global) {
     j["spaces"] = nlohmann::ordered_json::array();
     for (const OcioColorSpaceEntry& s : contents.spaces) {
         const std::string refusal = s.is_data ? "holds data, not colour" : target_refusal(config, s.name, o.xyz_space);
-        j["spaces"].push_back({{"name", s.name},
-                               {"family", s.family},
-                               {"aliases", s.aliases},
-                               {"is_data", s.is_data},
-                               {"fit_target", refusal.empty()},
-                               {"why_not", refusal.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(refusal)}});
+        j["spaces"].push_back(
+            {{"name", s.name},
+             {"family", s.family},
+             {"aliases", s.aliases},
+             {"is_data", s.is_data},
+             {"fit_target", refusal.empty()},
+             {"why_not", refusal.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(refusal)}});
     }
     j["roles"] = nlohmann::ordered_json::object();
     for (const OcioRole& r : contents.roles) j["roles"][r.role] = r.space;

@@ -23,7 +23,8 @@ struct TableOptions {
 std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<TableOptions>();
     add_colour_options(app, o->colour);
-    app.add_option("--format", o->format, "csv, json, md (Markdown; default md) or physicallybased (physicallybased.info's "
+    app.add_option("--format", o->format,
+                   "csv, json, md (Markdown; default md) or physicallybased (physicallybased.info's "
                    "material JSON, srgb-linear and ACEScg whatever --space says)")
         ->check(CLI::IsMember({"csv", "json", "md", "physicallybased"}));
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
@@ -31,8 +32,10 @@ std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& glob
         const Catalog catalog = Catalog::load(global.data_dir);
         const ColourSetup setup = resolve_colour_options(o->colour, global);
         if (o->format == "physicallybased") {
-            const ColorSpaceConverter srgb_linear = ColorSpaceConverter::create(setup.config, kPhysicallyBasedSrgbLinear, o->colour.xyz_space);
-            const ColorSpaceConverter acescg = ColorSpaceConverter::create(setup.config, kPhysicallyBasedAcescg, o->colour.xyz_space);
+            const ColorSpaceConverter srgb_linear =
+                ColorSpaceConverter::create(setup.config, kPhysicallyBasedSrgbLinear, o->colour.xyz_space);
+            const ColorSpaceConverter acescg =
+                ColorSpaceConverter::create(setup.config, kPhysicallyBasedAcescg, o->colour.xyz_space);
             const PhysicallyBasedTable table =
                 physicallybased_table(catalog, {setup.colorimetry, srgb_linear, acescg, setup.spectral});
             emit(physicallybased_json(table).dump(2) + "\n", o->output);
@@ -42,9 +45,12 @@ std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& glob
         const DisplayTransform display = DisplayTransform::create(setup.config);
         const MetalTable table =
             metal_table(catalog, {setup.colorimetry, setup.converter, scene_linear, display, setup.spectral});
-        if (o->format == "csv") emit(metal_table_csv(table), o->output);
-        else if (o->format == "json") emit(metal_table_json(table).dump(2) + "\n", o->output);
-        else emit(metal_table_markdown(table), o->output);
+        if (o->format == "csv")
+            emit(metal_table_csv(table), o->output);
+        else if (o->format == "json")
+            emit(metal_table_json(table).dump(2) + "\n", o->output);
+        else
+            emit(metal_table_markdown(table), o->output);
     };
 }
 

@@ -42,8 +42,15 @@ struct ColourSetup {
     BatchColour batch() const { return {config, colorimetry, converter}; }
     // The provenance of records and exports made with this setup.
     FitRecordContext record_context(const ErrorSettings& error) const {
-        return {config,        converter.space(),          colorimetry.observer(), colorimetry.illuminant(), spectral, error,
-                colorimetry.adaptation(), colorimetry.adapted(), convention};
+        return {config,
+                converter.space(),
+                colorimetry.observer(),
+                colorimetry.illuminant(),
+                spectral,
+                error,
+                colorimetry.adaptation(),
+                colorimetry.adapted(),
+                convention};
     }
 };
 

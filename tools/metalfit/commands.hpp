@@ -3,12 +3,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include <array>
 #include <filesystem>
 #include <functional>
-#include <optional>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace metalfit::cli {
 
@@ -18,7 +20,8 @@ struct GlobalOptions {
     std::optional<std::filesystem::path> ocio_config;  // --ocio-config ($OCIO wins when set)
 };
 
-// Each returns the function that runs the subcommand once the command line is parsed.
+// Each registers its options on the subcommand's app and returns the function that runs it once the command line is
+// parsed (one per cmd_<name>.cpp).
 std::function<void()> add_list_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_show_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global);
@@ -28,6 +31,28 @@ std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& glo
 std::function<void()> add_spaces_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_report_command(CLI::App& app, const GlobalOptions& global);
 std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& global);
+
+// The subcommands, in the order --help lists them: the one list main() registers, runs and names in the message
+// about an unknown command.
+struct Command {
+    std::string_view name;
+    std::string_view description;
+    std::function<void()> (*add)(CLI::App& app, const GlobalOptions& global);
+};
+inline constexpr std::array<Command, 9> kCommands{{
+    {"list", "List the built-in materials", &add_list_command},
+    {"show", "Reference reflectance of one material (F0, F82, R at a few angles)", &add_show_command},
+    {"fit", "Fit cheap Fresnel models (closed forms and Ceres) to one material or --all", &add_fit_command},
+    {"models", "The Fresnel models: parameters, bounds and GLSL", &add_models_command},
+    {"bench", "What accuracy costs: model evaluation, fit, SPIR-V and GPU timings against accuracy",
+     &add_bench_command},
+    {"export", "Write shader-ready constants: JSON, GLSL, HLSL, MaterialX, OpenPBR, C++", &add_export_command},
+    {"spaces", "The OCIO config in use: its colour spaces (which can be --space) and roles", &add_spaces_command},
+    {"report", "HTML report (catalog and material pages, report.json, charts, renders) of the fits",
+     &add_report_command},
+    {"table", "F0 and F82 tint of every catalog metal: linear, 8-bit and hex, with source and caveat",
+     &add_table_command},
+}};
 
 // `metalfit report --fail-above`: the report was written, and `count` channels are above the limit (each already
 // printed on stderr). main() exits with exit_fail_above (docs/cli.md).
@@ -41,6 +66,15 @@ void emit(const std::string& text, const std::filesystem::path& output);
 
 // The registered model ids, comma-separated (for --model's help).
 std::string model_ids();
+
+// The names of a libfit enum table (libfit/base/enum_names.hpp), in its order, for CLI::IsMember: an option accepts
+// exactly the names libfit parses and prints.
+template <typename Table>
+std::vector<std::string> names_of(const Table& table) {
+    std::vector<std::string> names;
+    for (const auto& entry : table.names) names.emplace_back(entry.name);
+    return names;
+}
 
 // "metalfit: warning: ..." on stderr.
 void warn(const std::string& message);

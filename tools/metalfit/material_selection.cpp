@@ -25,7 +25,8 @@ std::vector<std::string> MaterialSelection::materials() const {
     for (const std::string& argument : arguments) {
         std::error_code error;
         // A file's path with a comma in it stays whole; a bare name is a list however the current folder's files are named.
-        if (argument.find(',') == std::string::npos || (looks_like_path(argument) && std::filesystem::is_regular_file(argument, error))) {
+        if (argument.find(',') == std::string::npos ||
+            (looks_like_path(argument) && std::filesystem::is_regular_file(argument, error))) {
             names.push_back(argument);
             continue;
         }
@@ -36,7 +37,8 @@ std::vector<std::string> MaterialSelection::materials() const {
     return names;
 }
 
-std::vector<std::function<Material()>> MaterialSelection::loaders(const Catalog& catalog, const std::string& command) const {
+std::vector<std::function<Material()>> MaterialSelection::loaders(const Catalog& catalog,
+                                                                  const std::string& command) const {
     const std::vector<std::string> names = materials();
     if (!all && names.empty()) throw UsageError(command + ": give a material (catalog name or file), or --all");
     if (all && !names.empty()) throw UsageError(command + ": give materials or --all, not both");

@@ -9,9 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "libfit/base/interleaved_timer.hpp"
 #include "metalfit_bench/catalog_accuracy.hpp"
 #include "metalfit_bench/glpreview_results.hpp"
-#include "libfit/base/interleaved_timer.hpp"
 #include "metalfit_bench/machine.hpp"
 #include "metalfit_bench/pareto.hpp"
 #include "metalfit_bench/spirv_cost.hpp"
@@ -23,9 +23,9 @@ struct BenchOptions {
     std::string material = "Au";  // the material whose fitted parameters the evaluation and convergence use
     std::filesystem::path data_dir;
     std::optional<std::filesystem::path> ocio_config;
-    std::filesystem::path glpreview;               // empty: the GPU sections are skipped
-    std::optional<std::filesystem::path> glslang;  // glslangValidator; empty: the SPIR-V section is skipped
-    std::string command_line;                      // for the report's header
+    std::filesystem::path glpreview;                   // empty: the GPU sections are skipped
+    std::optional<std::filesystem::path> glslang;      // glslangValidator; empty: the SPIR-V section is skipped
+    std::string command_line;                          // for the report's header
     std::function<void(const std::string&)> progress;  // one line per phase (stderr), if given
 };
 
@@ -37,12 +37,12 @@ struct CostRow {
     std::optional<int> params_per_channel;
     double median_rel_rms = 0;  // catalog, worst channel, as libfit/fit/catalog_summary
     double worst_rel_rms = 0;
-    std::string accuracy_source;      // where the accuracy comes from
-    double ns_scalar = 0;             // per evaluation (3 channels), median over rounds
+    std::string accuracy_source;  // where the accuracy comes from
+    double ns_scalar = 0;         // per evaluation (3 channels), median over rounds
     double ns_array = 0;
-    Ratio ratio_scalar, ratio_array;  // to conductor-rgb, same run
-    std::optional<double> fit_ms;     // fit_model() per material, median over the catalog
-    std::optional<int> spirv_ops;     // arithmetic + transcendental + texture
+    Ratio ratio_scalar, ratio_array;     // to conductor-rgb, same run
+    std::optional<double> fit_ms;        // fit_model() per material, median over the catalog
+    std::optional<int> spirv_ops;        // arithmetic + transcendental + texture
     std::optional<double> shader_ratio;  // glpreview ms per frame / conductor-rgb's
     // Pareto fronts of (cost, median rel_rms): among the models only (the issue's "no model both slower and less
     // accurate than another"; false for the other rows) and among all rows (the LUTs and exact forms included).
@@ -56,8 +56,8 @@ struct CostRow {
 
 struct ConvergenceRow {
     int nodes = 0;
-    double integration_ms = 0;              // the spectral reference at the N nodes (N × 471 wavelengths + OCIO)
-    std::vector<double> rel_rms_change;     // per model (all_models() order): |rms(N) − rms(ref)| / rms(ref)
+    double integration_ms = 0;           // the spectral reference at the N nodes (N × 471 wavelengths + OCIO)
+    std::vector<double> rel_rms_change;  // per model (all_models() order): |rms(N) − rms(ref)| / rms(ref)
 };
 
 struct BenchReport {
@@ -69,8 +69,8 @@ struct BenchReport {
     ParetoTolerance tolerance;
     std::size_t catalog_materials = 0;
     std::vector<CostRow> rows;
-    std::string spirv_validator;        // path, or empty when skipped
-    std::string spirv_skipped;          // why, when skipped
+    std::string spirv_validator;  // path, or empty when skipped
+    std::string spirv_skipped;    // why, when skipped
     std::vector<SpirvRow> spirv;
     int convergence_reference_nodes = 0;
     std::vector<std::string> convergence_models;

@@ -14,11 +14,11 @@
 namespace metalfit::bench {
 
 struct AccuracySummary {
-    std::string id;                       // model id or "lut-64", ...
-    std::vector<double> worst_rel_rms;    // per material (catalog order); NaN where undefined
-    double median = 0;                    // over materials with a defined value
+    std::string id;                     // model id or "lut-64", ...
+    std::vector<double> worst_rel_rms;  // per material (catalog order); NaN where undefined
+    double median = 0;                  // over materials with a defined value
     double worst = 0;
-    double fit_seconds_median = 0;        // models only: fit_model() per material, median
+    double fit_seconds_median = 0;  // models only: fit_model() per material, median
 };
 
 struct CatalogAccuracy {

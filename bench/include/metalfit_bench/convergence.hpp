@@ -13,10 +13,10 @@ namespace metalfit::bench {
 
 struct ConvergencePoint {
     int nodes = 0;
-    double estimate = 0;         // Σ w_i f(μ_i)
-    double change = 0;           // |estimate − estimate at the previous N| (NaN for the first N)
-    double to_reference = 0;     // |estimate − estimate at the reference N|
-    double seconds = 0;          // time to evaluate f at the N nodes and sum
+    double estimate = 0;      // Σ w_i f(μ_i)
+    double change = 0;        // |estimate − estimate at the previous N| (NaN for the first N)
+    double to_reference = 0;  // |estimate − estimate at the reference N|
+    double seconds = 0;       // time to evaluate f at the N nodes and sum
 };
 
 struct Convergence {
@@ -38,8 +38,8 @@ std::vector<int> convergence_node_counts();
 struct FittedConvergence {
     int reference_nodes = 0;
     std::vector<int> nodes;
-    std::vector<double> integration_ms;              // per N
-    std::vector<std::string> models;                 // all_models() order
+    std::vector<double> integration_ms;               // per N
+    std::vector<std::string> models;                  // all_models() order
     std::vector<std::vector<double>> rel_rms_change;  // [N][model]
 };
 FittedConvergence fitted_rel_rms_convergence(const PreparedMaterial& material, int reference_nodes = 2048);

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "libfit/io/catalog.hpp"
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
+#include "libfit/io/catalog.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/reference/reference_curve.hpp"
 #include "libfit/reference/sampled_reference.hpp"
@@ -27,7 +27,8 @@ struct Environment {
     ErrorSettings error;  // 128 nodes, rel metric, uniform weight
 
     // Throws InputError / ColorConfigError like `metalfit fit`.
-    static Environment load(const std::filesystem::path& data_dir, const std::optional<std::filesystem::path>& ocio_config);
+    static Environment load(const std::filesystem::path& data_dir,
+                            const std::optional<std::filesystem::path>& ocio_config);
 };
 
 // One material ready for evaluation benchmarks: its reference curve and the Ceres-fitted parameters of every model.

@@ -26,7 +26,7 @@ struct EvalKernel {
     std::string kind;         // "model", "exact" or "lut"
     std::string description;  // one line
     std::optional<int> params_per_channel;  // model parameters, LUT entries; none for the spectral reference
-    std::size_t batch = 1024;  // μ values per timed call (fewer for the slow spectral reference)
+    std::size_t batch = 1024;               // μ values per timed call (fewer for the slow spectral reference)
     // Evaluate at every μ of `mu`; out has 3 · mu.size() floats (scalar: interleaved RGB; array: planar R…, G…, B…).
     std::function<void(std::span<const float> mu, std::span<float> out)> scalar;
     std::function<void(std::span<const float> mu, std::span<float> out)> array;

@@ -31,12 +31,12 @@ struct ShaderBench {
 struct LocalizationRow {
     std::string mode;                     // "classic", "box-parallax", "distance-impostor"
     std::optional<std::string> strategy;  // null, "secant", "false-position", "mixed", "illinois", "safe-secant"
-    int iterations = 0;                    // the limit
-    std::optional<double> tolerance;       // the impostor's stop on |ρ − 1| (null outside it)
-    double mean_iterations = 0;            // steps the sphere's pixels took, on average
+    int iterations = 0;                   // the limit
+    std::optional<double> tolerance;      // the impostor's stop on |ρ − 1| (null outside it)
+    double mean_iterations = 0;           // steps the sphere's pixels took, on average
     double ms_per_frame = 0;
     double ratio_to_classic = 0;
-    double ratio_noise = 0;                // half the interquartile range of the per-round ratios
+    double ratio_noise = 0;  // half the interquartile range of the per-round ratios
     double rmse = 0;
     double mean_abs = 0;
 };

@@ -15,9 +15,9 @@ struct ParetoPoint {
 };
 
 struct ParetoTolerance {
-    double cost = 0.10;          // 10 %: beyond the noise of a ratio measured on a shared machine
-    double error = 0.05;         // 5 %
-    double error_floor = 1e-5;   // 0.001 % rel_rms
+    double cost = 0.10;         // 10 %: beyond the noise of a ratio measured on a shared machine
+    double error = 0.05;        // 5 %
+    double error_floor = 1e-5;  // 0.001 % rel_rms
 };
 
 // true when `a` dominates `b` (better or tied in both, strictly better beyond the tolerance in one).

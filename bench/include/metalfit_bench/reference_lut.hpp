@@ -29,7 +29,7 @@ public:
         return {a[0] + f * (a[3] - a[0]), a[1] + f * (a[4] - a[1]), a[2] + f * (a[5] - a[2])};
     }
 
-    // rel_rms per channel of the table against the reference at its quadrature nodes (DESIGN.md definition).
+    // rel_rms per channel of the table against the reference at its quadrature nodes (docs/fitting.md, "Definitions").
     PerChannel rel_rms(const SampledReference& reference) const;
 
 private:

@@ -31,10 +31,10 @@ std::vector<std::function<Material()>> synthetic_materials(const Catalog& catalo
 struct ScalingCell {
     std::size_t materials = 0;
     int threads = 0;
-    std::size_t fits = 0;   // material × model fits done (materials × models when every fit ran)
-    double wall_s = 0;      // the fits (fit_materials), wall clock
-    double cpu_s = 0;       // the fits, process CPU (user + system, every thread)
-    double peak_mib = 0;    // peak resident memory of the whole process (ru_maxrss)
+    std::size_t fits = 0;  // material × model fits done (materials × models when every fit ran)
+    double wall_s = 0;     // the fits (fit_materials), wall clock
+    double cpu_s = 0;      // the fits, process CPU (user + system, every thread)
+    double peak_mib = 0;   // peak resident memory of the whole process (ru_maxrss)
     // Where the CPU and wall go besides the fits, measured inside the same run: the synthetic materials' set-up (their
     // loaders, thread CPU), the fit record streamed material by material as `fit --all --json` writes it (thread CPU;
     // its text counted, not kept), and the wall time threads waited at the reorder window (summed over the threads).

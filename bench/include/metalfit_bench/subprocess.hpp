@@ -15,9 +15,9 @@ std::optional<std::filesystem::path> find_on_path(const std::string& name);
 std::filesystem::path executable_dir();
 
 struct ProcessResult {
-    int exit_code = -1;   // -1: did not run or was killed by a signal
-    std::string out;      // stdout
-    std::string err;      // stderr
+    int exit_code = -1;  // -1: did not run or was killed by a signal
+    std::string out;     // stdout
+    std::string err;     // stderr
 };
 
 // Runs program with arguments (no shell interpretation of their contents: each is single-quoted), waiting for it.

@@ -10,6 +10,7 @@
 #include "glpreview/render/scene_colour.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/fit/fit.hpp"
+#include "libfit/fit/parameter_source.hpp"
 #include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit::glpreview {
@@ -69,14 +70,12 @@ std::unique_ptr<SphereFresnel> FresnelLibrary::model_fresnel(const Material& mat
     result->fresnel = std::string(r.model->id());
     result->model = r.model;
     result->params = params;
-    const EvaluatedParameters* chosen = &r.fit.value;
-    if (params == ParameterSource::closed) {
-        if (!r.best_closed)
-            throw InputError(InputLocation(scene_file_, 0, field + ".params"),
-                             "no closed form of " + result->fresnel + " is defined for " + material.name + ": " +
-                                 (r.closed_forms.empty() ? std::string("none") : r.closed_forms.front().undefined));
-        chosen = &*r.closed_forms[*r.best_closed].value;
-    }
+    const std::optional<ChosenParameters> choice = choose_parameters(r, params);
+    if (!choice)
+        throw InputError(InputLocation(scene_file_, 0, field + ".params"),
+                         "no closed form of " + result->fresnel + " is defined for " + material.name + ": " +
+                             (r.closed_forms.empty() ? std::string("none") : r.closed_forms.front().undefined));
+    const EvaluatedParameters* chosen = choice->value;
     result->set_parameters(chosen->params);
     result->worst_rel_rms = worst_channel(chosen->metrics.rel_rms);
     return result;

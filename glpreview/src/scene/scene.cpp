@@ -202,8 +202,6 @@ const char* to_string(EnvironmentType type) {
 
 const char* to_string(GlossyMethod method) { return method == GlossyMethod::localized ? "localized" : "prefiltered"; }
 
-const char* to_string(ParameterSource source) { return source == ParameterSource::closed ? "closed" : "fit"; }
-
 std::string fresnel_name(const FresnelChoice& fresnel) {
     if (const auto* model = std::get_if<ModelFresnel>(&fresnel)) return model->model;
     return "reference";

@@ -56,7 +56,8 @@ void write_in_place(const fs::path& target, std::string_view contents) {
 
 [[noreturn]] void throw_cannot_write(const fs::path& target, int error) {
     if (error == EACCES || error == EPERM || error == EROFS)
-        throw InputError({target}, "cannot write: directory " + detail::directory_of(target).string() + " is not writable");
+        throw InputError({target},
+                         "cannot write: directory " + detail::directory_of(target).string() + " is not writable");
     throw InputError({target}, "cannot write: " + detail::describe_errno(error));
 }
 
@@ -65,7 +66,8 @@ void check_target(const fs::path& target, TargetKind kind) {
     if (kind == TargetKind::refused) throw InputError({target}, "cannot write: it exists and is not a regular file");
     std::error_code ec;
     if (!fs::is_directory(detail::directory_of(target), ec))
-        throw InputError({target}, "cannot write: directory " + detail::directory_of(target).string() + " does not exist");
+        throw InputError({target},
+                         "cannot write: directory " + detail::directory_of(target).string() + " does not exist");
 }
 
 }  // namespace
@@ -118,7 +120,8 @@ void write_files_atomically(std::span<const OutputFile> files) {
             remove_temporaries(i);
             for (const fs::path& p : renamed_new) ::unlink(p.c_str());
             DeferredSignals::throw_if_pending();
-            throw InputError({files[i].path}, "cannot rename temporary file into place: " + detail::describe_errno(error));
+            throw InputError({files[i].path},
+                             "cannot rename temporary file into place: " + detail::describe_errno(error));
         }
         if (!existed) renamed_new.push_back(files[i].path);
     }
@@ -144,7 +147,8 @@ StreamedOutputFile::StreamedOutputFile(const fs::path& target) : target_(target)
 }
 
 StreamedOutputFile::StreamedOutputFile(StandardOutput) : spool_(std::tmpfile()) {
-    if (!spool_) throw InputError({fs::path("<stdout>")}, "cannot write: no temporary file: " + detail::describe_errno(errno));
+    if (!spool_)
+        throw InputError({fs::path("<stdout>")}, "cannot write: no temporary file: " + detail::describe_errno(errno));
 }
 
 StreamedOutputFile::~StreamedOutputFile() {
@@ -181,18 +185,22 @@ void StreamedOutputFile::commit() {
         char buffer[1 << 16];
         int error = 0;
         for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, spool_)) > 0;) {
-            if (fd < 0) std::cout.write(buffer, static_cast<std::streamsize>(n));
+            if (fd < 0)
+                std::cout.write(buffer, static_cast<std::streamsize>(n));
             else if (!detail::write_all(fd, {buffer, n})) {
                 error = errno;
                 break;
             }
         }
         if (std::ferror(spool_) && error == 0) error = errno ? errno : EIO;
-        if (fd < 0) std::cout.flush();
-        else if (::close(fd) != 0 && error == 0) error = errno;
+        if (fd < 0)
+            std::cout.flush();
+        else if (::close(fd) != 0 && error == 0)
+            error = errno;
         committed_ = true;
         if (error != 0)
-            throw InputError({target_.empty() ? fs::path("<stdout>") : target_}, "cannot write: " + detail::describe_errno(error));
+            throw InputError({target_.empty() ? fs::path("<stdout>") : target_},
+                             "cannot write: " + detail::describe_errno(error));
         return;
     }
     const int fd = fd_;

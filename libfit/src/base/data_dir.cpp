@@ -11,7 +11,8 @@ std::filesystem::path default_data_dir() {
     std::error_code error;
     const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
     if (!error) {
-        const std::filesystem::path installed = (executable.parent_path() / METALFIT_DATA_FROM_BINDIR).lexically_normal();
+        const std::filesystem::path installed =
+            (executable.parent_path() / METALFIT_DATA_FROM_BINDIR).lexically_normal();
         if (std::filesystem::is_directory(installed, error)) return installed;
     }
     return METALFIT_DATA_DIR;

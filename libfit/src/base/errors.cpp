@@ -6,8 +6,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <optional>
 #include <iostream>
+#include <optional>
 
 namespace metalfit {
 namespace {
@@ -106,7 +106,8 @@ void flush_standard_output() {
 int finish_standard_output(const char* program, int code) {
     const std::optional<std::string> loss = standard_output_loss();
     if (!loss) return code;
-    if (!g_standard_output_loss_reported) std::fprintf(stderr, "%s: cannot write to standard output: %s\n", program, loss->c_str());
+    if (!g_standard_output_loss_reported)
+        std::fprintf(stderr, "%s: cannot write to standard output: %s\n", program, loss->c_str());
     return code == exit_ok ? exit_bad_input : code;
 }
 

@@ -5,8 +5,8 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/file.h>
-#include <sys/stat.h>
 #include <sys/random.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -79,7 +79,8 @@ inline std::filesystem::path directory_of(const std::filesystem::path& target) {
 
 // A fresh staging name beside `target`: prefix + pid + "." + random.
 inline std::filesystem::path staging_name_beside(const std::filesystem::path& target, std::string_view mark) {
-    return directory_of(target) / (staging_prefix(target, mark) + std::to_string(::getpid()) + "." + unpredictable_suffix());
+    return directory_of(target) /
+           (staging_prefix(target, mark) + std::to_string(::getpid()) + "." + unpredictable_suffix());
 }
 
 // The pid of a staging name after its prefix ("<pid>.<16 hex>"), or 0 when the rest is not exactly that.
@@ -125,7 +126,8 @@ inline bool owner_is_gone(const std::filesystem::path& path, std::string_view re
     struct stat st {};
     if (::lstat(path.c_str(), &st) != 0 || st.st_uid != ::geteuid()) return false;
     if (directory ? !S_ISDIR(st.st_mode) : !S_ISREG(st.st_mode)) return false;
-    const int fd = ::open(path.c_str(), (directory ? O_RDONLY | O_DIRECTORY : O_RDONLY) | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+    const int fd =
+        ::open(path.c_str(), (directory ? O_RDONLY | O_DIRECTORY : O_RDONLY) | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
     if (fd < 0) return false;
     const bool free = staging_lock_is_free(fd);
     ::close(fd);
@@ -139,18 +141,22 @@ inline void remove_stale_beside(const std::filesystem::path& target, std::string
     std::error_code ec;
     for (std::filesystem::directory_iterator it(directory_of(target), ec), end; !ec && it != end; it.increment(ec)) {
         const std::string name = it->path().filename().string();
-        if (!name.starts_with(prefix) || !owner_is_gone(it->path(), std::string_view(name).substr(prefix.size()), directory))
+        if (!name.starts_with(prefix) ||
+            !owner_is_gone(it->path(), std::string_view(name).substr(prefix.size()), directory))
             continue;
         std::error_code ignored;
-        if (directory) std::filesystem::remove_all(it->path(), ignored);
-        else ::unlink(it->path().c_str());
+        if (directory)
+            std::filesystem::remove_all(it->path(), ignored);
+        else
+            ::unlink(it->path().c_str());
     }
 }
 
 // A new staging folder beside `target` (mode 0700, named by staging_name_beside(kStagingMark), made exclusively;
 // EEXIST is retried with another name), after the staging folders that killed writers left there were removed: its
 // path, else nullopt with `error` set. The caller locks it (lock_staging_folder) for as long as it writes there.
-inline std::optional<std::filesystem::path> make_staging_folder_beside(const std::filesystem::path& target, int& error) {
+inline std::optional<std::filesystem::path> make_staging_folder_beside(const std::filesystem::path& target,
+                                                                       int& error) {
     remove_stale_beside(target, kStagingMark);
     error = 0;
     for (int attempt = 0; attempt < 16; ++attempt) {

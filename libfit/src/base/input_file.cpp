@@ -37,7 +37,8 @@ std::string read_input_file(const std::filesystem::path& file, std::size_t max_b
     }
     if (static_cast<unsigned long long>(st.st_size) > max_bytes) {
         ::close(fd);
-        throw InputError({file}, "the file is " + std::to_string(st.st_size) + " bytes; the limit is " + mebibytes(max_bytes));
+        throw InputError({file},
+                         "the file is " + std::to_string(st.st_size) + " bytes; the limit is " + mebibytes(max_bytes));
     }
     std::string bytes;
     bytes.resize(static_cast<std::size_t>(st.st_size));

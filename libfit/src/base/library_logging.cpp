@@ -1,7 +1,7 @@
 #include "libfit/base/library_logging.hpp"
 
-#include <glog/logging.h>
 #include <OpenColorIO/OpenColorIO.h>
+#include <glog/logging.h>
 
 #include <iostream>
 #include <string>
@@ -18,8 +18,8 @@ void route_library_logging(const char* program) {
     FLAGS_logtostderr = false;
     OCIO_NAMESPACE::SetLoggingFunction([program](const char* text) {
         std::string_view message(text);
-        for (std::string_view prefix : {"[OpenColorIO Warning]: ", "[OpenColorIO Error]: ", "[OpenColorIO Info]: ",
-                                        "[OpenColorIO Debug]: "})
+        for (std::string_view prefix :
+             {"[OpenColorIO Warning]: ", "[OpenColorIO Error]: ", "[OpenColorIO Info]: ", "[OpenColorIO Debug]: "})
             if (message.starts_with(prefix)) message.remove_prefix(prefix.size());
         while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.remove_suffix(1);
         if (!message.empty()) std::cerr << program << ": warning: OCIO: " << sanitised_message(message) << "\n";

@@ -35,8 +35,8 @@ std::string path_component(std::string_view name) {
     std::string out(name);
     for (char& ch : out) {
         const auto byte = static_cast<unsigned char>(ch);
-        const bool kept = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '-' ||
-                          ch == '_' || ch == '.' || byte >= 0x80;
+        const bool kept = (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
+                          ch == '-' || ch == '_' || ch == '.' || byte >= 0x80;
         if (!kept) ch = '_';
     }
     if (out.empty()) return "_";

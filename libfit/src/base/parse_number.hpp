@@ -5,12 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
-#include <string_view>
 #include <string>
-#include <vector>
+#include <string_view>
 #include <vector>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
 
 namespace metalfit::detail {
 
@@ -84,7 +84,8 @@ inline void check_optical_row(const std::vector<double>& row, const std::vector<
 inline double wavelength_nm(double value, double to_nm, std::string_view field, const InputLocation& where) {
     const double nm = value * to_nm;
     if (!std::isfinite(nm) || nm > 1e12)
-        throw InputError(where, "wavelength " + std::string(field) + " is out of range (" + (to_nm == 1.0 ? "nm" : "µm") + ")");
+        throw InputError(where, "wavelength " + std::string(field) + " is out of range (" +
+                                    (to_nm == 1.0 ? "nm" : "µm") + ")");
     return nm;
 }
 
@@ -101,7 +102,8 @@ inline constexpr double kMinIndexModulus = 1e-6;
 // n (or k with `is_k`) above kMaxIndex: refused, naming the value as written.
 inline void check_index_limit(double value, bool is_k, std::string_view text, const InputLocation& where) {
     if (value > kMaxIndex)
-        throw InputError(where, std::string(is_k ? "extinction coefficient k = " : "refractive index n = ") + std::string(text) +
+        throw InputError(where, std::string(is_k ? "extinction coefficient k = " : "refractive index n = ") +
+                                    std::string(text) +
                                     " is above 1e6 (the largest n or k metalfit accepts: beyond it the Fresnel "
                                     "reflectance in double precision is not exact)");
 }
@@ -110,9 +112,9 @@ inline void check_index_limit(double value, bool is_k, std::string_view text, co
 inline void check_index_modulus(double n, double k, const InputLocation& where) {
     if (n == 0.0 && k == 0.0) throw InputError(where, kZeroIndex);
     if (std::hypot(n, k) < kMinIndexModulus) {
-        char text[96];
-        std::snprintf(text, sizeof text, "|n + ik| is below 1e-6 (n = %.3g, k = %.3g)", n, k);
-        throw InputError(where, std::string(text) + ": too close to n = k = 0 for the Fresnel reflectance in double precision");
+        throw InputError(where, "|n + ik| is below 1e-6 (n = " + significant_text(n, 3) +
+                                    ", k = " + significant_text(k, 3) +
+                                    "): too close to n = k = 0 for the Fresnel reflectance in double precision");
     }
 }
 

@@ -51,7 +51,8 @@ fs::path folder_named(const fs::path& requested) {
     if (fs::is_symlink(dir, ec)) {
         // A link another user planted in a folder anyone can write (/tmp, /dev/shm) is not followed: it would send
         // the output (and the replacement of a folder) wherever its maker chose. The kernel's protected_symlinks rule.
-        struct stat link {}, parent {};
+        struct stat link {
+        }, parent{};
         if (::lstat(dir.c_str(), &link) == 0 && ::stat(dir.parent_path().c_str(), &parent) == 0 &&
             (parent.st_mode & S_IWOTH) != 0 && link.st_uid != ::geteuid() && link.st_uid != parent.st_uid)
             throw InputError({requested}, "cannot write: a link another user made in " + dir.parent_path().string() +
@@ -92,7 +93,6 @@ std::vector<fs::path> create_folders(const fs::path& dir) {
     return created;
 }
 
-
 // Carries what `dir` holds into `staging`, below the files the caller staged: for keep_other_files.
 // Old entries the caller did not write come over as hard links (copies where a link is refused), links as links;
 // a file the caller wrote again is merged (`merge`) or replaced; a folder the caller wrote into that is a link (or
@@ -114,7 +114,8 @@ void carry_over(const fs::path& dir, const fs::path& staging, const MergeExistin
                                                "(remove it, or choose another folder)");
             if (!staged) fs::create_symlink(fs::read_symlink(it->path()), copy, ec);  // a new file replaces it
         } else if (fs::is_directory(old)) {
-            if (staged && !fs::is_directory(mine)) throw InputError({it->path()}, "cannot write a file there: it is a directory");
+            if (staged && !fs::is_directory(mine))
+                throw InputError({it->path()}, "cannot write a file there: it is a directory");
             if (!staged) fs::create_directory(copy, it->path(), ec);
         } else if (fs::is_regular_file(old)) {
             if (staged && fs::is_directory(mine))
@@ -158,11 +159,15 @@ StagedFolder::StagedFolder(const fs::path& requested, Existing existing, MergeEx
     : requested_(requested), existing_(existing), merge_(std::move(merge)) {
     dir_ = folder_named(requested);
     std::error_code ec;
-    if (const fs::path cwd = fs::current_path(ec); !ec && is_same_or_inside(fs::weakly_canonical(cwd, ec), fs::weakly_canonical(dir_, ec)))
-        throw UsageError(requested.string() + ": the output folder is the current folder or holds it; its files are "
-                         "replaced as one unit by switching folders, which would leave you in the old one: give a folder "
-                         "below the current one");
-    if (!dir_.has_parent_path() || dir_ == dir_.root_path()) throw InputError({requested}, "cannot write: not a folder name");
+    if (const fs::path cwd = fs::current_path(ec);
+        !ec && is_same_or_inside(fs::weakly_canonical(cwd, ec), fs::weakly_canonical(dir_, ec)))
+        throw UsageError(
+            requested.string() +
+            ": the output folder is the current folder or holds it; its files are "
+            "replaced as one unit by switching folders, which would leave you in the old one: give a folder "
+            "below the current one");
+    if (!dir_.has_parent_path() || dir_ == dir_.root_path())
+        throw InputError({requested}, "cannot write: not a folder name");
     const fs::path parent = dir_.parent_path();
     struct stat old {};
     if (::lstat(dir_.c_str(), &old) == 0) {
@@ -176,10 +181,12 @@ StagedFolder::StagedFolder(const fs::path& requested, Existing existing, MergeEx
         const std::optional<fs::path> staging = detail::make_staging_folder_beside(dir_, error);
         if (!staging)
             throw InputError({dir_}, "cannot write: directory " + parent.string() + " is not writable (" +
-                                         detail::describe_errno(error) + "; the new files are staged beside the folder)");
+                                         detail::describe_errno(error) +
+                                         "; the new files are staged beside the folder)");
         staging_ = *staging;
         staging_fd_ = detail::lock_staging_folder(staging_);
-        if (staging_fd_ < 0) throw InputError({dir_}, "cannot lock the staging folder: " + detail::describe_errno(errno));
+        if (staging_fd_ < 0)
+            throw InputError({dir_}, "cannot lock the staging folder: " + detail::describe_errno(errno));
     } catch (...) {
         if (staging_fd_ >= 0) ::close(staging_fd_);
         if (!staging_.empty()) ::rmdir(staging_.c_str());

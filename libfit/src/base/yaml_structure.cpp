@@ -127,7 +127,8 @@ private:
         if (indents_.empty() || indents_.back() < indent) indents_.push_back(indent);
         check_depth();
         // "- - x": each entry indicator opens a level at its column + 2.
-        while (i_ < n && (text_[i_] == '-' || text_[i_] == '?') && (i_ + 1 == n || is_blank(text_[i_ + 1]) || text_[i_ + 1] == '\n')) {
+        while (i_ < n && (text_[i_] == '-' || text_[i_] == '?') &&
+               (i_ + 1 == n || is_blank(text_[i_ + 1]) || text_[i_ + 1] == '\n')) {
             const int column = static_cast<int>(i_ - (j - static_cast<std::size_t>(indent))) + 2;
             count_node();
             if (indents_.back() < column) indents_.push_back(column);
@@ -212,7 +213,8 @@ private:
         std::size_t j = i_ + 1;
         while (j < text_.size() && (text_[j] == '+' || text_[j] == '-' || (text_[j] >= '0' && text_[j] <= '9'))) ++j;
         while (j < text_.size() && is_blank(text_[j])) ++j;
-        if (j == text_.size() || text_[j] == '\n' || text_[j] == '#') block_parent_ = indents_.empty() ? 0 : indents_.back();
+        if (j == text_.size() || text_[j] == '\n' || text_[j] == '#')
+            block_parent_ = indents_.empty() ? 0 : indents_.back();
         skip_to_line_end();
     }
 

@@ -23,23 +23,9 @@ Matrix3 inverse(const Matrix3& a) {
     return r;
 }
 
-Adaptation parse_adaptation(std::string_view s) {
-    if (s == "bradford") return Adaptation::bradford;
-    if (s == "cat02") return Adaptation::cat02;
-    if (s == "von-kries-xyz") return Adaptation::von_kries_xyz;
-    if (s == "none") return Adaptation::none;
-    throw UsageError("unknown chromatic adaptation '" + std::string(s) + "' (expected bradford, cat02, von-kries-xyz or none)");
-}
+Adaptation parse_adaptation(std::string_view s) { return kAdaptationNames.parse(s); }
 
-std::string to_string(Adaptation a) {
-    switch (a) {
-        case Adaptation::bradford: return "bradford";
-        case Adaptation::cat02: return "cat02";
-        case Adaptation::von_kries_xyz: return "von-kries-xyz";
-        case Adaptation::none: return "none";
-    }
-    return "?";
-}
+std::string to_string(Adaptation a) { return std::string(kAdaptationNames.name(a)); }
 
 Matrix3 cone_matrix(Adaptation a) {
     switch (a) {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "libfit/base/errors.hpp"
 #include "base/parse_number.hpp"
+#include "libfit/base/errors.hpp"
 
 namespace metalfit::detail {
 
@@ -24,7 +24,8 @@ inline CieTable read_cie_table(const std::filesystem::path& file, std::size_t co
         const auto line = trim(raw);
         if (line.empty() || line_number == 1) continue;  // header
         const auto fields = split_commas(line);
-        if (fields.size() != columns + 1) throw InputError({file, line_number}, "expected " + std::to_string(columns + 1) + " fields");
+        if (fields.size() != columns + 1)
+            throw InputError({file, line_number}, "expected " + std::to_string(columns + 1) + " fields");
         const std::vector<double> v = parse_row(fields, {file, line_number});
         rows[static_cast<int>(std::lround(v[0]))] = std::vector<double>(v.begin() + 1, v.end());
     }

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "color/ocio_config_load.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/utf8.hpp"
 #include "libfit/color/ocio_config_contents.hpp"
-#include "color/ocio_config_load.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -29,8 +29,10 @@ const auto describe = detail::describe_ocio_config;  // every message here names
 OcioConfigChoice choose_ocio_config(const std::optional<std::filesystem::path>& explicit_config,
                                     const std::filesystem::path& data_dir, const std::string& explicit_origin) {
     OcioConfigChoice choice{data_dir / "ocio" / "config.ocio", "metalfit default"};
-    if (const char* env = std::getenv("OCIO"); env != nullptr && *env != '\0') choice = {env, "$OCIO"};
-    else if (explicit_config) choice = {*explicit_config, explicit_origin};
+    if (const char* env = std::getenv("OCIO"); env != nullptr && *env != '\0')
+        choice = {env, "$OCIO"};
+    else if (explicit_config)
+        choice = {*explicit_config, explicit_origin};
     // The config's path is written into records and messages (UTF-8).
     if (const auto problem = find_invalid_utf8(choice.path.native()))
         throw ColorConfigError(describe(choice) + ": the path is not UTF-8 (" + problem->reason + ")");
@@ -58,22 +60,25 @@ ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, 
     if (!xyz) {
         if (xyz_space_name.empty())
             throw ColorConfigError(describe(choice) + " has no role '" + kXyzRole +
-                                   "' (needed to find CIE XYZ D65; name the XYZ colour space with --xyz-space)" + what_exists());
+                                   "' (needed to find CIE XYZ D65; name the XYZ colour space with --xyz-space)" +
+                                   what_exists());
         throw ColorConfigError(describe(choice) + " has no colour space or role '" + xyz_space_name + "' for CIE XYZ" +
                                what_exists());
     }
     const std::string xyz_space = xyz->getName();
     const std::string wanted = target.empty() ? kSceneLinearRole : target;
-    const auto target_space = target.empty() && !config->hasRole(kSceneLinearRole) ? nullptr : config->getColorSpace(wanted.c_str());
+    const auto target_space =
+        target.empty() && !config->hasRole(kSceneLinearRole) ? nullptr : config->getColorSpace(wanted.c_str());
     if (!target_space) {
         if (target.empty())
-            throw ColorConfigError(describe(choice) + " has no role '" + kSceneLinearRole + "' (name the target colour space)" +
-                                   what_exists());
+            throw ColorConfigError(describe(choice) + " has no role '" + kSceneLinearRole +
+                                   "' (name the target colour space)" + what_exists());
         throw ColorConfigError(describe(choice) + " has no colour space or role '" + wanted + "'" + what_exists());
     }
     for (const std::string& name : {xyz_space, std::string(target_space->getName())})
         if (const auto problem = find_invalid_utf8(name))
-            throw ColorConfigError(describe(choice) + ": colour space name is not UTF-8 (" + problem->reason + "): " + name);
+            throw ColorConfigError(describe(choice) + ": colour space name is not UTF-8 (" + problem->reason +
+                                   "): " + name);
     if (target_space->isData())
         throw ColorConfigError(describe(choice) + ": colour space '" + target_space->getName() +
                                "' holds data, not colour (isdata): name a scene-linear colour space");
@@ -98,8 +103,9 @@ ColorSpaceConverter ColorSpaceConverter::create(const OcioConfigChoice& choice, 
         const RGB half = converter({p.X * 0.5, p.Y * 0.5, p.Z * 0.5});
         for (int c = 0; c < 3; ++c)
             if (!std::isfinite(full[c]) || !std::isfinite(half[c]) || (&p == probes && !(full[c] > 0.0)))
-                throw ColorConfigError(describe(choice) + ": colour space '" + converter.space_ +
-                                       "' gives a non-finite RGB, or a non-positive one for the white (its transform is degenerate)");
+                throw ColorConfigError(
+                    describe(choice) + ": colour space '" + converter.space_ +
+                    "' gives a non-finite RGB, or a non-positive one for the white (its transform is degenerate)");
         for (int c = 0; c < 3; ++c)
             if (std::abs(full[c] - 2.0 * half[c]) > 1e-4 * (1.0 + std::abs(full[c])))
                 throw ColorConfigError(describe(choice) + ": colour space '" + converter.space_ +

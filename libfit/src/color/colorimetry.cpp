@@ -1,8 +1,8 @@
 #include "libfit/color/colorimetry.hpp"
 
+#include "color/cie_table.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/spectral/spectrum.hpp"
-#include "color/cie_table.hpp"
 
 namespace metalfit {
 namespace {
@@ -28,8 +28,9 @@ int first_tabulated_nm(Observer o) {
 DenseSpectrum<XYZ> normalised_weights(const DenseSpectrum<XYZ>& cmf, const DenseSpectrum<double>& spd,
                                       const std::filesystem::path& data_dir, const Illuminant& illuminant) {
     if (spd.first_nm() > kFirstNm || spd.last_nm() < kLastNm)
-        throw InputError({data_dir / "cie"}, "illuminant " + illuminant.name() + " covers " + std::to_string(spd.first_nm()) + "–" +
-                                                 std::to_string(spd.last_nm()) + " nm (360–830 nm needed)");
+        throw InputError({data_dir / "cie"}, "illuminant " + illuminant.name() + " covers " +
+                                                 std::to_string(spd.first_nm()) + "–" + std::to_string(spd.last_nm()) +
+                                                 " nm (360–830 nm needed)");
     const DenseSpectrum<XYZ> weighted = DenseSpectrum<XYZ>::sampled(kFirstNm, kLastNm, [&](int nm) {
         const XYZ& xyz = cmf.at_nm(nm);
         const double s = spd.at_nm(nm);
@@ -40,17 +41,13 @@ DenseSpectrum<XYZ> normalised_weights(const DenseSpectrum<XYZ>& cmf, const Dense
     return weighted.map([y_sum](const XYZ& w) { return w / y_sum; });
 }
 
-XYZ sum(const DenseSpectrum<XYZ>& w) { return sum_of_products(DenseSpectrum<double>(w.first_nm(), w.last_nm(), 1.0), w); }
+XYZ sum(const DenseSpectrum<XYZ>& w) {
+    return sum_of_products(DenseSpectrum<double>(w.first_nm(), w.last_nm(), 1.0), w);
+}
 
 }  // namespace
 
-Observer parse_observer(std::string_view s) {
-    if (s == "1931") return Observer::cie1931_2deg;
-    if (s == "1964") return Observer::cie1964_10deg;
-    if (s == "2015-2") return Observer::cie2015_2deg;
-    if (s == "2015-10") return Observer::cie2015_10deg;
-    throw UsageError("unknown observer '" + std::string(s) + "' (expected 1931, 1964, 2015-2 or 2015-10)");
-}
+Observer parse_observer(std::string_view s) { return kObserverNames.parse(s); }
 
 std::string to_string(Observer o) {
     switch (o) {
@@ -62,15 +59,7 @@ std::string to_string(Observer o) {
     return "?";
 }
 
-std::string option_name(Observer o) {
-    switch (o) {
-        case Observer::cie1931_2deg: return "1931";
-        case Observer::cie1964_10deg: return "1964";
-        case Observer::cie2015_2deg: return "2015-2";
-        case Observer::cie2015_10deg: return "2015-10";
-    }
-    return "?";
-}
+std::string option_name(Observer o) { return std::string(kObserverNames.name(o)); }
 
 DenseSpectrum<XYZ> colour_matching_functions(const std::filesystem::path& data_dir, Observer observer) {
     const auto file = data_dir / "cie" / cmf_file_name(observer);
@@ -91,7 +80,8 @@ Colorimetry Colorimetry::load(const std::filesystem::path& data_dir, Observer ob
     c.weights_ = normalised_weights(cmf, illuminant.spectrum(data_dir), data_dir, illuminant);
     c.illuminant_white_ = sum(c.weights_);
     if (adaptation != Adaptation::none && !(illuminant == connection_illuminant())) {
-        const XYZ target = sum(normalised_weights(cmf, connection_illuminant().spectrum(data_dir), data_dir, connection_illuminant()));
+        const XYZ target =
+            sum(normalised_weights(cmf, connection_illuminant().spectrum(data_dir), data_dir, connection_illuminant()));
         c.matrix_ = metalfit::adaptation_matrix(adaptation, c.illuminant_white_, target);
         c.adapted_ = !(c.matrix_ == Matrix3::identity());
         if (c.adapted_) c.weights_ = c.weights_.map([&](const XYZ& w) { return c.matrix_ * w; });
@@ -102,10 +92,14 @@ Colorimetry Colorimetry::load(const std::filesystem::path& data_dir, Observer ob
 
 std::string describe_adaptation(Adaptation adaptation, bool adapted, const Illuminant& illuminant) {
     if (adaptation == Adaptation::none) return "none";
-    if (adapted) return to_string(adaptation) + ", " + illuminant.name() + " white → " + connection_illuminant().name() + " white";
+    if (adapted)
+        return to_string(adaptation) + ", " + illuminant.name() + " white → " + connection_illuminant().name() +
+               " white";
     return to_string(adaptation) + " (not needed: " + illuminant.name() + ")";
 }
 
-XYZ Colorimetry::integrate(const DenseSpectrum<double>& reflectance) const { return sum_of_products(reflectance, weights_); }
+XYZ Colorimetry::integrate(const DenseSpectrum<double>& reflectance) const {
+    return sum_of_products(reflectance, weights_);
+}
 
 }  // namespace metalfit

@@ -4,21 +4,9 @@
 
 namespace metalfit {
 
-Convention parse_convention(std::string_view s) {
-    if (s == "metalfit") return Convention::metalfit;
-    if (s == "adobe") return Convention::adobe;
-    if (s == "physicallybased") return Convention::physicallybased;
-    throw UsageError("unknown convention '" + std::string(s) + "' (expected metalfit, adobe or physicallybased)");
-}
+Convention parse_convention(std::string_view s) { return kConventionNames.parse(s); }
 
-std::string to_string(Convention c) {
-    switch (c) {
-        case Convention::metalfit: return "metalfit";
-        case Convention::adobe: return "adobe";
-        case Convention::physicallybased: return "physicallybased";
-    }
-    return "?";
-}
+std::string to_string(Convention c) { return std::string(kConventionNames.name(c)); }
 
 ColourConvention convention_preset(Convention c, std::string_view space) {
     switch (c) {

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "libfit/base/errors.hpp"
 #include "color/cie_table.hpp"
+#include "libfit/base/errors.hpp"
 
 namespace metalfit {
 
@@ -37,7 +37,8 @@ DaylightBasis DaylightBasis::load(const std::filesystem::path& file) {
     b.first_nm = table.begin()->first;
     int expected = b.first_nm;
     for (const auto& [nm, v] : table) {
-        if (nm != expected) throw InputError({file}, "expected a row at " + std::to_string(expected) + " nm (5 nm steps)");
+        if (nm != expected)
+            throw InputError({file}, "expected a row at " + std::to_string(expected) + " nm (5 nm steps)");
         b.S.push_back({v[0], v[1], v[2]});
         expected += b.step_nm;
     }

@@ -6,8 +6,8 @@
 #include <array>
 #include <cmath>
 
-#include "libfit/base/errors.hpp"
 #include "color/ocio_config_load.hpp"
+#include "libfit/base/errors.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -33,7 +33,8 @@ std::array<float, 3> display_xyz(const OCIO::ConstCPUProcessorRcPtr& to_xyz, std
 DisplayEncoding measure_encoding(const OCIO::ConstConfigRcPtr& config, const char* display, const char* view) {
     DisplayEncoding e;
     const char* named = config->getDisplayViewColorSpaceName(display, view);
-    e.display_space = (named == nullptr || *named == 0 || std::string(named) == OCIO::OCIO_VIEW_USE_DISPLAY_NAME) ? display : named;
+    e.display_space =
+        (named == nullptr || *named == 0 || std::string(named) == OCIO::OCIO_VIEW_USE_DISPLAY_NAME) ? display : named;
     if (!config->getColorSpace("cie_xyz_d65_interchange")) {
         e.why = "the config has no role cie_xyz_d65_interchange to measure the display with";
         return e;
@@ -67,9 +68,12 @@ DisplayEncoding measure_encoding(const OCIO::ConstConfigRcPtr& config, const cha
         srgb = srgb && std::abs(y - srgb_decode(v)) < 1e-3;
         power = power && std::abs(y - std::pow(v, gamma)) < 1e-3;
     }
-    if (srgb) e.kind = DisplayEncoding::Kind::srgb;
-    else if (power) e.kind = DisplayEncoding::Kind::gamma, e.gamma = gamma;
-    else e.why = "the curve is neither the sRGB curve nor a power law";
+    if (srgb)
+        e.kind = DisplayEncoding::Kind::srgb;
+    else if (power)
+        e.kind = DisplayEncoding::Kind::gamma, e.gamma = gamma;
+    else
+        e.why = "the curve is neither the sRGB curve nor a power law";
     return e;
 }
 
@@ -78,7 +82,8 @@ DisplayEncoding measure_encoding(const OCIO::ConstConfigRcPtr& config, const cha
 DisplayTransform DisplayTransform::create(const OcioConfigChoice& choice, const std::string& source) {
     const std::string src = source.empty() ? OCIO::ROLE_SCENE_LINEAR : source;
     try {
-        const auto config = detail::load_ocio_config(choice, choice.path.string() + ": no display transform from " + src);
+        const auto config =
+            detail::load_ocio_config(choice, choice.path.string() + ": no display transform from " + src);
         const char* display = config->getDefaultDisplay();
         const char* view = config->getDefaultView(display);
         auto transform = OCIO::DisplayViewTransform::Create();
@@ -89,9 +94,9 @@ DisplayTransform DisplayTransform::create(const OcioConfigChoice& choice, const 
         auto impl = std::make_unique<Impl>();
         impl->processor = processor->getDefaultCPUProcessor();
         const auto source_space = config->getColorSpace(src.c_str());
-        return DisplayTransform(std::move(impl),
-                                std::string(source_space ? source_space->getName() : src) + " → " + display + " / " + view,
-                                measure_encoding(config, display, view));
+        return DisplayTransform(
+            std::move(impl), std::string(source_space ? source_space->getName() : src) + " → " + display + " / " + view,
+            measure_encoding(config, display, view));
     } catch (const OCIO::Exception& e) {
         throw ColorConfigError(choice.path.string() + ": no display transform from " + src + ": " + e.what());
     }

@@ -4,10 +4,10 @@
 
 #include <algorithm>
 
+#include "color/ocio_config_load.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/text.hpp"
 #include "libfit/base/utf8.hpp"
-#include "color/ocio_config_load.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -39,7 +39,8 @@ OcioConfigContents read_ocio_config_contents(const OcioConfigChoice& choice) {
     for (int i = 0; i < config->getNumColorSpaces(); ++i) {
         const auto space = config->getColorSpace(config->getColorSpaceNameByIndex(i));
         const std::string name = text(space->getName(), "the name of colour space " + std::to_string(i + 1));
-        OcioColorSpaceEntry entry{name, text(space->getFamily(), "colour space '" + name + "': family"), {}, space->isData()};
+        OcioColorSpaceEntry entry{
+            name, text(space->getFamily(), "colour space '" + name + "': family"), {}, space->isData()};
         for (std::size_t a = 0; a < space->getNumAliases(); ++a)
             entry.aliases.push_back(text(space->getAlias(a), "colour space '" + name + "': aliases"));
         contents.spaces.push_back(std::move(entry));

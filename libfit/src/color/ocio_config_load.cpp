@@ -12,8 +12,8 @@
 #include "base/yaml_structure.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/input_file.hpp"
-#include "libfit/base/utf8.hpp"
 #include "libfit/base/text.hpp"
+#include "libfit/base/utf8.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -25,7 +25,8 @@ void each_leaf_transform(const OCIO::ConstTransformRcPtr& transform,
                          const std::function<void(const OCIO::ConstTransformRcPtr&)>& visit, int depth = 0) {
     if (!transform || depth > 64) return;
     if (const auto group = OCIO::DynamicPtrCast<const OCIO::GroupTransform>(transform)) {
-        for (int i = 0; i < group->getNumTransforms(); ++i) each_leaf_transform(group->getTransform(i), visit, depth + 1);
+        for (int i = 0; i < group->getNumTransforms(); ++i)
+            each_leaf_transform(group->getTransform(i), visit, depth + 1);
         return;
     }
     visit(transform);
@@ -95,7 +96,8 @@ std::string lut_problem(const OCIO::Config& config, const char* src, std::string
     if (::stat(resolved.c_str(), &st) != 0) return "not found";
     if (!S_ISREG(st.st_mode)) return "not a regular file (OCIO would read it without end)";
     if (static_cast<unsigned long long>(st.st_size) > kMaxInputFileBytes)
-        return "the file is " + std::to_string(st.st_size) + " bytes; the limit is " + std::to_string(kMaxInputFileBytes >> 20) + " MiB";
+        return "the file is " + std::to_string(st.st_size) + " bytes; the limit is " +
+               std::to_string(kMaxInputFileBytes >> 20) + " MiB";
     return {};
 }
 
@@ -129,8 +131,10 @@ OCIO::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice, const st
         for (const char* tag : {"!<ColorSpace>", "!<Look>", "!<ViewTransform>", "!<NamedTransform>"})
             for (std::size_t at = text.find(tag); at != std::string::npos; at = text.find(tag, at + 1)) ++entries;
         if (entries > kMaxOcioEntries)
-            throw InputError({choice.path}, "more than " + std::to_string(kMaxOcioEntries) + " colour spaces, looks, view "
-                             "transforms, named transforms and aliases (" + std::to_string(entries) + ")");
+            throw InputError({choice.path}, "more than " + std::to_string(kMaxOcioEntries) +
+                                                " colour spaces, looks, view "
+                                                "transforms, named transforms and aliases (" +
+                                                std::to_string(entries) + ")");
     } catch (const InputError& e) {
         throw ColorConfigError(described + ": cannot be loaded: " + e.what());
     }

@@ -2,9 +2,9 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
+#include "color/ocio_config_load.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/color/ocio_config_contents.hpp"
-#include "color/ocio_config_load.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -21,7 +21,8 @@ RgbConversion RgbConversion::create(const OcioConfigChoice& choice, const std::s
         if (!space) {
             const OcioConfigContents contents = read_ocio_config_contents(choice);
             throw ColorConfigError(choice.path.string() + " has no colour space or role '" + name +
-                                   "' (colour spaces: " + contents.space_names() + "; roles: " + contents.role_names() + ")");
+                                   "' (colour spaces: " + contents.space_names() + "; roles: " + contents.role_names() +
+                                   ")");
         }
         if (space->isData())
             throw ColorConfigError(choice.path.string() + ": colour space '" + space->getName() +
@@ -35,7 +36,8 @@ RgbConversion RgbConversion::create(const OcioConfigChoice& choice, const std::s
         impl->processor = config->getProcessor(source.c_str(), target.c_str())->getDefaultCPUProcessor();
         return RgbConversion(std::move(impl), source, target);
     } catch (const OCIO::Exception& e) {
-        throw ColorConfigError(choice.path.string() + ": no conversion from '" + source + "' to '" + target + "': " + e.what());
+        throw ColorConfigError(choice.path.string() + ": no conversion from '" + source + "' to '" + target +
+                               "': " + e.what());
     }
 }
 

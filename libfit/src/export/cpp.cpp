@@ -12,7 +12,8 @@ namespace metalfit {
 
 namespace {
 
-constexpr std::string_view kCppPrelude = R"cpp(// The GLSL subset the model functions use, in C++ (docs/export.md): float vec3 arithmetic and built-ins.
+constexpr std::string_view kCppPrelude =
+    R"cpp(// The GLSL subset the model functions use, in C++ (docs/export.md): float vec3 arithmetic and built-ins.
 #include <array>
 #include <cmath>
 
@@ -63,7 +64,8 @@ std::string inline_functions(std::string_view glsl) {
     std::size_t i = 0;
     while (i < glsl.size()) {
         const std::size_t end = glsl.find('\n', i);
-        const std::string_view line = glsl.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i + 1);
+        const std::string_view line =
+            glsl.substr(i, end == std::string_view::npos ? std::string_view::npos : end - i + 1);
         for (std::string_view type : {"vec3 ", "bvec3 ", "float "})
             if (line.starts_with(type) && line.find('(') != std::string_view::npos) out += "inline ";
         out += line;
@@ -118,18 +120,21 @@ namespace detail {
 
 std::string cpp_materials_index(const std::vector<CppIndexEntry>& entries, std::string_view id_prefix) {
     const std::string name = cpp_index_name(id_prefix);
-    std::string umbrella = "// metalfit " METALFIT_VERSION " exports: every material and model of this export, and one table of them.\n"
-                           "#pragma once\n\n#include <array>\n\n";
+    std::string umbrella =
+        "// metalfit " METALFIT_VERSION " exports: every material and model of this export, and one table of them.\n"
+        "#pragma once\n\n#include <array>\n\n";
     std::string table;
     for (const CppIndexEntry& e : entries) {
         umbrella += e.include + "\n";
         table += e.row + "\n";
     }
-    umbrella += "\nnamespace " + name + " {\n\nstruct Entry {\n    const char* material;\n    const char* model;\n"
-                "    metalfit_shader::vec3 (*evaluate)(float mu);\n    int parameter_count;\n"
-                "    std::array<const std::array<double, 3>*, 4> parameters;  // in the order of `metalfit models`\n};\n\n"
-                "inline const std::array<Entry, " + std::to_string(entries.size()) + "> all{{\n" + table +
-                "}};\n\n}  // namespace " + name + "\n";
+    umbrella +=
+        "\nnamespace " + name +
+        " {\n\nstruct Entry {\n    const char* material;\n    const char* model;\n"
+        "    metalfit_shader::vec3 (*evaluate)(float mu);\n    int parameter_count;\n"
+        "    std::array<const std::array<double, 3>*, 4> parameters;  // in the order of `metalfit models`\n};\n\n"
+        "inline const std::array<Entry, " +
+        std::to_string(entries.size()) + "> all{{\n" + table + "}};\n\n}  // namespace " + name + "\n";
     return umbrella;
 }
 
@@ -153,7 +158,8 @@ std::string cpp_models_file(const std::vector<const Model*>& models) {
            "`inline` and float\n// literals (1.0f), over a small vec3 prelude (docs/export.md). F(mu), mu = cos(theta), per "
            "RGB channel. C++20;\n// clean under -Wall -Wextra -Wconversion -Wdouble-promotion.\n"
            "#pragma once\n\n" +
-           std::string(kCppPrelude) + inline_functions(float_literals(glsl_library(models))) + "\n}  // namespace metalfit_shader\n";
+           std::string(kCppPrelude) + inline_functions(float_literals(glsl_library(models))) +
+           "\n}  // namespace metalfit_shader\n";
 }
 
 std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials, const ExportContext& context) {
@@ -165,7 +171,8 @@ std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials,
             const WrittenParameters& w = e.written;
             const std::string stem = file_stem(context.request.id_prefix, m.fit->material.id, w.model->id());
             std::string text = comment_header(m, w, context, "// ");
-            text += "#pragma once\n\n#include <array>\n\n#include \"metalfit_models.hpp\"\n\nnamespace " + stem + " {\n\n";
+            text +=
+                "#pragma once\n\n#include <array>\n\n#include \"metalfit_models.hpp\"\n\nnamespace " + stem + " {\n\n";
             text += "inline constexpr const char* material = " + c_string_literal(m.fit->material.id) + ";\n";
             text += "inline constexpr const char* model = \"" + std::string(w.model->id()) + "\";\n";
             std::string args, pointers;
@@ -177,13 +184,15 @@ std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials,
                 args += "metalfit_shader::vec3(" + name + "), ";
                 pointers += (i ? ", &" : "&") + stem + "::" + name;
             }
-            text += "\n// F(mu) of this material and model, per RGB channel.\ninline metalfit_shader::vec3 evaluate(float mu) {\n"
-                    "    return metalfit_shader::" + std::string(w.model->glsl_function()) + "(" + args + "mu);\n}\n\n}  // namespace " +
-                    stem + "\n";
+            text +=
+                "\n// F(mu) of this material and model, per RGB channel.\ninline metalfit_shader::vec3 evaluate(float mu) {\n"
+                "    return metalfit_shader::" +
+                std::string(w.model->glsl_function()) + "(" + args + "mu);\n}\n\n}  // namespace " + stem + "\n";
             files.push_back({"cpp/" + stem + ".hpp", text});
-            index.push_back({"#include \"" + stem + ".hpp\"",
-                             "    {" + c_string_literal(m.fit->material.id) + ", \"" + std::string(w.model->id()) + "\", &" + stem +
-                                 "::evaluate, " + std::to_string(parameters.size()) + ", {" + pointers + "}},"});
+            index.push_back({"#include \"" + stem + ".hpp\"", "    {" + c_string_literal(m.fit->material.id) + ", \"" +
+                                                                  std::string(w.model->id()) + "\", &" + stem +
+                                                                  "::evaluate, " + std::to_string(parameters.size()) +
+                                                                  ", {" + pointers + "}},"});
         }
     files.push_back({cpp_index_path(context.request.id_prefix), cpp_materials_index(index, context.request.id_prefix)});
     return files;

@@ -13,8 +13,10 @@ std::string shader_constants(const MaterialExport& material, const ModelExport& 
     const std::string& prefix = context.request.id_prefix;
     const std::string id = constant_stem(prefix, material.fit->material.id, w.model->id());
     std::string text = comment_header(material, w, context, "// ");
-    text += "// Needs " + std::string(syntax.models_file) + " before this file; F(mu), mu = cos(theta), per RGB channel.\n";
-    text += "// " + std::string(syntax.language) + ". Constants: the float nearest each fitted value (at most 9 significant\n"
+    text +=
+        "// Needs " + std::string(syntax.models_file) + " before this file; F(mu), mu = cos(theta), per RGB channel.\n";
+    text += "// " + std::string(syntax.language) +
+            ". Constants: the float nearest each fitted value (at most 9 significant\n"
             "// digits, the float's shortest round trip); the figures above are of the fitted doubles.\n";
     text += half_precision_note(w, "// ");
     const std::string guard = id + "_" + std::string(syntax.extension);
@@ -29,13 +31,15 @@ std::string shader_constants(const MaterialExport& material, const ModelExport& 
                 shader_channel_list(w.params, i) + ");\n";
         args += constant + ", ";
     }
-    text += std::string(syntax.vector) + " " + file_stem(prefix, material.fit->material.id, w.model->id()) + "(float mu) {\n    return " +
-            std::string(w.model->glsl_function()) + "(" + args + "mu);\n}\n#endif  // " + guard + "\n";
+    text += std::string(syntax.vector) + " " + file_stem(prefix, material.fit->material.id, w.model->id()) +
+            "(float mu) {\n    return " + std::string(w.model->glsl_function()) + "(" + args + "mu);\n}\n#endif  // " +
+            guard + "\n";
     return text;
 }
 
 std::string glsl_models_file(const std::vector<const Model*>& models) {
-    return "// metalfit " METALFIT_VERSION " Fresnel models: the GLSL of libfit/models, unchanged (`metalfit models --glsl`).\n"
+    return "// metalfit " METALFIT_VERSION
+           " Fresnel models: the GLSL of libfit/models, unchanged (`metalfit models --glsl`).\n"
            "// F(mu), mu = cos(theta), per RGB channel. Paste after #version: GLSL >= 1.30 (tested as 3.30 and 4.50) or\n"
            "// GLSL ES 3.00 (WebGL 2). GLSL ES has no default float precision in fragment shaders: the block below asks\n"
            "// for highp, which the models need (half precision: see each material's file).\n"
@@ -50,8 +54,9 @@ std::vector<ExportFile> export_glsl(const std::vector<MaterialExport>& materials
     files.push_back({"glsl/metalfit_models.glsl", glsl_models_file(context.request.models)});
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models)
-            files.push_back({"glsl/" + file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id()) + ".glsl",
-                             shader_constants(m, e, context, kGlsl)});
+            files.push_back(
+                {"glsl/" + file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id()) + ".glsl",
+                 shader_constants(m, e, context, kGlsl)});
     return files;
 }
 

@@ -23,7 +23,8 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-static_assert(std::endian::native == std::endian::little, "glTF buffers are little-endian; the sphere is written as memory");
+static_assert(std::endian::native == std::endian::little,
+              "glTF buffers are little-endian; the sphere is written as memory");
 
 // RFC 4648 base64 with padding: what a data: URI's ";base64," carries.
 std::string base64(const std::string& bytes) {
@@ -33,8 +34,7 @@ std::string base64(const std::string& bytes) {
     for (std::size_t i = 0; i < bytes.size(); i += 3) {
         const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
         std::uint32_t v = 0;
-        for (std::size_t j = 0; j < 3; ++j)
-            v = (v << 8) | (j < n ? static_cast<unsigned char>(bytes[i + j]) : 0u);
+        for (std::size_t j = 0; j < 3; ++j) v = (v << 8) | (j < n ? static_cast<unsigned char>(bytes[i + j]) : 0u);
         for (std::size_t j = 0; j < 4; ++j) out += j <= n ? kAlphabet[(v >> (18 - 6 * j)) & 63u] : '=';
     }
     return out;
@@ -63,14 +63,15 @@ const Sphere& sphere() {
     static const Sphere s = [] {
         Sphere m;
         const auto vertex = [&](double theta, double phi) {
-            m.vertices.push_back({static_cast<float>(std::sin(theta) * std::sin(phi)), static_cast<float>(std::cos(theta)),
+            m.vertices.push_back({static_cast<float>(std::sin(theta) * std::sin(phi)),
+                                  static_cast<float>(std::cos(theta)),
                                   static_cast<float>(std::sin(theta) * std::cos(phi))});
         };
         vertex(0.0, 0.0);  // north pole, index 0
         for (int i = 1; i < Sphere::kRings; ++i)
             for (int j = 0; j < Sphere::kSegments; ++j)
                 vertex(std::numbers::pi * i / Sphere::kRings, 2.0 * std::numbers::pi * j / Sphere::kSegments);
-        vertex(std::numbers::pi, 0.0);  // south pole, the last index
+        vertex(std::numbers::pi, 0.0);               // south pole, the last index
         const auto at = [](int ring, int segment) {  // ring 1 … kRings - 1
             return static_cast<std::uint16_t>(1 + (ring - 1) * Sphere::kSegments + segment % Sphere::kSegments);
         };
@@ -118,12 +119,13 @@ GltfBaseColor gltf_base_color(const WrittenParameters& written, GamutPolicy gamu
     if (outside.empty()) return out;
     if (gamut == GamutPolicy::scale) {
         for (int c = 0; c < 3; ++c) out.factor[c] = std::max(0.0, max > 1.0 ? out.f0[c] / max : out.f0[c]);
-        out.adjustment = "F0 outside [0, 1] (" + outside + "): " +
-                         (max > 1.0 ? "scaled by 1/" + number(max) : std::string("negative values set to 0")) +
+        out.adjustment = "F0 outside [0, 1] (" + outside +
+                         "): " + (max > 1.0 ? "scaled by 1/" + number(max) : std::string("negative values set to 0")) +
                          " (--gamut scale)";
     } else {
         for (int c = 0; c < 3; ++c) out.factor[c] = std::clamp(out.f0[c], 0.0, 1.0);
-        out.adjustment = "F0 outside [0, 1] (" + outside + "): clipped to [0, 1] (glTF's baseColorFactor is in [0, 1]; "
+        out.adjustment = "F0 outside [0, 1] (" + outside +
+                         "): clipped to [0, 1] (glTF's baseColorFactor is in [0, 1]; "
                          "--gamut scale scales instead)";
     }
     return out;
@@ -160,9 +162,10 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
                                                   ? std::string("F0 of the curve (the model at mu = 1)")
                                                   : "F0 of the curve (the model at mu = 1); " + base.adjustment;
             provenance["f82_tint"] = tint;
-            provenance["f82_tint_note"] = "not in the material: KHR_materials_specular's specularColorFactor tints the "
-                                          "dielectric F0 only and leaves the metal BRDF (Schlick from baseColor to 1) as "
-                                          "it is, so glTF metals have no F82 tint";
+            provenance["f82_tint_note"] =
+                "not in the material: KHR_materials_specular's specularColorFactor tints the "
+                "dielectric F0 only and leaves the metal BRDF (Schlick from baseColor to 1) as "
+                "it is, so glTF metals have no F82 tint";
             provenance["roughness"] = context.request.roughness;
             provenance["metrics"] = metrics_record(mt);
             const std::size_t vertex_bytes = mesh.positions_bytes;
@@ -176,26 +179,34 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
                                                                       {"indices", 2},
                                                                       {"material", 0},
                                                                       {"mode", 4}}})}}})},
-                {"materials", Json::array({{{"name", stem},
-                                            {"pbrMetallicRoughness",
-                                             {{"baseColorFactor", Json::array({base.factor.r, base.factor.g, base.factor.b, 1.0})},
-                                              {"metallicFactor", 1.0},
-                                              {"roughnessFactor", context.request.roughness}}},
-                                            {"extras", {{"metalfit", provenance}}}}})},
-                {"accessors", Json::array({{{"bufferView", 0},
-                                            {"componentType", 5126},
-                                            {"count", mesh.vertices.size()},
-                                            {"type", "VEC3"},
-                                            {"min", vec3_json(mesh.min)},
-                                            {"max", vec3_json(mesh.max)}},
-                                           {{"bufferView", 1}, {"componentType", 5126}, {"count", mesh.vertices.size()}, {"type", "VEC3"}},
-                                           {{"bufferView", 2}, {"componentType", 5123}, {"count", mesh.indices.size()}, {"type", "SCALAR"}}})},
-                {"bufferViews", Json::array({{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", vertex_bytes}, {"target", 34962}},
-                                             {{"buffer", 0}, {"byteOffset", vertex_bytes}, {"byteLength", vertex_bytes}, {"target", 34962}},
-                                             {{"buffer", 0},
-                                              {"byteOffset", 2 * vertex_bytes},
-                                              {"byteLength", mesh.indices_bytes},
-                                              {"target", 34963}}})},
+                {"materials",
+                 Json::array({{{"name", stem},
+                               {"pbrMetallicRoughness",
+                                {{"baseColorFactor", Json::array({base.factor.r, base.factor.g, base.factor.b, 1.0})},
+                                 {"metallicFactor", 1.0},
+                                 {"roughnessFactor", context.request.roughness}}},
+                               {"extras", {{"metalfit", provenance}}}}})},
+                {"accessors",
+                 Json::array(
+                     {{{"bufferView", 0},
+                       {"componentType", 5126},
+                       {"count", mesh.vertices.size()},
+                       {"type", "VEC3"},
+                       {"min", vec3_json(mesh.min)},
+                       {"max", vec3_json(mesh.max)}},
+                      {{"bufferView", 1}, {"componentType", 5126}, {"count", mesh.vertices.size()}, {"type", "VEC3"}},
+                      {{"bufferView", 2},
+                       {"componentType", 5123},
+                       {"count", mesh.indices.size()},
+                       {"type", "SCALAR"}}})},
+                {"bufferViews",
+                 Json::array(
+                     {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", vertex_bytes}, {"target", 34962}},
+                      {{"buffer", 0}, {"byteOffset", vertex_bytes}, {"byteLength", vertex_bytes}, {"target", 34962}},
+                      {{"buffer", 0},
+                       {"byteOffset", 2 * vertex_bytes},
+                       {"byteLength", mesh.indices_bytes},
+                       {"target", 34963}}})},
                 {"buffers", Json::array({{{"byteLength", mesh.buffer.size()}, {"uri", uri}}})}};
             files.push_back({"gltf/" + stem + ".gltf", j.dump(2) + "\n"});
         }
@@ -203,24 +214,3 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
 }
 
 }  // namespace metalfit::detail
-
-namespace metalfit {
-
-void require_export_space(const ExportRequest& request, const std::string& space, const std::string& materialx_space) {
-    if (std::find(request.formats.begin(), request.formats.end(), ExportFormat::gltf) == request.formats.end()) return;
-    if (materialx_space == "lin_rec709") return;
-    throw UsageError("export --format gltf: glTF 2.0's colours are linear Rec.709 (sRGB primaries) and a .gltf cannot name another "
-           "space, but this export is in '" + space + "'; export glTF with --space 'Linear Rec.709 (sRGB)' (the default), "
-           "or list the other formats (json,glsl,hlsl,mtlx,openpbr,cpp) instead of all");
-}
-
-std::string leave_out_formats_the_space_cannot_carry(ExportRequest& request, const std::string& space,
-                                                     const std::string& materialx_space) {
-    const auto gltf = std::find(request.formats.begin(), request.formats.end(), ExportFormat::gltf);
-    if (gltf == request.formats.end() || materialx_space == "lin_rec709") return {};
-    request.formats.erase(gltf);
-    return "--format all: glTF left out: glTF 2.0's colours are linear Rec.709 and a .gltf cannot name '" + space +
-           "' (export it with --space 'Linear Rec.709 (sRGB)')";
-}
-
-}  // namespace metalfit

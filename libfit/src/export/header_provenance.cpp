@@ -14,8 +14,8 @@ std::vector<std::string> header_provenance_lines(const Material& m, const FitRec
     if (!m.provenance.note.empty()) lines.push_back("caveat: " + one_line(m.provenance.note));
     lines.push_back("colour space: " + r.space + " (OCIO " + r.config.origin + "); " + to_string(r.illuminant) + ", " +
                     to_string(r.observer) + ", R_c(mu) white balanced to the perfect reflector");
-    lines.push_back("colour convention: " + to_string(r.convention) + "; chromatic adaptation: " +
-                    describe_adaptation(r.adaptation, r.adapted, r.illuminant));
+    lines.push_back("colour convention: " + to_string(r.convention) +
+                    "; chromatic adaptation: " + describe_adaptation(r.adaptation, r.adapted, r.illuminant));
     for (const std::string& warning : m.warnings) lines.push_back("DATA WARNING: " + warning);
     return lines;
 }

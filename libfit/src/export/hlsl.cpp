@@ -11,7 +11,8 @@ namespace metalfit {
 namespace {
 
 // GLSL built-ins the model functions use that HLSL spells differently or lacks, defined with HLSL built-ins.
-constexpr std::string_view kHlslPrelude = R"hlsl(// metalfit: GLSL constructs of the model functions, for HLSL (docs/export.md). vec3(s) splats a scalar, which HLSL's
+constexpr std::string_view kHlslPrelude =
+    R"hlsl(// metalfit: GLSL constructs of the model functions, for HLSL (docs/export.md). vec3(s) splats a scalar, which HLSL's
 // float3(s) does not; mix with a bool3 selects per component; greaterThanEqual / equal compare per component.
 #ifndef METALFIT_HLSL_PRELUDE  // the file may be included more than once
 #define METALFIT_HLSL_PRELUDE
@@ -52,11 +53,13 @@ std::string hlsl_from_glsl(std::string_view glsl) {
             const std::size_t stop = end == std::string_view::npos ? glsl.size() : end + 2;
             out += glsl.substr(i, stop - i);
             i = stop;
-        } else if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && i + 1 < glsl.size() && std::isdigit(static_cast<unsigned char>(glsl[i + 1])))) {
+        } else if (std::isdigit(static_cast<unsigned char>(c)) ||
+                   (c == '.' && i + 1 < glsl.size() && std::isdigit(static_cast<unsigned char>(glsl[i + 1])))) {
             // A number, exponent included (1e-30), copied as it is.
             std::size_t j = i;
-            while (j < glsl.size() && (identifier_char(glsl[j]) || glsl[j] == '.' ||
-                                       ((glsl[j] == '-' || glsl[j] == '+') && (glsl[j - 1] == 'e' || glsl[j - 1] == 'E'))))
+            while (j < glsl.size() &&
+                   (identifier_char(glsl[j]) || glsl[j] == '.' ||
+                    ((glsl[j] == '-' || glsl[j] == '+') && (glsl[j - 1] == 'e' || glsl[j - 1] == 'E'))))
                 ++j;
             out += glsl.substr(i, j - i);
             i = j;
@@ -85,7 +88,8 @@ std::string hlsl_from_glsl(std::string_view glsl) {
 namespace detail {
 
 std::string hlsl_models_file(const std::vector<const Model*>& models) {
-    return "// metalfit " METALFIT_VERSION " Fresnel models for HLSL: the GLSL of libfit/models translated mechanically "
+    return "// metalfit " METALFIT_VERSION
+           " Fresnel models for HLSL: the GLSL of libfit/models translated mechanically "
            "(prelude + token mapping, docs/export.md).\n// F(mu), mu = cos(theta), per RGB channel.\n" +
            hlsl_from_glsl(glsl_library(models));
 }
@@ -97,8 +101,9 @@ std::vector<ExportFile> export_hlsl(const std::vector<MaterialExport>& materials
     files.push_back({"hlsl/metalfit_models.hlsl", hlsl_models_file(context.request.models)});
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models)
-            files.push_back({"hlsl/" + file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id()) + ".hlsl",
-                             shader_constants(m, e, context, kHlsl)});
+            files.push_back(
+                {"hlsl/" + file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id()) + ".hlsl",
+                 shader_constants(m, e, context, kHlsl)});
     return files;
 }
 

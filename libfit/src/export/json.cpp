@@ -51,15 +51,16 @@ std::string merge_json_record(const std::string& existing, const std::string& mi
     const std::string old_prefix = old_record.value("id_prefix", std::string(kDefaultIdPrefix));
     const std::string new_prefix = new_record.value("id_prefix", std::string(kDefaultIdPrefix));
     if (old_prefix != new_prefix)
-        throw std::invalid_argument("its identifiers have --id-prefix \"" + old_prefix + "\", this export's \"" + new_prefix +
-                                    "\": one folder holds one prefix");
+        throw std::invalid_argument("its identifiers have --id-prefix \"" + old_prefix + "\", this export's \"" +
+                                    new_prefix + "\": one folder holds one prefix");
     for (const auto& [key, value] : new_record.items())
         if (key != "materials" && old_record[key] != value) {
             std::string differs;
             if (value.is_object())
                 for (const auto& [k, v] : value.items())
                     if (!old_record[key].contains(k) || old_record[key][k] != v) {
-                        differs = key + "." + k + " " + old_record[key].value(k, Json()).dump() + " there, " + v.dump() + " now";
+                        differs = key + "." + k + " " + old_record[key].value(k, Json()).dump() + " there, " +
+                                  v.dump() + " now";
                         break;
                     }
             throw std::invalid_argument("it was written with other settings (" + (differs.empty() ? key : differs) +

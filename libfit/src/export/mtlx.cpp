@@ -28,21 +28,22 @@ WrittenParameters materialx_parameters(const MaterialExport& m, const ModelExpor
     const Model& model = *e.written.model;
     WrittenParameters w = e.written;
     switch (model.materialx_form()) {
-        case MaterialxForm::generalized_schlick:
-            return *as_f82_tint(e.written, *m.fit->reference);
+        case MaterialxForm::generalized_schlick: return *as_f82_tint(e.written, *m.fit->reference);
         case MaterialxForm::stand_in:
             w = *e.stand_in;
-            extra = std::string(model.id()) + " has no MaterialX form (" + std::string(model.materialx_stand_in_reason()) +
-                    "): written as its closest\nexpressible fit, " + std::string(w.model->id()) +
-                    " in generalized_schlick_bsdf (exponent 5); " + std::string(model.id()) +
-                    "'s own worst-channel rel_rms\nwould be " + number(worst_channel(e.written.metrics.rel_rms)) +
-                    ", this stand-in's is " + number(worst_channel(w.metrics.rel_rms)) + "; the figures below are the stand-in's.";
+            extra = std::string(model.id()) + " has no MaterialX form (" +
+                    std::string(model.materialx_stand_in_reason()) + "): written as its closest\nexpressible fit, " +
+                    std::string(w.model->id()) + " in generalized_schlick_bsdf (exponent 5); " +
+                    std::string(model.id()) + "'s own worst-channel rel_rms\nwould be " +
+                    number(worst_channel(e.written.metrics.rel_rms)) + ", this stand-in's is " +
+                    number(worst_channel(w.metrics.rel_rms)) + "; the figures below are the stand-in's.";
             return w;
         case MaterialxForm::artistic_ior: {
             RGB reflectivity = w.params.parameter(0);
             bool clamped = false;
             for (int c = 0; c < 3; ++c)
-                if (reflectivity[c] > kArtisticIorMaxReflectivity) reflectivity[c] = kArtisticIorMaxReflectivity, clamped = true;
+                if (reflectivity[c] > kArtisticIorMaxReflectivity)
+                    reflectivity[c] = kArtisticIorMaxReflectivity, clamped = true;
             if (clamped) {
                 w.params.set_parameter(0, reflectivity);
                 w.metrics = compute_metrics(*w.model, w.params, *m.fit->reference);
@@ -51,8 +52,7 @@ WrittenParameters materialx_parameters(const MaterialExport& m, const ModelExpor
             }
             return w;
         }
-        case MaterialxForm::conductor_bsdf:
-            return w;
+        case MaterialxForm::conductor_bsdf: return w;
     }
     throw std::logic_error("materialx_parameters: unknown MaterialX form");
 }
@@ -136,7 +136,8 @@ pugi::xml_node begin_materialx(pugi::xml_document& doc, const std::string& comme
     doc.append_child(pugi::node_comment).set_value(("\n" + no_double_hyphen(comment)).c_str());
     pugi::xml_node root = doc.append_child("materialx");
     root.append_attribute("version") = "1.39";
-    if (!context.materialx_colorspace.empty()) root.append_attribute("colorspace") = context.materialx_colorspace.c_str();
+    if (!context.materialx_colorspace.empty())
+        root.append_attribute("colorspace") = context.materialx_colorspace.c_str();
     return root;
 }
 
@@ -182,7 +183,9 @@ std::vector<ExportFile> export_mtlx(const std::vector<MaterialExport>& materials
     std::vector<ExportFile> files;
     for (const MaterialExport& m : materials)
         for (const ModelExport& e : m.models)
-            files.push_back({"mtlx/" + file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id()) + ".mtlx", document(m, e, context)});
+            files.push_back(
+                {"mtlx/" + file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id()) + ".mtlx",
+                 document(m, e, context)});
     return files;
 }
 

@@ -28,14 +28,16 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
             std::string note;
             if (!f82) {
                 f82 = *e.stand_in;
-                note = std::string(e.written.model->id()) + " is not an F82-tint curve: written as the f82-tint parameters (" +
-                       f82->origin + "); " + std::string(e.written.model->id()) + "'s own worst-channel rel_rms would be " +
+                note = std::string(e.written.model->id()) +
+                       " is not an F82-tint curve: written as the f82-tint parameters (" + f82->origin + "); " +
+                       std::string(e.written.model->id()) + "'s own worst-channel rel_rms would be " +
                        number(worst_channel(e.written.metrics.rel_rms)) + ", these parameters' is " +
                        number(worst_channel(f82->metrics.rel_rms));
             }
             const WrittenParameters& w = *f82;
             const Metrics& mt = w.metrics;
-            Json j = material_identity_json("metalfit.openpbr/1", m.fit->material, context.record, e.written.model->id());
+            Json j =
+                material_identity_json("metalfit.openpbr/1", m.fit->material, context.record, e.written.model->id());
             j["written_as"] = "f82-tint";
             j["from"] = w.origin;
             j["note"] = note;

@@ -7,16 +7,13 @@
 #include <numeric>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
 
 namespace metalfit {
 
 namespace {
 
-std::string number(double x, const char* format = "%.3g") {
-    char text[32];
-    std::snprintf(text, sizeof text, format, x);
-    return text;
-}
+std::string number(double x, int digits = 3) { return significant_text(x, digits); }
 
 bool is_fraction(BudgetMetric metric) { return metric != BudgetMetric::de2000_max; }
 
@@ -27,21 +24,9 @@ std::string value_text(double value, BudgetMetric metric) {
 
 }  // namespace
 
-std::string to_string(BudgetMetric metric) {
-    switch (metric) {
-        case BudgetMetric::rel_rms: return "rel_rms";
-        case BudgetMetric::max_rel: return "max_rel";
-        case BudgetMetric::de2000_max: return "de2000_max";
-    }
-    return "?";
-}
+std::string to_string(BudgetMetric metric) { return std::string(kBudgetMetricNames.name(metric)); }
 
-BudgetMetric parse_budget_metric(const std::string& text) {
-    if (text == "rel_rms") return BudgetMetric::rel_rms;
-    if (text == "max_rel") return BudgetMetric::max_rel;
-    if (text == "de2000_max") return BudgetMetric::de2000_max;
-    throw UsageError("unknown budget metric '" + text + "' (known: rel_rms, max_rel, de2000_max)");
-}
+BudgetMetric parse_budget_metric(const std::string& text) { return kBudgetMetricNames.parse(text); }
 
 Budget parse_budget(const std::string& text, BudgetMetric metric) {
     const bool percent = !text.empty() && text.back() == '%';
@@ -49,9 +34,11 @@ Budget parse_budget(const std::string& text, BudgetMetric metric) {
     char* end = nullptr;
     const double value = digits.empty() ? std::nan("") : std::strtod(digits.c_str(), &end);
     if (digits.empty() || end != digits.c_str() + digits.size() || !std::isfinite(value) || value < 0)
-        throw UsageError("budget '" + text + "': give a non-negative number, e.g. 0.5% or 0.005 (or 1.0 for de2000_max)");
+        throw UsageError("budget '" + text +
+                         "': give a non-negative number, e.g. 0.5% or 0.005 (or 1.0 for de2000_max)");
     if (percent && !is_fraction(metric))
-        throw UsageError("budget '" + text + "': de2000_max is in units of Delta E, not a percentage (e.g. --budget 1.0)");
+        throw UsageError("budget '" + text +
+                         "': de2000_max is in units of Delta E, not a percentage (e.g. --budget 1.0)");
     return {percent ? value / 100 : value, metric};
 }
 
@@ -70,7 +57,7 @@ double budget_value(const Metrics& metrics, BudgetMetric metric) {
 
 std::string BudgetChoice::summary() const {
     const auto cost_text = [&](const BudgetCandidate& c) {
-        return c.cost ? number(*c.cost, "%.4g") + " " + cost_unit : std::string("no cost");
+        return c.cost ? number(*c.cost, 4) + " " + cost_unit : std::string("no cost");
     };
     if (chosen) {
         for (const BudgetCandidate& c : candidates)
@@ -93,8 +80,10 @@ BudgetChoice choose_model(const std::vector<ModelResult>& results, const CostTab
         c.model = r.model;
         c.cost = costs.cost_of(r.model->id());
         c.value = budget_value(r.fit.value.metrics, budget.metric);
-        if (!c.cost) c.reason = "no cost for " + std::string(r.model->id()) + " in " + costs.source;
-        else if (std::isnan(c.value)) c.reason = to_string(budget.metric) + " undefined";
+        if (!c.cost)
+            c.reason = "no cost for " + std::string(r.model->id()) + " in " + costs.source;
+        else if (std::isnan(c.value))
+            c.reason = to_string(budget.metric) + " undefined";
         else if (!(c.value <= budget.limit))
             c.reason = to_string(budget.metric) + " " + value_text(c.value, budget.metric) + " > " +
                        value_text(budget.limit, budget.metric);
@@ -102,14 +91,15 @@ BudgetChoice choose_model(const std::vector<ModelResult>& results, const CostTab
         choice.candidates.push_back(std::move(c));
     }
     // Cheapest first; ties by the lower value, then the input order (stable); no cost last.
-    std::stable_sort(choice.candidates.begin(), choice.candidates.end(), [](const BudgetCandidate& x, const BudgetCandidate& y) {
-        if (x.cost.has_value() != y.cost.has_value()) return x.cost.has_value();
-        if (!x.cost) return false;
-        if (*x.cost != *y.cost) return *x.cost < *y.cost;
-        const bool xn = std::isnan(x.value), yn = std::isnan(y.value);
-        if (xn != yn) return yn;
-        return !xn && x.value < y.value;
-    });
+    std::stable_sort(choice.candidates.begin(), choice.candidates.end(),
+                     [](const BudgetCandidate& x, const BudgetCandidate& y) {
+                         if (x.cost.has_value() != y.cost.has_value()) return x.cost.has_value();
+                         if (!x.cost) return false;
+                         if (*x.cost != *y.cost) return *x.cost < *y.cost;
+                         const bool xn = std::isnan(x.value), yn = std::isnan(y.value);
+                         if (xn != yn) return yn;
+                         return !xn && x.value < y.value;
+                     });
     for (const BudgetCandidate& c : choice.candidates)
         if (c.qualifies) {
             choice.chosen = c.model;

@@ -7,18 +7,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/sample_statistics.hpp"
 #include "libfit/base/version.hpp"
 
 namespace metalfit {
 namespace {
 
-std::string percent(double x) {
-    if (std::isnan(x)) return "—";
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2f", 100 * x);
-    return text;
-}
+std::string percent(double x) { return std::isnan(x) ? "—" : fixed_text(100 * x, 2); }
 
 }  // namespace
 
@@ -62,8 +58,8 @@ CatalogSummary summarize_catalog(const std::vector<MaterialFit>& fits) {
 std::string catalog_summary_markdown(const CatalogSummary& summary, const FitRecordContext& context) {
     std::ostringstream s;
     const ErrorSettings& e = context.error;
-    s << "Worst-channel `rel_rms` in %, fit / best closed form; " << context.space << ", " << to_string(context.illuminant)
-      << ", " << to_string(context.observer) << ", adaptation "
+    s << "Worst-channel `rel_rms` in %, fit / best closed form; " << context.space << ", "
+      << to_string(context.illuminant) << ", " << to_string(context.observer) << ", adaptation "
       << describe_adaptation(context.adaptation, context.adapted, context.illuminant) << ", convention "
       << to_string(context.convention) << ", " << to_string(context.spectral.interpolation) << " interpolation, "
       << to_string(e.metric) << " metric, " << to_string(e.weight) << " weight, " << e.nodes << " nodes (metalfit "
@@ -75,7 +71,8 @@ std::string catalog_summary_markdown(const CatalogSummary& summary, const FitRec
     s << "\n";
     for (std::size_t i = 0; i < summary.materials.size(); ++i) {
         s << "| " << summary.materials[i] << " |";
-        for (const ModelSummary& m : summary.models) s << " " << percent(m.fit_worst[i]) << " / " << percent(m.closed_worst[i]) << " |";
+        for (const ModelSummary& m : summary.models)
+            s << " " << percent(m.fit_worst[i]) << " / " << percent(m.closed_worst[i]) << " |";
         s << "\n";
     }
     s << "| **median fit** |";

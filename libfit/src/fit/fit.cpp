@@ -3,19 +3,20 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <span>
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <span>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
 
 namespace metalfit {
 
 namespace {
 
 std::vector<NamedStart> starts_for_channel(const Model& model, const std::vector<ClosedFormResult>& closed, int c,
-                                          const ChannelTarget& target) {
+                                           const ChannelTarget& target) {
     std::vector<NamedStart> starts;
     for (const ClosedFormResult& form : closed)
         if (form.value) starts.push_back({"closed " + form.id, form.value->params[c]});
@@ -27,11 +28,7 @@ std::vector<NamedStart> starts_for_channel(const Model& model, const std::vector
     return starts;
 }
 
-std::string number(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", x);
-    return text;
-}
+std::string number(double x) { return significant_text(x, 6); }
 
 }  // namespace
 
@@ -71,14 +68,19 @@ PhaseTime FitTimings::total() const {
 }
 
 ClosedFormInput closed_form_input(const ReferenceCurve& curve, const Material& material, SpectralOptions options) {
-    return {[&curve](double mu) { return curve(mu); },
-            [&material, options](double nm) { return material.index(nm, options.interpolation, options.out_of_range); }};
+    return {
+        [&curve](double mu) { return curve(mu); },
+        [&material, options](double nm) { return material.index(nm, options.interpolation, options.out_of_range); }};
+}
+
+void FitConstraints::check_combination() const {
+    if (pin_f0 && gamut_fit)
+        throw UsageError("--pin F0 and --gamut-fit together: F(1) = R(1) leaves [0, 1] wherever R(1) does; choose one");
 }
 
 ModelResult fit_model(const Model& model, const SampledReference& reference, const ClosedFormInput& input,
                       FitTimings* timings, const FitConstraints& constraints) {
-    if (constraints.pin_f0 && constraints.gamut_fit)
-        throw UsageError("--pin F0 and --gamut-fit together: F(1) = R(1) leaves [0, 1] wherever R(1) does; choose one");
+    constraints.check_combination();
     if (constraints.pin_f0 && !model.can_pin_f0())
         throw UsageError("--pin F0: model " + std::string(model.id()) + " cannot hold F(1) at a given value");
     const RGB R1 = reference.dense().back().value;  // R(1): the dense grid ends at μ = 1
@@ -99,7 +101,8 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
             r.value = EvaluatedParameters{params, compute_metrics(model, params, reference)};
             for (int c = 0; c < 3; ++c)
                 if (const std::string out = outside_bounds(model, params[c]); !out.empty())
-                    r.outside_bounds += (r.outside_bounds.empty() ? "" : "; ") + std::string(kChannelNames[c]) + ": " + out;
+                    r.outside_bounds +=
+                        (r.outside_bounds.empty() ? "" : "; ") + std::string(kChannelNames[c]) + ": " + out;
             const double worst = worst_channel(r.value->metrics.rms(metric));
             if (worst < best_worst) best_worst = worst, result.best_closed = result.closed_forms.size();
         } else {
@@ -124,8 +127,8 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
         }
         ChannelFit channel = model.fit(target, starts, channel_constraints);
         if (channel.params.empty())
-            throw std::runtime_error(std::string(model.id()) + ": no start of the " + kChannelNames[c] + " fit converged" +
-                                     (constraints.gamut_fit ? " inside [0, 1] (--gamut-fit)" : ""));
+            throw std::runtime_error(std::string(model.id()) + ": no start of the " + kChannelNames[c] +
+                                     " fit converged" + (constraints.gamut_fit ? " inside [0, 1] (--gamut-fit)" : ""));
         fit.value.params[c] = channel.params;
         fit.solver[c] = channel.solver;
     }
@@ -172,9 +175,10 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
             const std::string out = outside_bounds(model, fit.value.params[c]);
             const double F1 = model.evaluate(std::span<const double>(fit.value.params[c]), 1.0);
             if (!out.empty() || !(std::abs(F1 - R1[c]) <= 1e-9))
-                fit.unrepresentable[c] = "--pin F0: F(1) = R(1) = " + number(R1[c]) + " needs " +
-                                         (out.empty() ? "a value the model cannot take (F(1) = " + number(F1) + ")" : out) +
-                                         ": the model cannot represent these data with F0 pinned";
+                fit.unrepresentable[c] =
+                    "--pin F0: F(1) = R(1) = " + number(R1[c]) + " needs " +
+                    (out.empty() ? "a value the model cannot take (F(1) = " + number(F1) + ")" : out) +
+                    ": the model cannot represent these data with F0 pinned";
         }
     }
     clock.charge(t.metrics);
@@ -190,12 +194,13 @@ MaterialFit fit_material(const Material& material, const Colorimetry& colorimetr
     const SampledReference& reference = *shared_reference;
     clock.charge(timings.reference);
     if (request.error.metric == ErrorMetric::rel && reference.rel_undefined())
-        throw InputError(InputLocation(material.provenance.file),
-                         "relative error undefined for " + material.id + ": " + *reference.rel_undefined() +
-                             " (use the abs error metric)");
+        throw InputError(InputLocation(material.provenance.file), "relative error undefined for " + material.id + ": " +
+                                                                      *reference.rel_undefined() +
+                                                                      " (use the abs error metric)");
     MaterialFit result{material, curve.raw_white(), curve(1.0), {}, {}, shared_reference};
     // What --extrapolate did travels with the material's own warnings: the record, the CLI and the exports say it.
-    result.material.warnings.insert(result.material.warnings.end(), curve.held_constant().begin(), curve.held_constant().end());
+    result.material.warnings.insert(result.material.warnings.end(), curve.held_constant().begin(),
+                                    curve.held_constant().end());
     const ClosedFormInput input = closed_form_input(curve, material, request.spectral);
     for (const Model* model : request.models)
         result.models.push_back(fit_model(*model, reference, input, &timings, request.constraints));

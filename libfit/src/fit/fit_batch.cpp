@@ -13,8 +13,8 @@
 namespace metalfit {
 
 std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, bool all,
-                                                        const std::vector<std::string>& materials, const std::string& source,
-                                                        const UserFileLabels& labels) {
+                                                        const std::vector<std::string>& materials,
+                                                        const std::string& source, const UserFileLabels& labels) {
     std::vector<std::function<Material()>> loaders;
     if (all && !labels.empty()) throw UsageError("--name and --reference label one file of your own, not --all");
     if (all) {
@@ -56,13 +56,16 @@ void fit_materials_in_order(const std::vector<std::function<Material()>>& loader
     const auto worker = [&](const ColorSpaceConverter& converter) {
         std::unique_lock lock(mutex);
         for (;;) {
-            const auto may_start = [&] { return stopped || next_to_start >= count || next_to_start < next_to_hand + window; };
+            const auto may_start = [&] {
+                return stopped || next_to_start >= count || next_to_start < next_to_hand + window;
+            };
             if (!may_start()) {
                 const auto waiting_since = std::chrono::steady_clock::now();
                 advanced.wait(lock, may_start);
                 if (statistics) {
                     ++statistics->window_waits;
-                    statistics->window_wait_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - waiting_since).count();
+                    statistics->window_wait_s +=
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - waiting_since).count();
                 }
             }
             if (stopped || next_to_start >= count) return;
@@ -117,7 +120,9 @@ void fit_materials_in_order(const std::vector<std::function<Material()>>& loader
     // One OCIO processor per thread: the calling thread uses the caller's; the others' are made here, before any thread
     // starts, so that a failure is an ordinary error and not an exception inside a thread.
     std::vector<ColorSpaceConverter> converters;
-    for (int t = 1; t < threads; ++t) converters.push_back(ColorSpaceConverter::create(colour.config, colour.converter.space(), colour.converter.xyz_space()));
+    for (int t = 1; t < threads; ++t)
+        converters.push_back(
+            ColorSpaceConverter::create(colour.config, colour.converter.space(), colour.converter.xyz_space()));
     {
         std::vector<std::jthread> pool;
         for (const ColorSpaceConverter& converter : converters) pool.emplace_back(worker, std::cref(converter));
@@ -130,8 +135,9 @@ std::vector<MaterialFit> fit_materials(const std::vector<std::function<Material(
                                        const MaterialFitRequest& request, int jobs, const BatchProgress& progress) {
     std::vector<MaterialFit> fits;
     fits.reserve(loaders.size());
-    fit_materials_in_order(loaders, colour, request, jobs, [&](std::size_t, MaterialFit&& fit) { fits.push_back(std::move(fit)); },
-                           progress);
+    fit_materials_in_order(
+        loaders, colour, request, jobs, [&](std::size_t, MaterialFit&& fit) { fits.push_back(std::move(fit)); },
+        progress);
     return fits;
 }
 

@@ -18,7 +18,8 @@ Json rgb_json(const RGB& v) { return Json::array({v.r, v.g, v.b}); }
 Json params_json(const Model& model, const ModelParameters& params) {
     Json j = Json::object();
     const auto parameters = model.parameters();
-    for (std::size_t i = 0; i < parameters.size(); ++i) j[std::string(parameters[i].name)] = rgb_json(params.parameter(i));
+    for (std::size_t i = 0; i < parameters.size(); ++i)
+        j[std::string(parameters[i].name)] = rgb_json(params.parameter(i));
     return j;
 }
 
@@ -50,23 +51,20 @@ Json solver_json(const FitResult& fit) {
 
 Json data_provenance(const Material& material) {
     const Provenance& p = material.provenance;
-    return {{"file", p.file.string()},  {"sha256", p.sha256},       {"format", p.format},
+    return {{"file", p.file.string()},  {"sha256", p.sha256},        {"format", p.format},
             {"data_type", p.data_type}, {"reference", p.references}, {"note", p.note}};
 }
 
 }  // namespace
 
 Json metrics_record(const Metrics& m) {
-    return {{"rel_rms", per_channel(m.rel_rms)},
-            {"abs_rms", per_channel(m.abs_rms)},
-            {"max_rel", per_channel(m.max_rel)},
-            {"max_abs", per_channel(m.max_abs)},
-            {"de2000_mean", m.de2000_mean},
-            {"de2000_max", m.de2000_max},
+    return {{"rel_rms", per_channel(m.rel_rms)},      {"abs_rms", per_channel(m.abs_rms)},
+            {"max_rel", per_channel(m.max_rel)},      {"max_abs", per_channel(m.max_abs)},
+            {"de2000_mean", m.de2000_mean},           {"de2000_max", m.de2000_max},
             {"albedo_err", per_channel(m.albedo_err)}};
 }
 
-// params, metrics (exactly the seven keys of DESIGN.md) and where the maxima are.
+// params, metrics (exactly the seven keys of docs/fitting.md, "Definitions") and where the maxima are.
 Json evaluated_record(const Model& model, const EvaluatedParameters& value) {
     const Metrics& m = value.metrics;
     return {{"params", params_json(model, value.params)},
@@ -90,8 +88,7 @@ Json model_record(const ModelResult& result) {
         if (form.value) {
             j.update(evaluated_record(model, *form.value));
             if (!form.outside_bounds.empty()) j["outside_bounds"] = form.outside_bounds;
-        }
-        else {
+        } else {
             j["undefined"] = form.undefined;
             all_undefined += (all_undefined.empty() ? "" : "; ") + form.id + ": " + form.undefined;
         }
@@ -111,7 +108,8 @@ Json model_record(const ModelResult& result) {
     if (std::any_of(result.fit.unrepresentable.begin(), result.fit.unrepresentable.end(),
                     [](const std::string& u) { return !u.empty(); })) {
         Json unrepresentable = Json::array();
-        for (const std::string& u : result.fit.unrepresentable) unrepresentable.push_back(u.empty() ? Json(nullptr) : Json(u));
+        for (const std::string& u : result.fit.unrepresentable)
+            unrepresentable.push_back(u.empty() ? Json(nullptr) : Json(u));
         fit["unrepresentable"] = unrepresentable;
     }
     return {{"title", model.title()}, {"parameters", names}, {"closed", closed}, {"closed_forms", forms}, {"fit", fit}};
@@ -155,26 +153,27 @@ Json material_record(const MaterialFit& m, const BudgetChoice* budget) {
 Json fit_record_without_materials(const FitRecordContext& context, const BudgetChoice* first_budget) {
     const ErrorSettings& e = context.error;
     Json record = {{"schema", kFitRecordSchema},
-            {"provenance",
-             {{"metalfit_version", METALFIT_VERSION},
-              {"cmf", to_string(context.observer)},
-              {"illuminant", to_string(context.illuminant)},
-              {"adaptation", to_string(context.adaptation)},
-              {"adapted", context.adapted},
-              {"convention", to_string(context.convention)},
-              {"ocio_config", {{"file", context.config.path.string()},
-                               {"origin", context.config.origin},
-                               {"sha256", sha256_file(context.config.path)}}},
-              {"color_space", context.space},
-              {"interpolation", to_string(context.spectral.interpolation)},
-              {"out_of_range", context.spectral.out_of_range == OutOfRange::clamp ? "clamp" : "error"},
-              {"white_balance", "R_c = RGB_c(F) / RGB_c(perfect reflector)"},
-              {"nodes", e.nodes},
-              {"quadrature", "Gauss-Legendre on [0, 1]"},
-              {"max_grid", kDenseIntervals + 1},
-              {"metric", to_string(e.metric)},
-              {"weight", to_string(e.weight)}}},
-            {"materials", Json::object()}};
+                   {"provenance",
+                    {{"metalfit_version", METALFIT_VERSION},
+                     {"cmf", to_string(context.observer)},
+                     {"illuminant", to_string(context.illuminant)},
+                     {"adaptation", to_string(context.adaptation)},
+                     {"adapted", context.adapted},
+                     {"convention", to_string(context.convention)},
+                     {"ocio_config",
+                      {{"file", context.config.path.string()},
+                       {"origin", context.config.origin},
+                       {"sha256", sha256_file(context.config.path)}}},
+                     {"color_space", context.space},
+                     {"interpolation", to_string(context.spectral.interpolation)},
+                     {"out_of_range", to_string(context.spectral.out_of_range)},
+                     {"white_balance", "R_c = RGB_c(F) / RGB_c(perfect reflector)"},
+                     {"nodes", e.nodes},
+                     {"quadrature", "Gauss-Legendre on [0, 1]"},
+                     {"max_grid", kDenseIntervals + 1},
+                     {"metric", to_string(e.metric)},
+                     {"weight", to_string(e.weight)}}},
+                   {"materials", Json::object()}};
     // Only when a constraint is on, so that unconstrained records keep their keys.
     if (context.constraints.pin_f0) record["provenance"]["constraints"]["pin_f0"] = true;
     if (context.constraints.gamut_fit) record["provenance"]["constraints"]["gamut_fit"] = true;

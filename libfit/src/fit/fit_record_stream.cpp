@@ -31,7 +31,8 @@ void FitRecordStream::write_head(const BudgetChoice* first_budget) {
     // and including the materials' opening brace.
     const std::string whole = fit_record_without_materials(context_, first_budget).dump(kIndent);
     const std::string empty_end = "{}\n}";
-    if (whole.size() < empty_end.size() || whole.compare(whole.size() - empty_end.size(), empty_end.size(), empty_end) != 0)
+    if (whole.size() < empty_end.size() ||
+        whole.compare(whole.size() - empty_end.size(), empty_end.size(), empty_end) != 0)
         throw std::logic_error("FitRecordStream: the record does not end with its materials");
     write_(std::string_view(whole).substr(0, whole.size() - empty_end.size() + 1));
     head_written_ = true;

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/text.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/models/schlick/schlick.hpp"
@@ -33,11 +34,7 @@ std::vector<Display8> to_display(const std::vector<RGB>& linear, const DisplayTr
     return out;
 }
 
-std::string fixed4(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4f", v);
-    return text;
-}
+std::string fixed4(double v) { return fixed_text(v, 4); }
 
 bool in_gamut(const RGB& v) { return v.min() >= 0.0 && v.max() <= 1.0; }
 
@@ -69,8 +66,16 @@ MetalTable metal_table(const Catalog& catalog, const MetalTableColour& colour) {
         const Material material = load_material(catalog, entry.id);
         const ReferenceCurve working(material, colour.colorimetry, colour.working, colour.spectral);
         const ReferenceCurve scene(material, colour.colorimetry, colour.scene_linear, colour.spectral);
-        MetalTableRow row{entry.id, entry.name, entry.kind, entry.primary.source, entry.primary.reference,
-                          entry.primary.note, working(1.0), {}, {}, {}};
+        MetalTableRow row{entry.id,
+                          entry.name,
+                          entry.kind,
+                          entry.primary.source,
+                          entry.primary.reference,
+                          entry.primary.note,
+                          working(1.0),
+                          {},
+                          {},
+                          {}};
         row.tint = f82_tint(row.f0, working(kMuF82));
         const RGB scene_f0 = scene(1.0);
         scene_values.push_back(scene_f0);

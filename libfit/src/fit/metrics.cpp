@@ -21,7 +21,8 @@ Metrics compute_metrics(const Model& model, const ModelParameters& params, const
     const std::span<const double> mu = reference.mu();
     const std::size_t n = mu.size();
     const auto curves = std::make_unique_for_overwrite<double[]>(3 * n);  // each written in full by evaluate
-    for (int c = 0; c < 3; ++c) model.evaluate(std::span<const double>(params[c]), mu, std::span<double>(&curves[c * n], n));
+    for (int c = 0; c < 3; ++c)
+        model.evaluate(std::span<const double>(params[c]), mu, std::span<double>(&curves[c * n], n));
     std::vector<RGB> values;
     values.reserve(n);
     for (std::size_t i = 0; i < n; ++i) values.emplace_back(curves[i], curves[n + i], curves[2 * n + i]);
@@ -65,8 +66,7 @@ Metrics compute_metrics(const Model& model, const ModelParameters& params, const
     // The dense grid ends at μ = 1 exactly (SampledReference): the last value is the model at normal incidence.
     const SampledReference::Sample& normal = reference.dense().back();
     const RGB& at_normal = values.back();
-    for (int c = 0; c < 3; ++c)
-        m.err_f0[c] = normal.value[c] > 0.0 ? at_normal[c] / normal.value[c] - 1.0 : nan;
+    for (int c = 0; c < 3; ++c) m.err_f0[c] = normal.value[c] > 0.0 ? at_normal[c] / normal.value[c] - 1.0 : nan;
     return m;
 }
 

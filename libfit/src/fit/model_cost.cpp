@@ -36,8 +36,8 @@ std::optional<double> CostTable::cost_of(std::string_view model) const {
 }
 
 CostTable builtin_cost_table() {
-    CostTable table{"built-in: SPIR-V ops per model (glslangValidator -V -Os, as metalfit bench counts them)",
-                    "SPIR-V ops", {}};
+    CostTable table{
+        "built-in: SPIR-V ops per model (glslangValidator -V -Os, as metalfit bench counts them)", "SPIR-V ops", {}};
     for (const ModelCost& c : kSpirvOps) table.costs.push_back(c);
     return table;
 }
@@ -52,7 +52,8 @@ CostTable cost_table_from_bench_json(const std::filesystem::path& file) {
         throw InputError({file}, std::string("invalid JSON: ") + e.what());
     }
     if (!j.is_object() || !j.contains("schema") || j["schema"] != "metalfit.bench/1")
-        throw InputError({file, 0, "schema"}, "not a metalfit bench report (expected \"metalfit.bench/1\" from `metalfit bench --json`)");
+        throw InputError({file, 0, "schema"},
+                         "not a metalfit bench report (expected \"metalfit.bench/1\" from `metalfit bench --json`)");
     const auto rows = j.find("rows");
     if (rows == j.end() || !rows->is_array()) throw InputError({file, 0, "rows"}, "expected a list");
     struct Row {
@@ -63,7 +64,8 @@ CostTable cost_table_from_bench_json(const std::filesystem::path& file) {
     for (std::size_t i = 0; i < rows->size(); ++i) {
         const auto& r = (*rows)[i];
         const std::string where = "rows[" + std::to_string(i) + "]";
-        if (!r.is_object() || !r.contains("id") || !r["id"].is_string() || !r.contains("kind") || !r["kind"].is_string())
+        if (!r.is_object() || !r.contains("id") || !r["id"].is_string() || !r.contains("kind") ||
+            !r["kind"].is_string())
             throw InputError({file, 0, where}, "expected an object with string id and kind");
         if (r["kind"] != "model") continue;
         Row row{r["id"].get<std::string>(), {}, {}};
@@ -81,8 +83,9 @@ CostTable cost_table_from_bench_json(const std::filesystem::path& file) {
     if (models.empty()) throw InputError({file, 0, "rows"}, "no model rows");
     const bool gpu = std::all_of(models.begin(), models.end(), [](const Row& r) { return r.gpu.has_value(); });
     CostTable table;
-    table.source = file.string() + (gpu ? ": GPU shader ratio to conductor-rgb (metalfit bench)"
-                                        : ": CPU scalar ratio to conductor-rgb (metalfit bench; no GPU figures for every model)");
+    table.source =
+        file.string() + (gpu ? ": GPU shader ratio to conductor-rgb (metalfit bench)"
+                             : ": CPU scalar ratio to conductor-rgb (metalfit bench; no GPU figures for every model)");
     table.unit = gpu ? "x conductor-rgb (GPU)" : "x conductor-rgb (CPU)";
     for (const Row& r : models) {
         const std::optional<double> cost = gpu ? r.gpu : r.cpu;

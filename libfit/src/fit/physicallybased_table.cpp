@@ -59,11 +59,12 @@ Json references(const PhysicallyBasedRow& row) {
         paper["url"] = "https://github.com/polyanskiy/refractiveindex.info-database/blob/master/" + row.database_path;
     }
     refs.push_back(paper);
-    refs.push_back({{"title", "Refractiveindex.info database of optical constants"},
-                    {"author", "Polyanskiy, M. N."},
-                    {"url", "https://github.com/polyanskiy/refractiveindex.info-database/blob/master/" + row.database_path},
-                    {"doi", "https://doi.org/10.1038/s41597-023-02898-2"},
-                    {"year", "2024"}});
+    refs.push_back(
+        {{"title", "Refractiveindex.info database of optical constants"},
+         {"author", "Polyanskiy, M. N."},
+         {"url", "https://github.com/polyanskiy/refractiveindex.info-database/blob/master/" + row.database_path},
+         {"doi", "https://doi.org/10.1038/s41597-023-02898-2"},
+         {"year", "2024"}});
     return refs;
 }
 
@@ -108,16 +109,19 @@ Json physicallybased_json(const PhysicallyBasedTable& table) {
         data.push_back({{"name", r.name},
                         {"color", in_spaces(s.f0, a.f0)},
                         {"metalness", 1},
-                        {"specularColor", Json::array({{{"format", Json::array({"F82"})}, {"color", in_spaces(s.f82_tint, a.f82_tint)}},
-                                                       {{"format", Json::array({"Gulbrandsen"})},
-                                                        {"color", in_spaces(s.edge_tint, a.edge_tint)}}})},
+                        {"specularColor",
+                         Json::array({{{"format", Json::array({"F82"})}, {"color", in_spaces(s.f82_tint, a.f82_tint)}},
+                                      {{"format", Json::array({"Gulbrandsen"})},
+                                       {"color", in_spaces(s.edge_tint, a.edge_tint)}}})},
                         {"roughness", 0},
                         {"complexIor", Json::array({complex_ior("srgb-linear", s), complex_ior("acescg", a)})},
                         {"category", Json::array({"Metal"})},
                         {"references", references(r)}});
     }
     return {{"header",
-             {{"schemaVersion", 2.1}, {"license", licence}, {"origin", std::string("metalfit ") + METALFIT_VERSION + " table"}}},
+             {{"schemaVersion", 2.1},
+              {"license", licence},
+              {"origin", std::string("metalfit ") + METALFIT_VERSION + " table"}}},
             {"data", data}};
 }
 

@@ -49,8 +49,10 @@ CatalogSource read_source(const nlohmann::json& j, const std::filesystem::path& 
         if (!range->is_array() || range->size() != 2 || !(*range)[0].is_number() || !(*range)[1].is_number() ||
             !((*range)[0].get<double>() < (*range)[1].get<double>()))
             throw InputError({file, 0, where + ".range_nm"}, "expected [min, max] in nm");
-        if (!points->is_number_unsigned()) throw InputError({file, 0, where + ".points_360_830"}, "expected a non-negative integer");
-        s.coverage = CatalogCoverage{{(*range)[0].get<double>(), (*range)[1].get<double>()}, points->get<std::size_t>()};
+        if (!points->is_number_unsigned())
+            throw InputError({file, 0, where + ".points_360_830"}, "expected a non-negative integer");
+        s.coverage =
+            CatalogCoverage{{(*range)[0].get<double>(), (*range)[1].get<double>()}, points->get<std::size_t>()};
     }
     return s;
 }
@@ -105,7 +107,8 @@ Catalog Catalog::load(const std::filesystem::path& data_dir) {
         if (auto a = m.find("alternates"); a != m.end()) {
             if (!a->is_array()) throw InputError({file, 0, where + ".alternates"}, "expected a list");
             for (std::size_t k = 0; k < a->size(); ++k)
-                e.alternates.push_back(read_source((*a)[k], file, data_dir, where + ".alternates[" + std::to_string(k) + "]"));
+                e.alternates.push_back(
+                    read_source((*a)[k], file, data_dir, where + ".alternates[" + std::to_string(k) + "]"));
         }
         catalog.entries_.push_back(std::move(e));
     }
@@ -131,7 +134,8 @@ bool looks_like_path(std::string_view argument) {
 
 Material load_material(const Catalog& catalog, std::string_view material_or_path, std::string_view source,
                        const UserFileLabels& labels) {
-    if (const CatalogEntry* entry = catalog.find(material_or_path); entry != nullptr && !looks_like_path(material_or_path)) {
+    if (const CatalogEntry* entry = catalog.find(material_or_path);
+        entry != nullptr && !looks_like_path(material_or_path)) {
         if (!labels.empty())
             throw UsageError("--name and --reference label a file of your own, not the catalog material '" + entry->id +
                              "' (its reference is in the catalog)");
@@ -156,7 +160,8 @@ Material load_material(const Catalog& catalog, std::string_view material_or_path
         throw UsageError("unknown material '" + std::string(material_or_path) +
                          "' (see `metalfit list`); a file of that name is here, but files are read by their extension "
                          "(.yml, .yaml, .csv, .tsv, .txt or .dat): rename it, or give it as a path with one");
-    throw UsageError("unknown material '" + std::string(material_or_path) + "' (see `metalfit list`, or give a .yml/.csv path)");
+    throw UsageError("unknown material '" + std::string(material_or_path) +
+                     "' (see `metalfit list`, or give a .yml/.csv path)");
 }
 
 }  // namespace metalfit

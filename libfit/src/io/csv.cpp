@@ -4,13 +4,13 @@
 #include <optional>
 #include <sstream>
 
+#include "base/parse_number.hpp"
+#include "io/table_columns.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
 #include "libfit/base/input_file.hpp"
 #include "libfit/base/utf8.hpp"
 #include "libfit/io/refractiveindex.hpp"
-#include "base/parse_number.hpp"
-#include "io/table_columns.hpp"
 
 namespace metalfit {
 
@@ -42,7 +42,8 @@ Material load_nk_csv(const std::filesystem::path& file) {
         }
         if (!layout)
             throw InputError(here, "a data row before any header line (expected the header 'wavelength_nm,n,k' or "
-                                   "'wavelength_um,n,k', found '" + std::string(line) + "')");
+                                   "'wavelength_um,n,k', found '" +
+                                       std::string(line) + "')");
         if (std::max(samples.n.size(), samples.k.size()) >= kMaxTableRows)
             throw InputError(here, "more than " + std::to_string(kMaxTableRows) + " data rows (the limit)");
         detail::add_table_row(line, *layout, here, samples);
@@ -53,8 +54,10 @@ Material load_nk_csv(const std::filesystem::path& file) {
 
     // Rows of n < 1e-6 given without k: |n + ik| with k where it is known (k = 0 without a k column).
     if (!samples.small_n.empty()) {
-        const std::optional<Spectrum> k = samples.k.empty() ? std::nullopt : std::optional<Spectrum>(Spectrum(samples.k));
-        detail::check_small_n(samples.small_n, [&](double nm) { return k ? (*k)(nm, Interpolation::linear, OutOfRange::clamp) : 0.0; });
+        const std::optional<Spectrum> k =
+            samples.k.empty() ? std::nullopt : std::optional<Spectrum>(Spectrum(samples.k));
+        detail::check_small_n(samples.small_n,
+                              [&](double nm) { return k ? (*k)(nm, Interpolation::linear, OutOfRange::clamp) : 0.0; });
     }
 
     Material m;
@@ -77,7 +80,7 @@ Material load_nk_csv(const std::filesystem::path& file) {
     m.source = file.filename().string();
     m.provenance.file = file;
     m.provenance.format = detail::table_format_name(layout->separator);
-    m.provenance.data_type = blocks > 1                                   ? "tabulated n + tabulated k"
+    m.provenance.data_type = blocks > 1                                  ? "tabulated n + tabulated k"
                              : layout->has(detail::ColumnQuantity::eps1) ? "tabulated e1 e2 (converted to n, k)"
                                                                          : "tabulated nk";
     m.provenance.sha256 = sha256_bytes(bytes);

@@ -8,19 +8,18 @@
 #include <optional>
 #include <sstream>
 
+#include "base/parse_number.hpp"
+#include "base/yaml_structure.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
 #include "libfit/base/input_file.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/utf8.hpp"
-#include "base/parse_number.hpp"
-#include "base/yaml_structure.hpp"
 
 namespace metalfit {
 namespace {
 
-
-constexpr const char* kSupportedTypes =
-    "tabulated nk, tabulated n, tabulated k, formula 1, formula 2";
+constexpr const char* kSupportedTypes = "tabulated nk, tabulated n, tabulated k, formula 1, formula 2";
 
 // The file's text; InputError naming the line of the first byte that is not UTF-8 (yaml-cpp would stop on some
 // with an exception that names no file, and pass overlong forms, surrogates and code points above U+10FFFF on).
@@ -29,7 +28,8 @@ std::string read_text(const std::filesystem::path& file) {
     if (const auto problem = find_invalid_utf8(text))
         throw InputError({file, problem->line}, problem->reason + " (a YAML file is UTF-8 text)");
     if (const auto nul = text.find('\0'); nul != std::string::npos)
-        throw InputError({file, 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n'))},
+        throw InputError({file, 1 + static_cast<int>(std::count(
+                                        text.begin(), text.begin() + static_cast<std::ptrdiff_t>(nul), '\n'))},
                          "a NUL byte (not a text file)");
     return text;
 }
@@ -43,7 +43,8 @@ std::vector<std::string> split_lines(const std::string& text) {
 
 class Reader {
 public:
-    explicit Reader(std::filesystem::path file) : file_(std::move(file)), text_(read_text(file_)), lines_(split_lines(text_)) {}
+    explicit Reader(std::filesystem::path file)
+        : file_(std::move(file)), text_(read_text(file_)), lines_(split_lines(text_)) {}
 
     Material read() {
         YAML::Node root;
@@ -55,7 +56,8 @@ public:
         } catch (const YAML::Exception& e) {
             throw InputError({file_}, std::string("cannot read YAML: ") + e.what());
         }
-        if (!root.IsMap()) throw InputError({file_, 1}, "not a refractiveindex.info file (expected a mapping with DATA)");
+        if (!root.IsMap())
+            throw InputError({file_, 1}, "not a refractiveindex.info file (expected a mapping with DATA)");
 
         Material m;
         m.provenance.file = file_;
@@ -99,10 +101,10 @@ public:
         }
         if (!n) throw InputError({file_, line_of(data), "DATA"}, "no n data (only k)");
         // A "tabulated n" row with n near 0 is |n + ik| near 0 where k is too there (no k data: k = 0 everywhere).
-        detail::check_small_n(small_n_, [&](double nm) { return k ? (*k)(nm, Interpolation::linear, OutOfRange::clamp) : 0.0; });
+        detail::check_small_n(small_n_,
+                              [&](double nm) { return k ? (*k)(nm, Interpolation::linear, OutOfRange::clamp) : 0.0; });
         if (!k) {
-            m.warnings.push_back(file_.string() + ": no k data (" + types.front() +
-                                 " only): k = 0 assumed");
+            m.warnings.push_back(file_.string() + ": no k data (" + types.front() + " only): k = 0 assumed");
             k.emplace(ConstantSpectrum{0.0});
         }
         std::string joined;
@@ -117,9 +119,7 @@ public:
     }
 
 private:
-    int line_of(const YAML::Node& node) const {
-        return node && node.Mark().line >= 0 ? node.Mark().line + 1 : 0;
-    }
+    int line_of(const YAML::Node& node) const { return node && node.Mark().line >= 0 ? node.Mark().line + 1 : 0; }
 
     std::string scalar(const YAML::Node& node, const std::string& field) const {
         if (!node.IsScalar()) throw InputError({file_, line_of(node), field}, "expected a text value");
@@ -165,8 +165,7 @@ private:
     }
 
     // Rows "λ v1 [v2]" of a tabulated block; columns = number of values after λ.
-    std::pair<SpectralCurve, std::optional<SpectralCurve>> tabulated(const YAML::Node& block,
-                                                                     const std::string& where,
+    std::pair<SpectralCurve, std::optional<SpectralCurve>> tabulated(const YAML::Node& block, const std::string& where,
                                                                      int columns, bool is_k = false) {
         const std::string field = where + ".data";
         const YAML::Node data = block["data"];
@@ -186,8 +185,7 @@ private:
             const std::vector<double> v = detail::parse_row(fields, here);
             detail::check_optical_row(v, fields, columns == 2 ? "nk" : is_k ? "k" : "n", here);
             const double nm = detail::wavelength_nm(v[0], 1000.0, fields[0], here);  // µm → nm
-            for (int c = 1; c <= columns; ++c)
-                detail::check_index_limit(v[c], is_k || c == 2, fields[c], here);
+            for (int c = 1; c <= columns; ++c) detail::check_index_limit(v[c], is_k || c == 2, fields[c], here);
             if (columns == 2) detail::check_index_modulus(v[1], v[2], here);
             if (columns == 1 && !is_k && v[1] < detail::kMinIndexModulus) {
                 small_n_.push_back({here, nm, v[1]});
@@ -219,7 +217,8 @@ private:
         if (!coefficients) throw InputError({file_, line_of(block), where + ".coefficients"}, "missing");
         const auto r = numbers(range, where + ".wavelength_range");
         if (r.size() != 2 || !(r[0] > 0.0 && r[1] > r[0]))
-            throw InputError({file_, line_of(range), where + ".wavelength_range"}, "expected two increasing positive wavelengths in µm");
+            throw InputError({file_, line_of(range), where + ".wavelength_range"},
+                             "expected two increasing positive wavelengths in µm");
         if (!(r[1] * 1000.0 <= 1e12))
             throw InputError({file_, line_of(range), where + ".wavelength_range"}, "wavelength out of range (µm)");
         auto c = numbers(coefficients, where + ".coefficients");
@@ -231,15 +230,16 @@ private:
         const InputLocation here{file_, line_of(coefficients), where + ".coefficients"};
         const auto check = [&](double nm) {
             const double n = f(nm, OutOfRange::clamp);
-            char text[64];
-            std::snprintf(text, sizeof text, "%.6g at %.6g \xc2\xb5m", n, nm / 1000.0);
+            const std::string text = significant_text(n, 6) + " at " + significant_text(nm / 1000.0, 6) + " \xc2\xb5m";
             if (!(n >= detail::kMinIndexModulus))
-                throw InputError(here, std::string("the formula gives n = ") + text + " (n\xc2\xb2 < 0, a pole or an overflow)");
+                throw InputError(here, std::string("the formula gives n = ") + text +
+                                           " (n\xc2\xb2 < 0, a pole or an overflow)");
             detail::check_index_limit(n, false, text, here);
         };
         check(r[0] * 1000.0);
         check(r[1] * 1000.0);
-        for (double nm = std::ceil(std::max(r[0] * 1000.0, 360.0)); nm <= std::min(r[1] * 1000.0, 830.0); nm += 1.0) check(nm);
+        for (double nm = std::ceil(std::max(r[0] * 1000.0, 360.0)); nm <= std::min(r[1] * 1000.0, 830.0); nm += 1.0)
+            check(nm);
         return f;
     }
 
@@ -252,8 +252,6 @@ private:
 
 }  // namespace
 
-Material load_refractiveindex_yaml(const std::filesystem::path& file) {
-    return Reader(file).read();
-}
+Material load_refractiveindex_yaml(const std::filesystem::path& file) { return Reader(file).read(); }
 
 }  // namespace metalfit

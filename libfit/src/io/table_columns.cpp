@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "base/parse_number.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/text.hpp"
 
 namespace metalfit::detail {
@@ -18,8 +19,9 @@ constexpr const char* kExpected =
 
 std::string lower_ascii(std::string_view s) {
     std::string out(s);
-    std::transform(out.begin(), out.end(), out.begin(),
-                   [](unsigned char c) { return c < 0x80 ? static_cast<char>(std::tolower(c)) : static_cast<char>(c); });
+    std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) {
+        return c < 0x80 ? static_cast<char>(std::tolower(c)) : static_cast<char>(c);
+    });
     return out;
 }
 
@@ -28,15 +30,16 @@ std::pair<std::string, std::string> name_and_unit(std::string_view header) {
     std::string h = lower_ascii(trim(header));
     if (const auto open = h.find_first_of("(["); open != std::string::npos) {
         const auto close = h.find_first_of(")]", open);
-        return {std::string(trim(h.substr(0, open))),
-                std::string(trim(h.substr(open + 1, close == std::string::npos ? std::string::npos : close - open - 1)))};
+        return {
+            std::string(trim(h.substr(0, open))),
+            std::string(trim(h.substr(open + 1, close == std::string::npos ? std::string::npos : close - open - 1)))};
     }
     if (const auto slash = h.find('/'); slash != std::string::npos && h.substr(slash) != "/cm")
         return {std::string(trim(h.substr(0, slash))), std::string(trim(h.substr(slash + 1)))};
     if (const auto underscore = h.rfind('_'); underscore != std::string::npos) {
         const std::string unit = h.substr(underscore + 1);
-        for (const char* known : {"nm", "um", "\xc2\xb5m", "\xce\xbcm", "micron", "a", "\xc3\x85", "\xc3\xa5", "\xe2\x84\xab",
-                                  "angstrom", "ev", "cm-1"})
+        for (const char* known : {"nm", "um", "\xc2\xb5m", "\xce\xbcm", "micron", "a", "\xc3\x85", "\xc3\xa5",
+                                  "\xe2\x84\xab", "angstrom", "ev", "cm-1"})
             if (unit == known) return {h.substr(0, underscore), unit};
     }
     return {h, ""};
@@ -65,8 +68,7 @@ TableColumn classify(std::string_view header, const InputLocation& where) {
         c.quantity = ColumnQuantity::wavelength;
         if (unit.empty()) {
             // refractiveindex.info's own CSV download writes "wl" in micrometres; any other name must say its unit.
-            if (name != "wl")
-                throw InputError(where, "column '" + c.header + "' does not say its unit; " + kExpected);
+            if (name != "wl") throw InputError(where, "column '" + c.header + "' does not say its unit; " + kExpected);
             c.to_nm = 1000.0;
         } else if (unit == "nm") {
             c.to_nm = 1.0;
@@ -93,11 +95,17 @@ TableColumn classify(std::string_view header, const InputLocation& where) {
         c.quantity = ColumnQuantity::n;
     } else if (one_of(name, {"k", "kappa", "\xce\xba", "ni", "nimag"})) {
         c.quantity = ColumnQuantity::k;
-    } else if (one_of(name, {"e1", "eps1", "epsilon1", "\xce\xb5" "1", "\xce\xb5\xe2\x82\x81", "er", "epsr", "epsilonr",
-                             "\xce\xb5r", "re(eps)", "re(epsilon)", "re(\xce\xb5)"})) {
+    } else if (one_of(name, {"e1", "eps1", "epsilon1",
+                             "\xce\xb5"
+                             "1",
+                             "\xce\xb5\xe2\x82\x81", "er", "epsr", "epsilonr", "\xce\xb5r", "re(eps)", "re(epsilon)",
+                             "re(\xce\xb5)"})) {
         c.quantity = ColumnQuantity::eps1;
-    } else if (one_of(name, {"e2", "eps2", "epsilon2", "\xce\xb5" "2", "\xce\xb5\xe2\x82\x82", "ei", "epsi", "epsiloni",
-                             "\xce\xb5i", "im(eps)", "im(epsilon)", "im(\xce\xb5)"})) {
+    } else if (one_of(name, {"e2", "eps2", "epsilon2",
+                             "\xce\xb5"
+                             "2",
+                             "\xce\xb5\xe2\x82\x82", "ei", "epsi", "epsiloni", "\xce\xb5i", "im(eps)", "im(epsilon)",
+                             "im(\xce\xb5)"})) {
         c.quantity = ColumnQuantity::eps2;
     }
     return c;
@@ -111,8 +119,10 @@ std::vector<std::string> header_fields(std::string_view line, FieldSeparator sep
         return out;
     }
     for (std::string_view f : split_whitespace(line)) {
-        if (!out.empty() && (f.front() == '(' || f.front() == '[')) out.back() += " " + std::string(f);
-        else out.emplace_back(f);
+        if (!out.empty() && (f.front() == '(' || f.front() == '['))
+            out.back() += " " + std::string(f);
+        else
+            out.emplace_back(f);
     }
     return out;
 }
@@ -150,7 +160,9 @@ std::string_view without_byte_order_mark(std::string_view line) {
 
 std::vector<std::string_view> split_table_fields(std::string_view line, const TableLayout& layout) {
     if (layout.separator == FieldSeparator::whitespace) return split_whitespace(line);
-    const char sep = layout.separator == FieldSeparator::comma ? ',' : layout.separator == FieldSeparator::semicolon ? ';' : '\t';
+    const char sep = layout.separator == FieldSeparator::comma       ? ','
+                     : layout.separator == FieldSeparator::semicolon ? ';'
+                                                                     : '\t';
     std::vector<std::string_view> out;
     std::size_t start = 0;
     for (std::size_t at; (at = line.find(sep, start)) != std::string_view::npos; start = at + 1)
@@ -161,10 +173,10 @@ std::vector<std::string_view> split_table_fields(std::string_view line, const Ta
 
 std::optional<TableLayout> parse_table_header(std::string_view line, const InputLocation& where) {
     TableLayout layout;
-    layout.separator = line.find('\t') != std::string_view::npos   ? FieldSeparator::tab
-                       : line.find(';') != std::string_view::npos  ? FieldSeparator::semicolon
-                       : line.find(',') != std::string_view::npos  ? FieldSeparator::comma
-                                                                   : FieldSeparator::whitespace;
+    layout.separator = line.find('\t') != std::string_view::npos  ? FieldSeparator::tab
+                       : line.find(';') != std::string_view::npos ? FieldSeparator::semicolon
+                       : line.find(',') != std::string_view::npos ? FieldSeparator::comma
+                                                                  : FieldSeparator::whitespace;
     const std::vector<std::string> fields = header_fields(line, layout.separator);
     if (fields.empty()) return std::nullopt;
     std::string first = fields.front();
@@ -177,8 +189,8 @@ std::optional<TableLayout> parse_table_header(std::string_view line, const Input
         return std::count_if(layout.columns.begin(), layout.columns.end(),
                              [q](const TableColumn& c) { return c.quantity == q; });
     };
-    const auto abscissae = count(ColumnQuantity::wavelength) + count(ColumnQuantity::energy) +
-                           count(ColumnQuantity::wavenumber);
+    const auto abscissae =
+        count(ColumnQuantity::wavelength) + count(ColumnQuantity::energy) + count(ColumnQuantity::wavenumber);
     const std::string found = " (found '" + std::string(line) + "')";
     if (abscissae != 1)
         throw InputError(where, (abscissae == 0 ? std::string("no wavelength or energy column; ")
@@ -197,7 +209,8 @@ std::optional<TableLayout> parse_table_header(std::string_view line, const Input
     return layout;
 }
 
-void add_table_row(std::string_view line, const TableLayout& layout, const InputLocation& where, TableSamples& samples) {
+void add_table_row(std::string_view line, const TableLayout& layout, const InputLocation& where,
+                   TableSamples& samples) {
     const std::vector<std::string_view> fields = split_table_fields(line, layout);
     if (fields.size() != layout.columns.size())
         throw InputError(where, "expected " + std::to_string(layout.columns.size()) + " fields (" + layout.describe() +
@@ -213,7 +226,8 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
             text.find('.') == std::string::npos)
             std::replace(text.begin(), text.end(), ',', '.');  // decimal comma
         const auto value = parse_number(text);
-        if (!value) throw InputError(where, "non-numeric value '" + std::string(fields[i]) + "' in column '" + c.header + "'");
+        if (!value)
+            throw InputError(where, "non-numeric value '" + std::string(fields[i]) + "' in column '" + c.header + "'");
         switch (c.quantity) {
             case ColumnQuantity::wavelength:
             case ColumnQuantity::energy:
@@ -222,30 +236,45 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
                 x_text = fields[i];
                 abscissa = &c;
                 break;
-            case ColumnQuantity::n: n = *value; n_text = fields[i]; break;
-            case ColumnQuantity::k: k = *value; k_text = fields[i]; break;
-            case ColumnQuantity::eps1: e1 = *value; e1_text = fields[i]; break;
-            case ColumnQuantity::eps2: e2 = *value; e2_text = fields[i]; break;
+            case ColumnQuantity::n:
+                n = *value;
+                n_text = fields[i];
+                break;
+            case ColumnQuantity::k:
+                k = *value;
+                k_text = fields[i];
+                break;
+            case ColumnQuantity::eps1:
+                e1 = *value;
+                e1_text = fields[i];
+                break;
+            case ColumnQuantity::eps2:
+                e2 = *value;
+                e2_text = fields[i];
+                break;
             case ColumnQuantity::ignored: break;
         }
     }
     if (x <= 0.0) throw InputError(where, "column '" + abscissa->header + "' must be positive");
     const double nm = abscissa->quantity == ColumnQuantity::wavelength ? x * abscissa->to_nm : abscissa->to_nm / x;
-    if (!std::isfinite(nm) || nm <= 0.0) throw InputError(where, "wavelength " + std::string(x_text) + " (column '" + abscissa->header +
-                                                                   "') is out of range after unit conversion to nm");
+    if (!std::isfinite(nm) || nm <= 0.0)
+        throw InputError(where, "wavelength " + std::string(x_text) + " (column '" + abscissa->header +
+                                    "') is out of range after unit conversion to nm");
     if (!std::isnan(e1)) {
-        if (e2 < 0.0) throw InputError(where, "negative \xce\xb5\xe2\x82\x82 = " + std::string(e2_text) + " (absorption must be >= 0)");
+        if (e2 < 0.0)
+            throw InputError(where,
+                             "negative \xce\xb5\xe2\x82\x82 = " + std::string(e2_text) + " (absorption must be >= 0)");
         // |ε| = n² + k²: above 2e12, n or k is above the import limit (and near the double maximum (|ε| + ε₁)/2
         // overflowed to inf). Halves first, so that the modulus itself stays finite (the same values otherwise).
         const double half_modulus = std::hypot(e1 / 2.0, e2 / 2.0);
         if (half_modulus > kMaxIndex * kMaxIndex)
-            throw InputError(where, "\xce\xb5\xe2\x82\x81 = " + std::string(e1_text) + ", \xce\xb5\xe2\x82\x82 = " +
-                                        std::string(e2_text) + ": n or k would be above 1e6 (the largest n or k metalfit accepts)");
+            throw InputError(where, "\xce\xb5\xe2\x82\x81 = " + std::string(e1_text) +
+                                        ", \xce\xb5\xe2\x82\x82 = " + std::string(e2_text) +
+                                        ": n or k would be above 1e6 (the largest n or k metalfit accepts)");
         n = std::sqrt(std::max(0.0, half_modulus + e1 / 2.0));
         k = std::sqrt(std::max(0.0, half_modulus - e1 / 2.0));
-        char converted[2][32];
-        std::snprintf(converted[0], sizeof converted[0], "%.6g (from \xce\xb5)", n);
-        std::snprintf(converted[1], sizeof converted[1], "%.6g (from \xce\xb5)", k);
+        const std::string converted[2]{significant_text(n, 6) + " (from \xce\xb5)",
+                                       significant_text(k, 6) + " (from \xce\xb5)"};
         check_index_limit(n, false, converted[0], where);
         check_index_limit(k, true, converted[1], where);
     }
@@ -253,8 +282,10 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
     if (k < 0.0) throw InputError(where, "negative extinction coefficient k = " + std::string(k_text));
     if (!std::isnan(n)) check_index_limit(n, false, n_text, where);
     if (!std::isnan(k)) check_index_limit(k, true, k_text, where);
-    if (!std::isnan(n) && !std::isnan(k)) check_index_modulus(n, k, where);
-    else if (!std::isnan(n) && n < kMinIndexModulus) samples.small_n.push_back({where, nm, n});
+    if (!std::isnan(n) && !std::isnan(k))
+        check_index_modulus(n, k, where);
+    else if (!std::isnan(n) && n < kMinIndexModulus)
+        samples.small_n.push_back({where, nm, n});
     if (!std::isnan(n)) samples.n.push_back({nm, n});
     if (!std::isnan(k)) samples.k.push_back({nm, k});
 }

@@ -50,7 +50,7 @@ std::vector<std::string_view> split_table_fields(std::string_view line, const Ta
 struct TableSamples {
     std::vector<SpectrumSample> n, k;
     std::vector<std::string> ignored_columns;  // headers of columns that were not read
-    std::vector<SmallN> small_n;  // rows giving n < 1e-6 without k: checked once k is known
+    std::vector<SmallN> small_n;               // rows giving n < 1e-6 without k: checked once k is known
 };
 
 // Adds one data row read under `layout` to `samples` (ε₁, ε₂ converted to n, k). Throws InputError at `where` for a

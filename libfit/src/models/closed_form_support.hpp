@@ -7,6 +7,7 @@
 #include <exception>
 #include <string>
 
+#include "libfit/base/number_text.hpp"
 #include "libfit/models/model.hpp"
 
 namespace metalfit::detail {
@@ -16,16 +17,10 @@ inline constexpr std::array<double, 3> kThesisWavelengths{700.0, 550.0, 435.0}; 
 inline constexpr std::array<double, 3> kRgbWavelengths{650.0, 550.0, 450.0};     // common renderer choice
 
 inline std::string wavelength_form_id(const std::array<double, 3>& nm) {
-    char id[64];
-    std::snprintf(id, sizeof id, "nk-%.0f-%.0f-%.0f", nm[0], nm[1], nm[2]);
-    return id;
+    return "nk-" + fixed_text(nm[0], 0) + "-" + fixed_text(nm[1], 0) + "-" + fixed_text(nm[2], 0);
 }
 
-inline std::string format_number(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", x);
-    return text;
-}
+inline std::string format_number(double x) { return significant_text(x, 6); }
 
 // η at λ, or the reason it is not available (outside the data).
 struct SampledEta {

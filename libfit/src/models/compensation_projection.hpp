@@ -7,8 +7,8 @@
 #include <cmath>
 #include <vector>
 
-#include "models/linear_least_squares.hpp"
 #include "libfit/models/model.hpp"
+#include "models/linear_least_squares.hpp"
 
 namespace metalfit::detail {
 
@@ -18,9 +18,10 @@ struct CompensationCandidate {
 
 // Every α of a log-spaced grid over [alpha_lo, alpha_hi] (steps + 1 values) for each power p, solved exactly in
 // (F0, a) and clamped into [F0_lo, F0_hi] × [a_lo, a_hi]; sorted by cost (½ Σ residual²), best first.
-inline std::vector<CompensationCandidate> compensation_candidates(const ChannelTarget& t, const std::vector<double>& powers,
-                                                                  double alpha_lo, double alpha_hi, int steps,
-                                                                  double F0_lo, double F0_hi, double a_lo, double a_hi) {
+inline std::vector<CompensationCandidate> compensation_candidates(const ChannelTarget& t,
+                                                                  const std::vector<double>& powers, double alpha_lo,
+                                                                  double alpha_hi, int steps, double F0_lo,
+                                                                  double F0_hi, double a_lo, double a_hi) {
     // m^α at every node for every α of the grid, computed once rather than once per power (the same values).
     const std::size_t n = t.mu.size();
     std::vector<double> alphas, m_alpha;

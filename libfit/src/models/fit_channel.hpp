@@ -4,19 +4,19 @@
 #include <ceres/ceres.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
+#include <cmath>
 #include <concepts>
 #include <cstdint>
-#include <cmath>
 #include <limits>
 #include <span>
 #include <stdexcept>
 #include <string>
-#include <array>
 
+#include "libfit/base/line_minimum.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/models/model_math.hpp"
-#include "libfit/base/line_minimum.hpp"
 #include "libfit/models/registry.hpp"
 #include <vector>
 
@@ -98,7 +98,7 @@ struct PinnedCurveResidual {
 // the solver's own: its weight grows and its upper end tightens between solves of the same problem.
 struct GamutLimits {
     static constexpr int kGrid = 4097;  // the grid --gamut-fit is checked on (gamut_excess)
-    double weight = 0;  // 0 and stride kGrid: the first solve is the unconstrained one
+    double weight = 0;                  // 0 and stride kGrid: the first solve is the unconstrained one
     double upper = 1;
     int stride = kGrid;  // every stride-th point: 257 while the penalty stiffens, then every point
 };
@@ -198,10 +198,7 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
     int pinned = -1;
     if constexpr (PinnableF0<M>)
         if (constraints.pinned_f0) pinned = static_cast<int>(M::kPinnedParameter);
-    if (constraints.pinned_f0 && pinned < 0)
-        throw std::logic_error(std::string(M::kId) + " cannot pin F0");
-    if (constraints.pinned_f0 && constraints.unit_range)
-        throw std::logic_error("--pin F0 and --gamut-fit together");
+    if (constraints.pinned_f0 && pinned < 0) throw std::logic_error(std::string(M::kId) + " cannot pin F0");
     const auto solve = [&](ChannelParameters& x, std::vector<int> fixed, ceres::Solver::Summary& summary,
                            StartPruning* pruning = nullptr) {
         ceres::Problem problem;
@@ -213,9 +210,10 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         const int residuals = static_cast<int>(target.mu.size());
         if constexpr (PinnableF0<M>) {
             if (pinned >= 0)
-                problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PinnedCurveResidual<M>, ceres::DYNAMIC, kCount>(
-                                             new PinnedCurveResidual<M>{&target, *constraints.pinned_f0}, residuals),
-                                         nullptr, x.data());
+                problem.AddResidualBlock(
+                    new ceres::AutoDiffCostFunction<PinnedCurveResidual<M>, ceres::DYNAMIC, kCount>(
+                        new PinnedCurveResidual<M>{&target, *constraints.pinned_f0}, residuals),
+                    nullptr, x.data());
         }
         if (pinned < 0) {
             if constexpr (AnalyticGradient<M>)
@@ -233,8 +231,10 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
             problem.SetParameterLowerBound(x.data(), i, M::kParameters[i].lower);
             problem.SetParameterUpperBound(x.data(), i, M::kParameters[i].upper);
         }
-        if (static_cast<int>(fixed.size()) == kCount) problem.SetParameterBlockConstant(x.data());
-        else if (!fixed.empty()) problem.SetManifold(x.data(), new ceres::SubsetManifold(kCount, fixed));
+        if (static_cast<int>(fixed.size()) == kCount)
+            problem.SetParameterBlockConstant(x.data());
+        else if (!fixed.empty())
+            problem.SetManifold(x.data(), new ceres::SubsetManifold(kCount, fixed));
         if (pruning) {
             ceres::Solver::Options pruned_options = options;
             pruned_options.callbacks.push_back(pruning);
@@ -262,7 +262,8 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                 ceres::Solve(options, &problem, &summary);
             }
             summary.initial_cost = initial_cost;
-            if (!(gamut_excess<M>(x) <= kGamutTolerance)) return std::numeric_limits<double>::quiet_NaN();  // this start cannot hold it
+            if (!(gamut_excess<M>(x) <= kGamutTolerance))
+                return std::numeric_limits<double>::quiet_NaN();  // this start cannot hold it
             limits.weight = 0;
         }
         // With an active bound the summary's final cost can differ (1e-4 relative) from the cost of the parameters
@@ -302,7 +303,8 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                             return LinePoint{alpha, p.cost, p.slope};
                         },
                         z[0], bounds.lower, bounds.upper, minima);
-                    if (m.same_as >= 0) continue;  // the valley of an earlier start: its minimum, and ties keep the first
+                    if (m.same_as >= 0)
+                        continue;  // the valley of an earlier start: its minimum, and ties keep the first
                     z[0] = m.minimum.x;
                     minima.push_back(z[0]);
                     iterations = m.evaluations;
@@ -320,7 +322,8 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                 best.solver.method = kNonlinear.size() > 0 ? kProjectedLineSolve : kLinearSolve;
                 best.solver.start = starts[s].name;
                 best.solver.iterations = iterations;
-                best.solver.termination = ceres::TerminationTypeToString(converged ? ceres::CONVERGENCE : ceres::NO_CONVERGENCE);
+                best.solver.termination =
+                    ceres::TerminationTypeToString(converged ? ceres::CONVERGENCE : ceres::NO_CONVERGENCE);
                 best.solver.initial_cost = kNonlinear.size() > 0 ? initial_cost : final_cost;
                 best.solver.final_cost = final_cost;
             }
@@ -335,8 +338,9 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
     for (std::size_t s = 0; s < starts.size(); ++s) {
         ChannelParameters x = clamp_to_bounds<M>(starts[s].params);
         const auto same_bits = [&x](const ChannelParameters& y) {
-            return std::equal(x.begin(), x.end(), y.begin(), y.end(),
-                              [](double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); });
+            return std::equal(x.begin(), x.end(), y.begin(), y.end(), [](double a, double b) {
+                return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+            });
         };
         if (std::any_of(tried.begin(), tried.end(), same_bits)) continue;
         tried.push_back(x);
@@ -353,8 +357,10 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         for (int i = 0; i < kCount; ++i) {
             if (i == pinned) continue;
             const double lo = M::kParameters[i].lower, hi = M::kParameters[i].upper, tol = 1e-9 * (hi - lo);
-            if (y[i] <= lo + tol) y[i] = lo, on_bound.push_back(i);
-            else if (y[i] >= hi - tol) y[i] = hi, on_bound.push_back(i);
+            if (y[i] <= lo + tol)
+                y[i] = lo, on_bound.push_back(i);
+            else if (y[i] >= hi - tol)
+                y[i] = hi, on_bound.push_back(i);
         }
         if (!on_bound.empty() && static_cast<int>(on_bound.size()) < kCount) {
             ceres::Solver::Summary polished;

@@ -11,7 +11,8 @@ namespace metalfit::detail {
 
 // A is given by columns (each of the rows' length). Returns empty when A is rank deficient (a pivot below 1e-13 of
 // the largest column norm).
-inline std::optional<std::vector<double>> linear_least_squares(std::vector<std::vector<double>> A, std::vector<double> y) {
+inline std::optional<std::vector<double>> linear_least_squares(std::vector<std::vector<double>> A,
+                                                               std::vector<double> y) {
     const std::size_t n = A.size();
     if (n == 0) return std::vector<double>{};
     const std::size_t m = y.size();

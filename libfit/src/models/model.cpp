@@ -3,10 +3,10 @@
 #include <string>
 #include <tuple>
 
-#include "models/fit_channel.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/models/registry.hpp"
+#include "models/fit_channel.hpp"
 #include "shader_files.hpp"
 
 namespace metalfit {
@@ -28,13 +28,13 @@ public:
                                    std::to_string(out.size()));
         for (std::size_t i = 0; i < mu.size(); ++i) out[i] = M::evaluate(p.data(), mu[i]);
     }
-    std::vector<ClosedForm> closed_forms(const ClosedFormInput& input) const override {
-        return M::closed_forms(input);
-    }
+    std::vector<ClosedForm> closed_forms(const ClosedFormInput& input) const override { return M::closed_forms(input); }
     std::vector<ChannelParameters> neutral_starts() const override { return M::neutral_starts(); }
     std::vector<ChannelParameters> target_starts(const ChannelTarget& target) const override {
-        if constexpr (requires { M::target_starts(target); }) return M::target_starts(target);
-        else return {};
+        if constexpr (requires { M::target_starts(target); })
+            return M::target_starts(target);
+        else
+            return {};
     }
     ChannelFit fit(const ChannelTarget& target, std::span<const NamedStart> starts,
                    const ChannelConstraints& constraints) const override {
@@ -43,12 +43,16 @@ public:
     using Model::fit;
     bool can_pin_f0() const override { return PinnableF0<M>; }
     std::size_t pinned_parameter() const override {
-        if constexpr (PinnableF0<M>) return M::kPinnedParameter;
-        else throw std::logic_error(std::string(M::kId) + " cannot pin F0");
+        if constexpr (PinnableF0<M>)
+            return M::kPinnedParameter;
+        else
+            throw std::logic_error(std::string(M::kId) + " cannot pin F0");
     }
     void pin_f0(std::span<double> params, double F0) const override {
-        if constexpr (PinnableF0<M>) params[M::kPinnedParameter] = M::pinned_value(params.data(), F0);
-        else throw std::logic_error(std::string(M::kId) + " cannot pin F0");
+        if constexpr (PinnableF0<M>)
+            params[M::kPinnedParameter] = M::pinned_value(params.data(), F0);
+        else
+            throw std::logic_error(std::string(M::kId) + " cannot pin F0");
     }
     std::string_view glsl_function() const override { return M::kGlslFunction; }
     std::span<const std::string_view> glsl_files() const override { return M::kGlslFiles; }
@@ -63,8 +67,10 @@ public:
     bool is_f82_tint_curve() const override { return F82TintCurve<M>; }
     MaterialxForm materialx_form() const override { return M::kMaterialx; }
     std::string_view materialx_stand_in_reason() const override {
-        if constexpr (M::kMaterialx == MaterialxForm::stand_in) return M::kMaterialxStandIn;
-        else return {};
+        if constexpr (M::kMaterialx == MaterialxForm::stand_in)
+            return M::kMaterialxStandIn;
+        else
+            return {};
     }
 };
 
@@ -74,9 +80,8 @@ struct ModelTable;
 template <class... M>
 struct ModelTable<ModelList<M...>> {
     std::tuple<ModelAdapter<M>...> adapters;
-    std::array<const Model*, sizeof...(M)> models = std::apply([](const auto&... a) {
-        return std::array<const Model*, sizeof...(M)>{&a...};
-    }, adapters);
+    std::array<const Model*, sizeof...(M)> models =
+        std::apply([](const auto&... a) { return std::array<const Model*, sizeof...(M)>{&a...}; }, adapters);
 };
 const ModelTable<Registry> kTable;
 const auto& kModels = kTable.models;
@@ -152,7 +157,8 @@ ModelParameters ClosedForm::params() const {
 std::string ClosedForm::undefined_reason() const {
     std::string reason;
     for (int c = 0; c < 3; ++c)
-        if (!channel[c].params) reason += (reason.empty() ? "" : "; ") + std::string(kChannelNames[c]) + ": " + channel[c].undefined;
+        if (!channel[c].params)
+            reason += (reason.empty() ? "" : "; ") + std::string(kChannelNames[c]) + ": " + channel[c].undefined;
     return reason;
 }
 

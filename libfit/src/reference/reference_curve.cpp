@@ -29,15 +29,16 @@ std::string nm(double v) {
 
 }  // namespace
 
-std::vector<std::string> held_constant_ranges(const Material& m, const WavelengthRange& needed, const SpectralOptions& options) {
+std::vector<std::string> held_constant_ranges(const Material& m, const WavelengthRange& needed,
+                                              const SpectralOptions& options) {
     std::vector<std::string> notes;
     if (options.out_of_range != OutOfRange::clamp) return notes;
     for (const auto& [curve, what] : {std::pair{&m.index.n, "n"}, std::pair{&m.index.k, "k"}}) {
         const WavelengthRange r = curve->range();
         const std::string measured = " (--extrapolate; measured " + nm(r.min_nm) + "–" + nm(r.max_nm) + " nm)";
         if (r.min_nm > needed.min_nm)
-            notes.push_back(std::string(what) + " held at its " + nm(r.min_nm) + " nm value over " + nm(needed.min_nm) + "–" +
-                            nm(std::min(r.min_nm, needed.max_nm)) + " nm" + measured);
+            notes.push_back(std::string(what) + " held at its " + nm(r.min_nm) + " nm value over " + nm(needed.min_nm) +
+                            "–" + nm(std::min(r.min_nm, needed.max_nm)) + " nm" + measured);
         if (r.max_nm < needed.max_nm)
             notes.push_back(std::string(what) + " held at its " + nm(r.max_nm) + " nm value over " +
                             nm(std::max(r.max_nm, needed.min_nm)) + "–" + nm(needed.max_nm) + " nm" + measured);
@@ -45,13 +46,14 @@ std::vector<std::string> held_constant_ranges(const Material& m, const Wavelengt
     return notes;
 }
 
-ReferenceCurve::ReferenceCurve(const Material& material, const Colorimetry& colorimetry,
-                               ColorSpaceConverter converter, SpectralOptions options)
+ReferenceCurve::ReferenceCurve(const Material& material, const Colorimetry& colorimetry, ColorSpaceConverter converter,
+                               SpectralOptions options)
     : colorimetry_(colorimetry), converter_(std::move(converter)) {
     require_visible_coverage(material, options);
     const DenseSpectrum<XYZ>& grid = colorimetry_.weights();
     for (std::size_t i = 0; i < grid.size(); ++i) {
-        const SquaredIndex<double> e = squared_index(material.index(grid.nm(i), options.interpolation, options.out_of_range));
+        const SquaredIndex<double> e =
+            squared_index(material.index(grid.nm(i), options.interpolation, options.out_of_range));
         eta2_re_.push_back(e.re);
         eta2_re_minus_1_.push_back(e.re_minus_1);
         eta2_im_.push_back(e.im);
@@ -85,7 +87,8 @@ __attribute__((target_clones("avx2", "default")))
 #endif
 void integrate_lanes(const SpectralColumns& s, const double* mu, double* x_out, double* y_out, double* z_out) {
     double m[kLanes], x[kLanes] = {}, y[kLanes] = {}, z[kLanes] = {};
-    for (std::size_t j = 0; j < kLanes; ++j) m[j] = fresnel_real_detail::min_of(fresnel_real_detail::max_of(mu[j], 0.0), 1.0);
+    for (std::size_t j = 0; j < kLanes; ++j)
+        m[j] = fresnel_real_detail::min_of(fresnel_real_detail::max_of(mu[j], 0.0), 1.0);
     for (std::size_t i = 0; i < s.size; ++i) {
         const double re = s.re[i], re1 = s.re1[i], im = s.im[i], norm2 = s.norm2[i];
         const double wx = s.wx[i], wy = s.wy[i], wz = s.wz[i];
@@ -103,8 +106,8 @@ void integrate_lanes(const SpectralColumns& s, const double* mu, double* x_out, 
 
 std::vector<XYZ> ReferenceCurve::xyz(std::span<const double> mu) const {
     std::vector<XYZ> out(mu.size());
-    const SpectralColumns columns{eta2_re_.data(), eta2_re_minus_1_.data(), eta2_im_.data(), eta2_norm2_.data(),
-                                  weight_x_.data(), weight_y_.data(), weight_z_.data(), eta2_re_.size()};
+    const SpectralColumns columns{eta2_re_.data(),  eta2_re_minus_1_.data(), eta2_im_.data(),  eta2_norm2_.data(),
+                                  weight_x_.data(), weight_y_.data(),        weight_z_.data(), eta2_re_.size()};
     for (std::size_t first = 0; first < mu.size(); first += kLanes) {
         const std::size_t count = std::min(kLanes, mu.size() - first);
         double m[kLanes], x[kLanes], y[kLanes], z[kLanes];

@@ -25,9 +25,10 @@ ReflectanceSummary summarize_reflectance(const ReferenceCurve& curve) {
     return summary;
 }
 
-nlohmann::json reflectance_record(const Material& material, const ReferenceCurve& curve, const ReflectanceSummary& summary,
-                                  const Colorimetry& colorimetry,
-                                  const OcioConfigChoice& config, const SpectralOptions& spectral, Convention convention) {
+nlohmann::json reflectance_record(const Material& material, const ReferenceCurve& curve,
+                                  const ReflectanceSummary& summary, const Colorimetry& colorimetry,
+                                  const OcioConfigChoice& config, const SpectralOptions& spectral,
+                                  Convention convention) {
     const std::vector<ReflectanceSample>& samples = summary.samples;
     nlohmann::json out_of_gamut = nlohmann::json::array();
     for (const OutOfGamutValue& g : summary.out_of_gamut)
@@ -41,7 +42,8 @@ nlohmann::json reflectance_record(const Material& material, const ReferenceCurve
     j["space"] = curve.converter().space();
     j["F0"] = rgb_json(samples[0].value);
     j["F82"] = rgb_json(samples[1].value);
-    j["R"] = {{"0.5", rgb_json(samples[2].value)}, {"0.25", rgb_json(samples[3].value)}, {"0.1", rgb_json(samples[4].value)}};
+    j["R"] = {
+        {"0.5", rgb_json(samples[2].value)}, {"0.25", rgb_json(samples[3].value)}, {"0.1", rgb_json(samples[4].value)}};
     j["out_of_gamut"] = out_of_gamut;
     j["provenance"] = {{"file", material.provenance.file.string()},
                        {"sha256", material.provenance.sha256},

@@ -5,24 +5,17 @@
 #include <stdexcept>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/quadrature.hpp"
 
 namespace metalfit {
 
-std::string to_string(ErrorMetric m) { return m == ErrorMetric::rel ? "rel" : "abs"; }
-std::string to_string(AngularWeight w) { return w == AngularWeight::uniform ? "uniform" : "cosine"; }
+std::string to_string(ErrorMetric m) { return std::string(kErrorMetricNames.name(m)); }
+std::string to_string(AngularWeight w) { return std::string(kAngularWeightNames.name(w)); }
 
-ErrorMetric parse_error_metric(const std::string& text) {
-    if (text == "rel") return ErrorMetric::rel;
-    if (text == "abs") return ErrorMetric::abs;
-    throw UsageError("unknown error metric '" + text + "' (known: rel, abs)");
-}
+ErrorMetric parse_error_metric(const std::string& text) { return kErrorMetricNames.parse(text); }
 
-AngularWeight parse_angular_weight(const std::string& text) {
-    if (text == "uniform") return AngularWeight::uniform;
-    if (text == "cosine") return AngularWeight::cosine;
-    throw UsageError("unknown angular weight '" + text + "' (known: uniform, cosine)");
-}
+AngularWeight parse_angular_weight(const std::string& text) { return kAngularWeightNames.parse(text); }
 
 SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSettings& settings)
     : converter_(curve.converter()), raw_white_(curve.raw_white()), settings_(settings) {
@@ -49,12 +42,9 @@ SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSetti
     for (const auto* samples : {&nodes_, &dense_})
         for (const Sample& s : *samples)
             for (int c = 0; c < 3 && !rel_undefined_; ++c)
-                if (!(s.value[c] > 0.0)) {
-                    char text[160];
-                    std::snprintf(text, sizeof text, "the reference's %s channel is %.3g at mu = %.4g", kChannelNames[c],
-                                  s.value[c], s.mu);
-                    rel_undefined_ = text;
-                }
+                if (!(s.value[c] > 0.0))
+                    rel_undefined_ = "the reference's " + std::string(kChannelNames[c]) + " channel is " +
+                                     significant_text(s.value[c], 3) + " at mu = " + significant_text(s.mu, 4);
 }
 
 std::vector<Lab> SampledReference::lab(std::span<const RGB> balanced) const {

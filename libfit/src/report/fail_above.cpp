@@ -5,15 +5,12 @@
 #include <cstdlib>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
 
 namespace metalfit {
 namespace {
 
-std::string percent(double fraction) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g %%", 100 * fraction);
-    return text;
-}
+std::string percent(double fraction) { return significant_text(100 * fraction, 4) + " %"; }
 
 }  // namespace
 
@@ -23,7 +20,8 @@ double parse_relative_limit(const std::string& text, const std::string& option) 
     char* end = nullptr;
     const double value = number.empty() ? NAN : std::strtod(number.c_str(), &end);
     if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(value) || value <= 0)
-        throw UsageError(option + ": expected a positive fraction or percentage, e.g. 0.005 or 0.5% (got '" + text + "')");
+        throw UsageError(option + ": expected a positive fraction or percentage, e.g. 0.005 or 0.5% (got '" + text +
+                         "')");
     return is_percent ? value / 100 : value;
 }
 
@@ -35,8 +33,8 @@ std::vector<std::string> channels_above(const std::vector<MaterialFit>& fits, do
                 const double v = r.fit.value.metrics.rel_rms[c];
                 if (std::isnan(v) || v > limit)
                     lines.push_back(fit.material.id + ": " + std::string(r.model->id()) + ": " + kChannelNames[c] +
-                                    ": fitted rel_rms " + (std::isnan(v) ? std::string("undefined") : percent(v)) + " > " +
-                                    percent(limit));
+                                    ": fitted rel_rms " + (std::isnan(v) ? std::string("undefined") : percent(v)) +
+                                    " > " + percent(limit));
             }
     return lines;
 }

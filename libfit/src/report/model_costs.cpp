@@ -2,7 +2,8 @@
 
 namespace metalfit {
 
-CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable& table, const std::optional<Budget>& budget) {
+CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable& table,
+                           const std::optional<Budget>& budget) {
     CostAndBudget out;
     ModelCosts costs{table.source, table.unit, {}};
     for (const ModelCost& c : table.costs) costs.per_model.emplace(c.model, c.cost);
@@ -13,8 +14,9 @@ CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable
         const BudgetChoice choice = choose_model(fit.models, table, *budget);
         BudgetMark mark;
         if (choice.chosen) mark.model = std::string(choice.chosen->id());
-        mark.note = (choice.chosen ? "cheapest model meeting " + budget_text(*budget) + ": " : budget_text(*budget) + ": ") +
-                    choice.summary();
+        mark.note =
+            (choice.chosen ? "cheapest model meeting " + budget_text(*budget) + ": " : budget_text(*budget) + ": ") +
+            choice.summary();
         out.choices[fit.material.id] = std::move(mark);
     }
     return out;

@@ -15,7 +15,8 @@ std::vector<ReportFile> report_files(const std::vector<MaterialFit>& fits, const
         for (std::size_t j = 0; j < i; ++j)
             if (fits[i].material.id == fits[j].material.id)
                 throw UsageError("report: material " + fits[i].material.id + " is named twice (one page each)");
-            else if (report_detail::material_page_file(fits[i].material) == report_detail::material_page_file(fits[j].material))
+            else if (report_detail::material_page_file(fits[i].material) ==
+                     report_detail::material_page_file(fits[j].material))
                 throw UsageError("report: materials " + fits[j].material.id + " and " + fits[i].material.id +
                                  " would share one page (" + report_detail::material_page_file(fits[i].material) + ")");
     const std::string record = report_record(fits, inputs).dump(1) + "\n";
@@ -26,7 +27,8 @@ std::vector<ReportFile> report_files(const std::vector<MaterialFit>& fits, const
     files.push_back({"report.json", record});
     // The same bytes as report.json, as a script: pages opened from file:// cannot fetch a JSON file.
     files.push_back({"assets/report-data.js", "metalfitReport(" + record + ");\n"});
-    for (const auto& [name, text] : report_detail::kReportAssets) files.push_back({"assets/" + std::string(name), std::string(text)});
+    for (const auto& [name, text] : report_detail::kReportAssets)
+        files.push_back({"assets/" + std::string(name), std::string(text)});
     if (inputs.renders.sheet) files.push_back({"assets/renders/sheet.png", inputs.renders.sheet->png});
     return files;
 }

@@ -11,13 +11,12 @@ Json data(const char* name) { return {{"name", name}}; }
 
 // The angle axis: θ in degrees (what artists think in) or μ = cos θ, chosen on the page.
 Json angle_parameter() {
-    return Json::array({{{"name", "axis"},
-                         {"value", "θ (degrees)"},
-                         {"bind", {{"input", "radio"}, {"options", {"θ (degrees)", "μ = cos θ"}}, {"name", "x axis: "}}}}});
+    return Json::array(
+        {{{"name", "axis"},
+          {"value", "θ (degrees)"},
+          {"bind", {{"input", "radio"}, {"options", {"θ (degrees)", "μ = cos θ"}}, {"name", "x axis: "}}}}});
 }
-Json angle_transform() {
-    return {{"calculate", "axis == 'μ = cos θ' ? datum.mu : datum.theta"}, {"as", "x"}};
-}
+Json angle_transform() { return {{"calculate", "axis == 'μ = cos θ' ? datum.mu : datum.theta"}, {"as", "x"}}; }
 Json angle_x() {
     return {{"field", "x"}, {"type", "quantitative"}, {"title", "θ (degrees) or μ = cos θ: choose below"}};
 }
@@ -43,7 +42,11 @@ Json material_charts() {
           {{"data", data("nk")},
            {"mark", {{"type", "line"}, {"point", true}}},
            {"encoding",
-            {{"x", {{"field", "nm"}, {"type", "quantitative"}, {"scale", {{"type", "log"}}}, {"title", "wavelength (nm, log scale)"}}},
+            {{"x",
+              {{"field", "nm"},
+               {"type", "quantitative"},
+               {"scale", {{"type", "log"}}},
+               {"title", "wavelength (nm, log scale)"}}},
              {"y", {{"field", "value"}, {"type", "quantitative"}, {"title", "n, k"}}},
              {"color", {{"field", "quantity"}, {"type", "nominal"}, {"title", nullptr}}},
              {"tooltip", tooltip({{"quantity", "nominal"}, {"nm", "quantitative"}, {"value", "quantitative"}})}}}}}}};
@@ -54,7 +57,11 @@ Json material_charts() {
         {"height", 240},
         {"mark", "line"},
         {"encoding",
-         {{"x", {{"field", "nm"}, {"type", "quantitative"}, {"title", "wavelength (nm)"}, {"scale", {{"domain", {360, 830}}}}}},
+         {{"x",
+           {{"field", "nm"},
+            {"type", "quantitative"},
+            {"title", "wavelength (nm)"},
+            {"scale", {{"domain", {360, 830}}}}}},
           {"y", {{"field", "R"}, {"type", "quantitative"}, {"title", "R(λ)"}}},
           {"color", {{"field", "angle"}, {"type", "nominal"}, {"title", "θ"}}},
           {"tooltip", tooltip({{"angle", "nominal"}, {"nm", "quantitative"}, {"R", "quantitative"}})}}}};
@@ -73,14 +80,17 @@ Json material_charts() {
                        {{"x", angle_x()},
                         {"y", {{"field", field}, {"type", "quantitative"}, {"title", y_title}}},
                         {"color", {{"field", series}, {"type", "nominal"}, {"title", nullptr}}},
-                        {"strokeDash", {{"condition", {{"test", "datum.series == 'exact'"}, {"value", {1, 0}}}}, {"value", {5, 3}}}},
-                        {"tooltip", tooltip({{series, "nominal"}, {"theta", "quantitative"}, {"mu", "quantitative"},
+                        {"strokeDash",
+                         {{"condition", {{"test", "datum.series == 'exact'"}, {"value", {1, 0}}}}, {"value", {5, 3}}}},
+                        {"tooltip", tooltip({{series, "nominal"},
+                                             {"theta", "quantitative"},
+                                             {"mu", "quantitative"},
                                              {field, "quantitative"}})}}}}}};
     };
-    charts["reflectance"] = per_channel("R_c per channel: exact (solid) and each fitted model", "reflectance", "R", "R_c",
-                                        "series");
-    charts["rel_error"] = per_channel("relative error (M − R) / R of each fitted model, in %", "rel_error", "rel_percent",
-                                      "relative error (%)", "series");
+    charts["reflectance"] =
+        per_channel("R_c per channel: exact (solid) and each fitted model", "reflectance", "R", "R_c", "series");
+    charts["rel_error"] = per_channel("relative error (M − R) / R of each fitted model, in %", "rel_error",
+                                      "rel_percent", "relative error (%)", "series");
     charts["de2000"] = {
         {"title", "ΔE2000 of each fitted model against the exact colour"},
         {"data", data("de2000")},
@@ -101,7 +111,8 @@ Json material_charts() {
         {"height", {{"step", 22}}},
         {"mark", "rect"},
         {"encoding",
-         {{"x", {{"field", "theta0"}, {"type", "quantitative"}, {"title", "θ (degrees)"}, {"scale", {{"domain", {0, 91}}}}}},
+         {{"x",
+           {{"field", "theta0"}, {"type", "quantitative"}, {"title", "θ (degrees)"}, {"scale", {{"domain", {0, 91}}}}}},
           {"x2", {{"field", "theta1"}}},
           {"y", {{"field", "row"}, {"type", "nominal"}, {"sort", nullptr}, {"title", nullptr}}},
           {"color", {{"field", "color"}, {"type", "nominal"}, {"scale", nullptr}}},
@@ -115,13 +126,22 @@ Json catalog_charts(bool with_costs) {
         {"title", "worst-channel rel_rms of the fit, material × model (log colour scale; value in %)"},
         {"data", data("heatmap")},
         {"encoding",
-         {{"x", {{"field", "model"}, {"type", "nominal"}, {"sort", nullptr}, {"title", nullptr}, {"axis", {{"orient", "top"}, {"labelAngle", -30}}}}},
+         {{"x",
+           {{"field", "model"},
+            {"type", "nominal"},
+            {"sort", nullptr},
+            {"title", nullptr},
+            {"axis", {{"orient", "top"}, {"labelAngle", -30}}}}},
           {"y", {{"field", "material"}, {"type", "nominal"}, {"sort", nullptr}, {"title", nullptr}}}}},
         {"layer",
          {{{"mark", {{"type", "rect"}, {"tooltip", true}}},
            {"encoding",
-            {{"color", {{"field", "worst"}, {"type", "quantitative"}, {"scale", {{"type", "log"}, {"scheme", "viridis"}}},
-                        {"title", "rel_rms"}, {"legend", {{"format", ".2~%"}}}}},
+            {{"color",
+              {{"field", "worst"},
+               {"type", "quantitative"},
+               {"scale", {{"type", "log"}, {"scheme", "viridis"}}},
+               {"title", "rel_rms"},
+               {"legend", {{"format", ".2~%"}}}}},
              {"tooltip", tooltip({{"material", "nominal"}, {"model", "nominal"}, {"label", "nominal"}})}}}},
           {{"mark", {{"type", "text"}, {"fontSize", 10}}},
            {"encoding",
@@ -137,7 +157,12 @@ Json catalog_charts(bool with_costs) {
         {"width", {{"step", 60}}},
         {"height", {{"step", 18}}},
         {"encoding",
-         {{"x", {{"field", "which"}, {"type", "nominal"}, {"sort", {"F0", "F82"}}, {"title", nullptr}, {"axis", {{"orient", "top"}}}}},
+         {{"x",
+           {{"field", "which"},
+            {"type", "nominal"},
+            {"sort", {"F0", "F82"}},
+            {"title", nullptr},
+            {"axis", {{"orient", "top"}}}}},
           {"y", {{"field", "material"}, {"type", "nominal"}, {"sort", nullptr}, {"title", nullptr}}},
           {"color", {{"field", "color"}, {"type", "nominal"}, {"scale", nullptr}}},
           {"tooltip", tooltip({{"material", "nominal"}, {"which", "nominal"}, {"color", "nominal"}})}}}};
@@ -149,21 +174,27 @@ Json catalog_charts(bool with_costs) {
             {"layer",
              {{{"data", data("pareto_front")},
                {"mark", {{"type", "line"}, {"color", "#c33"}}},
-               {"encoding", {{"x", {{"field", "cost"}, {"type", "quantitative"}, {"title", "cost"}}},
-                             {"y", {{"field", "median"}, {"type", "quantitative"}, {"scale", {{"type", "log"}}}}}}}},
+               {"encoding",
+                {{"x", {{"field", "cost"}, {"type", "quantitative"}, {"title", "cost"}}},
+                 {"y", {{"field", "median"}, {"type", "quantitative"}, {"scale", {{"type", "log"}}}}}}}},
               {{"data", data("pareto")},
                {"mark", {{"type", "point"}, {"filled", true}, {"size", 70}}},
                {"encoding",
                 {{"x", {{"field", "cost"}, {"type", "quantitative"}, {"title", "cost"}}},
-                 {"y", {{"field", "median"}, {"type", "quantitative"}, {"scale", {{"type", "log"}}},
-                        {"title", "median worst-channel rel_rms"}, {"axis", {{"format", ".1%"}}}}},
+                 {"y",
+                  {{"field", "median"},
+                   {"type", "quantitative"},
+                   {"scale", {{"type", "log"}}},
+                   {"title", "median worst-channel rel_rms"},
+                   {"axis", {{"format", ".1%"}}}}},
                  {"color", {{"field", "on_front"}, {"type", "nominal"}, {"title", "Pareto front"}}},
                  {"tooltip", tooltip({{"model", "nominal"}, {"cost", "quantitative"}, {"median", "quantitative"}})}}}},
               {{"data", data("pareto")},
                {"mark", {{"type", "text"}, {"dx", 8}, {"align", "left"}}},
-               {"encoding", {{"x", {{"field", "cost"}, {"type", "quantitative"}}},
-                             {"y", {{"field", "median"}, {"type", "quantitative"}, {"scale", {{"type", "log"}}}}},
-                             {"text", {{"field", "model"}}}}}}}}};
+               {"encoding",
+                {{"x", {{"field", "cost"}, {"type", "quantitative"}}},
+                 {"y", {{"field", "median"}, {"type", "quantitative"}, {"scale", {{"type", "log"}}}}},
+                 {"text", {{"field", "model"}}}}}}}}};
     return charts;
 }
 

@@ -26,8 +26,8 @@ std::string page(const std::string& title, const std::string& body_attributes, c
         scripts += "<script src=\"" + root + "/assets/" + script + "\"></script>\n";
     return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + escaped(title) +
            "</title>\n<link rel=\"stylesheet\" href=\"" + root + "/assets/report.css\">\n</head>\n<body " +
-           body_attributes + ">\n<main id=\"content\"></main>\n<noscript>This report is drawn by JavaScript from " + root +
-           "/report.json (no network needed): enable scripts, or read report.json.</noscript>\n" + scripts +
+           body_attributes + ">\n<main id=\"content\"></main>\n<noscript>This report is drawn by JavaScript from " +
+           root + "/report.json (no network needed): enable scripts, or read report.json.</noscript>\n" + scripts +
            "</body>\n</html>\n";
 }
 
@@ -40,6 +40,8 @@ std::string material_page(const Material& material) {
                 "data-page=\"material\" data-material=\"" + escaped(material.id) + "\"", "..");
 }
 
-std::string material_page_file(const Material& material) { return "materials/" + path_component(material.id) + ".html"; }
+std::string material_page_file(const Material& material) {
+    return "materials/" + path_component(material.id) + ".html";
+}
 
 }  // namespace metalfit::report_detail

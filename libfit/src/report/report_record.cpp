@@ -8,31 +8,30 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/fit/catalog_summary.hpp"
 #include "libfit/optics/fresnel.hpp"
 #include "libfit/reference/reference_curve.hpp"
-#include "report/report_pages.hpp"
 #include "libfit/report/report.hpp"
 #include "report/report_charts.hpp"
+#include "report/report_pages.hpp"
 
 namespace metalfit {
 namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr int kThetaSteps = 90;               // θ = 0, 1, …, 90 degrees
+constexpr int kThetaSteps = 90;  // θ = 0, 1, …, 90 degrees
 constexpr double kVisibleMin = 360, kVisibleMax = 830;
-constexpr double kSpectralStep = 5;           // nm, R(λ) at 0°, 60°, 80°
-constexpr int kUntabulatedSamples = 200;      // n, k of formula materials over their range
+constexpr double kSpectralStep = 5;       // nm, R(λ) at 0°, 60°, 80°
+constexpr int kUntabulatedSamples = 200;  // n, k of formula materials over their range
 const double kSpectralAngles[] = {0, 60, 80};
 
 // Plotted values keep 6 significant digits (the metrics keep all of theirs).
 double plotted(double v) {
     if (!std::isfinite(v) || v == 0) return v;
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", v);
-    return std::strtod(text, nullptr);
+    return std::strtod(significant_text(v, 6).c_str(), nullptr);
 }
 
 Json rgb_json(const RGB& v) { return Json::array({v.r, v.g, v.b}); }
@@ -49,7 +48,8 @@ std::string hex(const unsigned char* rgb) {
 class Swatches {
 public:
     Swatches(const ReportInputs& in)
-        : in_(in), scene_linear_(ColorSpaceConverter::create(in.converter.config())),
+        : in_(in),
+          scene_linear_(ColorSpaceConverter::create(in.converter.config())),
           same_space_(scene_linear_.space() == in.converter.space()) {}
 
     std::vector<std::string> operator()(const std::vector<RGB>& working) const {
@@ -96,7 +96,10 @@ Json nk_json(const Material& material, const SpectralOptions& spectral) {
         n.push_back(plotted(eta.real()));
         k.push_back(plotted(eta.imag()));
     }
-    return {{"nm", wavelengths}, {"n", n}, {"k", k}, {"measured", {range.min_nm, range.max_nm}},
+    return {{"nm", wavelengths},
+            {"n", n},
+            {"k", k},
+            {"measured", {range.min_nm, range.max_nm}},
             {"visible", {kVisibleMin, kVisibleMax}}};
 }
 
@@ -107,7 +110,8 @@ Json spectral_reflectance_json(const Material& material, const SpectralOptions& 
         angles.push_back(theta);
         Json row = Json::array();
         for (double w = kVisibleMin; w <= kVisibleMax; w += kSpectralStep)
-            row.push_back(plotted(fresnel(mu_of_degrees(theta), material.index(w, spectral.interpolation, spectral.out_of_range))));
+            row.push_back(plotted(
+                fresnel(mu_of_degrees(theta), material.index(w, spectral.interpolation, spectral.out_of_range))));
         R.push_back(row);
     }
     return {{"nm", nm}, {"theta_deg", angles}, {"R", R}};
@@ -152,16 +156,23 @@ Json sources_json(const MaterialFit& fit, const ReportInputs& in) {
         sources.push_back(j);
     }
     Json spread = nullptr;
-    if (defined > 1) spread = {{"F0", rgb_json({hi0.r - lo0.r, hi0.g - lo0.g, hi0.b - lo0.b})},
-                               {"F82", rgb_json({hi82.r - lo82.r, hi82.g - lo82.g, hi82.b - lo82.b})}};
+    if (defined > 1)
+        spread = {{"F0", rgb_json({hi0.r - lo0.r, hi0.g - lo0.g, hi0.b - lo0.b})},
+                  {"F82", rgb_json({hi82.r - lo82.r, hi82.g - lo82.g, hi82.b - lo82.b})}};
     return {{"sources", sources}, {"spread", spread}};
 }
 
 Json provenance_json(const MaterialFit& fit, const ReportInputs& in) {
     const Provenance& p = fit.material.provenance;
-    Json j = {{"file", p.file.filename().string()}, {"sha256", p.sha256}, {"format", p.format},
-              {"data_type", p.data_type}, {"reference", p.references}, {"doi", nullptr}, {"licence", nullptr},
-              {"database_path", nullptr}, {"kind", nullptr}};
+    Json j = {{"file", p.file.filename().string()},
+              {"sha256", p.sha256},
+              {"format", p.format},
+              {"data_type", p.data_type},
+              {"reference", p.references},
+              {"doi", nullptr},
+              {"licence", nullptr},
+              {"database_path", nullptr},
+              {"kind", nullptr}};
     if (const auto [entry, source] = catalog_source(fit.material, in.catalog); entry) {
         j["doi"] = source->doi.empty() ? Json(nullptr) : Json(source->doi);
         j["licence"] = source->licence;
@@ -171,7 +182,8 @@ Json provenance_json(const MaterialFit& fit, const ReportInputs& in) {
     return j;
 }
 
-Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatches& swatches, std::optional<int> render_row) {
+Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatches& swatches,
+                   std::optional<int> render_row) {
     const Material& material = fit.material;
     const ReferenceCurve curve(material, in.colorimetry, in.converter, in.fit.spectral);
     const SampledReference& reference = *fit.reference;
@@ -200,8 +212,9 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
         const RGB m0 = model.evaluate(r.fit.value.params, 1.0), m82 = model.evaluate(r.fit.value.params, kMuF82);
         Json j = model_record(r);
         j["worst_rel_rms"] = worst_channel(r.fit.value.metrics.rel_rms);
-        j["error_at"] = {{"F0", rgb_json({std::abs(m0.r - f0.r), std::abs(m0.g - f0.g), std::abs(m0.b - f0.b)})},
-                         {"F82", rgb_json({std::abs(m82.r - f82.r), std::abs(m82.g - f82.g), std::abs(m82.b - f82.b)})}};
+        j["error_at"] = {
+            {"F0", rgb_json({std::abs(m0.r - f0.r), std::abs(m0.g - f0.g), std::abs(m0.b - f0.b)})},
+            {"F82", rgb_json({std::abs(m82.r - f82.r), std::abs(m82.g - f82.g), std::abs(m82.b - f82.b)})}};
         j["curve"] = channels_json(values);
         j["de2000"] = de;
         j["stripe"] = swatches(values);
@@ -226,7 +239,8 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
             {"swatch", {{"F0", swatch[0]}, {"F82", swatch[1]}}},
             {"nk", nk_json(material, in.fit.spectral)},
             {"spectral_reflectance", spectral_reflectance_json(material, in.fit.spectral)},
-            {"curves", {{"theta_deg", theta}, {"mu", mu_json}, {"exact", channels_json(exact)}, {"stripe", swatches(exact)}}},
+            {"curves",
+             {{"theta_deg", theta}, {"mu", mu_json}, {"exact", channels_json(exact)}, {"stripe", swatches(exact)}}},
             {"models", models},
             {"data_sources", sources_json(fit, in)},
             {"budget_choice", choice},
@@ -267,13 +281,14 @@ Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in)
         const ModelSummary& m = summary.models[i];
         Json names = Json::array();
         for (const Parameter& p : m.model->parameters()) names.push_back(p.name);
-        models.push_back({{"id", m.model->id()},
-                          {"title", m.model->title()},
-                          {"parameters", names},
-                          {"cost", std::isnan(cost[i]) ? Json(nullptr) : Json(cost[i])},
-                          {"pareto_front", in.cost.costs ? Json(bool(front[i])) : Json(nullptr)},
-                          {"fit_worst_rel_rms", {{"per_material", m.fit_worst}, {"median", m.fit.median}, {"worst", m.fit.worst}}},
-                          {"closed_worst_rel_rms", m.closed_worst}});
+        models.push_back(
+            {{"id", m.model->id()},
+             {"title", m.model->title()},
+             {"parameters", names},
+             {"cost", std::isnan(cost[i]) ? Json(nullptr) : Json(cost[i])},
+             {"pareto_front", in.cost.costs ? Json(bool(front[i])) : Json(nullptr)},
+             {"fit_worst_rel_rms", {{"per_material", m.fit_worst}, {"median", m.fit.median}, {"worst", m.fit.worst}}},
+             {"closed_worst_rel_rms", m.closed_worst}});
     }
 
     Json materials = Json::array();
@@ -290,13 +305,14 @@ Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in)
     Json renders;
     if (in.renders.sheet) {
         const SphereSheetImage& s = *in.renders.sheet;
-        renders = {{"image", "assets/renders/sheet.png"},
-                   {"by", "glpreview --sheet --sheet-models (data/scenes/sheet.json): distance impostor in a procedural room, "
-                          "mirror spheres; labels drawn by glpreview"},
-                   {"cell", {s.cell_width, s.cell_height}},
-                   {"columns", {"reference (exact Fresnel)", "model", "|difference| × 10"}},
-                   {"models", s.models},
-                   {"rows", Json::array()}};
+        renders = {
+            {"image", "assets/renders/sheet.png"},
+            {"by", "glpreview --sheet --sheet-models (data/scenes/sheet.json): distance impostor in a procedural room, "
+                   "mirror spheres; labels drawn by glpreview"},
+            {"cell", {s.cell_width, s.cell_height}},
+            {"columns", {"reference (exact Fresnel)", "model", "|difference| × 10"}},
+            {"models", s.models},
+            {"rows", Json::array()}};
         for (std::size_t r = 0; r < s.materials.size(); ++r) {
             Json models = Json::array();
             for (std::size_t m = 0; m < s.models.size(); ++m) {
@@ -324,12 +340,13 @@ Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in)
               {"color_space", c.space},
               {"cmf", to_string(c.observer)},
               {"illuminant", to_string(c.illuminant)},
-              {"ocio_config", {{"file", c.config.path.filename().string()},
-                               {"origin", c.config.origin},
-                               {"sha256", sha256_file(c.config.path)}}},
+              {"ocio_config",
+               {{"file", c.config.path.filename().string()},
+                {"origin", c.config.origin},
+                {"sha256", sha256_file(c.config.path)}}},
               {"display", in.display.description()},
               {"interpolation", to_string(c.spectral.interpolation)},
-              {"out_of_range", c.spectral.out_of_range == OutOfRange::clamp ? "clamp" : "error"},
+              {"out_of_range", to_string(c.spectral.out_of_range)},
               {"white_balance", "R_c = RGB_c(F) / RGB_c(perfect reflector)"},
               {"nodes", e.nodes},
               {"quadrature", "Gauss-Legendre on [0, 1]"},

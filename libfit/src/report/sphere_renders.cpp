@@ -2,10 +2,10 @@
 // back from a temporary folder.
 #include "libfit/report/sphere_renders.hpp"
 
-#include <spawn.h>
 #include <fcntl.h>
-#include <sys/wait.h>
+#include <spawn.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -63,13 +63,14 @@ struct TemporaryFolder {
 
 // The sheet, or throws std::runtime_error with the reason.
 SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
-    if (r.glpreview.empty() || !fs::exists(r.glpreview)) throw std::runtime_error("glpreview was not built beside metalfit");
+    if (r.glpreview.empty() || !fs::exists(r.glpreview))
+        throw std::runtime_error("glpreview was not built beside metalfit");
     if (r.materials.empty()) throw std::runtime_error("no catalog material to render");
     if (r.models.empty()) throw std::runtime_error("no model to render");
     const TemporaryFolder folder;
     const std::string size = std::to_string(r.cell_size) + "x" + std::to_string(r.cell_size);
-    std::vector<std::string> args{r.glpreview.string(), r.scene.string(), "--sheet", join(r.materials, ","), "--sheet-models",
-                                  join(r.models, ","), "--size", size,
+    std::vector<std::string> args{r.glpreview.string(), r.scene.string(), "--sheet", join(r.materials, ","),
+                                  "--sheet-models", join(r.models, ","), "--size", size,
                                   // a folder inside the scratch folder: glpreview's own staging then lives there too
                                   "-o", (folder.path / "sheet").string(), "--data-dir", r.data_dir.string(),
                                   "--ocio-config", r.ocio.path.string()};
@@ -104,7 +105,8 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
     for (const auto& entry : record) {
         const std::size_t row = entry.at("row").get<std::size_t>();
         const auto model = std::find(r.models.begin(), r.models.end(), entry.at("model").get<std::string>());
-        if (row >= r.materials.size() || model == r.models.end()) throw std::runtime_error("glpreview's sheet.json names a cell not asked for");
+        if (row >= r.materials.size() || model == r.models.end())
+            throw std::runtime_error("glpreview's sheet.json names a cell not asked for");
         const auto& columns = entry.at("columns");
         sheet.cells[row][static_cast<std::size_t>(model - r.models.begin())].push_back(
             {entry.at("roughness").get<double>(), columns.at("reference").get<int>(), columns.at("model").get<int>(),
@@ -120,12 +122,7 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
 
 }  // namespace
 
-RenderMode parse_render_mode(const std::string& text) {
-    if (text == "auto") return RenderMode::auto_;
-    if (text == "on") return RenderMode::on;
-    if (text == "off") return RenderMode::off;
-    throw UsageError("unknown --renders mode '" + text + "' (auto, on or off)");
-}
+RenderMode parse_render_mode(const std::string& text) { return kRenderModeNames.parse(text); }
 
 fs::path glpreview_beside_this_program() {
     std::error_code ec;
@@ -140,8 +137,9 @@ SphereRenders render_spheres(const SphereRenderRequest& request, RenderMode mode
     try {
         return {run_glpreview(request), {}};
     } catch (const std::exception& e) {
-        if (mode == RenderMode::on) throw InputError(InputLocation(request.glpreview.empty() ? "glpreview" : request.glpreview),
-                                                     std::string("--renders on: ") + e.what());
+        if (mode == RenderMode::on)
+            throw InputError(InputLocation(request.glpreview.empty() ? "glpreview" : request.glpreview),
+                             std::string("--renders on: ") + e.what());
         std::string reason = e.what();
         if (reason.rfind("glpreview: ", 0) == 0) reason = reason.substr(11);
         return {std::nullopt, reason};

@@ -5,8 +5,7 @@
 
 namespace metalfit {
 
-double SpectralCurve::operator()(double nm, Interpolation interpolation,
-                                 OutOfRange out_of_range) const {
+double SpectralCurve::operator()(double nm, Interpolation interpolation, OutOfRange out_of_range) const {
     struct Visitor {
         double nm;
         Interpolation interpolation;

@@ -5,8 +5,7 @@
 
 namespace metalfit {
 
-SellmeierFormula::SellmeierFormula(Form form, std::vector<double> coefficients,
-                                   WavelengthRange valid_nm)
+SellmeierFormula::SellmeierFormula(Form form, std::vector<double> coefficients, WavelengthRange valid_nm)
     : form_(form), c_(std::move(coefficients)), valid_nm_(valid_nm) {
     if (c_.empty()) throw std::invalid_argument("a Sellmeier formula needs coefficients");
     if (c_.size() % 2 == 0) c_.push_back(0.0);  // C1 + pairs (C2i, C2i+1)

@@ -9,8 +9,7 @@ namespace {
 
 std::string range_message(double nm, WavelengthRange r) {
     std::ostringstream s;
-    s << "wavelength " << nm << " nm is outside the data range " << r.min_nm << "–" << r.max_nm
-      << " nm";
+    s << "wavelength " << nm << " nm is outside the data range " << r.min_nm << "–" << r.max_nm << " nm";
     return s.str();
 }
 
@@ -57,9 +56,8 @@ Spectrum::Spectrum(std::vector<SpectrumSample> samples) {
     for (const auto& s : samples)
         if (!std::isfinite(s.wavelength_nm) || !std::isfinite(s.value))
             throw std::invalid_argument("a spectrum sample is not a finite number");
-    std::stable_sort(samples.begin(), samples.end(), [](const auto& a, const auto& b) {
-        return a.wavelength_nm < b.wavelength_nm;
-    });
+    std::stable_sort(samples.begin(), samples.end(),
+                     [](const auto& a, const auto& b) { return a.wavelength_nm < b.wavelength_nm; });
     for (std::size_t i = 0; i < samples.size();) {
         std::size_t j = i;
         double sum = 0.0;
@@ -69,8 +67,10 @@ Spectrum::Spectrum(std::vector<SpectrumSample> samples) {
             conflict = conflict || samples[j].value != samples[i].value;
         }
         const std::size_t repeats = j - i - 1;
-        if (conflict) conflicting_duplicates_ += repeats;
-        else identical_duplicates_ += repeats;
+        if (conflict)
+            conflicting_duplicates_ += repeats;
+        else
+            identical_duplicates_ += repeats;
         wavelengths_.push_back(samples[i].wavelength_nm);
         values_.push_back(sum / static_cast<double>(j - i));
         i = j;
@@ -79,8 +79,8 @@ Spectrum::Spectrum(std::vector<SpectrumSample> samples) {
 }
 
 std::size_t Spectrum::count_in(const WavelengthRange& r) const {
-    return static_cast<std::size_t>(std::count_if(wavelengths_.begin(), wavelengths_.end(),
-                                                  [&](double w) { return r.contains(w); }));
+    return static_cast<std::size_t>(
+        std::count_if(wavelengths_.begin(), wavelengths_.end(), [&](double w) { return r.contains(w); }));
 }
 
 double Spectrum::operator()(double nm, Interpolation interpolation, OutOfRange out_of_range) const {
@@ -107,8 +107,7 @@ double Spectrum::pchip(std::size_t i, double nm) const {
     const double t2 = t * t, t3 = t2 * t;
     const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t;
     const double h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
-    return h00 * values_[i] + h10 * h * pchip_slopes_[i] + h01 * values_[i + 1] +
-           h11 * h * pchip_slopes_[i + 1];
+    return h00 * values_[i] + h10 * h * pchip_slopes_[i] + h01 * values_[i + 1] + h11 * h * pchip_slopes_[i + 1];
 }
 
 }  // namespace metalfit

@@ -1,4 +1,4 @@
-// What a scene calls for (DESIGN.md, "plan first"): a pure function of the scene, unit-tested without GL; the
+// What a scene calls for (docs/preview.md, "Plan first, then run only what the scene needs"): a pure function of the scene, unit-tested without GL; the
 // preview's passes are added to the graph from these flags.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Plan first, then run only what the scene needs (DESIGN.md): Scene → Features (graph/features.hpp, a pure
+// Plan first, then run only what the scene needs (docs/preview.md): Scene → Features (graph/features.hpp, a pure
 // function), then the preview's pass graph (render/preview_passes.hpp) compiled from the requested outputs, where
 // passes nobody reads are culled. A Plan is what --explain prints of the compiled graph.
 #pragma once

@@ -14,6 +14,7 @@
 
 #include "glpreview/scene/vec3.hpp"
 #include "libfit/color/color.hpp"
+#include "libfit/fit/parameter_source.hpp"
 
 namespace metalfit::glpreview {
 
@@ -103,8 +104,7 @@ enum class Strategy { secant, false_position, mixed, illinois, safe_secant };
 
 // What a sphere's Fresnel is: the exact reference curve, or a libfit model (named by its id, resolved against the
 // model registry when the sphere's Fresnel data is made, where an unknown id is reported) with its parameters
-// fitted or in closed form.
-enum class ParameterSource { fit, closed };
+// fitted or in closed form (libfit's ParameterSource).
 struct ReferenceFresnel {};
 struct ModelFresnel {
     std::string model;  // a libfit model id, "f82-tint"
@@ -219,7 +219,6 @@ std::vector<std::string> placement_warnings(const Scene& scene);
 const char* to_string(ReflectionMode mode);  // "classic", "distance-impostor", "box-parallax"
 const char* to_string(Strategy strategy);    // "secant", "false-position", "mixed", "illinois", "safe-secant"
 const char* to_string(EnvironmentType type);  // "room", "sphere-room", "equirect"
-const char* to_string(ParameterSource source);  // "fit", "closed"
 const char* to_string(GlossyMethod method);     // "prefiltered", "localized"
 std::string fresnel_name(const FresnelChoice& fresnel);  // "reference" or the model id, as in the scene JSON
 inline bool shows_reference(const Sphere& sphere) { return std::holds_alternative<ReferenceFresnel>(sphere.fresnel); }

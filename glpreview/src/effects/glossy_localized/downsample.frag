@@ -1,5 +1,5 @@
 // The captured cube (radiance, distance in alpha) downsampled to M × M texels per face, thesis ch. 5 (István Zsolt
-// Lazányi, "Efficient Rendering of Realistic Metals", 2008; FORMULAS.md §6): output texel (face · M + i, j) of a
+// Lazányi, "Efficient Rendering of Realistic Metals", 2008; docs/scene.md, "Rough spheres (exact rules)"): output texel (face · M + i, j) of a
 // 6M × M target averages the source texels it covers — their radiance (out_radiance) and their position relative
 // to the reference point, direction × distance (out_position.xyz). Each becomes one area light of the localized sum;
 // out_position.a is its solid angle from the reference point, Δω_i (the rectangle below).

@@ -1,4 +1,4 @@
-// A rough sphere, thesis ch. 5 (FORMULAS.md §6): the downsampled cube's 6 M² texels as area lights with their
+// A rough sphere, thesis ch. 5 (docs/scene.md, "Rough spheres (exact rules)"): the downsampled cube's 6 M² texels as area lights with their
 // average radiance L_i and average position y_i; reflected radiance Σ L_i f_r(ω_i, ω_o) cos θ_i Δω_i(x) with the GGX
 // BRDF and this sphere's Fresnel at the microfacet angle. Departures from the thesis's sum (docs/decisions.md,
 // measured in a white furnace): the light's solid angle from x is its texel's exact solid angle from o carried to

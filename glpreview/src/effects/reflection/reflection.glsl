@@ -1,6 +1,6 @@
 // Localized reflections: where does the reflection ray from shaded point x (relative to the reference point o)
 // in unit direction R hit the environment stored in the cube map u_env (rgb radiance, a distance from o)?
-// Returns the cube-map lookup direction (not normalised). Thesis ch. 4 (FORMULAS.md §5); Lagarde & Zanuttini 2012.
+// Returns the cube-map lookup direction (not normalised). Thesis ch. 4 (docs/preview.md, "The technique"); Lagarde & Zanuttini 2012.
 // REFLECTION_CLASSIC | REFLECTION_BOX_PARALLAX | REFLECTION_DISTANCE_IMPOSTOR; with the impostor one of
 // STRATEGY_SECANT | STRATEGY_FALSE_POSITION | STRATEGY_MIXED (the thesis's three) | STRATEGY_ILLINOIS |
 // STRATEGY_SAFE_SECANT (safeguarded), NITER (at most this many refinement steps, each one cube lookup) and TOLERANCE.
@@ -112,7 +112,7 @@ float impostor_distance(vec3 x, vec3 R) {
     return b < infinity || NITER == 0 ? d : last;
 }
 #else
-// The thesis's three strategies, as described (Lazányi, ch. 4; FORMULAS.md §5).
+// The thesis's three strategies, as described (Lazányi, ch. 4; docs/preview.md, "The technique").
 float impostor_distance(vec3 x, vec3 R) {
     float DR = env_distance(R);
 #if defined(STRATEGY_SECANT)

@@ -17,8 +17,8 @@ struct TimedJob {
 };
 
 struct TimingOptions {
-    int rounds = 15;                    // samples per job
-    double seconds_per_sample = 0.01;   // each sample repeats the job until about this long (0: one call per sample)
+    int rounds = 15;                   // samples per job
+    double seconds_per_sample = 0.01;  // each sample repeats the job until about this long (0: one call per sample)
 };
 
 struct JobTiming {

@@ -17,11 +17,11 @@ struct LinePoint {
 };
 
 struct LineMinimum {
-    LinePoint start;      // at the start, clamped into the bounds
-    LinePoint minimum;    // where the search ended
-    int evaluations = 0;  // after the start's
+    LinePoint start;         // at the start, clamped into the bounds
+    LinePoint minimum;       // where the search ended
+    int evaluations = 0;     // after the start's
     bool converged = false;  // false: the evaluation limit was reached first
-    int same_as = -1;     // ≥ 0: the bracket holds known[same_as], not refined (minimum: the lower end of the bracket)
+    int same_as = -1;  // ≥ 0: the bracket holds known[same_as], not refined (minimum: the lower end of the bracket)
 };
 
 // f(x) → LinePoint for x ∈ [lower, upper], 0 < lower < upper. `known`: minima found before (from other starts); a
@@ -118,8 +118,10 @@ LineMinimum line_minimum(F&& f, double x0, double lower, double upper, std::span
                 p = s * (2 * half * qa * (qa - r) - (b.x - a.x) * (r - 1));
                 q = (qa - 1) * (r - 1) * (s - 1);
             }
-            if (p > 0) q = -q;
-            else p = -p;
+            if (p > 0)
+                q = -q;
+            else
+                p = -p;
             if (2 * p < std::min(3 * half * q - std::abs(tolerance * q), std::abs(e * q))) {
                 e = d;
                 d = p / q;

@@ -1,5 +1,5 @@
 // Gauss–Legendre quadrature on [0, 1]: the nodes μ_i and weights w_i behind every error integral
-// ∫₀¹ f(μ) dμ ≈ Σ w_i f(μ_i) (DESIGN.md, "Definitions").
+// ∫₀¹ f(μ) dμ ≈ Σ w_i f(μ_i) (docs/fitting.md, "Definitions").
 #pragma once
 
 #include <vector>

@@ -18,8 +18,8 @@ namespace metalfit {
 // For a new file whose path already holds a file in the folder: the contents to write instead of `mine` (an index
 // merged with the entries already there), given the file's path relative to the folder and its current contents.
 // May throw (InputError or UsageError) to refuse the whole update.
-using MergeExisting =
-    std::function<std::string(const std::filesystem::path& relative, const std::string& existing, const std::string& mine)>;
+using MergeExisting = std::function<std::string(const std::filesystem::path& relative, const std::string& existing,
+                                                const std::string& mine)>;
 
 // The one mechanism every writer of an output folder goes through (export, report, glpreview):
 // 1. construction: the folders above `dir` are created if missing; staging folders that killed writers left beside

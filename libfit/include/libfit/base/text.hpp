@@ -19,9 +19,12 @@ inline std::string one_line(const std::string& text) {
     std::string out;
     bool in_tag = false, space = false;
     for (char c : text) {
-        if (c == '<') in_tag = true;
-        else if (c == '>') in_tag = false;
-        else if (!in_tag && (c == '\n' || c == '\r' || c == ' ' || c == '\t')) space = !out.empty();
+        if (c == '<')
+            in_tag = true;
+        else if (c == '>')
+            in_tag = false;
+        else if (!in_tag && (c == '\n' || c == '\r' || c == ' ' || c == '\t'))
+            space = !out.empty();
         else if (!in_tag) {
             if (space) out += ' ';
             out += c;

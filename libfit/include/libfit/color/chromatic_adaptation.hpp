@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "libfit/base/enum_names.hpp"
 #include "libfit/color/color.hpp"
 #include "libfit/color/matrix3.hpp"
 
@@ -16,9 +17,14 @@ enum class Adaptation {
     von_kries_xyz,  // scaling X, Y, Z themselves ("XYZ scaling")
     none,           // no adaptation
 };
+inline constexpr EnumNames kAdaptationNames{"chromatic adaptation", KnownNamesWording::expected,
+                                            std::array{EnumName<Adaptation>{Adaptation::bradford, "bradford"},
+                                                       EnumName<Adaptation>{Adaptation::cat02, "cat02"},
+                                                       EnumName<Adaptation>{Adaptation::von_kries_xyz, "von-kries-xyz"},
+                                                       EnumName<Adaptation>{Adaptation::none, "none"}}};
 
 Adaptation parse_adaptation(std::string_view s);  // "bradford" | "cat02" | "von-kries-xyz" | "none"; UsageError
-std::string to_string(Adaptation a);               // the same names
+std::string to_string(Adaptation a);              // the same names
 
 // The cone-space matrix of a method (identity for von-kries-xyz and none).
 Matrix3 cone_matrix(Adaptation a);

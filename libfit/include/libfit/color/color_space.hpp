@@ -21,7 +21,8 @@ struct OcioConfigChoice {
 // $OCIO if set (origin "$OCIO"), else `explicit_config` if given (origin `explicit_origin`: the caller names where it
 // came from, e.g. its command-line option), else <data_dir>/ocio/config.ocio (origin "metalfit default").
 OcioConfigChoice choose_ocio_config(const std::optional<std::filesystem::path>& explicit_config,
-                                    const std::filesystem::path& data_dir, const std::string& explicit_origin = "explicit");
+                                    const std::filesystem::path& data_dir,
+                                    const std::string& explicit_origin = "explicit");
 
 // The role through which XYZ is found, and the default target role.
 inline constexpr const char* kXyzRole = "cie_xyz_d65_interchange";

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "libfit/base/enum_names.hpp"
 #include "libfit/color/chromatic_adaptation.hpp"
 #include "libfit/color/color.hpp"
 #include "libfit/color/illuminant.hpp"
@@ -16,6 +17,12 @@
 namespace metalfit {
 
 enum class Observer { cie1931_2deg, cie1964_10deg, cie2015_2deg, cie2015_10deg };
+// The --cmf values.
+inline constexpr EnumNames kObserverNames{"observer", KnownNamesWording::expected,
+                                          std::array{EnumName<Observer>{Observer::cie1931_2deg, "1931"},
+                                                     EnumName<Observer>{Observer::cie1964_10deg, "1964"},
+                                                     EnumName<Observer>{Observer::cie2015_2deg, "2015-2"},
+                                                     EnumName<Observer>{Observer::cie2015_10deg, "2015-10"}}};
 
 Observer parse_observer(std::string_view s);  // "1931" | "1964" | "2015-2" | "2015-10"; UsageError otherwise
 std::string to_string(Observer o);            // "CIE 1931 2°" / "CIE 1964 10°" / "CIE 2015 2°" / "CIE 2015 10°"

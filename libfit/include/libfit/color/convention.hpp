@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "libfit/base/enum_names.hpp"
 #include "libfit/color/chromatic_adaptation.hpp"
 #include "libfit/color/colorimetry.hpp"
 #include "libfit/color/illuminant.hpp"
@@ -16,6 +17,10 @@ enum class Convention {
     adobe,            // Adobe's metal-colors table (peterkutz/metal-colors): CIE 2015 2°, D65, no adaptation
     physicallybased,  // physicallybased.info: CIE 1931 2°; D65 for D65 spaces, D60 for the ACES spaces; Bradford
 };
+inline constexpr EnumNames kConventionNames{
+    "convention", KnownNamesWording::expected,
+    std::array{EnumName<Convention>{Convention::metalfit, "metalfit"}, EnumName<Convention>{Convention::adobe, "adobe"},
+               EnumName<Convention>{Convention::physicallybased, "physicallybased"}}};
 
 Convention parse_convention(std::string_view s);  // "metalfit" | "adobe" | "physicallybased"; UsageError
 std::string to_string(Convention c);

@@ -25,7 +25,8 @@ struct DaylightCoefficients {
 enum class DaylightRounding { cie_three_decimals, unrounded };
 
 // Throws UsageError outside 4000–25000 K (the range of the CIE's x_D formulas).
-DaylightCoefficients daylight_coefficients(double kelvin, DaylightRounding rounding = DaylightRounding::cie_three_decimals);
+DaylightCoefficients daylight_coefficients(double kelvin,
+                                           DaylightRounding rounding = DaylightRounding::cie_three_decimals);
 
 // S₀, S₁, S₂ at 5 nm (data/cie/cie_daylight_basis_S0S1S2.csv, 300–830 nm).
 struct DaylightBasis {

@@ -35,7 +35,9 @@ public:
     // 8-bit display-referred RGB of interleaved scene-linear RGB pixels (width × height, rows kept as given):
     // each value clamped to [0, 1] after the transform and rounded to the nearest of 0 … 255.
     std::vector<unsigned char> apply(std::span<const float> rgb, int width, int height) const;
-    const std::string& description() const { return description_; }  // "Linear Rec.709 (sRGB) → sRGB - Display / Un-tone-mapped"
+    const std::string& description() const {
+        return description_;
+    }  // "Linear Rec.709 (sRGB) → sRGB - Display / Un-tone-mapped"
     const DisplayEncoding& encoding() const { return encoding_; }
 
     ~DisplayTransform();

@@ -32,7 +32,8 @@ public:
     friend bool operator==(const Illuminant& a, const Illuminant& b) { return a.name_ == b.name_; }
 
 private:
-    Illuminant(Kind kind, std::string name, double kelvin = 0.0) : kind_(kind), name_(std::move(name)), kelvin_(kelvin) {}
+    Illuminant(Kind kind, std::string name, double kelvin = 0.0)
+        : kind_(kind), name_(std::move(name)), kelvin_(kelvin) {}
     Kind kind_;
     std::string name_;
     double kelvin_;
@@ -43,7 +44,7 @@ inline const Illuminant Illuminant::D50{Illuminant::Kind::tabulated, "D50"};
 inline const Illuminant Illuminant::A{Illuminant::Kind::tabulated, "A"};
 inline const Illuminant Illuminant::E{Illuminant::Kind::equal_energy, "E"};
 
-Illuminant parse_illuminant(std::string_view s);         // Illuminant::parse
+Illuminant parse_illuminant(std::string_view s);  // Illuminant::parse
 inline std::string to_string(const Illuminant& i) { return i.name(); }
 
 }  // namespace metalfit

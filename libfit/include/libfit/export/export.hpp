@@ -7,25 +7,34 @@
 #include <string_view>
 #include <vector>
 
+#include "libfit/base/enum_names.hpp"
+#include "libfit/export/roughness.hpp"
 #include "libfit/fit/fit.hpp"
 #include "libfit/fit/fit_record.hpp"
 #include "libfit/fit/metrics.hpp"
+#include "libfit/fit/parameter_source.hpp"
 #include "libfit/models/model.hpp"
 
 namespace metalfit {
 
+// The formats, in the order `--format all` writes them (each format's writer, files and rules: the private
+// format registry, src/export/format_registry.hpp).
 enum class ExportFormat { json, glsl, hlsl, mtlx, openpbr, cpp, gltf };
+inline constexpr EnumNames kExportFormatNames{
+    "export format", KnownNamesWording::known,
+    std::array{EnumName<ExportFormat>{ExportFormat::json, "json"}, EnumName<ExportFormat>{ExportFormat::glsl, "glsl"},
+               EnumName<ExportFormat>{ExportFormat::hlsl, "hlsl"}, EnumName<ExportFormat>{ExportFormat::mtlx, "mtlx"},
+               EnumName<ExportFormat>{ExportFormat::openpbr, "openpbr"},
+               EnumName<ExportFormat>{ExportFormat::cpp, "cpp"}, EnumName<ExportFormat>{ExportFormat::gltf, "gltf"}}};
 std::string to_string(ExportFormat format);
-// "glsl,mtlx" or "all", in the order given (duplicates removed); UsageError naming the unknown format.
-std::vector<ExportFormat> parse_export_formats(std::string_view list);
-
-// Which parameters are written: the Ceres fit, or the model's best defined closed form.
-enum class ParameterSource { fit, closed };
-ParameterSource parse_parameter_source(const std::string& text);  // "fit" | "closed", else UsageError
 
 // What happens to colour parameters (F0, tint, r, g) outside [0, 1]: written as they are and flagged, clipped to
 // [0, 1], or the whole colour scaled by 1 / max (Adobe's rule). n, k, a and α are not colours and are never changed.
 enum class GamutPolicy { keep, clip, scale };
+inline constexpr EnumNames kGamutPolicyNames{"gamut policy", KnownNamesWording::alternatives,
+                                             std::array{EnumName<GamutPolicy>{GamutPolicy::keep, "keep"},
+                                                        EnumName<GamutPolicy>{GamutPolicy::clip, "clip"},
+                                                        EnumName<GamutPolicy>{GamutPolicy::scale, "scale"}}};
 GamutPolicy parse_gamut_policy(const std::string& text);  // "keep" | "clip" | "scale", else UsageError
 std::string to_string(GamutPolicy policy);
 
@@ -33,10 +42,10 @@ std::string to_string(GamutPolicy policy);
 // compute_metrics on the material's sampled reference, so they describe what a consumer evaluates).
 struct WrittenParameters {
     const Model* model = nullptr;
-    std::string origin;                   // "fit" or "closed r1-r82"
+    std::string origin;  // "fit" or "closed r1-r82"
     ModelParameters params;
     Metrics metrics;
-    std::vector<std::string> gamut;       // one note per out-of-gamut colour parameter: what was done to it
+    std::vector<std::string> gamut;  // one note per out-of-gamut colour parameter: what was done to it
 };
 
 // Chooses the fit or the best closed form of `result`, applies the gamut policy and recomputes the metrics.
@@ -44,21 +53,13 @@ struct WrittenParameters {
 WrittenParameters written_parameters(const ModelResult& result, const SampledReference& reference,
                                      ParameterSource source, GamutPolicy gamut, const std::string& material_id);
 
-// The surface roughness written with the Fresnel parameters (MaterialX, OpenPBR, JSON): OpenPBR's
-// specular_roughness, perceptual, in [0, 1]; MaterialX's BSDFs receive it through roughness_anisotropy (α = R²),
-// so both folders render the same lobe. The default is OpenPBR's own default.
-inline constexpr double kDefaultRoughness = 0.3;
-inline constexpr const char* kDefaultRoughnessText = "0.3";  // as --help and the docs print it
-// "0.25" → 0.25; UsageError naming the value when it is not a number in [0, 1].
-double parse_roughness(const std::string& text);
-
 // The prefix of every per-material identifier an export writes (file stems, shader functions and constants, include
 // guards, C++ namespaces and the index, MaterialX / OpenPBR / glTF names): `<prefix>_<material>_<model>`. The shared
 // model functions (metalfit_f82_tint, …) keep their names. Written in metalfit_export.json only when not the default.
 inline constexpr const char* kDefaultIdPrefix = "metalfit";
-// "studio" → "studio"; UsageError naming the value unless it matches [a-z][a-z0-9_]{0,30}, has no "__", does not end
-// in '_', is not "gl" (GLSL reserves gl_…) and is not a C++, GLSL or HLSL keyword.
-std::string parse_id_prefix(const std::string& text);
+// Why `text` cannot be an id prefix, or empty when it can: it must match [a-z][a-z0-9_]{0,30}, have no "__", not
+// end in '_', not be "gl" (GLSL reserves gl_…) and not be a C++, GLSL or HLSL keyword.
+std::string id_prefix_problem(std::string_view text);
 
 struct ExportRequest {
     std::vector<ExportFormat> formats;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "libfit/base/enum_names.hpp"
 #include "libfit/fit/fit.hpp"
 #include "libfit/fit/model_cost.hpp"
 
@@ -14,6 +15,11 @@ namespace metalfit {
 
 // The metric a budget bounds: the worst channel's rel_rms or max_rel (fractions), or the worst ΔE2000 (units of ΔE).
 enum class BudgetMetric { rel_rms, max_rel, de2000_max };
+inline constexpr EnumNames kBudgetMetricNames{
+    "budget metric", KnownNamesWording::known,
+    std::array{EnumName<BudgetMetric>{BudgetMetric::rel_rms, "rel_rms"},
+               EnumName<BudgetMetric>{BudgetMetric::max_rel, "max_rel"},
+               EnumName<BudgetMetric>{BudgetMetric::de2000_max, "de2000_max"}}};
 std::string to_string(BudgetMetric metric);
 BudgetMetric parse_budget_metric(const std::string& text);  // "rel_rms" | "max_rel" | "de2000_max", else UsageError
 

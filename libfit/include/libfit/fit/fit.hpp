@@ -10,8 +10,8 @@
 
 #include "libfit/base/phase_clock.hpp"
 #include "libfit/color/colorimetry.hpp"
-#include "libfit/io/material.hpp"
 #include "libfit/fit/metrics.hpp"
+#include "libfit/io/material.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/reference/reference_curve.hpp"
 #include "libfit/reference/sampled_reference.hpp"
@@ -84,6 +84,9 @@ struct FitConstraints {
     // constraint; closed forms outside it are never kept as fallbacks. Not together with pin_f0 (UsageError).
     bool gamut_fit = false;
     bool operator==(const FitConstraints&) const = default;
+    // The one place that says which constraints combine: a UsageError for a combination that cannot be met (pin_f0
+    // with gamut_fit). fit_model calls it; a command line calls it before any work.
+    void check_combination() const;
 };
 
 // Requires the chosen metric to be defined on the reference (see SampledReference::rel_undefined).

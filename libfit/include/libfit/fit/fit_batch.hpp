@@ -17,8 +17,8 @@ namespace metalfit {
 // unknown name or a bad file fails before any work). The loaders refer to `catalog`, which must outlive them.
 // `labels` name and cite a user file (UsageError with `all`, several materials or a catalog material).
 std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, bool all,
-                                                        const std::vector<std::string>& materials, const std::string& source,
-                                                        const UserFileLabels& labels = {});
+                                                        const std::vector<std::string>& materials,
+                                                        const std::string& source, const UserFileLabels& labels = {});
 
 // The colour pipeline a batch fits under: the OCIO config (each thread builds its own processor from it), the
 // colorimetry, and the converter of the calling thread.

@@ -49,10 +49,10 @@ nlohmann::ordered_json material_record(const MaterialFit& fit, const BudgetChoic
 // "value", "qualifies", "reason"}]} (docs/fit-record.md).
 nlohmann::ordered_json budget_record(const BudgetChoice& choice);
 
-// {"params": {name: [r, g, b]}, "metrics": the seven keys of DESIGN.md, "metrics_at_mu": where the maxima are}:
+// {"params": {name: [r, g, b]}, "metrics": the seven keys of docs/fitting.md ("Definitions"), "metrics_at_mu": where the maxima are}:
 // how every set of evaluated parameters (fit, closed form, exported values) appears in records.
 nlohmann::ordered_json evaluated_record(const Model& model, const EvaluatedParameters& value);
-// The seven metrics of DESIGN.md as the record writes them (also in the OpenPBR JSON and glTF extras).
+// The seven metrics of docs/fitting.md ("Definitions") as the record writes them (also in the OpenPBR JSON and glTF extras).
 nlohmann::ordered_json metrics_record(const Metrics& metrics);
 
 // The JSON of one model's results (the value under materials.<id>.models.<model id>).

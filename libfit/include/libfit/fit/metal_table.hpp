@@ -23,7 +23,7 @@ using Display8 = std::array<unsigned char, 3>;
 
 struct MetalTableRow {
     std::string id, name, kind, source, reference, note;
-    RGB f0, tint;                 // linear, in the table's working space (may leave [0, 1]: flagged in the outputs)
+    RGB f0, tint;  // linear, in the table's working space (may leave [0, 1]: flagged in the outputs)
     Display8 f0_display{}, tint_display{};  // 8-bit display-referred (clamped to [0, 1] by the transform)
 };
 

@@ -32,8 +32,8 @@ inline constexpr const char* kPhysicallyBasedAcescg = "ACEScg";
 
 // One material in one colour space.
 struct PhysicallyBasedLook {
-    RGB f0, f82_tint, edge_tint;                 // edge_tint: Gulbrandsen's g
-    std::array<std::complex<double>, 3> eta{};   // n + i k per channel
+    RGB f0, f82_tint, edge_tint;                // edge_tint: Gulbrandsen's g
+    std::array<std::complex<double>, 3> eta{};  // n + i k per channel
 };
 
 struct PhysicallyBasedRow {

@@ -14,17 +14,17 @@ namespace metalfit {
 // What a table covers, as written in the catalog by scripts/catalog-coverage.py (so that listing the catalog parses
 // no table); CatalogCoverage.MetadataMatchesEveryTable checks it against the tables.
 struct CatalogCoverage {
-    WavelengthRange range_nm;       // where n and k are both defined
+    WavelengthRange range_nm;        // where n and k are both defined
     std::size_t points_360_830 = 0;  // tabulated samples of n inside 360–830 nm
 };
 
 struct CatalogSource {
-    std::string source;               // "Johnson"
-    std::filesystem::path file;       // absolute path of the nk file
+    std::string source;          // "Johnson"
+    std::filesystem::path file;  // absolute path of the nk file
     std::string reference;
-    std::string doi;                  // empty when none
+    std::string doi;  // empty when none
     std::string licence;
-    std::string database_path;        // path in the refractiveindex.info repository
+    std::string database_path;  // path in the refractiveindex.info repository
     std::string note;
     std::optional<CatalogCoverage> coverage;  // absent in catalogs written without it
 };
@@ -73,7 +73,7 @@ struct UserFileLabels {
 
 // Loads a catalog material (optionally a named alternate source) or a user file, with provenance; `labels` apply to
 // a user file only. Unknown material or source, or labels for a catalog material: UsageError; bad file: InputError.
-Material load_material(const Catalog& catalog, std::string_view material_or_path,
-                       std::string_view source = {}, const UserFileLabels& labels = {});
+Material load_material(const Catalog& catalog, std::string_view material_or_path, std::string_view source = {},
+                       const UserFileLabels& labels = {});
 
 }  // namespace metalfit

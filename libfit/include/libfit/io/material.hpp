@@ -12,14 +12,14 @@ namespace metalfit {
 
 struct Provenance {
     std::filesystem::path file;
-    std::string sha256;                          // of the file's bytes
-    std::string format;                          // "refractiveindex.info YAML" or "CSV"
-    std::string references;                      // REFERENCES (or the catalog's reference, or --reference)
-    std::string note;                            // caveat to show beside results (the catalog's note:
-                                                 // "DFT calculation, not a measurement"); empty when none
-    std::string comments;                        // COMMENTS
+    std::string sha256;                             // of the file's bytes
+    std::string format;                             // "refractiveindex.info YAML" or "CSV"
+    std::string references;                         // REFERENCES (or the catalog's reference, or --reference)
+    std::string note;                               // caveat to show beside results (the catalog's note:
+                                                    // "DFT calculation, not a measurement"); empty when none
+    std::string comments;                           // COMMENTS
     std::map<std::string, std::string> conditions;  // CONDITIONS, values as written
-    std::string data_type;                       // e.g. "tabulated nk", "tabulated n + tabulated k"
+    std::string data_type;                          // e.g. "tabulated nk", "tabulated n + tabulated k"
 };
 
 struct Material {

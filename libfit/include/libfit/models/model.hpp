@@ -5,14 +5,14 @@
 #pragma once
 
 #include <array>
-#include <cstddef>
-#include <utility>
 #include <complex>
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "libfit/color/color.hpp"
@@ -26,8 +26,8 @@ namespace metalfit {
 enum class ParameterKind { unstated, colour, index, shape };
 
 struct Parameter {
-    std::string_view name;     // as in exports and JSON ("F0", "tint", "n", "k", "a", "alpha", "r", "g")
-    double lower = 0.0;        // fit bounds: wide enough to keep out-of-gamut values (F0 > 1)
+    std::string_view name;  // as in exports and JSON ("F0", "tint", "n", "k", "a", "alpha", "r", "g")
+    double lower = 0.0;     // fit bounds: wide enough to keep out-of-gamut values (F0 > 1)
     double upper = 0.0;
     std::string_view meaning;  // one line for docs and export headers
     ParameterKind kind = ParameterKind::unstated;
@@ -70,8 +70,8 @@ private:
 
 // What closed forms are computed from.
 struct ClosedFormInput {
-    std::function<RGB(double mu)> reference;               // R_c(μ), white balanced
-    std::function<std::complex<double>(double nm)> eta;    // measured η(λ)
+    std::function<RGB(double mu)> reference;             // R_c(μ), white balanced
+    std::function<std::complex<double>(double nm)> eta;  // measured η(λ)
 };
 
 // One closed form of a model: parameters per channel, or why it is undefined there.
@@ -85,7 +85,7 @@ struct ClosedForm {
     std::array<ClosedFormChannel, 3> channel;
 
     bool defined() const;
-    ModelParameters params() const;      // requires defined()
+    ModelParameters params() const;        // requires defined()
     std::string undefined_reason() const;  // "red: ...; blue: ..." (empty when defined)
 };
 
@@ -96,7 +96,7 @@ struct SolverSummary {
     std::string termination;  // Ceres termination type
     double initial_cost = 0;  // ½ Σ residual² at the winning start
     double final_cost = 0;
-    int starts = 0;           // how many starts were tried
+    int starts = 0;  // how many starts were tried
 };
 
 // The methods a fit's parameters are solved by (docs/fit-record.md, `solver.solver`).
@@ -117,7 +117,7 @@ struct NamedStart {
     ChannelParameters params;
 };
 
-// Constraints of one channel's fit.
+// Constraints of one channel's fit (from FitConstraints, whose check_combination has passed: never both).
 struct ChannelConstraints {
     // --pin F0: F(1) equals this value exactly (the pinned parameter is computed from the others, Model::pin_f0).
     std::optional<double> pinned_f0;
@@ -158,7 +158,7 @@ public:
     // --pin F0: whether the model can hold F(1) at a given value, which parameter it computes for it, and that value
     // written into params (which may then lie outside the parameter's bounds: the data need another F(1)).
     virtual bool can_pin_f0() const = 0;
-    virtual std::size_t pinned_parameter() const = 0;  // requires can_pin_f0()
+    virtual std::size_t pinned_parameter() const = 0;                    // requires can_pin_f0()
     virtual void pin_f0(std::span<double> params, double F0) const = 0;  // requires can_pin_f0()
 
     // GLSL: the name of the model's function, vec3 <name>(vec3 param..., float mu), and the source text of it and

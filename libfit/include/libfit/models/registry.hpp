@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "libfit/models/model.hpp"
-#include "libfit/models/model_math.hpp"
 #include "libfit/models/model_headers.hpp"  // generated: the header of every model folder
+#include "libfit/models/model_math.hpp"
 
 namespace metalfit {
 
@@ -28,8 +28,8 @@ struct ModelList {
 };
 
 // The registry, in the order of listings, records, exports and benchmark tables.
-using Registry = ModelList<models::Schlick, models::Lazanyi, models::LazanyiComp, models::F82Tint,
-                           models::ConductorRgb, models::Gulbrandsen, models::SchlickCompLinear, models::SchlickComp,
+using Registry = ModelList<models::Schlick, models::Lazanyi, models::LazanyiComp, models::F82Tint, models::ConductorRgb,
+                           models::Gulbrandsen, models::SchlickCompLinear, models::SchlickComp,
                            models::SchlickCompGeneral, models::Rational>;
 
 // Calls f.template operator()<M>() for every model M of a list, in order.
@@ -42,12 +42,13 @@ namespace detail {
 
 template <std::size_t N>
 constexpr bool every_kind_stated(const std::array<Parameter, N>& parameters) {
-    return std::all_of(parameters.begin(), parameters.end(), [](const Parameter& p) { return p.kind != ParameterKind::unstated; });
+    return std::all_of(parameters.begin(), parameters.end(),
+                       [](const Parameter& p) { return p.kind != ParameterKind::unstated; });
 }
 
 template <std::size_t N>
-constexpr bool parameters_are(const std::array<Parameter, N>& parameters, std::string_view first, std::string_view second,
-                              ParameterKind kind) {
+constexpr bool parameters_are(const std::array<Parameter, N>& parameters, std::string_view first,
+                              std::string_view second, ParameterKind kind) {
     return N == 2 && parameters[0].name == first && parameters[1].name == second && parameters[0].kind == kind &&
            parameters[1].kind == kind;
 }
@@ -57,12 +58,13 @@ constexpr bool parameters_are(const std::array<Parameter, N>& parameters, std::s
 // What a model struct must state. The fitter needs the evaluation (templated: float, double, Ceres Jets), bounds,
 // closed forms and starts; the renderer and the shader exports its GLSL; the exporters its traits.
 template <class M>
-concept ModelDefinition = requires(const double* p, double mu, const float* pf, float muf, const ClosedFormInput& input) {
+concept ModelDefinition = requires(const double* p, double mu, const float* pf, float muf,
+                                   const ClosedFormInput& input) {
     { M::kId } -> std::convertible_to<std::string_view>;
     { M::kTitle } -> std::convertible_to<std::string_view>;
     { M::kParameters.size() } -> std::convertible_to<std::size_t>;
     { M::kGlslFunction } -> std::convertible_to<std::string_view>;
-    { std::span<const std::string_view>(M::kGlslFiles) };
+    {std::span<const std::string_view>(M::kGlslFiles)};
     { M::evaluate(p, mu) } -> std::same_as<double>;
     { M::evaluate(pf, muf) } -> std::same_as<float>;
     { M::closed_forms(input) } -> std::same_as<std::vector<ClosedForm>>;
@@ -108,8 +110,11 @@ constexpr bool check_model_traits() {
                       detail::parameters_are(M::kParameters, "r", "g", ParameterKind::colour),
                   "artistic_ior takes a model whose parameters are r, g (colour)");
     if constexpr (M::kMaterialx == MaterialxForm::stand_in) {
-        static_assert(requires { { M::kMaterialxStandIn } -> std::convertible_to<std::string_view>; },
-                      "a model MaterialX cannot express states why (kMaterialxStandIn)");
+        static_assert(
+            requires {
+                { M::kMaterialxStandIn } -> std::convertible_to<std::string_view>;
+            },
+            "a model MaterialX cannot express states why (kMaterialxStandIn)");
         static_assert(!std::string_view(M::kMaterialxStandIn).empty(), "kMaterialxStandIn must say why");
     }
     return true;

@@ -19,9 +19,7 @@ struct FresnelReflectance {
 FresnelReflectance fresnel_reflectance(double mu, std::complex<double> eta);
 
 // Unpolarised reflectance, (F_s + F_p) / 2.
-inline double fresnel(double mu, std::complex<double> eta) {
-    return fresnel_reflectance(mu, eta).unpolarized();
-}
+inline double fresnel(double mu, std::complex<double> eta) { return fresnel_reflectance(mu, eta).unpolarized(); }
 
 // Normal incidence: ((n − 1)² + k²) / ((n + 1)² + k²).
 double fresnel_normal_incidence(std::complex<double> eta);

@@ -34,9 +34,13 @@ SquaredIndex<T> squared_index(std::complex<double> eta) {
 namespace fresnel_real_detail {
 // By value (std::min/max return references, which keep the compiler from if-converting the loop).
 template <class T>
-inline T min_of(T a, T b) { return b < a ? b : a; }  // a when NaN
+inline T min_of(T a, T b) {
+    return b < a ? b : a;
+}  // a when NaN
 template <class T>
-inline T max_of(T a, T b) { return a < b ? b : a; }
+inline T max_of(T a, T b) {
+    return a < b ? b : a;
+}
 }  // namespace fresnel_real_detail
 
 // Unpolarised reflectance (|r_s|² + |r_p|²)/2 at μ (clamped to [0, 1]) of the index whose η² is given as SquaredIndex;

@@ -22,7 +22,7 @@ struct SpectralOptions {
     OutOfRange out_of_range = OutOfRange::error;
 };
 
-// R_c(μ) = RGB_c(XYZ(F(·, μ))) / RGB_c(perfect reflector) (DESIGN.md), so R_c(0) = 1 in every
+// R_c(μ) = RGB_c(XYZ(F(·, μ))) / RGB_c(perfect reflector) (docs/colour.md, "White balance"), so R_c(0) = 1 in every
 // space. η(λ) is sampled once on the colorimetry's 1 nm grid and kept as the per-λ constants of the real Fresnel form
 // (optics/fresnel_real.hpp); each μ costs one real Fresnel evaluation per wavelength and one OCIO conversion. The
 // batch forms evaluate several μ per wavelength at once (vectorised across μ; each μ's sum over λ keeps the order of
@@ -31,11 +31,11 @@ class ReferenceCurve {
 public:
     // Throws InputError naming the material's file when its data do not cover 360–830 nm (and
     // options.out_of_range is error).
-    ReferenceCurve(const Material& material, const Colorimetry& colorimetry,
-                   ColorSpaceConverter converter, SpectralOptions options = {});
+    ReferenceCurve(const Material& material, const Colorimetry& colorimetry, ColorSpaceConverter converter,
+                   SpectralOptions options = {});
 
-    RGB operator()(double mu) const;  // white balanced
-    XYZ xyz(double mu) const;         // before the colour space
+    RGB operator()(double mu) const;                                // white balanced
+    XYZ xyz(double mu) const;                                       // before the colour space
     std::vector<RGB> operator()(std::span<const double> mu) const;  // white balanced, one per μ
     std::vector<XYZ> xyz(std::span<const double> mu) const;
     // RGB of the perfect reflector before white balance (provenance: about (1.00016, 0.99998,

@@ -30,7 +30,7 @@ struct OutOfGamutValue {
 };
 
 struct ReflectanceSummary {
-    std::vector<ReflectanceSample> samples;    // F0, F82, R(0.5), R(0.25), R(0.1)
+    std::vector<ReflectanceSample> samples;     // F0, F82, R(0.5), R(0.25), R(0.1)
     std::vector<OutOfGamutValue> out_of_gamut;  // every sample value outside [0, 1], in sample order
 };
 
@@ -38,8 +38,8 @@ ReflectanceSummary summarize_reflectance(const ReferenceCurve& curve);
 
 // The record: material, space, the samples, out-of-gamut values, provenance (file, digest, coverage, colour
 // pipeline, the raw white), the material's warnings.
-nlohmann::json reflectance_record(const Material& material, const ReferenceCurve& curve, const ReflectanceSummary& summary,
-                                  const Colorimetry& colorimetry,
+nlohmann::json reflectance_record(const Material& material, const ReferenceCurve& curve,
+                                  const ReflectanceSummary& summary, const Colorimetry& colorimetry,
                                   const OcioConfigChoice& config, const SpectralOptions& spectral,
                                   Convention convention = Convention::metalfit);
 

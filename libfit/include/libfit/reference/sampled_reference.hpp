@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "libfit/base/enum_names.hpp"
 #include "libfit/color/color.hpp"
 #include "libfit/color/color_difference.hpp"
 #include "libfit/reference/channel_target.hpp"
@@ -14,10 +15,16 @@
 
 namespace metalfit {
 
-// Error metric minimised by the fit (DESIGN.md): relative or absolute difference to R_c.
+// Error metric minimised by the fit (docs/fitting.md, "Definitions"): relative or absolute difference to R_c.
 enum class ErrorMetric { rel, abs };
 // Angular weight w(μ) of the error integrals: 1 (uniform over the hemisphere) or 2μ (projected solid angle).
 enum class AngularWeight { uniform, cosine };
+inline constexpr EnumNames kErrorMetricNames{
+    "error metric", KnownNamesWording::known,
+    std::array{EnumName<ErrorMetric>{ErrorMetric::rel, "rel"}, EnumName<ErrorMetric>{ErrorMetric::abs, "abs"}}};
+inline constexpr EnumNames kAngularWeightNames{"angular weight", KnownNamesWording::known,
+                                               std::array{EnumName<AngularWeight>{AngularWeight::uniform, "uniform"},
+                                                          EnumName<AngularWeight>{AngularWeight::cosine, "cosine"}}};
 
 std::string to_string(ErrorMetric m);
 std::string to_string(AngularWeight w);

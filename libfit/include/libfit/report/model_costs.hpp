@@ -38,12 +38,13 @@ struct BudgetMark {
 // The inputs the report shows for cost and budget; every field may be empty (then the pages say so).
 struct CostAndBudget {
     std::optional<ModelCosts> costs;
-    std::optional<double> budget;                 // worst-channel rel_rms the choice had to meet
+    std::optional<double> budget;               // worst-channel rel_rms the choice had to meet
     std::map<std::string, BudgetMark> choices;  // material id → choice
 };
 
 // What the report shows for a cost table (the built-in SPIR-V op counts or a `metalfit bench --json` file) and, when
 // a budget is given, each material's choose_model() result.
-CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable& table, const std::optional<Budget>& budget);
+CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable& table,
+                           const std::optional<Budget>& budget);
 
 }  // namespace metalfit

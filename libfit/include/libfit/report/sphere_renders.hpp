@@ -8,11 +8,16 @@
 #include <string>
 #include <vector>
 
+#include "libfit/base/enum_names.hpp"
 #include "libfit/color/color_space.hpp"
 
 namespace metalfit {
 
 enum class RenderMode { auto_, on, off };
+inline constexpr EnumNames kRenderModeNames{"--renders mode", KnownNamesWording::alternatives,
+                                            std::array{EnumName<RenderMode>{RenderMode::auto_, "auto"},
+                                                       EnumName<RenderMode>{RenderMode::on, "on"},
+                                                       EnumName<RenderMode>{RenderMode::off, "off"}}};
 RenderMode parse_render_mode(const std::string& text);  // "auto" | "on" | "off", else UsageError
 
 // Where one model's render of one material at one roughness lies in the sheet (columns; the row is the material's).
@@ -23,9 +28,9 @@ struct SphereSheetCells {
 };
 
 struct SphereSheetImage {
-    std::string png;                     // the bytes of glpreview's sheet.png (labelled)
-    std::vector<std::string> materials;  // row r shows materials[r] ...
-    std::vector<std::string> models;     // ... with a column group per model, in this order
+    std::string png;                                                // the bytes of glpreview's sheet.png (labelled)
+    std::vector<std::string> materials;                             // row r shows materials[r] ...
+    std::vector<std::string> models;                                // ... with a column group per model, in this order
     std::vector<std::vector<std::vector<SphereSheetCells>>> cells;  // cells[r][m]: row r, models[m], per roughness
     int cell_width = 0, cell_height = 0;
 };
@@ -43,7 +48,7 @@ struct SphereRenderRequest {
     std::vector<std::string> models;     // libfit model ids (the report's), one column group each
     std::filesystem::path data_dir;
     OcioConfigChoice ocio;
-    int cell_size = 160;                 // pixels, square cells
+    int cell_size = 160;  // pixels, square cells
 };
 
 // glpreview in the directory of the running executable (empty when it is not there).

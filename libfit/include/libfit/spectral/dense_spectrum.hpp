@@ -19,7 +19,8 @@ class DenseSpectrum {
 public:
     DenseSpectrum() = default;
     // first_nm..last_nm inclusive, every value `fill`.
-    DenseSpectrum(int first_nm, int last_nm, T fill = T{}) : first_nm_(first_nm), values_(check_grid(first_nm, last_nm), fill) {}
+    DenseSpectrum(int first_nm, int last_nm, T fill = T{})
+        : first_nm_(first_nm), values_(check_grid(first_nm, last_nm), fill) {}
 
     // The values f(nm) at every nm of the grid.
     template <class F>
@@ -61,7 +62,8 @@ public:
 private:
     static std::size_t check_grid(int first_nm, int last_nm) {
         if (last_nm < first_nm)
-            throw std::invalid_argument("DenseSpectrum: empty grid " + std::to_string(first_nm) + "–" + std::to_string(last_nm) + " nm");
+            throw std::invalid_argument("DenseSpectrum: empty grid " + std::to_string(first_nm) + "–" +
+                                        std::to_string(last_nm) + " nm");
         return static_cast<std::size_t>(last_nm - first_nm + 1);
     }
     std::size_t index_of(int nm) const {
@@ -79,8 +81,9 @@ private:
 template <class A, class B>
 auto sum_of_products(const DenseSpectrum<A>& a, const DenseSpectrum<B>& b) {
     if (!a.same_grid(b))
-        throw std::invalid_argument("spectra on different grids: " + std::to_string(a.first_nm()) + "–" + std::to_string(a.last_nm()) +
-                                    " nm and " + std::to_string(b.first_nm()) + "–" + std::to_string(b.last_nm()) + " nm");
+        throw std::invalid_argument("spectra on different grids: " + std::to_string(a.first_nm()) + "–" +
+                                    std::to_string(a.last_nm()) + " nm and " + std::to_string(b.first_nm()) + "–" +
+                                    std::to_string(b.last_nm()) + " nm");
     decltype(a[0] * b[0]) sum{};
     for (std::size_t i = 0; i < a.size(); ++i) sum += a[i] * b[i];
     return sum;

@@ -7,21 +7,29 @@
 #include <string>
 #include <vector>
 
+#include "libfit/base/enum_names.hpp"
+
 namespace metalfit {
 
 enum class Interpolation { linear, pchip };
-// "linear" / "pchip", as records and options spell them.
-inline const char* to_string(Interpolation i) { return i == Interpolation::pchip ? "pchip" : "linear"; }
+// "linear" / "pchip", as records and options (--interp) spell them.
+inline constexpr EnumNames kInterpolationNames{"interpolation", KnownNamesWording::alternatives,
+                                               std::array{EnumName<Interpolation>{Interpolation::linear, "linear"},
+                                                          EnumName<Interpolation>{Interpolation::pchip, "pchip"}}};
+inline std::string to_string(Interpolation i) { return std::string(kInterpolationNames.name(i)); }
 // What to do when asked for a wavelength outside the measured range.
 enum class OutOfRange { error, clamp };
+// "error" / "clamp", as records spell them.
+inline constexpr EnumNames kOutOfRangeNames{
+    "out-of-range rule", KnownNamesWording::alternatives,
+    std::array{EnumName<OutOfRange>{OutOfRange::error, "error"}, EnumName<OutOfRange>{OutOfRange::clamp, "clamp"}}};
+inline std::string to_string(OutOfRange o) { return std::string(kOutOfRangeNames.name(o)); }
 
 struct WavelengthRange {
     double min_nm = 0.0;
     double max_nm = 0.0;
     bool contains(double nm) const { return nm >= min_nm && nm <= max_nm; }
-    bool covers(const WavelengthRange& other) const {
-        return min_nm <= other.min_nm && max_nm >= other.max_nm;
-    }
+    bool covers(const WavelengthRange& other) const { return min_nm <= other.min_nm && max_nm >= other.max_nm; }
 };
 
 // The visible range every colour computation integrates over (1 nm steps).

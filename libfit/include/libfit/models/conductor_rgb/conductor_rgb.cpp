@@ -6,7 +6,8 @@ namespace metalfit::models {
 
 std::vector<ClosedForm> ConductorRgb::closed_forms(const ClosedFormInput& input) {
     const auto nk = [](std::complex<double> eta) { return ChannelParameters{eta.real(), eta.imag()}; };
-    return {detail::closed_form_from_wavelengths(input, detail::kRgbWavelengths, "n, k of the data at 650, 550, 450 nm", nk),
+    return {detail::closed_form_from_wavelengths(input, detail::kRgbWavelengths, "n, k of the data at 650, 550, 450 nm",
+                                                 nk),
             detail::closed_form_from_wavelengths(input, detail::kThesisWavelengths,
                                                  "n, k of the data at 700, 550, 435 nm (the thesis)", nk)};
 }

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "models/closed_form_support.hpp"
 #include "libfit/reference/reference_curve.hpp"
+#include "models/closed_form_support.hpp"
 
 namespace metalfit::models {
 

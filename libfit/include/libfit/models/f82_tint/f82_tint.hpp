@@ -17,7 +17,8 @@ struct F82Tint {
     static constexpr std::string_view kTitle = "F82-tint (Hoffman 2019; OpenPBR specular_color)";
     static constexpr std::array<Parameter, 2> kParameters{{
         {"F0", -1.0, 2.0, "reflectance at normal incidence (OpenPBR base_color)", ParameterKind::colour},
-        {"tint", -1.0, 4.0, "F(1/7) / Schlick(F0, 1/7) (OpenPBR specular_color, MaterialX color82)", ParameterKind::colour},
+        {"tint", -1.0, 4.0, "F(1/7) / Schlick(F0, 1/7) (OpenPBR specular_color, MaterialX color82)",
+         ParameterKind::colour},
     }};
     static constexpr std::string_view kGlslFunction = "metalfit_f82_tint";
     static constexpr std::array<std::string_view, 2> kGlslFiles{"schlick", "f82_tint"};
@@ -26,7 +27,9 @@ struct F82Tint {
     // --pin F0: F(1) = F0.
     static constexpr std::size_t kPinnedParameter = 0;
     template <class T>
-    static T pinned_value(const T*, const T& F0) { return F0; }
+    static T pinned_value(const T*, const T& F0) {
+        return F0;
+    }
 
     template <class T>
     static T evaluate(const T* p, const T& mu_in) {

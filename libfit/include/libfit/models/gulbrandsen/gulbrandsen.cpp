@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "models/closed_form_support.hpp"
 #include "libfit/optics/fresnel.hpp"
+#include "models/closed_form_support.hpp"
 
 namespace metalfit::models {
 
@@ -16,9 +16,7 @@ std::array<double, 2> Gulbrandsen::from_nk(std::complex<double> eta) {
     return {r, g};
 }
 
-std::complex<double> Gulbrandsen::to_nk(double r, double g) {
-    return {n_of(r, g), std::sqrt(k2_of(r, g))};
-}
+std::complex<double> Gulbrandsen::to_nk(double r, double g) { return {n_of(r, g), std::sqrt(k2_of(r, g))}; }
 
 std::vector<ClosedForm> Gulbrandsen::closed_forms(const ClosedFormInput& input) {
     const auto rg = [](std::complex<double> eta) {

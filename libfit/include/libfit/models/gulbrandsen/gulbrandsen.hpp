@@ -25,7 +25,9 @@ struct Gulbrandsen {
     // --pin F0: F(1) = r.
     static constexpr std::size_t kPinnedParameter = 0;
     template <class T>
-    static T pinned_value(const T*, const T& F0) { return F0; }
+    static T pinned_value(const T*, const T& F0) {
+        return F0;
+    }
 
     // n = g n_min + (1 − g) n_max with n_min = (1 − r)/(1 + r), n_max = (1 + √r)/(1 − √r).
     template <class T>
@@ -72,7 +74,8 @@ struct Gulbrandsen {
         const double k2_unclamped = g * (n_max - n_min) * (n - n_minus);  // k2_of
         const bool k2_held = !(k2_unclamped >= 0.0);
         const double k2 = k2_held ? 0.0 : k2_unclamped;
-        const double k2_r = k2_held ? 0.0 : g * ((n_max_r - n_min_r) * (n - n_minus) + (n_max - n_min) * (n_r - n_minus_r));
+        const double k2_r =
+            k2_held ? 0.0 : g * ((n_max_r - n_min_r) * (n - n_minus) + (n_max - n_min) * (n_r - n_minus_r));
         const double k2_g = k2_held ? 0.0 : (n_max - n_min) * (n - n_minus) + g * (n_max - n_min) * n_g;
         const double k = model_math::sqrt_or_zero(k2);
         const double k_of_k2 = k > 0.0 ? 0.5 / k : 0.0;  // dk/dk²

@@ -38,7 +38,9 @@ ChannelParameters Lazanyi::nk_near(double F0, double n) {
     return {std::abs(above - n) < std::abs(below - n) ? above : below, 0.0};
 }
 
-std::vector<ChannelParameters> Lazanyi::target_starts(const ChannelTarget& t) { return {nk_with_F0(least_squares_F0(t))}; }
+std::vector<ChannelParameters> Lazanyi::target_starts(const ChannelTarget& t) {
+    return {nk_with_F0(least_squares_F0(t))};
+}
 
 double Lazanyi::least_squares_F0(const ChannelTarget& t) {
     // residual_i = s_i (F0 (1 − w_i) − (R_i − w_i)), w = (1 − μ)^5.
@@ -53,9 +55,11 @@ double Lazanyi::least_squares_F0(const ChannelTarget& t) {
 }
 
 std::vector<ClosedForm> Lazanyi::closed_forms(const ClosedFormInput& input) {
-    ClosedForm sampled = detail::closed_form_from_wavelengths(
-        input, detail::kThesisWavelengths, "n, k of the data at 700, 550, 435 nm (the thesis)",
-        [](std::complex<double> eta) { return ChannelParameters{eta.real(), eta.imag()}; });
+    ClosedForm sampled = detail::closed_form_from_wavelengths(input, detail::kThesisWavelengths,
+                                                              "n, k of the data at 700, 550, 435 nm (the thesis)",
+                                                              [](std::complex<double> eta) {
+                                                                  return ChannelParameters{eta.real(), eta.imag()};
+                                                              });
 
     ClosedForm r1{"r1", "F0 = R(1); n from 700, 550, 435 nm, k solved", {}};
     const RGB F0 = input.reference(1.0);

@@ -72,7 +72,9 @@ struct Lazanyi {
             F0_ = std::isfinite(F0) ? std::clamp(F0, 0.0, 1.0) : 0.0;
         }
         std::size_t residuals() const { return residuals_; }
-        ChannelParameters parameters(const double*, const ChannelParameters& start) const { return nk_near(F0_, start[0]); }
+        ChannelParameters parameters(const double*, const ChannelParameters& start) const {
+            return nk_near(F0_, start[0]);
+        }
 
     private:
         std::size_t residuals_;

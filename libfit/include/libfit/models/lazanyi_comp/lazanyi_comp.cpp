@@ -17,7 +17,9 @@ constexpr double kSlopeStep = 1e-3;
 struct ReferenceSamples {
     RGB at0, at1, at2, at_match;
     explicit ReferenceSamples(const ClosedFormInput& input)
-        : at0(input.reference(0.0)), at1(input.reference(kSlopeStep)), at2(input.reference(2.0 * kSlopeStep)),
+        : at0(input.reference(0.0)),
+          at1(input.reference(kSlopeStep)),
+          at2(input.reference(2.0 * kSlopeStep)),
           at_match(input.reference(kMatchMu)) {}
 };
 
@@ -32,17 +34,19 @@ ClosedFormChannel compensate(const ReferenceSamples& R, int c, const ChannelPara
     const auto& alpha_bounds = LazanyiComp::kParameters[3];
     if (a == 0.0) return {{}, "the error's slope at grazing is 0 (a = 0), alpha undefined"};
     if (a < a_bounds.lower || a > a_bounds.upper)
-        return {{}, "diverges: a = " + detail::format_number(a) + " outside [" + detail::format_number(a_bounds.lower) +
-                        ", " + detail::format_number(a_bounds.upper) + "]"};
+        return {{},
+                "diverges: a = " + detail::format_number(a) + " outside [" + detail::format_number(a_bounds.lower) +
+                    ", " + detail::format_number(a_bounds.upper) + "]"};
     const double argument = e_match / (-kMatchMu * a);
     if (!(argument > 0.0))
-        return {{}, "alpha undefined: ln of " + detail::format_number(argument) +
-                        " (the error at mu = 0.15 and the slope at grazing disagree in sign)"};
+        return {{},
+                "alpha undefined: ln of " + detail::format_number(argument) +
+                    " (the error at mu = 0.15 and the slope at grazing disagree in sign)"};
     const double alpha = std::log(argument) / std::log(1.0 - kMatchMu);
     if (!std::isfinite(alpha) || alpha < alpha_bounds.lower || alpha > alpha_bounds.upper)
-        return {{}, "diverges: alpha = " + detail::format_number(alpha) + " outside [" +
-                        detail::format_number(alpha_bounds.lower) + ", " + detail::format_number(alpha_bounds.upper) +
-                        "]"};
+        return {{},
+                "diverges: alpha = " + detail::format_number(alpha) + " outside [" +
+                    detail::format_number(alpha_bounds.lower) + ", " + detail::format_number(alpha_bounds.upper) + "]"};
     return {ChannelParameters{nk[0], nk[1], a, alpha}, {}};
 }
 
@@ -62,7 +66,8 @@ std::vector<ChannelParameters> LazanyiComp::target_starts(const ChannelTarget& t
     const Projection projection(t);
     std::vector<double> x2(projection.residuals());
     for (int j = 0; j <= kAlphaSteps; ++j) {
-        const double alpha = alpha_bounds.lower * std::pow(alpha_bounds.upper / alpha_bounds.lower, double(j) / kAlphaSteps);
+        const double alpha =
+            alpha_bounds.lower * std::pow(alpha_bounds.upper / alpha_bounds.lower, double(j) / kAlphaSteps);
         const auto [s11, s12, s22, s1y, s2y] = projection.normal_equations(alpha, x2.data());
         const double det = s11 * s22 - s12 * s12;
         if (!(std::abs(det) > 1e-300)) continue;
@@ -74,7 +79,8 @@ std::vector<ChannelParameters> LazanyiComp::target_starts(const ChannelTarget& t
         const double cost = F0 * F0 * s11 + 2 * F0 * a * s12 + a * a * s22 - 2 * F0 * s1y - 2 * a * s2y;
         candidates.push_back({cost, F0, a, alpha});
     }
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) { return x.cost < y.cost; });
+    std::sort(candidates.begin(), candidates.end(),
+              [](const Candidate& x, const Candidate& y) { return x.cost < y.cost; });
     std::vector<ChannelParameters> starts;
     for (std::size_t i = 0; i < std::min(kKept, candidates.size()); ++i) {
         ChannelParameters p = Lazanyi::nk_with_F0(candidates[i].F0);
@@ -91,7 +97,8 @@ std::vector<ClosedForm> LazanyiComp::closed_forms(const ClosedFormInput& input) 
     for (const ClosedForm& base : Lazanyi::closed_forms(input)) {
         ClosedForm form{base.id, base.description + "; a from the error's slope at grazing, alpha from mu = 0.15", {}};
         for (int c = 0; c < 3; ++c)
-            form.channel[c] = base.channel[c].params ? compensate(samples, c, *base.channel[c].params) : base.channel[c];
+            form.channel[c] =
+                base.channel[c].params ? compensate(samples, c, *base.channel[c].params) : base.channel[c];
         forms.push_back(std::move(form));
     }
     return forms;

@@ -8,10 +8,10 @@
 #include <string_view>
 #include <vector>
 
+#include "libfit/models/lazanyi/lazanyi.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/models/model_math.hpp"
 #include "libfit/reference/channel_target.hpp"
-#include "libfit/models/lazanyi/lazanyi.hpp"
 
 namespace metalfit::models {
 
@@ -31,7 +31,9 @@ struct LazanyiComp {
     // --pin F0: as Lazányi's (the compensation vanishes at μ = 1).
     static constexpr std::size_t kPinnedParameter = Lazanyi::kPinnedParameter;
     template <class T>
-    static T pinned_value(const T* p, const T& F0) { return Lazanyi::pinned_value(p, F0); }
+    static T pinned_value(const T* p, const T& F0) {
+        return Lazanyi::pinned_value(p, F0);
+    }
 
     template <class T>
     static T evaluate(const T* p, const T& mu_in) {

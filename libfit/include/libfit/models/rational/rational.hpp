@@ -31,7 +31,9 @@ struct Rational {
     // --pin F0: b = F0 (1 + c + d) − 1 − a.
     static constexpr std::size_t kPinnedParameter = 1;
     template <class T>
-    static T pinned_value(const T* p, const T& F0) { return F0 * (T(1) + p[2] + p[3]) - T(1) - p[0]; }
+    static T pinned_value(const T* p, const T& F0) {
+        return F0 * (T(1) + p[2] + p[3]) - T(1) - p[0];
+    }
 
     template <class T>
     static T evaluate(const T* p, const T& mu_in) {

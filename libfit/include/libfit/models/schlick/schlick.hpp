@@ -24,7 +24,9 @@ struct Schlick {
     // --pin F0: F(1) = F0.
     static constexpr std::size_t kPinnedParameter = 0;
     template <class T>
-    static T pinned_value(const T*, const T& F0) { return F0; }
+    static T pinned_value(const T*, const T& F0) {
+        return F0;
+    }
 
     template <class T>
     static T evaluate(const T* p, const T& mu_in) {

@@ -19,7 +19,8 @@ std::vector<ChannelParameters> SchlickCompGeneral::target_starts(const ChannelTa
     const auto& F0 = kParameters[0];
     const auto& a = kParameters[2];
     const auto& alpha = kParameters[3];
-    const std::vector<double> powers{1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0, 12.0, 16.0, 20.0, 24.0, 32.0, 48.0, 64.0};
+    const std::vector<double> powers{1.5, 2.0,  2.5,  3.0,  3.5,  4.0,  5.0,  6.0,  7.0,
+                                     8.0, 10.0, 12.0, 16.0, 20.0, 24.0, 32.0, 48.0, 64.0};
     const auto candidates =
         detail::compensation_candidates(t, powers, alpha.lower, alpha.upper, 32, F0.lower, F0.upper, a.lower, a.upper);
     // The best α of each power: the (p, α) surface has several valleys (copper green of Babar: p ≈ 6, α ≈ 16 beside
@@ -38,7 +39,8 @@ std::vector<ChannelParameters> SchlickCompGeneral::target_starts(const ChannelTa
     for (double power : powers) {
         double Ay = 0.0, AA = 0.0;
         for (std::size_t i = 0; i < t.mu.size(); ++i) {
-            const double w = std::pow(1.0 - t.mu[i], power), A = t.scale[i] * (1.0 - w), y = t.scale[i] * (t.value[i] - w);
+            const double w = std::pow(1.0 - t.mu[i], power), A = t.scale[i] * (1.0 - w),
+                         y = t.scale[i] * (t.value[i] - w);
             Ay += A * y, AA += A * A;
         }
         if (!(AA > 0.0)) continue;

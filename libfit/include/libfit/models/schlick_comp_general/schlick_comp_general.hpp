@@ -29,7 +29,9 @@ struct SchlickCompGeneral {
         "a BSDF's Fresnel cannot take (1 - mu)^p with free p and mu (1 - mu)^alpha";
     static constexpr std::size_t kPinnedParameter = 0;
     template <class T>
-    static T pinned_value(const T*, const T& F0) { return F0; }
+    static T pinned_value(const T*, const T& F0) {
+        return F0;
+    }
 
     template <class T>
     static T evaluate(const T* p, const T& mu_in) {

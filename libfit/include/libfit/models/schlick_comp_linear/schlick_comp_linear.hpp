@@ -24,11 +24,14 @@ struct SchlickCompLinear {
     static constexpr std::string_view kGlslFunction = "metalfit_schlick_comp_linear";
     static constexpr std::array<std::string_view, 1> kGlslFiles{"schlick_comp_linear"};
     static constexpr MaterialxForm kMaterialx = MaterialxForm::stand_in;
-    static constexpr std::string_view kMaterialxStandIn = "a BSDF's Fresnel cannot take mu (1 - mu)^4 and mu (1 - mu)^9 terms";
+    static constexpr std::string_view kMaterialxStandIn =
+        "a BSDF's Fresnel cannot take mu (1 - mu)^4 and mu (1 - mu)^9 terms";
     // --pin F0: F(1) = F0.
     static constexpr std::size_t kPinnedParameter = 0;
     template <class T>
-    static T pinned_value(const T*, const T& F0) { return F0; }
+    static T pinned_value(const T*, const T& F0) {
+        return F0;
+    }
 
     template <class T>
     static T evaluate(const T* p, const T& mu_in) {

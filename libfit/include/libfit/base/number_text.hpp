@@ -1,0 +1,21 @@
+// Numbers as text: the one formatter every writer, message and table uses (std::to_chars, locale-independent).
+// Shortest round-trip for what is read back (records, exports), and a fixed number of digits where a format asks
+// for one (tables, messages: the printf conversions %.*g and %.*f, which std::to_chars reproduces exactly).
+#pragma once
+
+#include <string>
+
+namespace metalfit {
+
+// The shortest text that reads back as exactly v ("0.1", "1e+300", "2"; "nan", "inf", "-inf").
+std::string shortest_text(double v);
+// The shortest text that reads back as exactly the float f (at most 9 significant digits).
+std::string shortest_text(float f);
+// v with `digits` significant digits, as printf's "%.<digits>g" writes it ("0.123457", "1.5e-07").
+std::string significant_text(double v, int digits);
+// v with `decimals` digits after the point, as printf's "%.<decimals>f" writes it ("0.1235", "12").
+std::string fixed_text(double v, int decimals);
+// v with `decimals` digits after the point of its mantissa, as printf's "%.<decimals>e" writes it ("1.5e-05").
+std::string scientific_text(double v, int decimals);
+
+}  // namespace metalfit

@@ -1,0 +1,113 @@
+// The export core: the fits of a request become the written parameters of each material and model, and each
+// requested format (format_registry) writes its files from them.
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+#include "export/export_formats.hpp"
+#include "export/format_registry.hpp"
+#include "libfit/base/errors.hpp"
+
+namespace metalfit {
+
+std::vector<const Model*> models_to_fit(const ExportRequest& request) {
+    std::vector<const Model*> models = request.models;
+    bool needs_stand_in = false;
+    for (const Model* m : request.models)
+        for (ExportFormat format : request.formats)
+            needs_stand_in = needs_stand_in || detail::needs_stand_in(detail::format_entry(format), *m);
+    const Model* stand_in = &expressible_stand_in();
+    if (needs_stand_in && std::find(models.begin(), models.end(), stand_in) == models.end()) models.push_back(stand_in);
+    return models;
+}
+
+std::vector<std::string> export_warnings(const FitRecordContext& context, const ExportRequest& request,
+                                         const std::string& materialx_space) {
+    std::vector<std::string> warnings;
+    const bool materialx = std::any_of(request.formats.begin(), request.formats.end(),
+                                       [](ExportFormat f) { return detail::format_entry(f).materialx_document; });
+    if (materialx && materialx_space.empty()) warnings.push_back(detail::untagged_materialx_warning(context.space));
+    return warnings;
+}
+
+namespace {
+
+// The requested formats that cannot carry the export's colour space (glTF outside linear Rec.709).
+std::vector<ExportFormat> formats_outside_their_space(const std::vector<ExportFormat>& formats,
+                                                      const std::string& materialx_space) {
+    std::vector<ExportFormat> outside;
+    for (ExportFormat f : formats)
+        if (detail::format_entry(f).linear_rec709_only && materialx_space != "lin_rec709") outside.push_back(f);
+    return outside;
+}
+
+}  // namespace
+
+void require_export_space(const ExportRequest& request, const std::string& space, const std::string& materialx_space) {
+    if (formats_outside_their_space(request.formats, materialx_space).empty()) return;
+    std::string others;
+    for (const detail::ExportFormatEntry& f : detail::export_format_entries())
+        if (!f.linear_rec709_only) others += (others.empty() ? "" : ",") + to_string(f.format);
+    throw UsageError(
+        "export --format gltf: glTF 2.0's colours are linear Rec.709 (sRGB primaries) and a .gltf cannot name another "
+        "space, but this export is in '" +
+        space +
+        "'; export glTF with --space 'Linear Rec.709 (sRGB)' (the default), "
+        "or list the other formats (" +
+        others + ") instead of all");
+}
+
+std::string leave_out_formats_the_space_cannot_carry(ExportRequest& request, const std::string& space,
+                                                     const std::string& materialx_space) {
+    const std::vector<ExportFormat> outside = formats_outside_their_space(request.formats, materialx_space);
+    if (outside.empty()) return {};
+    std::erase_if(request.formats,
+                  [&](ExportFormat f) { return std::find(outside.begin(), outside.end(), f) != outside.end(); });
+    return "--format all: glTF left out: glTF 2.0's colours are linear Rec.709 and a .gltf cannot name '" + space +
+           "' (export it with --space 'Linear Rec.709 (sRGB)')";
+}
+
+std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
+                                     const ExportRequest& request, const std::string& materialx_space) {
+    using detail::ModelExport;
+    require_export_space(request, context.space, materialx_space);
+    const Model& stand_in_model = expressible_stand_in();
+    std::vector<detail::MaterialExport> materials;
+    for (const MaterialFit& fit : fits) {
+        if (!fit.reference) throw std::logic_error("export: fit of " + fit.material.id + " has no sampled reference");
+        detail::MaterialExport m{&fit, {}};
+        const auto result_of = [&](const Model* model) -> const ModelResult& {
+            for (const ModelResult& r : fit.models)
+                if (r.model == model) return r;
+            throw std::logic_error("export: " + fit.material.id + " was not fitted with " + std::string(model->id()));
+        };
+        const auto needed = models_to_fit(request);
+        const bool has_stand_in = std::find(needed.begin(), needed.end(), &stand_in_model) != needed.end();
+        std::optional<WrittenParameters> stand_in;
+        if (has_stand_in)
+            stand_in = written_parameters(result_of(&stand_in_model), *fit.reference, request.source, request.gamut,
+                                          fit.material.id);
+        for (const Model* model : request.models) {
+            ModelExport e{
+                written_parameters(result_of(model), *fit.reference, request.source, request.gamut, fit.material.id),
+                std::nullopt};
+            if (!detail::as_f82_tint(e.written, *fit.reference)) e.stand_in = stand_in;
+            m.models.push_back(std::move(e));
+        }
+        materials.push_back(std::move(m));
+    }
+    const detail::ExportContext ctx{context, request, materialx_space};
+    std::vector<ExportFile> files;
+    for (ExportFormat format : request.formats) {
+        std::vector<ExportFile> more = detail::format_entry(format).write(materials, ctx);
+        for (ExportFile& f : more) files.push_back(std::move(f));
+    }
+    std::set<std::filesystem::path> seen;
+    for (const ExportFile& f : files)
+        if (!seen.insert(f.path).second)
+            throw UsageError("export: two materials would write the same file " + f.path.string() +
+                             " (their ids differ only in punctuation or case)");
+    return files;
+}
+
+}  // namespace metalfit
