@@ -142,7 +142,7 @@ TEST_F(CliLayers, AFilmTableNotCoveringTheColourRangeNamesWhatIsMissing) {
     }
     const Result held = run("show Au --film '" + narrow.string() + ":100nm' --extrapolate --json");
     ASSERT_EQ(held.exit_code, 0) << held.err;
-    EXPECT_TRUE(Contains(held.err, "film narrow: n held at its 400 nm value over 360–400 nm"));
+    EXPECT_TRUE(Contains(held.err, "film narrow (narrow.csv): n held at its 400 nm value over 360–400 nm"));
 }
 
 TEST_F(CliLayers, UnknownOrIncompleteLayersAreUsageErrors) {
