@@ -145,6 +145,21 @@ TEST_F(CliLayers, AFilmTableNotCoveringTheColourRangeNamesWhatIsMissing) {
     EXPECT_TRUE(Contains(held.err, "film narrow (narrow.csv): n held at its 400 nm value over 360–400 nm"));
 }
 
+TEST_F(CliLayers, ACoatTableBelowIndexOneIsRefusedNamingTheWavelength) {
+    const fs::path thin = path("thin.csv");
+    {
+        std::ofstream out(thin);
+        out << "wavelength_nm,n,k\n300,1.2,0\n500,0.95,0\n900,1.2,0\n";
+    }
+    const fs::path out = path("out.json");
+    for (const char* command : {"show", "fit"}) {
+        const Result r = run(std::string(command) + " Au --coat '" + thin.string() + "' -o '" + out.string() + "'");
+        expect_one_line_error(r, 3, thin.string() + ": DATA: coat n = ");
+        EXPECT_TRUE(Contains(r.err, "is below 1: a coat is a dielectric at least as dense as air"));
+        EXPECT_FALSE(fs::exists(out));
+    }
+}
+
 TEST_F(CliLayers, UnknownOrIncompleteLayersAreUsageErrors) {
     expect_one_line_error(run("show Ti --film TiO2"), 2, "--film TiO2: give the film's thickness with a unit (TiO2:80nm)");
     expect_one_line_error(run("show Ti --film TiO2:80"), 2, "--film TiO2:80: give the thickness's unit (80nm or um)");

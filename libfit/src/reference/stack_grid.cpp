@@ -1,6 +1,7 @@
 #include "libfit/reference/stack_grid.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <sstream>
 
@@ -35,6 +36,13 @@ void require_covers(const LayerMaterial& m, const char* layer, const WavelengthR
     }
 }
 
+// A coat's index on the grid must be at least 1 (a dielectric at least as dense as air).
+void require_coat_index(const ClearCoat& coat, int lambda, double n) {
+    if (!(n >= 1.0))
+        throw InputError({where(coat.material), 0, "DATA"},
+                         "coat n = " + nm(n) + " at " + nm(lambda) + " nm is below 1: a coat is a dielectric at least as dense as air");
+}
+
 std::string layer_label(const char* layer, const LayerMaterial& m) {
     return std::string(layer) + " " + m.id + (m.source.empty() || m.source == m.id ? "" : " (" + m.source + ")");
 }
@@ -42,9 +50,13 @@ std::string layer_label(const char* layer, const LayerMaterial& m) {
 }  // namespace
 
 void require_layer_coverage(const LayerStack& layers, const WavelengthRange& needed, const SpectralOptions& options) {
-    if (options.out_of_range == OutOfRange::clamp) return;
-    if (layers.film) require_covers(layers.film->material, "film", needed);
-    if (layers.coat) require_covers(layers.coat->material, "coat", needed);
+    if (options.out_of_range != OutOfRange::clamp) {
+        if (layers.film) require_covers(layers.film->material, "film", needed);
+        if (layers.coat) require_covers(layers.coat->material, "coat", needed);
+    }
+    if (layers.coat)
+        for (int lambda = int(std::ceil(needed.min_nm)); lambda <= int(std::floor(needed.max_nm)); ++lambda)
+            require_coat_index(*layers.coat, lambda, layers.coat->material.index.n(lambda, options.interpolation, options.out_of_range));
 }
 
 std::vector<StackOptics<double>> stack_optics_on_grid(const Material& metal, int first_nm, int last_nm,
@@ -63,10 +75,7 @@ std::vector<StackOptics<double>> stack_optics_on_grid(const Material& metal, int
         if (layers.coat) {
             const ClearCoat& coat = *layers.coat;
             const std::complex<double> eta = coat.material.index(lambda, options.interpolation, options.out_of_range);
-            if (!(eta.real() >= 1.0))
-                throw InputError({where(coat.material), 0, "DATA"},
-                                 "coat n = " + nm(eta.real()) + " at " + nm(lambda) +
-                                     " nm is below 1: a coat is a dielectric at least as dense as air");
+            require_coat_index(coat, lambda, eta.real());
             o.has_coat = true;
             o.coat_index = eta.real();
             if (coat.thickness_nm) o.coat_absorbance = 4.0 * std::numbers::pi * std::max(eta.imag(), 0.0) * *coat.thickness_nm / lambda;

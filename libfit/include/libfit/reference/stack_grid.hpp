@@ -13,7 +13,8 @@
 namespace metalfit {
 
 // Throws InputError naming the layer's file (or the constant) when a film's or coat's n or k does not cover `needed`
-// (unless `options` extrapolate): which part is missing, and that --extrapolate holds the end values.
+// (unless `options` extrapolate): which part is missing, and that --extrapolate holds the end values; and when the
+// coat's n is below 1 at a nanometre of `needed`.
 void require_layer_coverage(const LayerStack& layers, const WavelengthRange& needed, const SpectralOptions& options);
 
 // StackOptics at every wavelength of `grid_first_nm`..`grid_last_nm` for `metal` and its layers (which it must
