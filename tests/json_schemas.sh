@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # ctest json_schemas.records: writes every kind of JSON record
-# metalfit writes (fit --json plain, pinned and with a budget; metalfit_export.json of the catalog export and of two
+# metalfit writes (fit --json plain, pinned, with a budget and of a layered material; metalfit_export.json of the catalog export and of two
 # exports merged into one folder; openpbr/*.json; the glTF extras; show --json; table --format json and physicallybased; report.json;
 # bench --json; glpreview's metrics.json when glpreview is given) and validates each against schemas/ with Ajv
 # (json_schemas.mjs); then has json_schemas.mjs --broken break each record in many ways and checks that every broken
@@ -20,6 +20,9 @@ export OCIO=
 "$metalfit" export Ag --model f82-tint --format json,openpbr,gltf --id-prefix studio -o "$dir/ex-studio" 2>/dev/null
 "$metalfit" show Au --json > "$dir/show.json"
 "$metalfit" show Zn --space ACEScg --json > "$dir/show-acescg.json"
+# Layered materials (issue 28): the stack in the show and fit records, a constant and a table with a thickness.
+"$metalfit" show Ti --film TiO2:80nm --coat 1.5 --json > "$dir/show-layered.json"
+"$metalfit" fit Ti --film TiO2:80nm --coat PMMA:20um --extrapolate --model f82-tint,schlick --json -o "$dir/fit-layered.json" 2>/dev/null
 "$metalfit" table --format json -o "$dir/table.json"
 "$metalfit" table --format physicallybased -o "$dir/physicallybased.json"
 "$metalfit" report Au,Cu --renders off -o "$dir/report" > /dev/null

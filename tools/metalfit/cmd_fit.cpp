@@ -12,6 +12,11 @@
 #include "colour_options.hpp"
 #include "commands.hpp"
 #include "error_options.hpp"
+#include "layer_options.hpp"
+#include "material_selection.hpp"
+#include "progress.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/io/layer_stack.hpp"
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/fit/budget.hpp"
@@ -21,15 +26,13 @@
 #include "libfit/fit/fit_record.hpp"
 #include "libfit/fit/fit_record_stream.hpp"
 #include "libfit/fit/model_cost.hpp"
-#include "libfit/io/catalog.hpp"
-#include "material_selection.hpp"
-#include "progress.hpp"
 
 namespace metalfit::cli {
 namespace {
 
 struct FitOptions {
     MaterialSelection selection;
+    LayerOptions layers;
     std::string models = "all";
     ColourOptions colour;
     ErrorOptions error;
@@ -77,6 +80,7 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
       << to_string(context.convention) << "; " << to_string(e.metric) << " metric, " << to_string(e.weight)
       << " weight, " << e.nodes << " nodes\n";
     if (!fit.material.provenance.note.empty()) s << "  caveat: " << fit.material.provenance.note << "\n";
+    if (fit.material.layers) s << "  stack: " << describe_stack(fit.material) << "\n";
     s << "  F0 = (" << fixed(fit.F0.r, 5) << ", " << fixed(fit.F0.g, 5) << ", " << fixed(fit.F0.b, 5) << ")";
     if (fit.F0.max() > 1.0 || fit.F0.min() < 0.0) s << "  out of gamut, kept";
     s << "\n";
@@ -140,9 +144,10 @@ void print_timings(const FitTimings& sum, std::size_t materials, double wall_sec
 
 void run_fit(const FitOptions& o, const GlobalOptions& global) {
     const Catalog catalog = Catalog::load(global.data_dir);
-    const auto loaders = o.selection.loaders(catalog, "fit");
+    const auto selected = o.selection.loaders(catalog, "fit");
 
     const ColourSetup setup = resolve_colour_options(o.colour, global);
+    const auto loaders = o.layers.over(selected, global.data_dir, setup.spectral);
     const ErrorSettings error = o.error.settings();
     FitConstraints constraints;
     if (!o.pin.empty()) {
@@ -219,6 +224,7 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
 std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<FitOptions>();
     o->selection.add_options(app, true);
+    o->layers.add_options(app);
     app.add_option("--model", o->models, "Models, comma-separated, or all: " + model_ids());
     add_colour_options(app, o->colour);
     add_error_options(app, o->error);

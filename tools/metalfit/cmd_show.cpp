@@ -7,17 +7,20 @@
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "layer_options.hpp"
+#include "material_selection.hpp"
 #include "libfit/base/text.hpp"
 #include "libfit/io/catalog.hpp"
+#include "libfit/io/layer_stack.hpp"
 #include "libfit/reference/reference_curve.hpp"
 #include "libfit/reference/reflectance_summary.hpp"
-#include "material_selection.hpp"
 
 namespace metalfit::cli {
 namespace {
 
 struct ShowOptions {
     MaterialSelection selection;
+    LayerOptions layers;
     ColourOptions colour;
     bool json = false;
     std::filesystem::path output;
@@ -43,6 +46,7 @@ std::string show_text(const Material& material, const ReferenceCurve& curve, con
       << "  sha256      " << material.provenance.sha256 << "\n"
       << "  reference   " << one_line(material.provenance.references) << "\n"
       << (material.provenance.note.empty() ? "" : "  caveat      " + material.provenance.note + "\n")
+      << (material.layers ? "  stack       " + describe_stack(material) + "\n" : "")
       << "  data        " << material.provenance.data_type << ", " << fixed(range.min_nm, 1) << "–"
       << fixed(range.max_nm, 1) << " nm, "
       << (material.index.n.tabulated() ? std::to_string(material.index.n.tabulated_points_in(kVisibleRange)) +
@@ -73,8 +77,9 @@ std::string show_text(const Material& material, const ReferenceCurve& curve, con
 
 void run_show(const ShowOptions& o, const GlobalOptions& global) {
     const Catalog catalog = Catalog::load(global.data_dir);
-    const auto loaders = o.selection.loaders(catalog, "show");
+    const auto selected = o.selection.loaders(catalog, "show");
     const ColourSetup setup = resolve_colour_options(o.colour, global);
+    const auto loaders = o.layers.over(selected, global.data_dir, setup.spectral);
     std::string text;
     nlohmann::json records = nlohmann::json::array();
     for (const auto& load : loaders) {
@@ -101,6 +106,7 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
 std::function<void()> add_show_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<ShowOptions>();
     o->selection.add_options(app, true);
+    o->layers.add_options(app);
     add_colour_options(app, o->colour);
     app.add_flag("--json", o->json, "Print one JSON object (an array of them for several materials or --all)");
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout (- for stdout)");

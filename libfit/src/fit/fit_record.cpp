@@ -5,6 +5,7 @@
 
 #include "libfit/base/file_digest.hpp"
 #include "libfit/base/version.hpp"
+#include "libfit/io/layer_stack.hpp"
 
 namespace metalfit {
 
@@ -51,8 +52,11 @@ Json solver_json(const FitResult& fit) {
 
 Json data_provenance(const Material& material) {
     const Provenance& p = material.provenance;
-    return {{"file", p.file.string()},  {"sha256", p.sha256},        {"format", p.format},
-            {"data_type", p.data_type}, {"reference", p.references}, {"note", p.note}};
+    Json data = {{"file", p.file.string()},  {"sha256", p.sha256},       {"format", p.format},
+                 {"data_type", p.data_type}, {"reference", p.references}, {"note", p.note}};
+    // Only for a layered material (a film, a coat), so that bare records keep their keys.
+    if (material.layers && !material.layers->empty()) data["stack"] = stack_record(material);
+    return data;
 }
 
 }  // namespace

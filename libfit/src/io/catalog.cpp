@@ -68,8 +68,8 @@ const CatalogSource& CatalogEntry::find_source(std::string_view source) const {
     throw UsageError("material " + id + " has no source '" + std::string(source) + "' (available: " + available + ")");
 }
 
-Catalog Catalog::load(const std::filesystem::path& data_dir) {
-    const auto file = data_dir / "catalog.json";
+Catalog Catalog::load(const std::filesystem::path& data_dir, std::string_view file_name) {
+    const auto file = data_dir / file_name;
     // Every data file's path starts with the folder's, and records carry them (UTF-8): $METALFIT_DATA may be anything.
     if (const auto problem = find_invalid_utf8(file.native()))
         throw InputError({file}, "the path of the database is not UTF-8 (" + problem->reason + "); rename the folder");

@@ -4,7 +4,9 @@
 #include <sstream>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/io/layer_stack.hpp"
 #include "libfit/optics/fresnel_real.hpp"
+#include "libfit/reference/stack_grid.hpp"
 
 namespace metalfit {
 namespace {
@@ -63,7 +65,13 @@ ReferenceCurve::ReferenceCurve(const Material& material, const Colorimetry& colo
         weight_z_.push_back(grid[i].Z);
     }
     raw_white_ = converter_(colorimetry_.white());
-    held_constant_ = held_constant_ranges(material, {double(grid.first_nm()), double(grid.last_nm())}, options);
+    const WavelengthRange needed{double(grid.first_nm()), double(grid.last_nm())};
+    held_constant_ = held_constant_ranges(material, needed, options);
+    if (material.layers && !material.layers->empty()) {
+        require_layer_coverage(*material.layers, kVisibleRange, options);
+        stack_ = stack_optics_on_grid(material, grid.first_nm(), grid.last_nm(), options);
+        for (std::string& note : layer_held_constant(*material.layers, needed, options)) held_constant_.push_back(std::move(note));
+    }
 }
 
 namespace {
@@ -106,8 +114,21 @@ void integrate_lanes(const SpectralColumns& s, const double* mu, double* x_out, 
 
 std::vector<XYZ> ReferenceCurve::xyz(std::span<const double> mu) const {
     std::vector<XYZ> out(mu.size());
-    const SpectralColumns columns{eta2_re_.data(),  eta2_re_minus_1_.data(), eta2_im_.data(),  eta2_norm2_.data(),
-                                  weight_x_.data(), weight_y_.data(),        weight_z_.data(), eta2_re_.size()};
+    if (!stack_.empty()) {  // a layered material: Σ_λ R_stack(λ, μ) w(λ) in grid order
+        for (std::size_t j = 0; j < mu.size(); ++j) {
+            double x = 0, y = 0, z = 0;
+            for (std::size_t i = 0; i < stack_.size(); ++i) {
+                const double f = stack_reflectance_unpolarized(mu[j], stack_[i]);
+                x += f * weight_x_[i];
+                y += f * weight_y_[i];
+                z += f * weight_z_[i];
+            }
+            out[j] = XYZ{x, y, z};
+        }
+        return out;
+    }
+    const SpectralColumns columns{eta2_re_.data(), eta2_re_minus_1_.data(), eta2_im_.data(), eta2_norm2_.data(),
+                                  weight_x_.data(), weight_y_.data(), weight_z_.data(), eta2_re_.size()};
     for (std::size_t first = 0; first < mu.size(); first += kLanes) {
         const std::size_t count = std::min(kLanes, mu.size() - first);
         double m[kLanes], x[kLanes], y[kLanes], z[kLanes];

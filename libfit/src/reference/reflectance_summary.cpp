@@ -1,5 +1,7 @@
 #include "libfit/reference/reflectance_summary.hpp"
 
+#include "libfit/io/layer_stack.hpp"
+
 #include "libfit/base/version.hpp"
 #include "libfit/io/material.hpp"
 
@@ -65,6 +67,7 @@ nlohmann::json reflectance_record(const Material& material, const ReferenceCurve
                        {"ocio_config_origin", config.origin},
                        {"white_raw_rgb", rgb_json(curve.raw_white())},
                        {"metalfit_version", METALFIT_VERSION}};
+    if (material.layers && !material.layers->empty()) j["provenance"]["stack"] = stack_record(material);
     std::vector<std::string> warnings = material.warnings;
     warnings.insert(warnings.end(), curve.held_constant().begin(), curve.held_constant().end());
     j["warnings"] = warnings;

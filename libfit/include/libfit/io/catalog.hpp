@@ -44,8 +44,9 @@ struct CatalogEntry {
 
 class Catalog {
 public:
-    // Reads <data_dir>/catalog.json. Throws InputError naming the file and field.
-    static Catalog load(const std::filesystem::path& data_dir);
+    // Reads <data_dir>/catalog.json (or another catalog of the same form beside it, e.g. films.json). Throws
+    // InputError naming the file and field.
+    static Catalog load(const std::filesystem::path& data_dir, std::string_view file_name = "catalog.json");
 
     // Case-insensitive match on id, name or alias; nullptr when unknown.
     const CatalogEntry* find(std::string_view name) const;

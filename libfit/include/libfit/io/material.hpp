@@ -3,12 +3,15 @@
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "libfit/spectral/complex_index.hpp"
 
 namespace metalfit {
+
+struct LayerStack;  // io/layer_stack.hpp
 
 struct Provenance {
     std::filesystem::path file;
@@ -29,6 +32,8 @@ struct Material {
     ComplexIndex index;
     Provenance provenance;
     std::vector<std::string> warnings;  // one line each, e.g. "no k data: k = 0 assumed"
+    // A film and/or a coat over the material (io/layer_stack.hpp); null: the bare material.
+    std::shared_ptr<const LayerStack> layers;
 };
 
 }  // namespace metalfit

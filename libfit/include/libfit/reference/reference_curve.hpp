@@ -10,6 +10,7 @@
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
 #include "libfit/io/material.hpp"
+#include "libfit/optics/stack_reflectance.hpp"
 #include "libfit/spectral/dense_spectrum.hpp"
 
 namespace metalfit {
@@ -26,13 +27,14 @@ struct SpectralOptions {
 // space. η(λ) is sampled once on the colorimetry's 1 nm grid and kept as the per-λ constants of the real Fresnel form
 // (optics/fresnel_real.hpp); each μ costs one real Fresnel evaluation per wavelength and one OCIO conversion. The
 // batch forms evaluate several μ per wavelength at once (vectorised across μ; each μ's sum over λ keeps the order of
-// the 1 nm summation, so a batch gives exactly the values of single calls).
+// the 1 nm summation, so a batch gives exactly the values of single calls). A material with layers (a film, a coat:
+// io/layer_stack.hpp) integrates the stack's reflectance instead (optics/stack_reflectance.hpp), one μ at a time.
 class ReferenceCurve {
 public:
-    // Throws InputError naming the material's file when its data do not cover 360–830 nm (and
-    // options.out_of_range is error).
-    ReferenceCurve(const Material& material, const Colorimetry& colorimetry, ColorSpaceConverter converter,
-                   SpectralOptions options = {});
+    // Throws InputError naming the material's file (or its film's or coat's) when its data do not cover 360–830 nm
+    // (and options.out_of_range is error).
+    ReferenceCurve(const Material& material, const Colorimetry& colorimetry,
+                   ColorSpaceConverter converter, SpectralOptions options = {});
 
     RGB operator()(double mu) const;                                // white balanced
     XYZ xyz(double mu) const;                                       // before the colour space
@@ -50,6 +52,7 @@ private:
     // η² of every wavelength of the colorimetry's grid (SquaredIndex, as arrays) and the XYZ weights, as arrays.
     std::vector<double> eta2_re_, eta2_re_minus_1_, eta2_im_, eta2_norm2_;
     std::vector<double> weight_x_, weight_y_, weight_z_;
+    std::vector<StackOptics<double>> stack_;  // per λ of the grid when the material has layers; empty otherwise
     Colorimetry colorimetry_;
     ColorSpaceConverter converter_;
     RGB raw_white_;

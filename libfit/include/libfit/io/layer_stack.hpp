@@ -1,0 +1,56 @@
+// LayerStack: what lies over a metal — an optional thin film (coherent) and an optional smooth clear coat
+// (incoherent) — as measured or given indices with their provenance. A Material with layers is the stack "coat over
+// film over metal"; the reference curve (reference/reference_curve.hpp) integrates its reflectance
+// (optics/stack_reflectance.hpp). docs/colour.md, "Layered metals".
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+
+#include "libfit/io/material.hpp"
+
+namespace metalfit {
+
+// Films thicker than this are outside the coherent model: over 2 µm, the interference fringes of daylight are finer
+// than the film's thickness varies and than the colour matching functions resolve (use a coat for a thick layer).
+inline constexpr double kMaxFilmThicknessNm = 2000.0;
+
+// One layer's material: a table or formula (catalog or file, with provenance) or a constant index ("2.2": n = 2.2,
+// k = 0, source "constant").
+using LayerMaterial = Material;
+
+struct ThinFilm {
+    LayerMaterial material;
+    double thickness_nm = 0.0;  // 0 ≤ d ≤ kMaxFilmThicknessNm
+};
+
+struct ClearCoat {
+    LayerMaterial material;                 // n_c ≥ 1 (its k, if any, absorbs only when a thickness is given)
+    std::optional<double> thickness_nm;     // the path of the absorption; absent: a clear coat
+};
+
+struct LayerStack {
+    std::optional<ThinFilm> film;
+    std::optional<ClearCoat> coat;
+
+    bool empty() const { return !film && !coat; }
+};
+
+// "TiO2 (Siefke) film of 80 nm", "coat n = 1.5", "coat PMMA (Szczurowski) 20000 nm thick": for the human output.
+std::string describe(const ThinFilm& film);
+std::string describe(const ClearCoat& coat);
+// "gold under a coat n = 1.5 over a TiO2 (Siefke) film of 80 nm": the whole stack, top down, or the name alone.
+std::string describe_stack(const Material& metal);
+
+// The provenance of the layers over `metal` (schemas/common.schema.json, "stack"): the description, and per layer its
+// material (id, name, source, file, sha256, reference, data_type) and thickness; null for a bare material.
+nlohmann::ordered_json stack_record(const Material& metal);
+
+// The one rule for thicknesses: "" when valid, else why not ("thickness -5 nm is negative", "thickness 2500 nm is
+// beyond 2 µm: …").
+std::string film_thickness_problem(double thickness_nm);
+std::string coat_thickness_problem(double thickness_nm);
+
+}  // namespace metalfit

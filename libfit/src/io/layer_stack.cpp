@@ -1,0 +1,86 @@
+#include "libfit/io/layer_stack.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace metalfit {
+namespace {
+
+std::string number(double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+}
+
+// "TiO2 (Siefke)", "n = 1.5", "my-oxide".
+std::string layer_material_name(const LayerMaterial& m) {
+    if (m.source == "constant") return m.name;
+    return m.id + (m.source.empty() || m.source == m.id ? "" : " (" + m.source + ")");
+}
+
+}  // namespace
+
+std::string describe(const ThinFilm& film) {
+    return layer_material_name(film.material) + " film of " + number(film.thickness_nm) + " nm";
+}
+
+std::string describe(const ClearCoat& coat) {
+    std::string text = "coat " + layer_material_name(coat.material);
+    if (coat.thickness_nm) text += " " + number(*coat.thickness_nm) + " nm thick";
+    return text;
+}
+
+std::string describe_stack(const Material& metal) {
+    if (!metal.layers || metal.layers->empty()) return metal.name;
+    const LayerStack& s = *metal.layers;
+    std::string text = metal.name;
+    if (s.coat) text += " under a " + describe(*s.coat);
+    if (s.film) text += std::string(s.coat ? " over" : " under") + " a " + describe(*s.film);
+    return text;
+}
+
+namespace {
+
+nlohmann::ordered_json layer_material_record(const LayerMaterial& m) {
+    return {{"material", m.id},           {"name", m.name},
+            {"source", m.source},         {"file", m.provenance.file.string()},
+            {"sha256", m.provenance.sha256}, {"reference", m.provenance.references},
+            {"data_type", m.provenance.data_type}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json stack_record(const Material& metal) {
+    if (!metal.layers || metal.layers->empty()) return nullptr;
+    const LayerStack& s = *metal.layers;
+    nlohmann::ordered_json j = {{"description", describe_stack(metal)}};
+    if (s.coat) {
+        nlohmann::ordered_json coat = layer_material_record(s.coat->material);
+        coat["thickness_nm"] = s.coat->thickness_nm ? nlohmann::ordered_json(*s.coat->thickness_nm) : nlohmann::ordered_json(nullptr);
+        j["coat"] = std::move(coat);
+    }
+    if (s.film) {
+        nlohmann::ordered_json film = layer_material_record(s.film->material);
+        film["thickness_nm"] = s.film->thickness_nm;
+        j["film"] = std::move(film);
+    }
+    return j;
+}
+
+std::string film_thickness_problem(double d) {
+    if (!std::isfinite(d)) return "thickness " + number(d) + " is not a finite number";
+    if (d < 0) return "thickness " + number(d) + " nm is negative";
+    if (d > kMaxFilmThicknessNm)
+        return "thickness " + number(d) + " nm is beyond 2 µm, where a film is no longer coherent (its interference "
+               "colours average out); give a thick layer as a coat (--coat)";
+    return {};
+}
+
+std::string coat_thickness_problem(double d) {
+    if (!std::isfinite(d)) return "thickness " + number(d) + " is not a finite number";
+    if (d < 0) return "thickness " + number(d) + " nm is negative";
+    return {};
+}
+
+}  // namespace metalfit

@@ -1,0 +1,45 @@
+#include "layer_options.hpp"
+
+#include <memory>
+
+#include "libfit/io/layer_materials.hpp"
+#include "libfit/io/layer_stack.hpp"
+#include "libfit/reference/stack_grid.hpp"
+
+namespace metalfit::cli {
+
+void LayerOptions::add_options(CLI::App& app) {
+    app.add_option("--film", film,
+                   "A thin film over the metal, IOR|MATERIAL|FILE:THICKNESS with a unit (2.2:80nm, TiO2:80nm, "
+                   "my-oxide.csv:0.12um; 0 to 2 µm): coherent, per polarisation (docs/colour.md)");
+    app.add_option("--coat", coat,
+                   "A smooth clear coat over the metal (and film), IOR|MATERIAL|FILE[:THICKNESS] (1.5, PMMA, "
+                   "PMMA:20um: the thickness makes its k absorb): incoherent (docs/colour.md)");
+}
+
+std::vector<std::function<Material()>> LayerOptions::over(std::vector<std::function<Material()>> loaders,
+                                                         const std::filesystem::path& data_dir,
+                                                         const SpectralOptions& spectral) const {
+    if (film.empty() && coat.empty()) return loaders;
+    const FilmCatalog films = FilmCatalog::load(data_dir);
+    auto stack = std::make_shared<LayerStack>();
+    if (!film.empty()) stack->film = load_film(films, film);
+    if (!coat.empty()) stack->coat = load_coat(films, coat);
+    require_layer_coverage(*stack, kVisibleRange, spectral);
+    std::vector<std::string> warnings;
+    if (stack->film)
+        for (const std::string& w : stack->film->material.warnings) warnings.push_back("film " + stack->film->material.id + ": " + w);
+    if (stack->coat)
+        for (const std::string& w : stack->coat->material.warnings) warnings.push_back("coat " + stack->coat->material.id + ": " + w);
+    std::shared_ptr<const LayerStack> layers = std::move(stack);
+    for (auto& load : loaders)
+        load = [load = std::move(load), layers, warnings] {
+            Material m = load();
+            m.layers = layers;
+            m.warnings.insert(m.warnings.end(), warnings.begin(), warnings.end());
+            return m;
+        };
+    return loaders;
+}
+
+}  // namespace metalfit::cli
