@@ -21,7 +21,9 @@ using metalfit::test::Contains;
 
 class CliLayers : public ::testing::Test {
 protected:
-    Result run(const std::string& args) const { return metalfit::test::run_command(METALFIT_EXE, args, scratch_.path(), "OCIO="); }
+    Result run(const std::string& args) const {
+        return metalfit::test::run_command(METALFIT_EXE, args, scratch_.path(), "OCIO=");
+    }
     fs::path path(const std::string& name) const { return scratch_.path() / name; }
 
     // A clear oxide table of n = 2.0 + 0.1·(λ/1000 µm) over [first_nm, last_nm], k = 0, as CSV.
@@ -78,8 +80,10 @@ TEST_F(CliLayers, NoFilmAndACoatOfIndexOneAreTheBareMetal) {
         const Result r = run(std::string("show Au --json ") + layers);
         ASSERT_EQ(r.exit_code, 0) << layers << ": " << r.err;
         const auto j = nlohmann::json::parse(r.out);
-        for (const char* key : {"F0", "F82"}) EXPECT_LT(max_difference(j[key], bare[key]), 1e-12) << layers << " " << key;
-        for (const char* mu : {"0.5", "0.25", "0.1"}) EXPECT_LT(max_difference(j["R"][mu], bare["R"][mu]), 1e-12) << layers;
+        for (const char* key : {"F0", "F82"})
+            EXPECT_LT(max_difference(j[key], bare[key]), 1e-12) << layers << " " << key;
+        for (const char* mu : {"0.5", "0.25", "0.1"})
+            EXPECT_LT(max_difference(j["R"][mu], bare["R"][mu]), 1e-12) << layers;
     }
 }
 
@@ -93,7 +97,8 @@ TEST_F(CliLayers, ACoatLowersGoldsNormalReflectanceAndKeepsGrazingAtOne) {
 
 TEST_F(CliLayers, FitRecordsTheStackAndAUserFileFilm) {
     const fs::path oxide = oxide_csv("my-oxide.csv", 300, 900);
-    const Result r = run("fit Ti --film '" + oxide.string() + ":120nm' --coat PMMA:20um --extrapolate --model f82-tint,schlick --json");
+    const Result r = run("fit Ti --film '" + oxide.string() +
+                         ":120nm' --coat PMMA:20um --extrapolate --model f82-tint,schlick --json");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     const auto& data = j["materials"]["Ti"]["data"];
@@ -104,12 +109,14 @@ TEST_F(CliLayers, FitRecordsTheStackAndAUserFileFilm) {
     EXPECT_EQ(data["stack"]["coat"]["thickness_nm"], 20000.0);
     // PMMA's formula starts at 404.7 nm: --extrapolate holds it, and says so.
     const auto warnings = j["materials"]["Ti"]["warnings"].dump();
-    EXPECT_TRUE(Contains(warnings, "coat PMMA (Szczurowski): n held at its 404.7 nm value over 360–404.7 nm")) << warnings;
+    EXPECT_TRUE(Contains(warnings, "coat PMMA (Szczurowski): n held at its 404.7 nm value over 360–404.7 nm"))
+        << warnings;
     const Result human = run("fit Ti --film TiO2:80nm --model schlick");
     ASSERT_EQ(human.exit_code, 0) << human.err;
     EXPECT_TRUE(Contains(human.out, "  stack: titanium under a TiO2 (Siefke) film of 80 nm\n"));
     // Without layers the record has no stack.
-    EXPECT_FALSE(nlohmann::json::parse(run("fit Ti --model schlick --json").out)["materials"]["Ti"]["data"].contains("stack"));
+    EXPECT_FALSE(
+        nlohmann::json::parse(run("fit Ti --model schlick --json").out)["materials"]["Ti"]["data"].contains("stack"));
 }
 
 TEST_F(CliLayers, BadThicknessesAndIndicesAreOneLineExitThreeAndWriteNothing) {
@@ -117,13 +124,15 @@ TEST_F(CliLayers, BadThicknessesAndIndicesAreOneLineExitThreeAndWriteNothing) {
     struct Bad {
         std::string args, message;
     };
-    for (const Bad& bad : {Bad{"--film 2.2:-5nm", "--film 2.2:-5nm: thickness -5 nm is negative"},
-                           Bad{"--film TiO2:nannm", "--film TiO2:nannm: thickness nan is not a finite number"},
-                           Bad{"--film TiO2:infum", "is not a finite number"},
-                           Bad{"--film TiO2:2.5um", "--film TiO2:2.5um: thickness 2500 nm is beyond 2 µm, where a film is no longer coherent"},
-                           Bad{"--coat 0.8", "--coat 0.8: index 0.8 is below 1"},
-                           Bad{"--coat 1.5:-1um", "--coat 1.5:-1um: thickness -1000 nm is negative"},
-                           Bad{"--film nan:80nm", "--film nan:80nm: index nan is not a finite number"}}) {
+    for (const Bad& bad :
+         {Bad{"--film 2.2:-5nm", "--film 2.2:-5nm: thickness -5 nm is negative"},
+          Bad{"--film TiO2:nannm", "--film TiO2:nannm: thickness nan is not a finite number"},
+          Bad{"--film TiO2:infum", "is not a finite number"},
+          Bad{"--film TiO2:2.5um",
+              "--film TiO2:2.5um: thickness 2500 nm is beyond 2 µm, where a film is no longer coherent"},
+          Bad{"--coat 0.8", "--coat 0.8: index 0.8 is below 1"},
+          Bad{"--coat 1.5:-1um", "--coat 1.5:-1um: thickness -1000 nm is negative"},
+          Bad{"--film nan:80nm", "--film nan:80nm: index nan is not a finite number"}}) {
         for (const char* command : {"show", "fit"}) {
             const Result r = run(std::string(command) + " Ti " + bad.args + " -o '" + out.string() + "'");
             expect_one_line_error(r, 3, bad.message);
@@ -136,8 +145,12 @@ TEST_F(CliLayers, AFilmTableNotCoveringTheColourRangeNamesWhatIsMissing) {
     const fs::path narrow = oxide_csv("narrow.csv", 400, 800);
     const fs::path out = path("out.json");
     for (const char* command : {"show", "fit"}) {
-        const Result r = run(std::string(command) + " Au --film '" + narrow.string() + ":100nm' -o '" + out.string() + "'");
-        expect_one_line_error(r, 3, narrow.string() + ": DATA: film n covers 400–800 nm, but colour needs 360–830 nm: 360–400 nm and 800–830 nm missing (--extrapolate");
+        const Result r =
+            run(std::string(command) + " Au --film '" + narrow.string() + ":100nm' -o '" + out.string() + "'");
+        expect_one_line_error(
+            r, 3,
+            narrow.string() +
+                ": DATA: film n covers 400–800 nm, but colour needs 360–830 nm: 360–400 nm and 800–830 nm missing (--extrapolate");
         EXPECT_FALSE(fs::exists(out));
     }
     const Result held = run("show Au --film '" + narrow.string() + ":100nm' --extrapolate --json");
@@ -161,9 +174,11 @@ TEST_F(CliLayers, ACoatTableBelowIndexOneIsRefusedNamingTheWavelength) {
 }
 
 TEST_F(CliLayers, UnknownOrIncompleteLayersAreUsageErrors) {
-    expect_one_line_error(run("show Ti --film TiO2"), 2, "--film TiO2: give the film's thickness with a unit (TiO2:80nm)");
+    expect_one_line_error(run("show Ti --film TiO2"), 2,
+                          "--film TiO2: give the film's thickness with a unit (TiO2:80nm)");
     expect_one_line_error(run("show Ti --film TiO2:80"), 2, "--film TiO2:80: give the thickness's unit (80nm or um)");
-    expect_one_line_error(run("show Ti --film unobtainium:80nm"), 2, "unknown film or coat material 'unobtainium' (known: TiO2,");
+    expect_one_line_error(run("show Ti --film unobtainium:80nm"), 2,
+                          "unknown film or coat material 'unobtainium' (known: TiO2,");
     expect_one_line_error(run("show Cu --film Cu2O:50nm"), 2, "Cu2O has no visible data in refractiveindex.info");
     expect_one_line_error(run("show Cu --film CuO:50nm"), 2, "CuO has no visible data");
     expect_one_line_error(run("show Ti --coat 1.5:80"), 2, "give the thickness's unit");

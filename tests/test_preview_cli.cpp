@@ -266,7 +266,6 @@ TEST(PreviewCli, TheLightsBenchmarkPrintsItsRatiosToTheMirrorFrame) {
     EXPECT_GT(lights["shadow_pass_per_light"]["ratio_to_mirror_frame"].get<double>(), 0.0);
 }
 
-
 // A one-sphere scene under the shipped equirect sky (a user's HDRI): the sheet renders under it.
 fs::path write_equirect_sheet_scene(const TempDir& dir) {
     return dir.write("sky-sheet.json", R"({"image": {"width": 48, "height": 48},
@@ -403,7 +402,9 @@ TEST(PreviewCli, ARelativeScenePathFindsTheFilesBesideTheScene) {
 TEST(PreviewCli, TheSheetsLightColumnShowsTheHighlightAndNeedsARoom) {
     TempDir dir;
     const std::string scene = (kData / "scenes" / "sheet.json").string();
-    const CommandRun run = glpreview(scene + " --sheet Au --sheet-models f82-tint --sheet-light on --size 64x64 -o " + (dir.path() / "out").string(), dir);
+    const CommandRun run = glpreview(scene + " --sheet Au --sheet-models f82-tint --sheet-light on --size 64x64 -o " +
+                                         (dir.path() / "out").string(),
+                                     dir);
     ASSERT_EQ(run.exit_code, 0) << run.err;
     std::ifstream in(dir.path() / "out" / "sheet.json");
     const auto sheet = nlohmann::json::parse(in);
@@ -416,7 +417,10 @@ TEST(PreviewCli, TheSheetsLightColumnShowsTheHighlightAndNeedsARoom) {
             EXPECT_DOUBLE_EQ(row["roughness"].get<double>(), 0.35);
         }
     EXPECT_EQ(lit, 1);
-    const CommandRun sky = glpreview((kData / "scenes" / "sky.json").string() + " --sheet Au --sheet-light on --size 32x32 -o " + (dir.path() / "out2").string(), dir);
+    const CommandRun sky =
+        glpreview((kData / "scenes" / "sky.json").string() + " --sheet Au --sheet-light on --size 32x32 -o " +
+                      (dir.path() / "out2").string(),
+                  dir);
     EXPECT_EQ(sky.exit_code, 2);
     EXPECT_TRUE(Contains(sky.err, "--sheet-light: the light column needs a room environment")) << sky.err;
     EXPECT_FALSE(fs::exists(dir.path() / "out2"));

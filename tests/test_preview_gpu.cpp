@@ -12,12 +12,12 @@
 #include <random>
 #include <variant>
 
+#include "glpreview/effects/reflection_lookup.hpp"
 #include "glpreview/gl/gl_context.hpp"
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/gpu_bench.hpp"
-#include "glpreview/effects/reflection_lookup.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/preview.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"

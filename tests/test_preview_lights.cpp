@@ -29,8 +29,10 @@ std::string room_scene(const std::string& lights, const std::string& spheres, in
       "environment": {"type": "room", "panels": [], "wall_x_min": [0.2, 0.2, 0.2], "wall_x_max": [0.2, 0.2, 0.2],
                       "wall_z_min": [0.2, 0.2, 0.2], "wall_z_max": [0.2, 0.2, 0.2], "ceiling": [0.1, 0.1, 0.1],
                       "floor_light": [0.3, 0.3, 0.3], "floor_dark": [0.3, 0.3, 0.3]},
-      "lights": [)" + lights + R"(],
-      "spheres": [)" + spheres + R"(],
+      "lights": [)" +
+           lights + R"(],
+      "spheres": [)" +
+           spheres + R"(],
       "outputs": {"reference_samples": 64, "png": false}})";
 }
 
@@ -46,11 +48,13 @@ std::string parse_error(const std::string& json) {
 const std::string kFarSphere = R"({"center": [2.4, 0.2, -2.4], "radius": 0.2, "reflection": "classic"})";
 
 TEST(LightsScene, ReadsEveryTypeWithItsUnits) {
-    const Scene scene = parse_scene(room_scene(R"({"type": "point", "position": [0, 2, 0], "intensity": 2, "unit": "W/sr"},
+    const Scene scene =
+        parse_scene(room_scene(R"({"type": "point", "position": [0, 2, 0], "intensity": 2, "unit": "W/sr"},
         {"type": "spot", "position": [1, 2.5, 1], "direction": [0, -2, 0], "cone_inner_deg": 20, "cone_outer_deg": 30, "intensity": 5},
         {"type": "directional", "direction": [1, -1, 0], "colour": [1, 0.9, 0.8], "intensity": 0.5, "unit": "W/m2"},
-        {"type": "sphere", "position": [-1, 2, 1], "radius": 0.2, "intensity": 10, "unit": "W/m2/sr"})", kFarSphere),
-                                    "lights.json");
+        {"type": "sphere", "position": [-1, 2, 1], "radius": 0.2, "intensity": 10, "unit": "W/m2/sr"})",
+                               kFarSphere),
+                    "lights.json");
     const Lights* lights = scene.effects.find<Lights>();
     ASSERT_NE(lights, nullptr);
     ASSERT_EQ(lights->lights.size(), 4u);
@@ -65,22 +69,31 @@ TEST(LightsScene, BadInputNamesTheField) {
     const auto error = [](const std::string& light, const std::string& spheres = kFarSphere) {
         return parse_error(room_scene(light, spheres));
     };
-    EXPECT_TRUE(test::Contains(error(R"({"type": "laser", "position": [0, 2, 0], "intensity": 1})"), "lights[0].type: unknown value 'laser'"));
-    EXPECT_TRUE(test::Contains(error(R"({"type": "point", "position": [0, 2, 0], "intensity": -1})"), "lights[0].intensity: must be in [0"));
+    EXPECT_TRUE(test::Contains(error(R"({"type": "laser", "position": [0, 2, 0], "intensity": 1})"),
+                               "lights[0].type: unknown value 'laser'"));
+    EXPECT_TRUE(test::Contains(error(R"({"type": "point", "position": [0, 2, 0], "intensity": -1})"),
+                               "lights[0].intensity: must be in [0"));
     EXPECT_TRUE(test::Contains(error(R"({"type": "point", "position": [0, 2, 0]})"), "lights[0].intensity: missing"));
-    EXPECT_TRUE(test::Contains(error(R"({"type": "point", "position": [0, 9, 0], "intensity": 1})"), "lights[0].position: outside the room"));
+    EXPECT_TRUE(test::Contains(error(R"({"type": "point", "position": [0, 9, 0], "intensity": 1})"),
+                               "lights[0].position: outside the room"));
     EXPECT_TRUE(test::Contains(error(R"({"type": "sphere", "position": [0, 2.9, 0], "radius": 0.2, "intensity": 1})"),
                                "lights[0].position: the light's sphere must lie inside the room"));
     EXPECT_TRUE(test::Contains(error(R"({"type": "point", "position": [2.4, 0.25, -2.4], "intensity": 1})"),
                                "lights[0].position: inside sphere 0"));
-    EXPECT_TRUE(test::Contains(error(R"({"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "cone_outer_deg": 0, "intensity": 1})"),
-                               "lights[0].cone_outer_deg: must be in (0, 90]"));
-    EXPECT_TRUE(test::Contains(error(R"({"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "cone_outer_deg": 95, "intensity": 1})"),
-                               "lights[0].cone_outer_deg: must be in [0, 90]"));
-    EXPECT_TRUE(test::Contains(error(R"({"type": "spot", "position": [0, 2, 0], "direction": [0, 0, 0], "intensity": 1})"),
-                               "lights[0].direction: must be a non-zero vector"));
-    EXPECT_TRUE(test::Contains(error(R"({"type": "directional", "position": [0, 2, 0], "direction": [0, -1, 0], "intensity": 1})"),
-                               "lights[0].position: means nothing for a directional light"));
+    EXPECT_TRUE(test::Contains(
+        error(
+            R"({"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "cone_outer_deg": 0, "intensity": 1})"),
+        "lights[0].cone_outer_deg: must be in (0, 90]"));
+    EXPECT_TRUE(test::Contains(
+        error(
+            R"({"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "cone_outer_deg": 95, "intensity": 1})"),
+        "lights[0].cone_outer_deg: must be in [0, 90]"));
+    EXPECT_TRUE(
+        test::Contains(error(R"({"type": "spot", "position": [0, 2, 0], "direction": [0, 0, 0], "intensity": 1})"),
+                       "lights[0].direction: must be a non-zero vector"));
+    EXPECT_TRUE(test::Contains(
+        error(R"({"type": "directional", "position": [0, 2, 0], "direction": [0, -1, 0], "intensity": 1})"),
+        "lights[0].position: means nothing for a directional light"));
     EXPECT_TRUE(test::Contains(error(R"({"type": "point", "position": [0, 2, 0], "intensity": 1, "unit": "lm"})"),
                                "lights[0].unit: 'lm': a point light's intensity is in W/sr"));
     const std::string sky = R"({"image": {"width": 8, "height": 8}, "environment": {"type": "sphere-room"},
@@ -90,7 +103,8 @@ TEST(LightsScene, BadInputNamesTheField) {
 
 TEST(LightsPlan, ShadowMapsOnlyForLightsThatCanCastAndNoneWithoutLights) {
     const Scene lit = parse_scene(room_scene(R"({"type": "point", "position": [0, 2, 0], "intensity": 2},
-        {"type": "spot", "position": [-2, 2, 2], "direction": [-1, 0, 1], "cone_inner_deg": 5, "cone_outer_deg": 10, "intensity": 5})", kFarSphere),
+        {"type": "spot", "position": [-2, 2, 2], "direction": [-1, 0, 1], "cone_inner_deg": 5, "cone_outer_deg": 10, "intensity": 5})",
+                                             kFarSphere),
                                   "lights.json");
     const Plan plan = build_plan(lit);
     ASSERT_TRUE(plan.runs("shadow-maps"));
@@ -99,18 +113,22 @@ TEST(LightsPlan, ShadowMapsOnlyForLightsThatCanCastAndNoneWithoutLights) {
     EXPECT_TRUE(test::Contains(text, "light 1 (spot): no sphere or room box lies in its cone")) << text;
     EXPECT_LT(text.find("shadow-maps"), text.find("capture-environment"));  // the capture reads the maps
 
-    const Scene dark = parse_scene(room_scene(R"({"type": "spot", "position": [-2, 2, 2], "direction": [-1, 0, 1], "cone_inner_deg": 5, "cone_outer_deg": 10, "intensity": 5})",
-                                              kFarSphere),
-                                   "lights.json");
+    const Scene dark = parse_scene(
+        room_scene(
+            R"({"type": "spot", "position": [-2, 2, 2], "direction": [-1, 0, 1], "cone_inner_deg": 5, "cone_outer_deg": 10, "intensity": 5})",
+            kFarSphere),
+        "lights.json");
     EXPECT_FALSE(build_plan(dark).runs("shadow-maps"));
-    EXPECT_TRUE(test::Contains(explain(build_plan(dark), dark), "shadow-maps: light 0 (spot): no sphere or room box lies in its cone"));
+    EXPECT_TRUE(test::Contains(explain(build_plan(dark), dark),
+                               "shadow-maps: light 0 (spot): no sphere or room box lies in its cone"));
 }
 
 TEST(CpuLights, AnUnoccludedSphereLightLightsLikeThePointOfItsPower) {
     // Above the horizon, a uniform sphere's irradiance is that of a point source of its power at its centre:
     // E = L π r² / d² cos θ (the spiral quadrature against the closed form).
-    const Scene scene = parse_scene(room_scene(R"({"type": "sphere", "position": [0.3, 2.0, -0.2], "radius": 0.3, "intensity": 7})", kFarSphere),
-                                    "lights.json");
+    const Scene scene = parse_scene(
+        room_scene(R"({"type": "sphere", "position": [0.3, 2.0, -0.2], "radius": 0.3, "intensity": 7})", kFarSphere),
+        "lights.json");
     const Lights& lights = *scene.effects.find<Lights>();
     const RGB albedo{0.5, 0.25, 1.0};
     for (const Vec3 p : {Vec3{0, 0, 0}, Vec3{-1.5, 0, 1.0}, Vec3{1.2, 0, -1.6}}) {
@@ -122,9 +140,10 @@ TEST(CpuLights, AnUnoccludedSphereLightLightsLikeThePointOfItsPower) {
         EXPECT_NEAR(got.b, 1.0 * expected, 2e-3 * expected);
     }
     // Behind an occluder (a sphere between the point and the light): none.
-    const Scene blocked = parse_scene(room_scene(R"({"type": "sphere", "position": [0, 2.0, 0], "radius": 0.1, "intensity": 7})",
-                                                 R"({"center": [0, 1, 0], "radius": 0.4})"),
-                                      "lights.json");
+    const Scene blocked =
+        parse_scene(room_scene(R"({"type": "sphere", "position": [0, 2.0, 0], "radius": 0.1, "intensity": 7})",
+                               R"({"center": [0, 1, 0], "radius": 0.4})"),
+                    "lights.json");
     EXPECT_EQ(light_on_surface(blocked, *blocked.effects.find<Lights>(), albedo, {0, 0, 0}, {0, 1, 0}).r, 0.0);
 }
 
@@ -136,7 +155,8 @@ TEST(CpuLights, ASpotsConeWeightIsTheShadersSmoothstep) {
     EXPECT_DOUBLE_EQ(spot_weight(spot, 1.0), 1.0);
     EXPECT_DOUBLE_EQ(spot_weight(spot, std::cos(31 * std::numbers::pi / 180)), 0.0);
     const double middle = std::cos(25 * std::numbers::pi / 180);
-    const double t = (middle - std::cos(30 * std::numbers::pi / 180)) / (std::cos(20 * std::numbers::pi / 180) - std::cos(30 * std::numbers::pi / 180));
+    const double t = (middle - std::cos(30 * std::numbers::pi / 180)) /
+                     (std::cos(20 * std::numbers::pi / 180) - std::cos(30 * std::numbers::pi / 180));
     EXPECT_NEAR(spot_weight(spot, middle), t * t * (3 - 2 * t), 1e-15);
 }
 
@@ -171,7 +191,8 @@ TEST(LightsGpu, TheLitRoomAgreesWithTheReferenceAwayFromShadowEdges) {
     int count = 0;
     for (std::size_t i = 0; i < id.size(); ++i)
         if (id[i] < 0) {
-            const int x = static_cast<int>(i % static_cast<std::size_t>(scene.width)), y = static_cast<int>(i / static_cast<std::size_t>(scene.width));
+            const int x = static_cast<int>(i % static_cast<std::size_t>(scene.width)),
+                      y = static_cast<int>(i / static_cast<std::size_t>(scene.width));
             brighter += lit.beauty->at(x, y).g - unlit.beauty->at(x, y).g;
             ++count;
         }
@@ -180,9 +201,10 @@ TEST(LightsGpu, TheLitRoomAgreesWithTheReferenceAwayFromShadowEdges) {
 
 TEST(LightsGpu, AShadowsUmbraIsDarkOnBothAndTheLitFloorLit) {
     // A point light right above a sphere: the floor point below the sphere is in its umbra; one far off is lit.
-    const Scene scene = parse_scene(room_scene(R"({"type": "point", "position": [0, 2.6, 0], "intensity": 12})",
-                                               R"({"center": [0, 1.2, 0], "radius": 0.5, "reflection": "classic"})", 160, 120),
-                                    "lights.json");
+    const Scene scene =
+        parse_scene(room_scene(R"({"type": "point", "position": [0, 2.6, 0], "intensity": 12})",
+                               R"({"center": [0, 1.2, 0], "radius": 0.5, "reflection": "classic"})", 160, 120),
+                    "lights.json");
     const PreviewResult r = run_preview(scene, options());
     const CameraBasis basis = camera_basis(scene.camera, scene.width, scene.height);
     // The pixel whose ray meets the floor at (x, 0, z).
@@ -193,9 +215,10 @@ TEST(LightsGpu, AShadowsUmbraIsDarkOnBothAndTheLitFloorLit) {
         const int px = static_cast<int>((fx + 1) / 2 * scene.width), py = static_cast<int>((fy + 1) / 2 * scene.height);
         return std::pair<int, int>{px, scene.height - 1 - py};
     };
-    const auto [ux, uy] = pixel_of({0.0, 0, 0.75});   // under the sphere's shadow, seen past the sphere
-    const auto [lx, ly] = pixel_of({1.8, 0, 1.2});    // far from it
-    ASSERT_LT(r.reference->sphere_id[static_cast<std::size_t>(uy) * scene.width + ux], 0) << "the umbra pixel sees the floor";
+    const auto [ux, uy] = pixel_of({0.0, 0, 0.75});  // under the sphere's shadow, seen past the sphere
+    const auto [lx, ly] = pixel_of({1.8, 0, 1.2});   // far from it
+    ASSERT_LT(r.reference->sphere_id[static_cast<std::size_t>(uy) * scene.width + ux], 0)
+        << "the umbra pixel sees the floor";
     const double emission = 0.3;
     EXPECT_NEAR(r.reference->image.at(ux, uy).g, emission, 1e-6);  // exact: no light reaches it (a float image)
     EXPECT_NEAR(r.beauty->at(ux, uy).g, emission, 0.01);
@@ -213,7 +236,8 @@ TEST(LightsGpu, ARoughSpheresHighlightSitsWhereTheReferencesDoes) {
         double best = -1;
         for (int y = 0; y < image.height; ++y)
             for (int x = 0; x < image.width; ++x)
-                if (r.reference->sphere_id[static_cast<std::size_t>(y) * image.width + x] == 0 && image.at(x, y).g > best) {
+                if (r.reference->sphere_id[static_cast<std::size_t>(y) * image.width + x] == 0 &&
+                    image.at(x, y).g > best) {
                     best = image.at(x, y).g;
                     at = {x, y};
                 }
@@ -228,9 +252,10 @@ TEST(LightsGpu, ARoughSpheresHighlightSitsWhereTheReferencesDoes) {
 
 TEST(LightsGpu, AMirrorSeesASphereLightAsItsFresnelTimesItsRadiance) {
     // The camera looks at a mirror sphere whose reflection of the sphere light is in view.
-    const Scene scene = parse_scene(room_scene(R"({"type": "sphere", "position": [0, 2.4, 1.4], "radius": 0.3, "intensity": 20})",
-                                               R"({"center": [0, 0.6, 0], "radius": 0.6, "reflection": "classic"})", 128, 96),
-                                    "lights.json");
+    const Scene scene =
+        parse_scene(room_scene(R"({"type": "sphere", "position": [0, 2.4, 1.4], "radius": 0.3, "intensity": 20})",
+                               R"({"center": [0, 0.6, 0], "radius": 0.6, "reflection": "classic"})", 128, 96),
+                    "lights.json");
     const PreviewResult r = run_preview(scene, options());
     int emitter_pixels = 0, agreeing = 0;
     for (int y = 0; y < scene.height; ++y)
@@ -238,7 +263,8 @@ TEST(LightsGpu, AMirrorSeesASphereLightAsItsFresnelTimesItsRadiance) {
             if (r.reference->sphere_id[static_cast<std::size_t>(y) * scene.width + x] != 0) continue;
             if (r.reference->image.at(x, y).g < 5) continue;  // F · 20 where the mirror shows the light
             ++emitter_pixels;
-            agreeing += std::abs(r.beauty->at(x, y).g - r.reference->image.at(x, y).g) < 0.01 * r.reference->image.at(x, y).g;
+            agreeing +=
+                std::abs(r.beauty->at(x, y).g - r.reference->image.at(x, y).g) < 0.01 * r.reference->image.at(x, y).g;
         }
     EXPECT_GT(emitter_pixels, 3);
     EXPECT_GT(agreeing, emitter_pixels * 8 / 10);

@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
+#include "glpreview/effects/reflection_lookup.hpp"
 #include "glpreview/gl/gl_context.hpp"
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/environment.hpp"
-#include "glpreview/effects/reflection_lookup.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
 #include "glpreview/scene/scene.hpp"

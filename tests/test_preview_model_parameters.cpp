@@ -93,7 +93,8 @@ SphereFresnel six_parameter_fresnel(const Model& model, double p5) {
     f.material = "test";
     f.fresnel = "test-six";
     f.model = &model;
-    f.set_parameters({{0.9, -0.3, 0.2, -0.1, 0.05, p5}, {0.6, 0.1, -0.2, 0.3, -0.15, p5}, {0.3, 0.4, 0.1, -0.2, 0.25, -p5}});
+    f.set_parameters(
+        {{0.9, -0.3, 0.2, -0.1, 0.05, p5}, {0.6, 0.1, -0.2, 0.3, -0.15, p5}, {0.3, 0.4, 0.1, -0.2, 0.25, -p5}});
     return f;
 }
 
@@ -115,7 +116,8 @@ TEST(PreviewModelParameters, SixParametersRenderAsTheModelsCppEvaluation) {
     double worst = 0;
     for (int y = 0; y < scene.height; ++y)
         for (int x = 0; x < scene.width; ++x) {
-            const Vec3 d = camera_ray(basis, x, scene.height - 1 - y, scene.width, scene.height);  // image rows run down
+            const Vec3 d =
+                camera_ray(basis, x, scene.height - 1 - y, scene.width, scene.height);  // image rows run down
             const Vec3 oc = basis.position - sphere.center;
             const double b = dot(oc, d), h = b * b - (dot(oc, oc) - sphere.radius * sphere.radius);
             if (h < 0) continue;
@@ -137,7 +139,8 @@ TEST(PreviewModelParameters, SixParametersRenderAsTheModelsCppEvaluation) {
     double largest_change = 0;
     for (int y = 0; y < scene.height; ++y)
         for (int x = 0; x < scene.width; ++x)
-            for (int c = 0; c < 3; ++c) largest_change = std::max(largest_change, std::abs(changed.at(x, y)[c] - image.at(x, y)[c]));
+            for (int c = 0; c < 3; ++c)
+                largest_change = std::max(largest_change, std::abs(changed.at(x, y)[c] - image.at(x, y)[c]));
     EXPECT_GT(largest_change, 0.05);
 }
 

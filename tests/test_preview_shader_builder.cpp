@@ -32,7 +32,12 @@ TEST(ShaderBuilder, AssignsUnitsInDeclarationOrderOncePerSampler) {
 
 TEST(ShaderBuilder, NamesTheVariantBySortedLabelsAndAddsASharedSourceOnce) {
     ShaderBuilder b("sphere");
-    b.define("ZED").define("NITER", "8").define("ALPHA").source("float f();\n").source("float g();\n").source("float f();\n");
+    b.define("ZED")
+        .define("NITER", "8")
+        .define("ALPHA")
+        .source("float f();\n")
+        .source("float g();\n")
+        .source("float f();\n");
     EXPECT_EQ(b.labels(), (std::vector<std::string>{"ALPHA", "NITER 8", "ZED"}));
     EXPECT_EQ(b.key(), "sphere ALPHA NITER 8 ZED");
     const std::string text = b.text();
@@ -50,7 +55,8 @@ TEST(ShaderBuilder, TheModelIsATypedChoiceWithItsParameterCount) {
     const std::string text = b.text();
     EXPECT_TRUE(contains(text, "#define FRESNEL_MODEL\n"));
     EXPECT_TRUE(contains(text, "#define FRESNEL_PARAMETERS " + std::to_string(model.parameters().size()) + "\n"));
-    EXPECT_TRUE(contains(text, "#define FRESNEL_CALL " + std::string(model.glsl_function()) + "(u_param[0], u_param[1], mu)"));
+    EXPECT_TRUE(
+        contains(text, "#define FRESNEL_CALL " + std::string(model.glsl_function()) + "(u_param[0], u_param[1], mu)"));
     // The model's GLSL where it was chosen: after what came before, before what follows.
     const auto at = text.find(std::string(model.glsl_function()) + "(vec3");
     ASSERT_NE(at, std::string::npos);
@@ -118,8 +124,8 @@ TEST(SphereShader, TheRegisteredEffectsNameEachVariant) {
     const Scene b = one_sphere_scene(rough);
     const ShaderBuilder prefiltered = sphere_shader(b, b.spheres[0], nullptr);
     const auto labels = prefiltered.labels();
-    for (const char* expected : {"ENV_ROOM", "FRESNEL_MODEL lazanyi", "GLOSSY_PREFILTERED", "REFLECTION_DISTANCE_IMPOSTOR",
-                                 "STRATEGY_ILLINOIS", "NITER 8", "TOLERANCE 0.0001"})
+    for (const char* expected : {"ENV_ROOM", "FRESNEL_MODEL lazanyi", "GLOSSY_PREFILTERED",
+                                 "REFLECTION_DISTANCE_IMPOSTOR", "STRATEGY_ILLINOIS", "NITER 8", "TOLERANCE 0.0001"})
         EXPECT_NE(std::find(labels.begin(), labels.end(), expected), labels.end()) << expected;
     EXPECT_EQ(prefiltered.samplers(), (std::vector<std::string>{"u_env", "u_prefiltered", "u_dfg"}));
 
@@ -138,8 +144,9 @@ TEST(ShaderBuilderGl, ALinkedProgramThatReadsAnUndeclaredSamplerIsRefused) {
     GlContext context = GlContext::create();
     ProgramCache cache;
     ShaderBuilder declared("declared");
-    declared.source("uniform sampler2D u_a;\nuniform sampler2D u_b;\nout vec4 c;\n"
-                    "void main() { c = texture(u_a, vec2(0.5)) + texture(u_b, vec2(0.5)); }\n")
+    declared
+        .source("uniform sampler2D u_a;\nuniform sampler2D u_b;\nout vec4 c;\n"
+                "void main() { c = texture(u_a, vec2(0.5)) + texture(u_b, vec2(0.5)); }\n")
         .sampler("u_a")
         .sampler("u_b");
     const BuiltProgram program = link(cache, declared);
@@ -148,8 +155,9 @@ TEST(ShaderBuilderGl, ALinkedProgramThatReadsAnUndeclaredSamplerIsRefused) {
     EXPECT_EQ(unit, 1);
 
     ShaderBuilder undeclared("undeclared");
-    undeclared.source("uniform sampler2D u_a;\nuniform samplerCube u_hidden;\nout vec4 c;\n"
-                      "void main() { c = texture(u_a, vec2(0.5)) + texture(u_hidden, vec3(1.0)); }\n")
+    undeclared
+        .source("uniform sampler2D u_a;\nuniform samplerCube u_hidden;\nout vec4 c;\n"
+                "void main() { c = texture(u_a, vec2(0.5)) + texture(u_hidden, vec3(1.0)); }\n")
         .sampler("u_a");
     EXPECT_THROW(link(cache, undeclared), std::logic_error);
 }

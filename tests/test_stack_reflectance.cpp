@@ -64,7 +64,8 @@ CL tmm_reflection(L n0, AirAngle a, const std::vector<Layer>& films, CL substrat
         const CL c = cos_in(eta, a), q = admittance(eta, c, pol);
         const CL delta = L(2) * kPi * eta * L(layer.thickness_nm) * c / lambda_nm;
         const CL i(0, 1);
-        const CL a11 = std::cos(delta), a12 = -i * std::sin(delta) / q, a21 = -i * q * std::sin(delta), a22 = std::cos(delta);
+        const CL a11 = std::cos(delta), a12 = -i * std::sin(delta) / q, a21 = -i * q * std::sin(delta),
+                 a22 = std::cos(delta);
         const CL n11 = m11 * a11 + m12 * a21, n12 = m11 * a12 + m12 * a22, n21 = m21 * a11 + m22 * a21,
                  n22 = m21 * a12 + m22 * a22;
         m11 = n11, m12 = n12, m21 = n21, m22 = n22;
@@ -149,9 +150,10 @@ TEST(StackReflectance, MatchesIndependentTransferMatrices) {
             ASSERT_TRUE(std::isfinite(got)) << kinds[kind] << " mu " << x.mu;
             const double d = std::abs(got - expected);
             if (d > worst[kind]) worst[kind] = d, worst_mu[kind] = x.mu;
-            ASSERT_LE(d, 1e-9) << kinds[kind] << " λ " << x.lambda_nm << " mu " << x.mu << " metal " << x.metal << " film "
-                               << x.film_layer.eta << " d " << x.film_layer.thickness_nm << " coat " << x.coat_n << " k "
-                               << x.coat_k << " pol " << (pol == Pol::s ? "s" : "p") << ": " << got << " vs " << expected;
+            ASSERT_LE(d, 1e-9) << kinds[kind] << " λ " << x.lambda_nm << " mu " << x.mu << " metal " << x.metal
+                               << " film " << x.film_layer.eta << " d " << x.film_layer.thickness_nm << " coat "
+                               << x.coat_n << " k " << x.coat_k << " pol " << (pol == Pol::s ? "s" : "p") << ": " << got
+                               << " vs " << expected;
         }
         ++cases[kind];
     }
@@ -227,8 +229,10 @@ TEST(StackReflectance, QuarterWaveFilmHasItsExtremumWhereTheoryPutsIt) {
         EXPECT_NEAR(reflectance(lambda0), theory, 1e-14) << f.n_f << " on " << f.n_s;
         // Bare substrate for comparison: the film lowers (minimum) or raises (maximum) it.
         const double bare = std::pow((f.n_s - 1.0) / (f.n_s + 1.0), 2);
-        if (f.minimum) EXPECT_LT(theory, bare);
-        else EXPECT_GT(theory, bare);
+        if (f.minimum)
+            EXPECT_LT(theory, bare);
+        else
+            EXPECT_GT(theory, bare);
     }
 }
 

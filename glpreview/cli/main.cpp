@@ -9,20 +9,20 @@
 #include <set>
 #include <sstream>
 
-#include "glpreview/gl/gl_context.hpp"
 #include "glpreview/effects/lights_bench.hpp"
-#include "glpreview/render/gpu_bench.hpp"
+#include "glpreview/gl/gl_context.hpp"
 #include "glpreview/io/image_io.hpp"
-#include "glpreview/render/sphere_sheet.hpp"
+#include "glpreview/render/gpu_bench.hpp"
 #include "glpreview/render/plan.hpp"
 #include "glpreview/render/preview.hpp"
 #include "glpreview/render/reflection_probe.hpp"
+#include "glpreview/render/sphere_sheet.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
-#include "libfit/base/standard_output.hpp"
 #include "libfit/base/library_logging.hpp"
 #include "libfit/base/sample_statistics.hpp"
+#include "libfit/base/standard_output.hpp"
 #include "libfit/base/utf8.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/export/roughness.hpp"
@@ -45,7 +45,8 @@ std::vector<std::string> split_list(const std::string& text) {
 // One value of --sheet-roughness: libfit's roughness, a number in [0, 1].
 double parse_roughness(const std::string& text) {
     if (const std::optional<double> value = metalfit::roughness_from_text(text)) return *value;
-    throw metalfit::UsageError("--sheet-roughness: expected numbers in [0, 1], e.g. 0,0.2,0.5 (got '" + text.substr(0, 40) + "')");
+    throw metalfit::UsageError("--sheet-roughness: expected numbers in [0, 1], e.g. 0,0.2,0.5 (got '" +
+                               text.substr(0, 40) + "')");
 }
 
 }  // namespace
@@ -56,8 +57,8 @@ namespace {
 std::pair<int, int> parse_size(const std::string& option, const std::string& size, const char* example) {
     using namespace metalfit::glpreview;
     std::smatch m;
-    if (!std::regex_match(size, m, std::regex(R"((\d{1,4})x(\d{1,4}))")) || std::stoi(m[1]) < 1 || std::stoi(m[2]) < 1 ||
-        std::stoi(m[1]) > kMaxImageEdge || std::stoi(m[2]) > kMaxImageEdge ||
+    if (!std::regex_match(size, m, std::regex(R"((\d{1,4})x(\d{1,4}))")) || std::stoi(m[1]) < 1 ||
+        std::stoi(m[2]) < 1 || std::stoi(m[1]) > kMaxImageEdge || std::stoi(m[2]) > kMaxImageEdge ||
         static_cast<long long>(std::stoi(m[1])) * std::stoi(m[2]) > kMaxImagePixels)
         throw metalfit::UsageError(option + ": expected WxH with each side in [1, " + std::to_string(kMaxImageEdge) +
                                    "] and at most " + std::to_string(kMaxImagePixels) + " pixels, e.g. " + example +
@@ -84,12 +85,13 @@ void print_preview(const metalfit::glpreview::PreviewResult& result) {
     for (const auto& s : result.metrics["spheres"]) {
         std::printf("sphere %d %-12s %-13s %-18s ", s["sphere"].get<int>(), s["material"].get<std::string>().c_str(),
                     s["fresnel"].get<std::string>().c_str(), s["mode"].get<std::string>().c_str());
-        if (s["pixels"].get<std::size_t>() == 0) std::printf("not visible (no pixel shows it)\n");
+        if (s["pixels"].get<std::size_t>() == 0)
+            std::printf("not visible (no pixel shows it)\n");
         else if (s["mean_iterations"].is_null())
             std::printf("rmse %.5f mean_abs %.5f\n", s["rmse"].get<double>(), s["mean_abs"].get<double>());
         else
-            std::printf("rmse %.5f mean_abs %.5f mean steps %.2f\n", s["rmse"].get<double>(), s["mean_abs"].get<double>(),
-                        s["mean_iterations"].get<double>());
+            std::printf("rmse %.5f mean_abs %.5f mean steps %.2f\n", s["rmse"].get<double>(),
+                        s["mean_abs"].get<double>(), s["mean_iterations"].get<double>());
     }
 }
 
@@ -116,22 +118,27 @@ int run_glpreview(int argc, char** argv) {
     bool batch = false;
     app.add_flag("--batch", batch,
                  "Render every scene given, each into OUTPUT/<scene file's stem>/, in one process and one GL context");
-    bool bench_shader_cost = false, bench_localization_cost = false, bench_glossy_cost = false, bench_lights_cost = false, quick = false,
-         json = false;
-    app.add_flag("--bench-shaders", bench_shader_cost,
-                 "Benchmark: full-screen 1024² pass per libfit model, ratio to the exact conductor-rgb pass (JSON with --json)");
-    app.add_flag("--bench-localization", bench_localization_cost,
-                 "Benchmark: ms per frame and error vs the CPU reference for every reflection mode and iteration count");
-    app.add_flag("--bench-glossy", bench_glossy_cost,
-                 "Benchmark: roughness x rough method, ms per frame as a ratio to the mirror classic pass, RMSE vs the Monte-Carlo "
-                 "reference; the shipped mirror scenes' ms per frame (a Markdown table; JSON with --json)");
-    app.add_flag("--bench-lights", bench_lights_cost,
-                 "Benchmark: a rough sphere's frame with 0, 1 and 4 point lights and one light's shadow pass, as ratios to the "
-                 "mirror frame (a Markdown table; JSON with --json)");
+    bool bench_shader_cost = false, bench_localization_cost = false, bench_glossy_cost = false,
+         bench_lights_cost = false, quick = false, json = false;
+    app.add_flag(
+        "--bench-shaders", bench_shader_cost,
+        "Benchmark: full-screen 1024² pass per libfit model, ratio to the exact conductor-rgb pass (JSON with --json)");
+    app.add_flag(
+        "--bench-localization", bench_localization_cost,
+        "Benchmark: ms per frame and error vs the CPU reference for every reflection mode and iteration count");
+    app.add_flag(
+        "--bench-glossy", bench_glossy_cost,
+        "Benchmark: roughness x rough method, ms per frame as a ratio to the mirror classic pass, RMSE vs the Monte-Carlo "
+        "reference; the shipped mirror scenes' ms per frame (a Markdown table; JSON with --json)");
+    app.add_flag(
+        "--bench-lights", bench_lights_cost,
+        "Benchmark: a rough sphere's frame with 0, 1 and 4 point lights and one light's shadow pass, as ratios to the "
+        "mirror frame (a Markdown table; JSON with --json)");
     app.add_flag("--quick", quick, "Benchmarks: fewer frames, smaller images");
     app.add_flag("--json", json, "Benchmarks: print JSON");
     app.add_option("-o,--output", output_dir, "Output folder (default: preview/)");
-    app.add_option("--size", size, "Image size WxH (overrides the scene's image; each side 1-8192, at most 4096² pixels)");
+    app.add_option("--size", size,
+                   "Image size WxH (overrides the scene's image; each side 1-8192, at most 4096² pixels)");
     bool allow_paths_outside = false;
     app.add_flag("--allow-paths-outside", allow_paths_outside,
                  "Let the scene read files outside its own folder and the database (absolute paths, ../)");
@@ -147,16 +154,19 @@ int run_glpreview(int argc, char** argv) {
     app.add_option("--sheet-roughness", sheet_roughness,
                    "Sheet: the roughness of the columns, comma-separated in [0, 1], e.g. 0,0.2,0.5 (default: the scene "
                    "sphere's)");
-    app.add_option("--sheet-labels", sheet_labels, "Sheet: material, model, roughness and error drawn on sheet.png (on|off)")
+    app.add_option("--sheet-labels", sheet_labels,
+                   "Sheet: material, model, roughness and error drawn on sheet.png (on|off)")
         ->capture_default_str();
-    app.add_option("--sheet-light", sheet_light,
-                   "Sheet: one more column at roughness 0.35 under a point light beside and behind the sphere, each model's highlight next "
-                   "to the reference's (on|off; a room environment)");
+    app.add_option(
+        "--sheet-light", sheet_light,
+        "Sheet: one more column at roughness 0.35 under a point light beside and behind the sphere, each model's highlight next "
+        "to the reference's (on|off; a room environment)");
     std::string capture_probe_size;
     app.add_option("--capture-probe", capture_probe_size,
                    "Capture the scene's environment from its reference point as a WxH equirect reflection probe: "
                    "OUTPUT/probe.exr and OUTPUT/probe.json (the scene with that image on the matching proxy)");
-    app.add_flag("--explain", explain_only, "Print the plan (passes, why they run, what is skipped) and render nothing");
+    app.add_flag("--explain", explain_only,
+                 "Print the plan (passes, why they run, what is skipped) and render nothing");
     app.add_option("--data-dir", data_dir, "Built-in database folder")->check(CLI::ExistingDirectory);
     app.add_option("--ocio-config", ocio_config, "OCIO config when $OCIO is not set (default: data/ocio/config.ocio)");
 
@@ -180,12 +190,14 @@ int run_glpreview(int argc, char** argv) {
                 std::cout << result.dump(2) << "\n";
                 return ok;
             }
-            std::printf("renderer %s; %dx%d, %d interleaved rounds\n\n| variant | ms | ratio to the mirror frame |\n|---|---:|---:|\n",
-                        result["renderer"].get<std::string>().c_str(), result["size"][0].get<int>(), result["size"][1].get<int>(),
-                        result["rounds"].get<int>());
+            std::printf(
+                "renderer %s; %dx%d, %d interleaved rounds\n\n| variant | ms | ratio to the mirror frame |\n|---|---:|---:|\n",
+                result["renderer"].get<std::string>().c_str(), result["size"][0].get<int>(),
+                result["size"][1].get<int>(), result["rounds"].get<int>());
             for (const auto& r : result["rows"])
-                std::printf("| %s | %.3f | %.2f ± %.2f |\n", r["variant"].get<std::string>().c_str(), r["ms"].get<double>(),
-                            r["ratio_to_mirror_frame"].get<double>(), r["ratio_noise"].get<double>());
+                std::printf("| %s | %.3f | %.2f ± %.2f |\n", r["variant"].get<std::string>().c_str(),
+                            r["ms"].get<double>(), r["ratio_to_mirror_frame"].get<double>(),
+                            r["ratio_noise"].get<double>());
             std::printf("\nper light: light pass %.2f ± %.2f, shadow pass %.2f ± %.2f (ratios to the mirror frame)\n",
                         result["light_pass_per_light"]["ratio_to_mirror_frame"].get<double>(),
                         result["light_pass_per_light"]["ratio_noise"].get<double>(),
@@ -201,26 +213,31 @@ int run_glpreview(int argc, char** argv) {
                 std::cout << result.dump(2) << "\n";
                 return ok;
             }
-            std::printf("renderer %s; %s sphere (reference Fresnel), %dx%d, %d interleaved rounds, Monte-Carlo reference %d samples per pixel\n\n",
-                        result["renderer"].get<std::string>().c_str(), result["material"].get<std::string>().c_str(),
-                        result["size"][0].get<int>(), result["size"][1].get<int>(), result["frames"].get<int>(),
-                        result["reference_samples"].get<int>());
-            std::printf("| roughness | method | ms per frame | ratio to mirror classic | rmse | mean abs | reference noise |\n"
-                        "|---:|---|---:|---:|---:|---:|---:|\n");
+            std::printf(
+                "renderer %s; %s sphere (reference Fresnel), %dx%d, %d interleaved rounds, Monte-Carlo reference %d samples per pixel\n\n",
+                result["renderer"].get<std::string>().c_str(), result["material"].get<std::string>().c_str(),
+                result["size"][0].get<int>(), result["size"][1].get<int>(), result["frames"].get<int>(),
+                result["reference_samples"].get<int>());
+            std::printf(
+                "| roughness | method | ms per frame | ratio to mirror classic | rmse | mean abs | reference noise |\n"
+                "|---:|---|---:|---:|---:|---:|---:|\n");
             for (const auto& r : result["rows"])
                 std::printf("| %.2f | %s | %.3f | %.2f ± %.2f | %.4f | %.4f | %.4f |\n", r["roughness"].get<double>(),
-                            r["method"].get<std::string>().c_str(), r["ms_per_frame"].get<double>(), r["ratio_to_mirror_classic"].get<double>(),
-                            r["ratio_noise"].get<double>(), r["rmse"].get<double>(), r["mean_abs"].get<double>(), r["reference_noise"].get<double>());
+                            r["method"].get<std::string>().c_str(), r["ms_per_frame"].get<double>(),
+                            r["ratio_to_mirror_classic"].get<double>(), r["ratio_noise"].get<double>(),
+                            r["rmse"].get<double>(), r["mean_abs"].get<double>(), r["reference_noise"].get<double>());
             std::printf("\n| mirror scene | size | spheres | ms per frame |\n|---|---|---:|---:|\n");
             for (const auto& m : result["mirror_scenes"])
-                std::printf("| %s | %dx%d | %zu | %.2f |\n", m["scene"].get<std::string>().c_str(), m["size"][0].get<int>(),
-                            m["size"][1].get<int>(), m["spheres"].get<std::size_t>(), m["ms_per_frame"].get<double>());
+                std::printf("| %s | %dx%d | %zu | %.2f |\n", m["scene"].get<std::string>().c_str(),
+                            m["size"][0].get<int>(), m["size"][1].get<int>(), m["spheres"].get<std::size_t>(),
+                            m["ms_per_frame"].get<double>());
             return ok;
         }
         if (bench_shader_cost || bench_localization_cost) {
             GlContext context = GlContext::create();
             const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
-            const auto result = bench_shader_cost ? bench_shaders(context, options, quick) : bench_localization(context, options, quick);
+            const auto result = bench_shader_cost ? bench_shaders(context, options, quick)
+                                                  : bench_localization(context, options, quick);
             if (json) {
                 std::cout << result.dump(2) << "\n";
                 return ok;
@@ -236,11 +253,14 @@ int run_glpreview(int argc, char** argv) {
                         std::printf("%-10s %-18s %-15s %2d (mean %5.2f)  %7.2f ms  x%.2f ± %.2f  rmse %.5f\n",
                                     room["room"].get<std::string>().c_str(), r["mode"].get<std::string>().c_str(),
                                     r["strategy"].is_null() ? "-" : r["strategy"].get<std::string>().c_str(),
-                                    r["iterations"].get<int>(), r["mean_iterations"].get<double>(), r["ms_per_frame"].get<double>(),
-                                    r["ratio_to_classic"].get<double>(), r["ratio_noise"].get<double>(), r["rmse"].get<double>());
+                                    r["iterations"].get<int>(), r["mean_iterations"].get<double>(),
+                                    r["ms_per_frame"].get<double>(), r["ratio_to_classic"].get<double>(),
+                                    r["ratio_noise"].get<double>(), r["rmse"].get<double>());
             return ok;
         }
-        if (scene_files.empty()) throw UsageError("a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy / --bench-lights)");
+        if (scene_files.empty())
+            throw UsageError(
+                "a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy / --bench-lights)");
         if (scene_files.size() > 1 && !batch) throw UsageError("several scene files need --batch");
         if (batch && (!sheet.empty() || explain_only || !capture_probe_size.empty()))
             throw UsageError("--batch renders scenes: --sheet, --explain and --capture-probe take one scene");
@@ -263,9 +283,11 @@ int run_glpreview(int argc, char** argv) {
                 const std::string stem = file.stem().string();
                 if (stem.empty() || stem == "." || stem == ".." || stem.find('/') != std::string::npos)
                     throw UsageError("--batch: " + file.string() + ": the scene's name '" + stem +
-                                     "' cannot name its output folder inside " + output_dir.string() + " (rename the scene file)");
+                                     "' cannot name its output folder inside " + output_dir.string() +
+                                     " (rename the scene file)");
                 if (!stems.insert(file.stem().string()).second)
-                    throw UsageError("--batch: two scenes named '" + file.stem().string() + "' would write the same folder");
+                    throw UsageError("--batch: two scenes named '" + file.stem().string() +
+                                     "' would write the same folder");
                 scenes.push_back(load(file));
             }
             const OcioConfigChoice ocio = choose_ocio_config(ocio_config, data_dir, "--ocio-config");
@@ -298,8 +320,10 @@ int run_glpreview(int argc, char** argv) {
             throw UsageError("--sheet-light: on or off (got '" + sheet_light.substr(0, 40) + "')");
         sheet_request.light = sheet_light == "on";
         if (sheet_request.light && scene.environment.type != EnvironmentType::room)
-            throw UsageError("--sheet-light: the light column needs a room environment (its surfaces receive the light)");
-        if (sheet.empty() && (sheet_models != "best" || !sheet_roughness.empty() || sheet_labels != "on" || sheet_light != "off"))
+            throw UsageError(
+                "--sheet-light: the light column needs a room environment (its surfaces receive the light)");
+        if (sheet.empty() &&
+            (sheet_models != "best" || !sheet_roughness.empty() || sheet_labels != "on" || sheet_light != "off"))
             throw UsageError("--sheet-models, --sheet-roughness, --sheet-labels and --sheet-light need --sheet");
         if (!sheet.empty()) check_sheet_request(sheet_request);
         if (explain_only) {
@@ -311,11 +335,13 @@ int run_glpreview(int argc, char** argv) {
             // Printed before the sheet is switched in: a stdout that fails writes nothing.
             const auto print_sheet = [&](const SphereSheet& result) {
                 for (const auto& row : result.record) {
-                    std::printf("%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f",
-                                row["material"].get<std::string>().c_str(), row["model"].get<std::string>().c_str(),
-                                row["model_worst_rel_rms"].get<double>(), kSheetDifferenceScale,
-                                row["image_rmse_model_vs_reference"].get<double>());
-                    if (!sheet_request.roughness.empty()) std::printf(" at roughness %g", row["roughness"].get<double>());
+                    std::printf(
+                        "%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f",
+                        row["material"].get<std::string>().c_str(), row["model"].get<std::string>().c_str(),
+                        row["model_worst_rel_rms"].get<double>(), kSheetDifferenceScale,
+                        row["image_rmse_model_vs_reference"].get<double>());
+                    if (!sheet_request.roughness.empty())
+                        std::printf(" at roughness %g", row["roughness"].get<double>());
                     std::printf("\n");
                 }
                 std::cout << (output_dir / "sheet.png").string() << "\n";

@@ -13,10 +13,6 @@
 #include "commands.hpp"
 #include "error_options.hpp"
 #include "layer_options.hpp"
-#include "material_selection.hpp"
-#include "progress.hpp"
-#include "libfit/io/catalog.hpp"
-#include "libfit/io/layer_stack.hpp"
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/fit/budget.hpp"
@@ -26,6 +22,10 @@
 #include "libfit/fit/fit_record.hpp"
 #include "libfit/fit/fit_record_stream.hpp"
 #include "libfit/fit/model_cost.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/io/layer_stack.hpp"
+#include "material_selection.hpp"
+#include "progress.hpp"
 
 namespace metalfit::cli {
 namespace {

@@ -8,12 +8,12 @@
 #include "colour_options.hpp"
 #include "commands.hpp"
 #include "layer_options.hpp"
-#include "material_selection.hpp"
 #include "libfit/base/text.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/io/layer_stack.hpp"
 #include "libfit/reference/reference_curve.hpp"
 #include "libfit/reference/reflectance_summary.hpp"
+#include "material_selection.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -46,9 +46,8 @@ std::string show_text(const Material& material, const ReferenceCurve& curve, con
       << "  sha256      " << material.provenance.sha256 << "\n"
       << "  reference   " << one_line(material.provenance.references) << "\n"
       << (material.provenance.note.empty() ? "" : "  caveat      " + material.provenance.note + "\n")
-      << (material.layers ? "  stack       " + describe_stack(material) + "\n" : "")
-      << "  data        " << material.provenance.data_type << ", " << fixed(range.min_nm, 1) << "–"
-      << fixed(range.max_nm, 1) << " nm, "
+      << (material.layers ? "  stack       " + describe_stack(material) + "\n" : "") << "  data        "
+      << material.provenance.data_type << ", " << fixed(range.min_nm, 1) << "–" << fixed(range.max_nm, 1) << " nm, "
       << (material.index.n.tabulated() ? std::to_string(material.index.n.tabulated_points_in(kVisibleRange)) +
                                              " points in 360–830 nm, " + o.colour.interpolation + " interpolation"
                                        : std::string("analytic n"))

@@ -18,8 +18,8 @@ void LayerOptions::add_options(CLI::App& app) {
 }
 
 std::vector<std::function<Material()>> LayerOptions::over(std::vector<std::function<Material()>> loaders,
-                                                         const std::filesystem::path& data_dir,
-                                                         const SpectralOptions& spectral) const {
+                                                          const std::filesystem::path& data_dir,
+                                                          const SpectralOptions& spectral) const {
     if (film.empty() && coat.empty()) return loaders;
     const FilmCatalog films = FilmCatalog::load(data_dir);
     auto stack = std::make_shared<LayerStack>();
@@ -28,9 +28,11 @@ std::vector<std::function<Material()>> LayerOptions::over(std::vector<std::funct
     require_layer_coverage(*stack, kVisibleRange, spectral);
     std::vector<std::string> warnings;
     if (stack->film)
-        for (const std::string& w : stack->film->material.warnings) warnings.push_back("film " + stack->film->material.id + ": " + w);
+        for (const std::string& w : stack->film->material.warnings)
+            warnings.push_back("film " + stack->film->material.id + ": " + w);
     if (stack->coat)
-        for (const std::string& w : stack->coat->material.warnings) warnings.push_back("coat " + stack->coat->material.id + ": " + w);
+        for (const std::string& w : stack->coat->material.warnings)
+            warnings.push_back("coat " + stack->coat->material.id + ": " + w);
     std::shared_ptr<const LayerStack> layers = std::move(stack);
     for (auto& load : loaders)
         load = [load = std::move(load), layers, warnings] {

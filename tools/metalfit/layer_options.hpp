@@ -23,7 +23,8 @@ struct LayerOptions {
     // (an unknown name: UsageError; a bad thickness, index or file, or a table not covering the colour range:
     // InputError); without --film and --coat the loaders are returned as they are.
     std::vector<std::function<Material()>> over(std::vector<std::function<Material()>> loaders,
-                                                const std::filesystem::path& data_dir, const SpectralOptions& spectral) const;
+                                                const std::filesystem::path& data_dir,
+                                                const SpectralOptions& spectral) const;
 };
 
 }  // namespace metalfit::cli

@@ -74,9 +74,9 @@ struct GlContext::Impl {
         EGLConfig config = nullptr;
         EGLint count = 0;
         if (!eglChooseConfig(dpy, config_attributes, &config, 1, &count) || count == 0) config = nullptr;
-        const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                             EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                             EGL_NONE};
+        const EGLint context_attributes[] = {
+            EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
         context = eglCreateContext(dpy, config, EGL_NO_CONTEXT, context_attributes);
         if (context == EGL_NO_CONTEXT) return "no OpenGL 4.5 core context (" + egl_error_text() + ")";
         if (!eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, context))
@@ -155,8 +155,7 @@ void check_gl(std::string_view what) {
     if (error == GL_NO_ERROR) return;
     char code[16];
     std::snprintf(code, sizeof code, "0x%04x", error);
-    while (glGetError() != GL_NO_ERROR) {
-    }
+    while (glGetError() != GL_NO_ERROR) {}
     throw GlError(std::string(what) + ": GL error " + code);
 }
 
@@ -171,15 +170,16 @@ gl::Program link_program(const std::vector<ShaderStage>& stages, std::string_vie
         GLint ok = 0;
         glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
         if (!ok)
-            throw GlError("shader '" + std::string(name) + "' (" + stage_name(stage.type) + ") does not compile: " +
-                          info_log(shader.id(), glGetShaderiv, glGetShaderInfoLog));
+            throw GlError("shader '" + std::string(name) + "' (" + stage_name(stage.type) +
+                          ") does not compile: " + info_log(shader.id(), glGetShaderiv, glGetShaderInfoLog));
         glAttachShader(program.id(), shader.id());
     }
     glLinkProgram(program.id());
     GLint ok = 0;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
     if (!ok)
-        throw GlError("shader '" + std::string(name) + "' does not link: " + info_log(program.id(), glGetProgramiv, glGetProgramInfoLog));
+        throw GlError("shader '" + std::string(name) +
+                      "' does not link: " + info_log(program.id(), glGetProgramiv, glGetProgramInfoLog));
     return program;
 }
 

@@ -14,7 +14,8 @@ const char* environment_define(const Environment& environment) {
         case EnvironmentType::sphere_room: return "ENV_SPHERE_ROOM";
         case EnvironmentType::equirect:
             if (!environment.equirect.proxy) return "ENV_EQUIRECT";
-            return std::holds_alternative<BoxProxy>(*environment.equirect.proxy) ? "ENV_EQUIRECT_BOX" : "ENV_EQUIRECT_SPHERE";
+            return std::holds_alternative<BoxProxy>(*environment.equirect.proxy) ? "ENV_EQUIRECT_BOX"
+                                                                                 : "ENV_EQUIRECT_SPHERE";
     }
     return "";
 }
@@ -77,8 +78,8 @@ Features plan_features(const Scene& scene) {
     f.metrics = o.metrics;
     f.localization_image = o.localization;
     f.cpu_reference = o.reference || o.difference || o.metrics;
-    f.monte_carlo_reference =
-        f.cpu_reference && std::any_of(scene.spheres.begin(), scene.spheres.end(), [](const Sphere& s) { return s.rough(); });
+    f.monte_carlo_reference = f.cpu_reference && std::any_of(scene.spheres.begin(), scene.spheres.end(),
+                                                             [](const Sphere& s) { return s.rough(); });
     return f;
 }
 

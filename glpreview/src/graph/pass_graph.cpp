@@ -8,8 +8,8 @@
 namespace metalfit::glpreview::graph {
 std::any& Resources::slot(std::size_t resource) {
     if (!graph_.declared(pass_, resource))
-        throw GraphError("pass '" + graph_.passes_.at(pass_).info.name + "' uses '" + graph_.resources_.at(resource).name +
-                         "' without declaring it in its setup");
+        throw GraphError("pass '" + graph_.passes_.at(pass_).info.name + "' uses '" +
+                         graph_.resources_.at(resource).name + "' without declaring it in its setup");
     return graph_.resources_[resource].value;
 }
 
@@ -19,23 +19,27 @@ std::size_t PassGraph::add_resource(std::string name) {
 }
 
 void PassGraph::declare_read(std::size_t pass, std::size_t resource) {
-    if (resource >= resources_.size()) throw GraphError("pass '" + passes_.at(pass).info.name + "' reads an unknown resource");
+    if (resource >= resources_.size())
+        throw GraphError("pass '" + passes_.at(pass).info.name + "' reads an unknown resource");
     passes_.at(pass).reads.push_back(resource);
 }
 
 void PassGraph::declare_write(std::size_t pass, std::size_t resource) {
     Resource& r = resources_.at(resource);
-    if (r.imported) throw GraphError("pass '" + passes_.at(pass).info.name + "' writes the imported resource '" + r.name + "'");
+    if (r.imported)
+        throw GraphError("pass '" + passes_.at(pass).info.name + "' writes the imported resource '" + r.name + "'");
     if (r.writer && *r.writer != pass)
-        throw GraphError("resource '" + r.name + "' is written by two passes: '" + passes_.at(*r.writer).info.name + "' and '" +
-                         passes_.at(pass).info.name + "'");
+        throw GraphError("resource '" + r.name + "' is written by two passes: '" + passes_.at(*r.writer).info.name +
+                         "' and '" + passes_.at(pass).info.name + "'");
     r.writer = pass;
     passes_.at(pass).writes.push_back(resource);
 }
 
 bool PassGraph::declared(std::size_t pass, std::size_t resource) const {
     const Pass& p = passes_.at(pass);
-    return std::count(p.reads.begin(), p.reads.end(), resource) + std::count(p.writes.begin(), p.writes.end(), resource) > 0;
+    return std::count(p.reads.begin(), p.reads.end(), resource) +
+               std::count(p.writes.begin(), p.writes.end(), resource) >
+           0;
 }
 
 std::vector<std::string> PassGraph::names(const std::vector<std::size_t>& resources) const {
@@ -98,16 +102,19 @@ void PassGraph::compile() {
     if (order_.size() != kept) {
         std::vector<std::string> cycle;
         for (std::size_t p = 0; p < passes_.size(); ++p)
-            if (keep[p] && std::find(order_.begin(), order_.end(), p) == order_.end()) cycle.push_back(passes_[p].info.name);
+            if (keep[p] && std::find(order_.begin(), order_.end(), p) == order_.end())
+                cycle.push_back(passes_[p].info.name);
         throw GraphError("the passes " + join(cycle) + " depend on each other in a cycle");
     }
 
     // Explain and lifetimes.
     for (std::size_t p : order_)
-        compiled_.push_back({passes_[p].info.name, passes_[p].info.why, passes_[p].info.processor, names(passes_[p].reads),
-                             names(passes_[p].writes)});
+        compiled_.push_back({passes_[p].info.name, passes_[p].info.why, passes_[p].info.processor,
+                             names(passes_[p].reads), names(passes_[p].writes)});
     for (std::size_t p = 0; p < passes_.size(); ++p)
-        if (!keep[p]) skipped_.push_back({passes_[p].info.name, "culled: nothing asked for reads " + join(names(passes_[p].writes))});
+        if (!keep[p])
+            skipped_.push_back(
+                {passes_[p].info.name, "culled: nothing asked for reads " + join(names(passes_[p].writes))});
     for (std::size_t r = 0; r < resources_.size(); ++r) {
         std::optional<std::size_t> first, last;
         for (std::size_t i = 0; i < order_.size(); ++i)
@@ -129,7 +136,8 @@ void PassGraph::execute() {
     for (std::size_t i = 0; i < order_.size(); ++i) {
         if (passes_[order_[i]].info.processor == Processor::gpu && open_gpu_) std::exchange(open_gpu_, nullptr)();
         for (std::size_t r = 0; r < resources_.size(); ++r)
-            if (by_resource[r] && by_resource[r]->first == i && resources_[r].create) resources_[r].value = resources_[r].create();
+            if (by_resource[r] && by_resource[r]->first == i && resources_[r].create)
+                resources_[r].value = resources_[r].create();
         Resources resources(*this, order_[i]);
         passes_[order_[i]].execute(resources);
         for (std::size_t r = 0; r < resources_.size(); ++r)

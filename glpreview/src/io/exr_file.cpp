@@ -1,5 +1,6 @@
 #include "exr_file.hpp"
 
+#include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfChromaticitiesAttribute.h>
 #include <OpenEXR/ImfFloatAttribute.h>
@@ -10,7 +11,6 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <OpenEXR/ImfStringAttribute.h>
-#include <Imath/half.h>
 
 #include <algorithm>
 #include <array>
@@ -73,10 +73,12 @@ std::string exr_header_problem(const std::filesystem::path& file) {
                 return "the EXR attribute '" + name + "' declares " + std::to_string(bytes) + " bytes; the file has " +
                        std::to_string(size - at) + " left";
             std::vector<unsigned char> value;  // only the small ones the check reads
-            if (type == "box2i" || type == "chlist" || type == "tiledesc" || type == "preview" || type == "stringvector") {
+            if (type == "box2i" || type == "chlist" || type == "tiledesc" || type == "preview" ||
+                type == "stringvector") {
                 const std::uint32_t keep = type == "preview" ? std::min<std::uint32_t>(bytes, 8)
-                                           : type == "chlist" || type == "stringvector" ? std::min<std::uint32_t>(bytes, 1u << 20)
-                                                                                        : bytes;
+                                           : type == "chlist" || type == "stringvector"
+                                               ? std::min<std::uint32_t>(bytes, 1u << 20)
+                                               : bytes;
                 value.resize(keep);
                 if (!in.read(reinterpret_cast<char*>(value.data()), keep)) return truncated;
                 in.seekg(bytes - keep, std::ios::cur);
@@ -102,8 +104,10 @@ std::string exr_header_problem(const std::filesystem::path& file) {
                 tile_h = static_cast<std::uint32_t>(i32(4));
             } else if (type == "preview") {
                 if (bytes < 8) return truncated;
-                const std::uint64_t pixels = std::uint64_t{static_cast<std::uint32_t>(i32(0))} * static_cast<std::uint32_t>(i32(4));
-                if (8 + 4 * pixels != bytes) return "the EXR preview '" + name + "' declares more pixels than its attribute holds";
+                const std::uint64_t pixels =
+                    std::uint64_t{static_cast<std::uint32_t>(i32(0))} * static_cast<std::uint32_t>(i32(4));
+                if (8 + 4 * pixels != bytes)
+                    return "the EXR preview '" + name + "' declares more pixels than its attribute holds";
             } else if (type == "stringvector") {
                 for (std::size_t o = 0; o < value.size();) {
                     if (o + 4 > value.size()) return truncated;
@@ -118,7 +122,8 @@ std::string exr_header_problem(const std::filesystem::path& file) {
         if (std::string problem = budget_problem(width, height, size); !problem.empty()) return problem;
         if (tile_w > 0 && tile_h > 0 &&
             8 * ((width + tile_w - 1) / tile_w) * ((height + tile_h - 1) / tile_h) > static_cast<long long>(size))
-            return "the EXR's tiles (" + std::to_string(tile_w) + " x " + std::to_string(tile_h) + ") need an offset table larger than the file";
+            return "the EXR's tiles (" + std::to_string(tile_w) + " x " + std::to_string(tile_h) +
+                   ") need an offset table larger than the file";
         if (!multipart) return {};
         if (in.peek() == 0) return {};  // an empty header ends the list of parts
         if (part >= 1000) return "more than 1000 parts in an EXR";
@@ -128,8 +133,10 @@ std::string exr_header_problem(const std::filesystem::path& file) {
 // Opens an EXR for reading; OpenEXR's exceptions become InputError naming the file.
 template <class Read>
 auto with_exr(const std::filesystem::path& file, Read read) {
-    if (const std::string problem = not_a_file_problem(file); !problem.empty()) throw InputError(InputLocation(file), problem);
-    if (const std::string problem = exr_header_problem(file); !problem.empty()) throw InputError(InputLocation(file), problem);
+    if (const std::string problem = not_a_file_problem(file); !problem.empty())
+        throw InputError(InputLocation(file), problem);
+    if (const std::string problem = exr_header_problem(file); !problem.empty())
+        throw InputError(InputLocation(file), problem);
     // OpenEXR's own limits too (they are process-wide): a second line of defence if it reads a header differently.
     static const bool limited = [] {
         Imf::Header::setMaxImageSize(kMaxInputImageSide, kMaxInputImageSide);
@@ -199,7 +206,8 @@ Image read_exr(const std::filesystem::path& file) {
         const std::string problem = dimensions_problem(width, height, static_cast<int>(names.size()));
         if (!problem.empty()) throw InputError(InputLocation(file), problem);
         std::array<std::string, 3> rgb;
-        if (channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B")) rgb = {"R", "G", "B"};
+        if (channels.findChannel("R") && channels.findChannel("G") && channels.findChannel("B"))
+            rgb = {"R", "G", "B"};
         else
             for (std::size_t c = 0; c < 3; ++c) rgb[c] = names[std::min(c, names.size() - 1)];
         Image image(static_cast<int>(width), static_cast<int>(height));
@@ -216,7 +224,8 @@ Image read_exr(const std::filesystem::path& file) {
     });
 }
 
-void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour, const ExrMetadata& metadata) {
+void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour,
+               const ExrMetadata& metadata) {
     // The attributes OpenImageIO 2.4 wrote (the header's defaults, ZIP compression, half R G B, capDate,
     // chromaticities and colorSpace, then the metadata as string, float or int).
     Imf::Header header(image.width, image.height);
@@ -230,9 +239,12 @@ void write_exr(const std::filesystem::path& file, const Image& image, const ExrC
         header.insert("colorSpace", Imf::StringAttribute(colour->space));
     }
     for (const ExrAttribute& a : metadata) {
-        if (const auto* text = std::get_if<std::string>(&a.value)) header.insert(a.name, Imf::StringAttribute(*text));
-        else if (const auto* f = std::get_if<float>(&a.value)) header.insert(a.name, Imf::FloatAttribute(*f));
-        else header.insert(a.name, Imf::IntAttribute(std::get<int>(a.value)));
+        if (const auto* text = std::get_if<std::string>(&a.value))
+            header.insert(a.name, Imf::StringAttribute(*text));
+        else if (const auto* f = std::get_if<float>(&a.value))
+            header.insert(a.name, Imf::FloatAttribute(*f));
+        else
+            header.insert(a.name, Imf::IntAttribute(std::get<int>(a.value)));
     }
     write_staged(file, [&](const std::filesystem::path& temporary) {
         Imf::OutputFile out(temporary.c_str(), header);
@@ -241,8 +253,9 @@ void write_exr(const std::filesystem::path& file, const Image& image, const ExrC
         char* base = reinterpret_cast<char*>(halves.data());
         Imf::FrameBuffer frame;
         for (std::size_t c = 0; c < 3; ++c)
-            frame.insert(std::string(1, "RGB"[c]), Imf::Slice(Imf::HALF, base + c * sizeof(Imath::half), 3 * sizeof(Imath::half),
-                                                             static_cast<std::size_t>(image.width) * 3 * sizeof(Imath::half)));
+            frame.insert(std::string(1, "RGB"[c]),
+                         Imf::Slice(Imf::HALF, base + c * sizeof(Imath::half), 3 * sizeof(Imath::half),
+                                    static_cast<std::size_t>(image.width) * 3 * sizeof(Imath::half)));
         out.setFrameBuffer(frame);
         out.writePixels(image.height);
     });
@@ -254,9 +267,12 @@ ExrMetadata read_image_metadata(const std::filesystem::path& file, const std::st
         for (auto a = in.header().begin(); a != in.header().end(); ++a) {
             const std::string name = a.name();
             if (name.rfind(prefix, 0) != 0) continue;
-            if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&a.attribute())) out.push_back({name, s->value()});
-            else if (const auto* f = dynamic_cast<const Imf::FloatAttribute*>(&a.attribute())) out.push_back({name, f->value()});
-            else if (const auto* i = dynamic_cast<const Imf::IntAttribute*>(&a.attribute())) out.push_back({name, i->value()});
+            if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&a.attribute()))
+                out.push_back({name, s->value()});
+            else if (const auto* f = dynamic_cast<const Imf::FloatAttribute*>(&a.attribute()))
+                out.push_back({name, f->value()});
+            else if (const auto* i = dynamic_cast<const Imf::IntAttribute*>(&a.attribute()))
+                out.push_back({name, i->value()});
         }
         return out;
     });
@@ -268,8 +284,9 @@ std::optional<ExrColour> read_exr_colour(const std::filesystem::path& file) {
         if (!Imf::hasChromaticities(header)) return std::nullopt;
         const Imf::Chromaticities& c = Imf::chromaticities(header);
         const auto* space = header.findTypedAttribute<Imf::StringAttribute>("colorSpace");
-        return ExrColour{{{{c.red.x, c.red.y}}, {{c.green.x, c.green.y}}, {{c.blue.x, c.blue.y}}, {{c.white.x, c.white.y}}},
-                         space ? space->value() : std::string()};
+        return ExrColour{
+            {{{c.red.x, c.red.y}}, {{c.green.x, c.green.y}}, {{c.blue.x, c.blue.y}}, {{c.white.x, c.white.y}}},
+            space ? space->value() : std::string()};
     });
 }
 

@@ -18,9 +18,9 @@ inline std::string dimensions_problem(long long width, long long height, int cha
     if (width > 0 && height > 0 && width <= kMaxInputImageSide && height <= kMaxInputImageSide &&
         width * height <= kMaxInputImagePixels && depth <= 1 && channels >= 1 && channels <= 64)
         return {};
-    return "image dimensions " + std::to_string(width) + " x " + std::to_string(height) + " x " + std::to_string(channels) +
-           " channels are outside the limits (sides up to " + std::to_string(kMaxInputImageSide) + ", " +
-           std::to_string(kMaxInputImagePixels) + " pixels, 64 channels)";
+    return "image dimensions " + std::to_string(width) + " x " + std::to_string(height) + " x " +
+           std::to_string(channels) + " channels are outside the limits (sides up to " +
+           std::to_string(kMaxInputImageSide) + ", " + std::to_string(kMaxInputImagePixels) + " pixels, 64 channels)";
 }
 
 // What a file's size lets its header claim (docs/scene.md, "Limits and checks"): any image up to kFreeImagePixels,
@@ -42,9 +42,10 @@ inline long long pixel_budget(std::uintmax_t file_bytes) {
 // Empty when a header's width x height fits the budget of a file of `file_bytes`; else the one-line reason.
 inline std::string budget_problem(long long width, long long height, std::uintmax_t file_bytes) {
     if (width * height <= pixel_budget(file_bytes)) return {};
-    return "the header declares " + std::to_string(width) + " x " + std::to_string(height) + " pixels but the file holds " +
-           std::to_string(file_bytes) + " bytes (beyond " + std::to_string(kFreeImagePixels) + " pixels an image needs " +
-           std::to_string(kFileBytesPerPixel) + " bytes of file per pixel it declares)";
+    return "the header declares " + std::to_string(width) + " x " + std::to_string(height) +
+           " pixels but the file holds " + std::to_string(file_bytes) + " bytes (beyond " +
+           std::to_string(kFreeImagePixels) + " pixels an image needs " + std::to_string(kFileBytesPerPixel) +
+           " bytes of file per pixel it declares)";
 }
 
 // The size of a regular file (0 when it cannot be read: the reader then reports why).

@@ -36,16 +36,20 @@ const OiioModuleApi* load() {
         }
         // RTLD_LOCAL: OpenImageIO's symbols stay the module's own.
         void* handle = ::dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
-        if (handle == nullptr) throw std::runtime_error(std::string("cannot load the OpenImageIO module: ") + ::dlerror());
+        if (handle == nullptr)
+            throw std::runtime_error(std::string("cannot load the OpenImageIO module: ") + ::dlerror());
         using Entry = const OiioModuleApi* (*)();
         const auto entry = reinterpret_cast<Entry>(::dlsym(handle, kOiioModuleEntry));
         const OiioModuleApi* api = entry ? entry() : nullptr;
         if (api == nullptr || api->version != OiioModuleApi::kVersion || !api->read_rgb || !api->draw_text)
-            throw std::runtime_error("the OpenImageIO module " + file.string() + " is not this glpreview's (rebuild or reinstall)");
+            throw std::runtime_error("the OpenImageIO module " + file.string() +
+                                     " is not this glpreview's (rebuild or reinstall)");
         return api;
     }
-    throw std::runtime_error(std::string("the OpenImageIO module (") + kModuleFile + ", for images other than EXR and for the "
-                             "sheet's labels) is missing: looked for " + tried + " (rebuild or reinstall glpreview)");
+    throw std::runtime_error(std::string("the OpenImageIO module (") + kModuleFile +
+                             ", for images other than EXR and for the "
+                             "sheet's labels) is missing: looked for " +
+                             tried + " (rebuild or reinstall glpreview)");
 }
 
 }  // namespace

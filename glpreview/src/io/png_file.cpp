@@ -82,7 +82,8 @@ void write_png(const std::filesystem::path& file, const Image& image, const Disp
 }
 
 Png8 read_png8(const std::filesystem::path& file) {
-    if (const std::string problem = not_a_file_problem(file); !problem.empty()) throw InputError(InputLocation(file), problem);
+    if (const std::string problem = not_a_file_problem(file); !problem.empty())
+        throw InputError(InputLocation(file), problem);
     const File in(std::fopen(file.c_str(), "rb"));
     if (!in) throw InputError(InputLocation(file), "cannot read the image: cannot open it");
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, throw_png_error, ignore_png_warning);
@@ -104,7 +105,8 @@ Png8 read_png8(const std::filesystem::path& file) {
             throw InputError(InputLocation(file), "expected an RGB image");
         Png8 out{static_cast<int>(width), static_cast<int>(height),
                  std::vector<unsigned char>(static_cast<std::size_t>(width) * height * 3)};
-        for (png_uint_32 y = 0; y < height; ++y) png_read_row(png, out.rgb.data() + static_cast<std::size_t>(y) * width * 3, nullptr);
+        for (png_uint_32 y = 0; y < height; ++y)
+            png_read_row(png, out.rgb.data() + static_cast<std::size_t>(y) * width * 3, nullptr);
         png_read_end(png, nullptr);
         return out;
     } catch (const InputError&) {

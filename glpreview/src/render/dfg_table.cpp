@@ -40,7 +40,9 @@ RGB DfgTable::operator()(double mu, double roughness) const {
     const double y = std::clamp(roughness, 0.0, 1.0) * (kRoughnessSize - 1);
     const int i = std::min(static_cast<int>(x), kMuSize - 2), j = std::min(static_cast<int>(y), kRoughnessSize - 2);
     const double fx = x - i, fy = y - j;
-    auto mix = [](const RGB& a, const RGB& b, double t) { return RGB{a.r + t * (b.r - a.r), a.g + t * (b.g - a.g), a.b + t * (b.b - a.b)}; };
+    auto mix = [](const RGB& a, const RGB& b, double t) {
+        return RGB{a.r + t * (b.r - a.r), a.g + t * (b.g - a.g), a.b + t * (b.b - a.b)};
+    };
     return mix(mix(at(i, j), at(i + 1, j), fx), mix(at(i, j + 1), at(i + 1, j + 1), fx), fy);
 }
 

@@ -159,7 +159,8 @@ Vec3 equirect_direction(int x, int y, int width, int height) {
 Image capture_equirect(const EnvironmentTracer& environment, Vec3 point, int width, int height) {
     Image image(width, height);
     for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) image.set(x, y, environment.trace(point, equirect_direction(x, y, width, height)).radiance);
+        for (int x = 0; x < width; ++x)
+            image.set(x, y, environment.trace(point, equirect_direction(x, y, width, height)).radiance);
     return image;
 }
 

@@ -18,7 +18,8 @@ std::string parameters_text(const SphereFresnel& f) {
     const auto names = f.model->parameters();
     for (std::size_t i = 0; i < names.size(); ++i) {
         const RGB v = f.parameters.parameter(i);
-        out += (i ? "; " : "") + std::string(names[i].name) + " = (" + number(v.r) + ", " + number(v.g) + ", " + number(v.b) + ")";
+        out += (i ? "; " : "") + std::string(names[i].name) + " = (" + number(v.r) + ", " + number(v.g) + ", " +
+               number(v.b) + ")";
     }
     return out;
 }
@@ -26,7 +27,8 @@ std::string parameters_text(const SphereFresnel& f) {
 }  // namespace
 
 ExrMetadata sphere_metadata(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel) {
-    ExrMetadata m{{"metalfit/scene", scene.file.filename().string()}, {"metalfit/spheres", static_cast<int>(scene.spheres.size())}};
+    ExrMetadata m{{"metalfit/scene", scene.file.filename().string()},
+                  {"metalfit/spheres", static_cast<int>(scene.spheres.size())}};
     for (std::size_t i = 0; i < scene.spheres.size() && i < fresnel.size(); ++i) {
         const Sphere& s = scene.spheres[i];
         const SphereFresnel& f = *fresnel[i];

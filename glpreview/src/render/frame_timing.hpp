@@ -27,10 +27,11 @@ using RoundTimes = std::vector<std::vector<double>>;
 template <typename Variant>
 RoundTimes interleaved_rounds(const std::vector<Variant>& variants, int rounds) {
     std::vector<TimedJob> jobs;
-    for (const Variant& v : variants) jobs.push_back({[&v] {
-        v();
-        glFinish();
-    }});
+    for (const Variant& v : variants)
+        jobs.push_back({[&v] {
+            v();
+            glFinish();
+        }});
     RoundTimes ms;
     for (const JobTiming& t : time_interleaved(jobs, {rounds, 0.0})) {
         std::vector<double>& round_ms = ms.emplace_back();

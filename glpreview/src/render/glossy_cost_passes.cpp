@@ -63,7 +63,8 @@ GlossyRenderers make_renderers(const Scene& base, const SphereFresnel* fresnel) 
         apply(scene->spheres.at(0), variants.front());
         Features features = plan_features(*scene);
         for (const GlossyVariant& v : variants)
-            if (v.glossy == GlossyMethod::localized && v.roughness > 0) features.downsample_sizes.insert(v.localized_size);
+            if (v.glossy == GlossyMethod::localized && v.roughness > 0)
+                features.downsample_sizes.insert(v.localized_size);
         auto gpu = std::make_unique<GpuRenderer>(*scene, features, std::vector<const SphereFresnel*>{fresnel}, nullptr);
         gpu->capture_environment();  // its own cube, prefiltered / downsampled as the features ask
         out.by_group[group] = out.renderers.size();
@@ -101,17 +102,20 @@ Json time_variants(const Scene& base, const SphereFresnel* fresnel, const Refere
     for (std::size_t i = 0; i < variants.size(); ++i) {
         const GlossyVariant& v = variants[i];
         const Ratio ratio = paired_ratio(ms[i], ms[0]);
-        rows.push_back({{"roughness", v.roughness},
-                        {"method", glossy_variant_name(v)},
-                        {"glossy", v.roughness > 0 ? Json(to_string(v.glossy)) : Json()},
-                        {"reflection", v.glossy == GlossyMethod::localized && v.roughness > 0 ? Json() : Json(to_string(v.reflection))},
-                        {"localized_size", v.glossy == GlossyMethod::localized && v.roughness > 0 ? Json(v.localized_size) : Json()},
-                        {"ms_per_frame", median(ms[i])},
-                        {"ratio_to_mirror_classic", ratio.median},
-                        {"ratio_noise", ratio.noise},
-                        {"rmse", errors[i].rmse},
-                        {"mean_abs", errors[i].mean_abs},
-                        {"reference_noise", noise[i]}});
+        rows.push_back(
+            {{"roughness", v.roughness},
+             {"method", glossy_variant_name(v)},
+             {"glossy", v.roughness > 0 ? Json(to_string(v.glossy)) : Json()},
+             {"reflection",
+              v.glossy == GlossyMethod::localized && v.roughness > 0 ? Json() : Json(to_string(v.reflection))},
+             {"localized_size",
+              v.glossy == GlossyMethod::localized && v.roughness > 0 ? Json(v.localized_size) : Json()},
+             {"ms_per_frame", median(ms[i])},
+             {"ratio_to_mirror_classic", ratio.median},
+             {"ratio_noise", ratio.noise},
+             {"rmse", errors[i].rmse},
+             {"mean_abs", errors[i].mean_abs},
+             {"reference_noise", noise[i]}});
     }
     return rows;
 }
@@ -119,7 +123,8 @@ Json time_variants(const Scene& base, const SphereFresnel* fresnel, const Refere
 // The shipped scenes whose spheres are all mirrors, at their own size (quick: 128 × 96), `frames` frames each.
 Json time_mirror_scenes(const GpuBenchRun& run, int frames) {
     Json out = Json::array();
-    for (const char* name : {"empty-room.json", "difficult-room.json", "occluder-maze.json", "sheet.json", "sky.json"}) {
+    for (const char* name :
+         {"empty-room.json", "difficult-room.json", "occluder-maze.json", "sheet.json", "sky.json"}) {
         Scene scene = load_scene(run.options.data_dir / "scenes" / name);
         if (run.quick) {
             scene.width = 128;
@@ -130,11 +135,15 @@ Json time_mirror_scenes(const GpuBenchRun& run, int frames) {
         for (std::size_t i = 0; i < scene.spheres.size(); ++i)
             fresnel.push_back(&library.get(scene.spheres[i], "spheres[" + std::to_string(i) + "]"));
         std::optional<Image> equirect;
-        if (scene.environment.type == EnvironmentType::equirect) equirect = read_environment_image(scene, run.options.ocio);
+        if (scene.environment.type == EnvironmentType::equirect)
+            equirect = read_environment_image(scene, run.options.ocio);
         GpuRenderer gpu(scene, plan_features(scene), fresnel, equirect ? &*equirect : nullptr);
         gpu.capture_environment();
         const std::vector<double> ms = gpu.time_frames(frames);
-        out.push_back({{"scene", name}, {"size", {scene.width, scene.height}}, {"spheres", scene.spheres.size()}, {"ms_per_frame", median(ms)}});
+        out.push_back({{"scene", name},
+                       {"size", {scene.width, scene.height}},
+                       {"spheres", scene.spheres.size()},
+                       {"ms_per_frame", median(ms)}});
     }
     return out;
 }
@@ -144,7 +153,8 @@ Json time_mirror_scenes(const GpuBenchRun& run, int frames) {
 std::vector<double> glossy_bench_roughness() { return {0.05, 0.1, 0.2, 0.4, 0.8}; }
 
 std::vector<GlossyVariant> glossy_bench_variants() {
-    std::vector<GlossyVariant> variants{{0, GlossyMethod::prefiltered, ReflectionMode::classic, 8}};  // the mirror classic pass
+    std::vector<GlossyVariant> variants{
+        {0, GlossyMethod::prefiltered, ReflectionMode::classic, 8}};  // the mirror classic pass
     for (double r : glossy_bench_roughness()) {
         variants.push_back({r, GlossyMethod::prefiltered, ReflectionMode::box_parallax, 8});
         variants.push_back({r, GlossyMethod::prefiltered, ReflectionMode::distance_impostor, 8});
@@ -160,7 +170,8 @@ std::string glossy_variant_name(const GlossyVariant& v) {
 }
 
 Scene glossy_bench_scene(const std::filesystem::path& data_dir, bool quick, const GlossyVariant& variant) {
-    Scene scene = localization_rooms(data_dir, true).back().scene;  // the difficult room, the camera close to the sphere
+    Scene scene =
+        localization_rooms(data_dir, true).back().scene;  // the difficult room, the camera close to the sphere
     scene.width = scene.height = quick ? 48 : 128;
     scene.outputs.reference_samples = quick ? 32 : 256;
     scene.outputs.timing_frames = 5;
@@ -186,7 +197,8 @@ Handle<Json> add_glossy_cost_passes(PassGraph& graph, GpuBenchRun& run) {
         graph
             .add_pass<ReferenceData>(
                 {"glossy-references",
-                 "per roughness of the table: the Monte-Carlo reference (" + std::to_string(base.outputs.reference_samples) +
+                 "per roughness of the table: the Monte-Carlo reference (" +
+                     std::to_string(base.outputs.reference_samples) +
                      " samples per pixel, as a preview's), and the analytic one for the mirror",
                  Processor::cpu},
                 [&](Builder& b, ReferenceData& d) {
@@ -201,8 +213,8 @@ Handle<Json> add_glossy_cost_passes(PassGraph& graph, GpuBenchRun& run) {
                         Scene scene = base;
                         scene.spheres.at(0).roughness = roughness;
                         const ReferenceRender analytic = render_reference(scene, f, tracer, run.options.threads);
-                        MonteCarloReference mc = render_monte_carlo_reference(scene, f, tracer, analytic, scene.outputs.reference_samples,
-                                                                              run.options.threads);
+                        MonteCarloReference mc = render_monte_carlo_reference(
+                            scene, f, tracer, analytic, scene.outputs.reference_samples, run.options.threads);
                         out.noise.push_back(sphere_reference_noise(mc.standard_error, mc.render, 1).front());
                         out.images.push_back(std::move(mc.render));
                     }
@@ -215,7 +227,8 @@ Handle<Json> add_glossy_cost_passes(PassGraph& graph, GpuBenchRun& run) {
     };
     const Timing& timing = graph.add_pass<Timing>(
         {"glossy-timing",
-         std::to_string(glossy_bench_variants().size()) + " variants (the mirror classic pass, then roughness × method): error of one frame, then " +
+         std::to_string(glossy_bench_variants().size()) +
+             " variants (the mirror classic pass, then roughness × method): error of one frame, then " +
              std::to_string(rounds) + " interleaved rounds; the shipped mirror scenes' ms per frame",
          Processor::gpu},
         [&](Builder& b, Timing& d) {
@@ -233,7 +246,8 @@ Handle<Json> add_glossy_cost_passes(PassGraph& graph, GpuBenchRun& run) {
     };
     return graph
         .add_pass<Record>(
-            {"glossy-record", "roughness × method: median ms per frame, paired ratio to the mirror classic pass, RMSE against the Monte-Carlo reference",
+            {"glossy-record",
+             "roughness × method: median ms per frame, paired ratio to the mirror classic pass, RMSE against the Monte-Carlo reference",
              Processor::cpu},
             [&](Builder& b, Record& d) {
                 b.read(timing.rows);

@@ -12,10 +12,10 @@ namespace metalfit::glpreview {
 // first sphere of the scene `first_scene` returns when the pass runs), its library kept in `library` (a member of
 // the run, so that the Fresnel outlives the graph's execution).
 template <class FirstScene>
-graph::Handle<const SphereFresnel*> add_bench_fresnel_pass(graph::PassGraph& graph, const std::string& name,
-                                                           const std::string& purpose, GpuBenchRun& run,
-                                                           std::optional<FresnelLibrary>& library, FirstScene first_scene) {
-    const graph::Handle<const GpuBenchRun*> materials = graph.import<const GpuBenchRun*>(name + "-materials", &run);
+graph::Handle<const SphereFresnel*>
+add_bench_fresnel_pass(graph::PassGraph& graph, const std::string& name, const std::string& purpose, GpuBenchRun& run,
+                       std::optional<FresnelLibrary>& library, FirstScene first_scene) {
+    const graph::Handle<const GpuBenchRun*> materials = graph.import <const GpuBenchRun*>(name + "-materials", &run);
     struct FresnelData {
         graph::Handle<const SphereFresnel*> out;
     };

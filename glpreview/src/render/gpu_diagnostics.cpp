@@ -21,8 +21,8 @@ std::vector<double> GpuRenderer::time_frames(int frames) {
 std::vector<float> GpuRenderer::read_cube_face(int face) const {
     const int n = scene_.environment.cube_size;
     std::vector<float> texels(static_cast<std::size_t>(n) * n * 4);
-    glGetTextureSubImage(cube_->texture.id(), 0, 0, 0, face, n, n, 1, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)),
-                         texels.data());
+    glGetTextureSubImage(cube_->texture.id(), 0, 0, 0, face, n, n, 1, GL_RGBA, GL_FLOAT,
+                         static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
     check_gl("reading a cube face");
     return texels;
 }

@@ -5,8 +5,8 @@
 
 #include "embedded_shaders.hpp"
 #include "glpreview/effects/registry.hpp"
-#include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/gl/uniforms.hpp"
+#include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/scene/camera.hpp"
 
 namespace metalfit::glpreview {
@@ -121,7 +121,8 @@ Image GpuRenderer::render() {
 
 Image GpuRenderer::read_frame() const {
     std::vector<float> rgba(static_cast<std::size_t>(scene_.width) * scene_.height * 4);
-    glGetTextureImage(color_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)), rgba.data());
+    glGetTextureImage(color_.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(rgba.size() * sizeof(float)),
+                      rgba.data());
     check_gl("reading a frame back");
     Image image(scene_.width, scene_.height);
     for (int y = 0; y < scene_.height; ++y)

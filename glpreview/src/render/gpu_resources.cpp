@@ -47,7 +47,8 @@ GLuint EquirectTexture::id() const {
     if (!texture_) {
         texture_ = gl::create_texture(GL_TEXTURE_2D);
         glTextureStorage2D(texture_.id(), 1, GL_RGB32F, image_->width, image_->height);
-        glTextureSubImage2D(texture_.id(), 0, 0, 0, image_->width, image_->height, GL_RGB, GL_FLOAT, image_->rgb.data());
+        glTextureSubImage2D(texture_.id(), 0, 0, 0, image_->width, image_->height, GL_RGB, GL_FLOAT,
+                            image_->rgb.data());
         check_gl("uploading the equirect image");
     }
     return texture_.id();

@@ -28,8 +28,10 @@ struct Row {
 };
 
 std::vector<Row> localization_rows() {
-    std::vector<Row> rows{{ReflectionMode::classic, Strategy::secant, 0}, {ReflectionMode::box_parallax, Strategy::secant, 0}};
-    for (Strategy s : {Strategy::secant, Strategy::false_position, Strategy::mixed, Strategy::illinois, Strategy::safe_secant})
+    std::vector<Row> rows{{ReflectionMode::classic, Strategy::secant, 0},
+                          {ReflectionMode::box_parallax, Strategy::secant, 0}};
+    for (Strategy s :
+         {Strategy::secant, Strategy::false_position, Strategy::mixed, Strategy::illinois, Strategy::safe_secant})
         for (int n : {0, 1, 2, 4, 8, 16}) rows.push_back({ReflectionMode::distance_impostor, s, n});
     return rows;
 }
@@ -102,9 +104,9 @@ std::vector<LocalizationRoom> localization_rooms(const std::filesystem::path& da
 
 Handle<Json> add_localization_cost_passes(PassGraph& graph, GpuBenchRun& run) {
     const int rounds = run.quick ? 3 : 7;
-    const Handle<BenchFresnel> fresnel = add_bench_fresnel_pass(
-        graph, "bench-fresnel", "the rooms' sphere: its reference R_c(μ) LUT from libfit", run, run.library,
-        [&run]() -> const Scene& { return run.rooms.front().scene; });
+    const Handle<BenchFresnel> fresnel =
+        add_bench_fresnel_pass(graph, "bench-fresnel", "the rooms' sphere: its reference R_c(μ) LUT from libfit", run,
+                               run.library, [&run]() -> const Scene& { return run.rooms.front().scene; });
 
     std::vector<Handle<Json>> room_rows;
     for (LocalizationRoom& room : run.rooms) {
@@ -114,7 +116,8 @@ Handle<Json> add_localization_cost_passes(PassGraph& graph, GpuBenchRun& run) {
         const Handle<ReferenceRender> reference =
             graph
                 .add_pass<Reference>(
-                    {"cpu-reference " + room.name, "the ground truth of the " + room.name + " room's sphere", Processor::cpu},
+                    {"cpu-reference " + room.name, "the ground truth of the " + room.name + " room's sphere",
+                     Processor::cpu},
                     [&](Builder& b, Reference& d) {
                         b.read(fresnel);
                         d.out = b.produce<ReferenceRender>("reference-image " + room.name);
@@ -135,7 +138,8 @@ Handle<Json> add_localization_cost_passes(PassGraph& graph, GpuBenchRun& run) {
              Processor::gpu},
             [&](Builder& b, Capture& d) {
                 b.read(fresnel);
-                d.cube = b.create<EnvironmentCube>("environment-cube " + room.name, {room.scene.environment.cube_size, true});
+                d.cube = b.create<EnvironmentCube>("environment-cube " + room.name,
+                                                   {room.scene.environment.cube_size, true});
                 d.renderer = b.produce<GpuRenderer>("renderer " + room.name);
             },
             [&room, fresnel](const Capture& d, Resources& r) {
@@ -171,7 +175,9 @@ Handle<Json> add_localization_cost_passes(PassGraph& graph, GpuBenchRun& run) {
     };
     return graph
         .add_pass<Record>(
-            {"localization-record", "per room and variant: median ms per frame, paired ratio to classic with its noise, RMSE, mean steps taken", Processor::cpu},
+            {"localization-record",
+             "per room and variant: median ms per frame, paired ratio to classic with its noise, RMSE, mean steps taken",
+             Processor::cpu},
             [&](Builder& b, Record& d) {
                 for (const Handle<Json>& rows : room_rows) b.read(rows);
                 d.out = b.produce<Json>("localization-bench");

@@ -35,7 +35,8 @@ MonteCarloReference render_monte_carlo_reference(const Scene& scene, const std::
         v.z = std::max(v.z, 1e-6);
         v = normalize(v);
         const double alpha = ggx::alpha(sphere.roughness);
-        std::mt19937_64 random(kMonteCarloSeed ^ (0x9E3779B97F4A7C15ull * (static_cast<std::uint64_t>(row) * w + px + 1)));
+        std::mt19937_64 random(kMonteCarloSeed ^
+                               (0x9E3779B97F4A7C15ull * (static_cast<std::uint64_t>(row) * w + px + 1)));
         std::uniform_real_distribution<double> uniform(0.0, 1.0);
         double sum[3] = {0, 0, 0}, sum2[3] = {0, 0, 0};
         for (int k = 0; k < samples; ++k) {
@@ -53,12 +54,14 @@ MonteCarloReference render_monte_carlo_reference(const Scene& scene, const std::
         RadianceEstimate direct;  // the light effects add (lights), with its own variance
         const bool lit = lighting && lighting->sphere_light;
         if (lit)
-            direct = lighting->sphere_light(static_cast<std::size_t>(id), p, n, -d, f, samples,
-                                            kMonteCarloSeed ^ (0xD1B54A32D192ED03ull * (static_cast<std::uint64_t>(row) * w + px + 1)));
+            direct = lighting->sphere_light(
+                static_cast<std::size_t>(id), p, n, -d, f, samples,
+                kMonteCarloSeed ^ (0xD1B54A32D192ED03ull * (static_cast<std::uint64_t>(row) * w + px + 1)));
         RGB mean, error;
         for (int c = 0; c < 3; ++c) {
             mean[c] = sum[c] / samples;
-            const double variance = samples > 1 ? std::max(0.0, (sum2[c] - samples * mean[c] * mean[c]) / (samples - 1)) : 0.0;
+            const double variance =
+                samples > 1 ? std::max(0.0, (sum2[c] - samples * mean[c] * mean[c]) / (samples - 1)) : 0.0;
             error[c] = std::sqrt(lit ? variance / samples + direct.variance[c] : variance / samples);
             if (lit) mean[c] += direct.mean[c];
         }

@@ -2,6 +2,7 @@
 
 namespace metalfit::glpreview {
 
-OutputStaging::OutputStaging(std::filesystem::path output_dir) : staged_(output_dir, StagedFolder::Existing::keep_other_files) {}
+OutputStaging::OutputStaging(std::filesystem::path output_dir)
+    : staged_(output_dir, StagedFolder::Existing::keep_other_files) {}
 
 }  // namespace metalfit::glpreview

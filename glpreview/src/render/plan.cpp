@@ -34,8 +34,8 @@ Plan build_plan(const Scene& scene) {
 
 std::string explain(const Plan& plan, const Scene& scene) {
     std::ostringstream out;
-    out << "scene " << scene.file.string() << ": " << scene.width << "x" << scene.height << ", "
-        << scene.spheres.size() << " sphere(s), environment " << to_string(scene.environment.type) << "\n";
+    out << "scene " << scene.file.string() << ": " << scene.width << "x" << scene.height << ", " << scene.spheres.size()
+        << " sphere(s), environment " << to_string(scene.environment.type) << "\n";
     out << "passes:\n";
     int i = 1;
     for (const Pass& p : plan.passes) {

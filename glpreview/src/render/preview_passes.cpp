@@ -1,9 +1,9 @@
 #include "glpreview/render/preview_passes.hpp"
 
 #include "glpreview/effects/registry.hpp"
-#include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/exr_metadata.hpp"
+#include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/monte_carlo_reference.hpp"
 #include "glpreview/render/scene_colour.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
@@ -40,9 +40,11 @@ void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, 
         [run, file, image, png](const Empty&, Resources& r) {
             if (run->output_dir.empty()) return;
             const std::filesystem::path path = run->output_file(file);
-            if (png) write_png(path, image_of(r.get(image)), *run->display);
-            else write_exr(path, image_of(r.get(image)), run->exr_colour ? &*run->exr_colour : nullptr,
-                           image_metadata(run->exr_metadata, file));
+            if (png)
+                write_png(path, image_of(r.get(image)), *run->display);
+            else
+                write_exr(path, image_of(r.get(image)), run->exr_colour ? &*run->exr_colour : nullptr,
+                          image_metadata(run->exr_metadata, file));
         });
 }
 
@@ -77,7 +79,8 @@ std::filesystem::path PreviewRun::output_file(const std::string& name) {
         staging.emplace(output_dir);
         if (scene.outputs.png) display = DisplayTransform::create(ocio, scene.space);
     }
-    if (!display && std::filesystem::path(name).extension() == ".png") display = DisplayTransform::create(ocio, scene.space);
+    if (!display && std::filesystem::path(name).extension() == ".png")
+        display = DisplayTransform::create(ocio, scene.space);
     written.push_back(output_dir / name);
     return staging->file(name);
 }
@@ -87,8 +90,8 @@ void PreviewRun::commit_outputs() {
 }
 
 SceneInputs import_scene(PassGraph& graph, const Scene& scene) {
-    return {graph.import<const Scene*>("environment-description", &scene), graph.import<const Scene*>("materials", &scene),
-            graph.import<const Scene*>("camera", &scene)};
+    return {graph.import <const Scene*>("environment-description", &scene),
+            graph.import <const Scene*>("materials", &scene), graph.import <const Scene*>("camera", &scene)};
 }
 
 void add_image_file_pass(PassGraph& graph, const std::string& file, Handle<Image> image, PreviewRun* run) {
@@ -118,7 +121,8 @@ void add_json_file(PassGraph& graph, const std::string& file, const std::string&
 
 }  // namespace
 
-void add_json_file_pass(PassGraph& graph, const std::string& file, const std::string& why, Handle<Json> json, PreviewRun* run) {
+void add_json_file_pass(PassGraph& graph, const std::string& file, const std::string& why, Handle<Json> json,
+                        PreviewRun* run) {
     add_json_file(graph, file, why, json, run, [](const Json& j) -> const Json& { return j; });
 }
 
@@ -135,8 +139,9 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
     // beauty: one frame of every sphere with its shader variant.
     h.beauty = graph
                    .add_pass<Out<Image>>(
-                       {"beauty", std::to_string(f.shader_variants.size()) + " sphere shader variant(s): " +
-                                      join({f.shader_variants.begin(), f.shader_variants.end()}, " | "),
+                       {"beauty",
+                        std::to_string(f.shader_variants.size()) + " sphere shader variant(s): " +
+                            join({f.shader_variants.begin(), f.shader_variants.end()}, " | "),
                         Processor::gpu},
                        [&](Builder& b, Out<Image>& d) {
                            frame.declare(b);
@@ -166,14 +171,12 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
     if (o.localization) add_image_file_pass(graph, "localization.exr", h.localization, run);
     if (o.metrics) {
         add_json_file_pass(graph, "metrics.json", "asked for", h.metrics, run);
-        add_json_file(graph, "timings.json", "asked for (metrics: the frame times, apart from metrics.json)", h.frame_times,
-                      run, [run](const FrameTimes& frame_ms) { return timings_json(*run, frame_ms); });
+        add_json_file(graph, "timings.json", "asked for (metrics: the frame times, apart from metrics.json)",
+                      h.frame_times, run, [run](const FrameTimes& frame_ms) { return timings_json(*run, frame_ms); });
     }
     return h;
 }
 
-void skip_unneeded_effects(PassGraph& graph) {
-    graph.skip("SH irradiance", "metals have no diffuse lobe");
-}
+void skip_unneeded_effects(PassGraph& graph) { graph.skip("SH irradiance", "metals have no diffuse lobe"); }
 
 }  // namespace metalfit::glpreview

@@ -18,12 +18,10 @@ Json to_json(Vec3 v) { return Json::array({v.x, v.y, v.z}); }
 // The proxy the probe is painted on: the geometry the environment's radiance comes from, seen from the capture point.
 Json proxy_of(const Environment& environment) {
     switch (environment.type) {
-    case EnvironmentType::room:
-        return {{"box", {{"min", to_json(environment.room.min)}, {"max", to_json(environment.room.max)}}}};
-    case EnvironmentType::sphere_room:
-        return {{"sphere", environment.sphere_room.radius}};
-    case EnvironmentType::equirect:
-        break;
+        case EnvironmentType::room:
+            return {{"box", {{"min", to_json(environment.room.min)}, {"max", to_json(environment.room.max)}}}};
+        case EnvironmentType::sphere_room: return {{"sphere", environment.sphere_room.radius}};
+        case EnvironmentType::equirect: break;
     }
     if (const auto* box = std::get_if<BoxProxy>(&*environment.equirect.proxy))
         return {{"box", {{"min", to_json(box->min)}, {"max", to_json(box->max)}}}};
@@ -35,13 +33,15 @@ Json proxy_of(const Environment& environment) {
 ReflectionProbe capture_probe(const Scene& scene, const OcioConfigChoice& ocio, int width, int height) {
     const Environment& environment = scene.environment;
     if (!environment.captured())
-        throw UsageError("--capture-probe: the scene's environment is an image at infinity, which has no proxy to capture "
-                         "onto (give it environment.proxy, or capture a room)");
+        throw UsageError(
+            "--capture-probe: the scene's environment is an image at infinity, which has no proxy to capture "
+            "onto (give it environment.proxy, or capture a room)");
     ReflectionProbe probe;
     const ColorSpaceConverter space = scene_converter(ocio, scene.space, scene.file);
     probe.colour = ExrColour{chromaticities_of(space), space.space()};
     // An equirect on a proxy is traced as the renderer sees it: its pixels converted into the scene's space.
-    const Image equirect = environment.type == EnvironmentType::equirect ? read_environment_image(scene, ocio) : Image();
+    const Image equirect =
+        environment.type == EnvironmentType::equirect ? read_environment_image(scene, ocio) : Image();
     const EnvironmentTracer tracer(environment, &equirect);
     const Vec3 capture_point = environment.reference();
     probe.image = capture_equirect(tracer, capture_point, width, height);

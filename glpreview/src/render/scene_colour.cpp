@@ -35,7 +35,8 @@ Image read_environment_image(const Scene& scene, const OcioConfigChoice& config)
     // Opened once, checked on its descriptor and read through it; its errors name the scene and the field. The
     // scene already resolved the file against its folder (a path relative to the working folder when the scene's
     // is): made absolute here, so that ConfinedFile does not resolve it against the scene's folder a second time.
-    const ConfinedFile file = ConfinedFile::open(scene, std::filesystem::absolute(scene.environment.equirect.file), "environment.file");
+    const ConfinedFile file =
+        ConfinedFile::open(scene, std::filesystem::absolute(scene.environment.equirect.file), "environment.file");
     Image pixels;
     try {
         pixels = read_image(file.path());
@@ -43,7 +44,8 @@ Image read_environment_image(const Scene& scene, const OcioConfigChoice& config)
         throw InputError(InputLocation(scene.file, 0, "environment.file"), file.in_original_terms(e.what()));
     }
     if (!scene.environment.equirect.colorspace.empty())
-        scene_space_conversion(scene, config, scene.environment.equirect.colorspace, "environment.colorspace").apply(pixels.rgb);
+        scene_space_conversion(scene, config, scene.environment.equirect.colorspace, "environment.colorspace")
+            .apply(pixels.rgb);
     return pixels;
 }
 

@@ -16,7 +16,8 @@ ShaderBuilder& ShaderBuilder::define(std::string name, std::string value) {
 }
 
 ShaderBuilder& ShaderBuilder::source(std::string_view glsl) {
-    if (std::find(sources_.begin(), sources_.end(), std::optional<std::string>(glsl)) == sources_.end()) sources_.emplace_back(glsl);
+    if (std::find(sources_.begin(), sources_.end(), std::optional<std::string>(glsl)) == sources_.end())
+        sources_.emplace_back(glsl);
     return *this;
 }
 
@@ -26,7 +27,8 @@ ShaderBuilder& ShaderBuilder::sampler(std::string name) {
 }
 
 ShaderBuilder& ShaderBuilder::fresnel_model(std::string_view id, const Model* model) {
-    if (model && model->id() != id) throw std::logic_error("ShaderBuilder: model " + std::string(model->id()) + " named " + std::string(id));
+    if (model && model->id() != id)
+        throw std::logic_error("ShaderBuilder: model " + std::string(model->id()) + " named " + std::string(id));
     defines_.push_back({"FRESNEL_MODEL " + std::string(id), "#define FRESNEL_MODEL"});
     model_ = model;
     if (!model_chosen_) sources_.emplace_back(std::nullopt);  // the model's GLSL goes here
@@ -95,16 +97,25 @@ bool BuiltProgram::reads(std::string_view sampler) const {
     return std::find(samplers_.begin(), samplers_.end(), sampler) != samplers_.end();
 }
 
-void BuiltProgram::bind(std::string_view sampler, GLuint texture) const { glBindTextureUnit(static_cast<GLuint>(unit(sampler)), texture); }
+void BuiltProgram::bind(std::string_view sampler, GLuint texture) const {
+    glBindTextureUnit(static_cast<GLuint>(unit(sampler)), texture);
+}
 
 namespace {
 
 bool is_sampler(GLenum type) {
     switch (type) {
-        case GL_SAMPLER_1D: case GL_SAMPLER_2D: case GL_SAMPLER_3D: case GL_SAMPLER_CUBE: case GL_SAMPLER_1D_SHADOW:
-        case GL_SAMPLER_2D_SHADOW: case GL_SAMPLER_CUBE_SHADOW: case GL_SAMPLER_2D_ARRAY: case GL_SAMPLER_CUBE_MAP_ARRAY:
-        case GL_SAMPLER_2D_ARRAY_SHADOW: case GL_SAMPLER_CUBE_MAP_ARRAY_SHADOW:
-            return true;
+        case GL_SAMPLER_1D:
+        case GL_SAMPLER_2D:
+        case GL_SAMPLER_3D:
+        case GL_SAMPLER_CUBE:
+        case GL_SAMPLER_1D_SHADOW:
+        case GL_SAMPLER_2D_SHADOW:
+        case GL_SAMPLER_CUBE_SHADOW:
+        case GL_SAMPLER_2D_ARRAY:
+        case GL_SAMPLER_CUBE_MAP_ARRAY:
+        case GL_SAMPLER_2D_ARRAY_SHADOW:
+        case GL_SAMPLER_CUBE_MAP_ARRAY_SHADOW: return true;
         default: return false;
     }
 }
@@ -121,8 +132,10 @@ void check_samplers_declared(GLuint id, const ShaderBuilder& builder) {
         GLenum type = 0;
         glGetActiveUniform(id, static_cast<GLuint>(i), sizeof name, &length, &size, &type, name);
         const std::string uniform(name, static_cast<std::size_t>(length));
-        if (is_sampler(type) && std::find(builder.samplers().begin(), builder.samplers().end(), uniform) == builder.samplers().end())
-            throw std::logic_error("program " + builder.key() + " reads sampler " + uniform + ", which no effect declared");
+        if (is_sampler(type) &&
+            std::find(builder.samplers().begin(), builder.samplers().end(), uniform) == builder.samplers().end())
+            throw std::logic_error("program " + builder.key() + " reads sampler " + uniform +
+                                   ", which no effect declared");
     }
 }
 

@@ -74,10 +74,13 @@ CostProgram cost_program(const Model* model) {
     const std::string name = model ? std::string(model->id()) : "reference-lut";
     ShaderBuilder builder("model-cost");
     builder.define("EVALUATIONS", std::to_string(kShaderBenchEvaluationsPerPixel));
-    if (model) builder.fresnel_model(model->id(), model);
-    else builder.define("FRESNEL_PARAMETERS", "1").define("FRESNEL_CALL", "reference_lut(mu)");
+    if (model)
+        builder.fresnel_model(model->id(), model);
+    else
+        builder.define("FRESNEL_PARAMETERS", "1").define("FRESNEL_CALL", "reference_lut(mu)");
     builder.sampler("u_fresnel_lut").source(shader_text("model_cost.frag"));
-    gl::Program program(link_program({fullscreen_vertex_stage(), {GL_FRAGMENT_SHADER, builder.text()}}, "model-cost " + name));
+    gl::Program program(
+        link_program({fullscreen_vertex_stage(), {GL_FRAGMENT_SHADER, builder.text()}}, "model-cost " + name));
     if (model) {  // neutral parameter values, the same in R, G and B: the cost does not depend on them
         const ChannelParameters p = model->neutral_starts().front();
         set_model_parameters(program.id(), *model, {p, p, p});
@@ -100,8 +103,9 @@ Json shader_record(const GpuBenchRun& run, int rounds, const ShaderRounds& timed
     j["evaluations_per_pixel"] = kShaderBenchEvaluationsPerPixel;
     j["models"] = Json::array();
     for (std::size_t i = 0; i < timed.names.size(); ++i)
-        j["models"].push_back({{"model", timed.names[i]}, {"ms_per_frame", median(timed.ms[i])},
-                                {"ratio_to_conductor_rgb", paired_ratio(timed.ms[i], timed.ms[exact]).median}});
+        j["models"].push_back({{"model", timed.names[i]},
+                               {"ms_per_frame", median(timed.ms[i])},
+                               {"ratio_to_conductor_rgb", paired_ratio(timed.ms[i], timed.ms[exact]).median}});
     return j;
 }
 
@@ -116,7 +120,8 @@ Handle<Json> add_shader_cost_passes(PassGraph& graph, GpuBenchRun& run) {
         graph
             .add_pass<Programs>(
                 {"model-cost-programs",
-                 "one full-screen program per libfit model (its GLSL, " + std::to_string(kShaderBenchEvaluationsPerPixel) +
+                 "one full-screen program per libfit model (its GLSL, " +
+                     std::to_string(kShaderBenchEvaluationsPerPixel) +
                      " evaluations per pixel) and one reading the reference LUT",
                  Processor::gpu},
                 [](Builder& b, Programs& d) { d.out = b.produce<CostPrograms>("model-cost-programs"); },
@@ -135,8 +140,9 @@ Handle<Json> add_shader_cost_passes(PassGraph& graph, GpuBenchRun& run) {
     const Handle<ShaderRounds> timed =
         graph
             .add_pass<Timing>(
-                {"shader-timing", std::to_string(rounds) + " interleaved rounds of one " + std::to_string(kShaderBenchSize) +
-                                      "² frame per program, each between glFinish calls",
+                {"shader-timing",
+                 std::to_string(rounds) + " interleaved rounds of one " + std::to_string(kShaderBenchSize) +
+                     "² frame per program, each between glFinish calls",
                  Processor::gpu},
                 [&](Builder& b, Timing& d) {
                     d.programs = b.read(programs);
@@ -176,7 +182,9 @@ Handle<Json> add_shader_cost_passes(PassGraph& graph, GpuBenchRun& run) {
                 b.read(timed);
                 d.out = b.produce<Json>("shader-bench");
             },
-            [&run, rounds, timed](const Record& d, Resources& r) { r.emplace(d.out, shader_record(run, rounds, r.get(timed))); })
+            [&run, rounds, timed](const Record& d, Resources& r) {
+                r.emplace(d.out, shader_record(run, rounds, r.get(timed)));
+            })
         .out;
 }
 

@@ -16,12 +16,14 @@ void check_sheet_request(const SheetRequest& request) {
         } catch (const UsageError& e) {
             throw UsageError(std::string("--sheet-models: ") + e.what());
         }
-        if (std::find(request.models.begin(), request.models.begin() + i, request.models[i]) != request.models.begin() + i)
+        if (std::find(request.models.begin(), request.models.begin() + i, request.models[i]) !=
+            request.models.begin() + i)
             throw UsageError("--sheet-models: model '" + request.models[i] + "' named twice");
     }
     for (std::size_t i = 0; i < request.roughness.size(); ++i) {
         const double r = request.roughness[i];
-        if (!(r >= 0.0 && r <= 1.0)) throw UsageError("--sheet-roughness: each value must be in [0, 1] (GGX roughness)");
+        if (!(r >= 0.0 && r <= 1.0))
+            throw UsageError("--sheet-roughness: each value must be in [0, 1] (GGX roughness)");
         if (std::find(request.roughness.begin(), request.roughness.begin() + i, r) != request.roughness.begin() + i)
             throw UsageError("--sheet-roughness: a roughness named twice");
     }
@@ -40,7 +42,8 @@ std::vector<SheetColumn> sheet_columns(int model_groups, int roughness_values) {
 
 int sheet_column(SheetCellKind kind, int group, int roughness, int roughness_values) {
     if (kind == SheetCellKind::reference) return roughness;
-    return roughness_values + (group - 1) * 2 * roughness_values + 2 * roughness + (kind == SheetCellKind::difference ? 1 : 0);
+    return roughness_values + (group - 1) * 2 * roughness_values + 2 * roughness +
+           (kind == SheetCellKind::difference ? 1 : 0);
 }
 
 int label_band_height(int cell_height) { return std::clamp(static_cast<int>(std::lround(cell_height * 0.08)), 8, 28); }
@@ -63,15 +66,15 @@ std::vector<TextBox> sheet_labels(const std::vector<SheetCell>& cells, int cell_
         const int x = c.column * cell_width, y = c.row * cell_height;
         std::string top, bottom = "roughness " + format("%g", c.roughness) + (c.lit ? ", lit" : "");
         switch (c.kind) {
-        case SheetCellKind::reference: top = c.material + ": reference"; break;
-        case SheetCellKind::model:
-            top = c.material + ": " + c.model;
-            bottom += ", rel_rms " + format("%.2g", 100.0 * c.error) + "%";
-            break;
-        case SheetCellKind::difference:
-            top = "|" + c.model + " - ref| x 10";
-            bottom += ", RMSE " + format("%.2g", c.error);
-            break;
+            case SheetCellKind::reference: top = c.material + ": reference"; break;
+            case SheetCellKind::model:
+                top = c.material + ": " + c.model;
+                bottom += ", rel_rms " + format("%.2g", 100.0 * c.error) + "%";
+                break;
+            case SheetCellKind::difference:
+                top = "|" + c.model + " - ref| x 10";
+                bottom += ", RMSE " + format("%.2g", c.error);
+                break;
         }
         boxes.push_back({x, y, cell_width, band, top, font});
         boxes.push_back({x, y + cell_height - band, cell_width, band, bottom, font});

@@ -30,8 +30,9 @@ RGB SphereFresnel::operator()(double mu) const {
         for (int c = 0; c < 3; ++c) {
             const std::vector<float>& p = float_parameters_[static_cast<std::size_t>(c)];
             if (p.size() != model->parameters().size())
-                throw std::logic_error("SphereFresnel: " + std::string(model->id()) + " has " + std::to_string(p.size()) +
-                                       " parameters set, not " + std::to_string(model->parameters().size()));
+                throw std::logic_error("SphereFresnel: " + std::string(model->id()) + " has " +
+                                       std::to_string(p.size()) + " parameters set, not " +
+                                       std::to_string(model->parameters().size()));
             value[c] = model->evaluate(std::span<const float>(p), static_cast<float>(mu));
         }
         return {value[0], value[1], value[2]};
@@ -88,9 +89,11 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
     // A file is opened once, checked on its descriptor and read through it (ConfinedFile); its errors name the scene,
     // the field and the file as the scene gave it.
     std::optional<ConfinedFile> file;
-    if (looks_like_path(sphere.material)) file.emplace(ConfinedFile::open(scene_file_, paths_, sphere.material, field + ".material"));
+    if (looks_like_path(sphere.material))
+        file.emplace(ConfinedFile::open(scene_file_, paths_, sphere.material, field + ".material"));
     const auto at_material = [&](const std::exception& e) {
-        return InputError(InputLocation(scene_file_, 0, field + ".material"), file ? file->in_original_terms(e.what()) : e.what());
+        return InputError(InputLocation(scene_file_, 0, field + ".material"),
+                          file ? file->in_original_terms(e.what()) : e.what());
     };
     Material material;
     try {
@@ -119,7 +122,8 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
         try {
             model = &find_model(chosen.model);
         } catch (const UsageError& e) {
-            throw InputError(InputLocation(scene_file_, 0, field + ".fresnel"), std::string(e.what()) + " (or 'reference')");
+            throw InputError(InputLocation(scene_file_, 0, field + ".fresnel"),
+                             std::string(e.what()) + " (or 'reference')");
         }
         MaterialFitRequest request{spectral, ErrorSettings{}, {model}};
         result = model_fresnel(material, fit_material(material, colorimetry_, converter_, request).models.front(),
@@ -131,7 +135,8 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
 std::string FresnelLibrary::best_model(const std::string& material_name) {
     const Material material = load_material(catalog_, material_name);
     std::vector<const Model*> models(all_models().begin(), all_models().end());
-    const MaterialFit fit = fit_material(material, colorimetry_, converter_, {SpectralOptions{}, ErrorSettings{}, models});
+    const MaterialFit fit =
+        fit_material(material, colorimetry_, converter_, {SpectralOptions{}, ErrorSettings{}, models});
     std::string best;
     double best_error = std::numeric_limits<double>::infinity();
     for (const ModelResult& r : fit.models) {

@@ -30,7 +30,8 @@ std::vector<SphereError> sphere_errors(const Image& beauty, const ReferenceRende
     return errors;
 }
 
-std::vector<double> sphere_reference_noise(const Image& standard_error, const ReferenceRender& reference, std::size_t spheres) {
+std::vector<double> sphere_reference_noise(const Image& standard_error, const ReferenceRender& reference,
+                                           std::size_t spheres) {
     if (standard_error.width != reference.image.width || standard_error.height != reference.image.height)
         throw std::invalid_argument("sphere_reference_noise: images of different sizes");
     std::vector<double> squared(spheres, 0.0), count(spheres, 0.0);
@@ -38,7 +39,8 @@ std::vector<double> sphere_reference_noise(const Image& standard_error, const Re
         const int id = reference.sphere_id[p];
         if (id < 0) continue;
         const auto s = static_cast<std::size_t>(id);
-        for (int c = 0; c < 3; ++c) squared[s] += double(standard_error.rgb[3 * p + c]) * double(standard_error.rgb[3 * p + c]);
+        for (int c = 0; c < 3; ++c)
+            squared[s] += double(standard_error.rgb[3 * p + c]) * double(standard_error.rgb[3 * p + c]);
         count[s] += 3;
     }
     std::vector<double> noise(spheres);
@@ -71,7 +73,8 @@ std::vector<SphereLocalization> sphere_localization(const Image& diagnostics, co
 }
 
 Image absolute_difference(const Image& a, const Image& b, double scale) {
-    if (a.width != b.width || a.height != b.height) throw std::invalid_argument("absolute_difference: images of different sizes");
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument("absolute_difference: images of different sizes");
     Image out(a.width, a.height);
     for (std::size_t i = 0; i < a.rgb.size(); ++i)
         out.rgb[i] = static_cast<float>(scale * std::abs(double(a.rgb[i]) - double(b.rgb[i])));

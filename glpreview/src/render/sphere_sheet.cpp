@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "effects/glossy_localized/glossy_localized_effect.hpp"
-#include "effects/lights/light.hpp"
 #include "effects/glossy_prefiltered/glossy_prefiltered_effect.hpp"
+#include "effects/lights/light.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/preview_passes.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
@@ -43,7 +43,8 @@ using SheetCells = std::vector<SheetCell>;
 
 // The roughness of the columns: those asked for, else the scene sphere's own; then the lit column's, if asked for.
 std::vector<double> column_roughness(const Scene& base, const SheetRequest& request) {
-    std::vector<double> roughness = request.roughness.empty() ? std::vector<double>{base.spheres[0].roughness} : request.roughness;
+    std::vector<double> roughness =
+        request.roughness.empty() ? std::vector<double>{base.spheres[0].roughness} : request.roughness;
     if (request.light) roughness.push_back(kSheetLightRoughness);
     return roughness;
 }
@@ -81,18 +82,20 @@ std::string roughness_list(const std::vector<double>& roughness) {
 // The sheet's passes. `library` and `run` are null when the graph is only planned (--explain): nothing executes.
 // `scene` is the renderer's copy of `base` with the largest roughness asked for (what the environment passes plan
 // for); only its sphere's Fresnel kind and roughness change between cells.
-graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base, Scene& scene, const SheetRequest& request,
-                                     FresnelLibrary* library, PreviewRun* run) {
+graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base, Scene& scene,
+                                     const SheetRequest& request, FresnelLibrary* library, PreviewRun* run) {
     using namespace graph;
     const std::vector<double> roughness = column_roughness(base, request);
     scene.spheres[0].roughness = *std::max_element(roughness.begin(), roughness.end());
     const Features features = plan_features(scene);
     const SceneInputs in = import_scene(graph, scene);
-    const std::string models = request.models.empty() ? "the best fitted libfit model" : "models " + join(request.models);
+    const std::string models =
+        request.models.empty() ? "the best fitted libfit model" : "models " + join(request.models);
     const Handle<SheetRows> rows =
         graph
             .add_pass<Out<SheetRows>>(
-                {"sheet-fresnel", "per material (" + join(request.materials) + "): the reference LUT and " + models, Processor::cpu},
+                {"sheet-fresnel", "per material (" + join(request.materials) + "): the reference LUT and " + models,
+                 Processor::cpu},
                 [&](Builder& b, Out<SheetRows>& d) {
                     b.read(in.materials);
                     d.out = b.produce<SheetRows>("sheet-fresnel");
@@ -104,7 +107,8 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                         sphere.material = name;
                         sphere.fresnel = ReferenceFresnel{};
                         SheetRow row{&library->get(sphere, "sheet material " + name), {}};
-                        const std::vector<std::string> ids = request.models.empty() ? std::vector{library->best_model(name)} : request.models;
+                        const std::vector<std::string> ids =
+                            request.models.empty() ? std::vector{library->best_model(name)} : request.models;
                         for (const std::string& id : ids) {
                             sphere.fresnel = ModelFresnel{id, ParameterSource::fit};
                             row.models.push_back(&library->get(sphere, "sheet material " + name));
@@ -117,10 +121,13 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
     const EnvironmentInputs environment = add_environment_passes(graph, scene, features, in, run);
     std::optional<Handle<PrefilteredCube>> prefiltered;
     std::vector<Handle<DownsampledCube>> downsampled;
-    if (features.prefiltered_map && environment.cube) prefiltered = add_prefilter_environment_pass(graph, scene, *environment.cube, run);
-    else graph.skip("prefilter-environment", "no roughness column above 0 with glossy 'prefiltered'");
+    if (features.prefiltered_map && environment.cube)
+        prefiltered = add_prefilter_environment_pass(graph, scene, *environment.cube, run);
+    else
+        graph.skip("prefilter-environment", "no roughness column above 0 with glossy 'prefiltered'");
     if (environment.cube)
-        for (int m : features.downsample_sizes) downsampled.push_back(add_downsample_environment_pass(graph, scene, m, *environment.cube, run));
+        for (int m : features.downsample_sizes)
+            downsampled.push_back(add_downsample_environment_pass(graph, scene, m, *environment.cube, run));
     struct Cells {
         Handle<Image> image;
         Handle<Json> record;
@@ -129,8 +136,9 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
     const int groups = request.models.empty() ? 1 : static_cast<int>(request.models.size());
     const Cells& cells = graph.add_pass<Cells>(
         {"sheet-cells",
-         "per material: reference | model | |difference| x 10 for " + std::to_string(groups) + " model group(s) at roughness " +
-             roughness_list(roughness) + (request.light ? " (the last lit by a point light grazing the sphere)" : "") +
+         "per material: reference | model | |difference| x 10 for " + std::to_string(groups) +
+             " model group(s) at roughness " + roughness_list(roughness) +
+             (request.light ? " (the last lit by a point light grazing the sphere)" : "") +
              ", one GPU frame each (DFG tables of rough cells made on first use)",
          Processor::gpu},
         [&](Builder& b, Cells& d) {
@@ -142,8 +150,8 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
             d.record = b.produce<Json>("sheet-record");
             d.cells = b.produce<SheetCells>("sheet-cell-labels");
         },
-        [&scene, rows, environment, prefiltered, downsampled, roughness, groups, run, request_light = request.light](const Cells& d,
-                                                                                                              Resources& r) {
+        [&scene, rows, environment, prefiltered, downsampled, roughness, groups, run,
+         request_light = request.light](const Cells& d, Resources& r) {
             GpuRenderer& gpu = run->renderer();
             environment.bind(gpu, r);
             if (prefiltered) gpu.frame().put(r.get(*prefiltered));
@@ -158,8 +166,10 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
             Json& record = r.emplace(d.record, Json::array());
             SheetCells& labels = r.emplace(d.cells);
             const auto light_column = [&scene, lit_column = request_light ? n_roughness - 1 : -1](int k) {
-                if (k == lit_column) scene.effects.set(grazing_light(scene));
-                else scene.effects = {};
+                if (k == lit_column)
+                    scene.effects.set(grazing_light(scene));
+                else
+                    scene.effects = {};
                 return k == lit_column;
             };
             for (std::size_t row = 0; row < all.size(); ++row) {
@@ -190,8 +200,10 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                         paste(sheet, model_image, model_column, y);
                         paste(sheet, difference, difference_column, y);
                         const double rmse = image_rmse(model_image, references[k]);
-                        labels.push_back({y, model_column, SheetCellKind::model, material, model.fresnel, roughness[k], model.worst_rel_rms, lit});
-                        labels.push_back({y, difference_column, SheetCellKind::difference, material, model.fresnel, roughness[k], rmse, lit});
+                        labels.push_back({y, model_column, SheetCellKind::model, material, model.fresnel, roughness[k],
+                                          model.worst_rel_rms, lit});
+                        labels.push_back({y, difference_column, SheetCellKind::difference, material, model.fresnel,
+                                          roughness[k], rmse, lit});
                         record.push_back({{"row", row},
                                           {"material", model.material},
                                           {"source", model.source},
@@ -203,7 +215,9 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                                            {{"reference", sheet_column(SheetCellKind::reference, 0, k, n_roughness)},
                                             {"model", model_column},
                                             {"difference", difference_column}}}});
-                        if (lit) record.back()["light"] = "a point light beside and behind the sphere (the highlight where the normal is 60 degrees from the view)";
+                        if (lit)
+                            record.back()["light"] =
+                                "a point light beside and behind the sphere (the highlight where the normal is 60 degrees from the view)";
                     }
                 }
             }
@@ -238,7 +252,8 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
 }
 
 void check_sheet_scene(const Scene& scene) {
-    if (scene.spheres.size() != 1) throw InputError(InputLocation(scene.file, 0, "spheres"), "a sheet scene holds exactly one sphere");
+    if (scene.spheres.size() != 1)
+        throw InputError(InputLocation(scene.file, 0, "spheres"), "a sheet scene holds exactly one sphere");
 }
 
 }  // namespace

@@ -26,10 +26,12 @@ fs::path opened_path(int fd) {
 
 }  // namespace
 
-ConfinedFile ConfinedFile::open(const fs::path& scene_file, const std::optional<PathPolicy>& policy, const fs::path& file,
-                                const std::string& field) {
+ConfinedFile ConfinedFile::open(const fs::path& scene_file, const std::optional<PathPolicy>& policy,
+                                const fs::path& file, const std::string& field) {
     const fs::path original = file.is_absolute() ? file : scene_file.parent_path() / file;
-    const auto problem = [&](const std::string& why) { return InputError(InputLocation(scene_file, 0, field), original.string() + ": " + why); };
+    const auto problem = [&](const std::string& why) {
+        return InputError(InputLocation(scene_file, 0, field), original.string() + ": " + why);
+    };
     // O_NONBLOCK: opening a FIFO does not wait for a writer (it is refused below); regular files ignore it.
     const int fd = ::open(original.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
     if (fd < 0) throw problem(std::string("cannot open it: ") + std::strerror(errno));
@@ -39,14 +41,16 @@ ConfinedFile ConfinedFile::open(const fs::path& scene_file, const std::optional<
         throw problem("not a regular file");
     }
     const std::string descriptor = "/proc/self/fd/" + std::to_string(fd);
-    const bool have_proc = ::access(descriptor.c_str(), R_OK) == 0;  // without /proc: the path, checked as it resolves now
+    const bool have_proc =
+        ::access(descriptor.c_str(), R_OK) == 0;  // without /proc: the path, checked as it resolves now
     if (policy && !policy->allow_outside) {
         std::error_code error;
         const fs::path opened = have_proc ? opened_path(fd) : fs::weakly_canonical(fs::absolute(original), error);
         if (opened.empty() || !policy_allows(*policy, scene_file, opened)) {
             ::close(fd);
-            throw InputError(InputLocation(scene_file, 0, field),
-                             "a path outside the scene's folder and the database (glpreview --allow-paths-outside to allow it)");
+            throw InputError(
+                InputLocation(scene_file, 0, field),
+                "a path outside the scene's folder and the database (glpreview --allow-paths-outside to allow it)");
         }
     }
     if (!have_proc) return ConfinedFile(fd, original, {}, original);
@@ -55,7 +59,8 @@ ConfinedFile ConfinedFile::open(const fs::path& scene_file, const std::optional<
     if (::mkdtemp(pattern.data()) == nullptr) {
         const int e = errno;
         ::close(fd);
-        throw InputError(InputLocation(fs::temp_directory_path()), std::string("cannot make a private folder: ") + std::strerror(e));
+        throw InputError(InputLocation(fs::temp_directory_path()),
+                         std::string("cannot make a private folder: ") + std::strerror(e));
     }
     const fs::path folder(pattern);
     const fs::path link = folder / original.filename();
@@ -63,13 +68,17 @@ ConfinedFile ConfinedFile::open(const fs::path& scene_file, const std::optional<
         const int e = errno;
         ::close(fd);
         ::rmdir(folder.c_str());
-        throw InputError(InputLocation(folder), std::string("cannot make a link in a private folder: ") + std::strerror(e));
+        throw InputError(InputLocation(folder),
+                         std::string("cannot make a link in a private folder: ") + std::strerror(e));
     }
     return ConfinedFile(fd, original, folder, link);
 }
 
 ConfinedFile::ConfinedFile(ConfinedFile&& other) noexcept
-    : fd_(other.fd_), original_(std::move(other.original_)), folder_(std::move(other.folder_)), link_(std::move(other.link_)) {
+    : fd_(other.fd_),
+      original_(std::move(other.original_)),
+      folder_(std::move(other.folder_)),
+      link_(std::move(other.link_)) {
     other.fd_ = -1;
     other.folder_.clear();
     other.link_.clear();

@@ -7,13 +7,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <string_view>
 #include <fstream>
 #include <initializer_list>
 #include <sstream>
+#include <string_view>
 
-#include "libfit/base/errors.hpp"
 #include "glpreview/effects/registry.hpp"
+#include "libfit/base/errors.hpp"
 #include "libfit/io/catalog.hpp"
 
 namespace metalfit::glpreview {
@@ -23,7 +23,6 @@ using nlohmann::json;
 using Reader = SceneReader;
 
 constexpr std::uintmax_t kMaxSceneBytes = 16u << 20;  // 16 MiB
-
 
 // A SAX pass that only follows where it is (the dotted field path, as the Reader names fields), to name the field of
 // an error nlohmann reports without one (a number overflow).
@@ -40,8 +39,10 @@ struct FieldTracker : nlohmann::json_sax<json> {
     std::string here() const {
         std::string path;
         for (const Level& l : levels) {
-            if (l.array) path += "[" + std::to_string(l.index) + "]";
-            else if (!l.key.empty()) path += (path.empty() ? "" : ".") + scene_excerpt(l.key);
+            if (l.array)
+                path += "[" + std::to_string(l.index) + "]";
+            else if (!l.key.empty())
+                path += (path.empty() ? "" : ".") + scene_excerpt(l.key);
         }
         return path;
     }
@@ -97,22 +98,27 @@ bool inside(const std::filesystem::path& p, const std::filesystem::path& folder)
 
 void check_image_size(const std::filesystem::path& file, const std::string& what, int width, int height) {
     if (width < 1 || height < 1 || width > kMaxImageEdge || height > kMaxImageEdge)
-        throw InputError(InputLocation(file, 0, what), "width and height must be in [1, " + std::to_string(kMaxImageEdge) + "]");
+        throw InputError(InputLocation(file, 0, what),
+                         "width and height must be in [1, " + std::to_string(kMaxImageEdge) + "]");
     if (static_cast<long long>(width) * height > kMaxImagePixels)
-        throw InputError(InputLocation(file, 0, what), std::to_string(width) + " x " + std::to_string(height) + " is more than " +
-                                                         std::to_string(kMaxImagePixels) + " pixels");
+        throw InputError(InputLocation(file, 0, what), std::to_string(width) + " x " + std::to_string(height) +
+                                                           " is more than " + std::to_string(kMaxImagePixels) +
+                                                           " pixels");
 }
 
 std::vector<std::string> placement_warnings(const Scene& scene) {
     std::vector<std::string> warnings;
     if (scene.environment.type == EnvironmentType::equirect) {
         // The image painted on a box proxy: a camera outside it looks at the painted box from behind.
-        const auto* box = scene.environment.equirect.proxy ? std::get_if<BoxProxy>(&*scene.environment.equirect.proxy) : nullptr;
+        const auto* box =
+            scene.environment.equirect.proxy ? std::get_if<BoxProxy>(&*scene.environment.equirect.proxy) : nullptr;
         const Vec3 c = scene.camera.position;
         bool inside = true;
         for (int i = 0; box && i < 3; ++i) inside = inside && c[i] > box->min[i] && c[i] < box->max[i];
         if (box && !inside && scene.camera_position_given)
-            warnings.push_back(scene.file.string() + ": camera.position: outside the proxy box (environment.proxy.box: the view shows the painted box from behind)");
+            warnings.push_back(
+                scene.file.string() +
+                ": camera.position: outside the proxy box (environment.proxy.box: the view shows the painted box from behind)");
         return warnings;
     }
     if (scene.environment.type != EnvironmentType::room) return warnings;
@@ -121,24 +127,30 @@ std::vector<std::string> placement_warnings(const Scene& scene) {
     const Vec3 c = scene.camera.position;
     bool camera_inside = true;
     for (int i = 0; i < 3; ++i) camera_inside = camera_inside && c[i] > room.min[i] && c[i] < room.max[i];
-    if (!camera_inside && scene.camera_position_given) warnings.push_back(file + "camera.position: outside the room (the view shows the walls from behind)");
+    if (!camera_inside && scene.camera_position_given)
+        warnings.push_back(file + "camera.position: outside the room (the view shows the walls from behind)");
     for (std::size_t s = 0; s < scene.spheres.size(); ++s) {
         const Sphere& sphere = scene.spheres[s];
         bool through = false;
         for (int i = 0; i < 3; ++i)
-            through = through || sphere.center[i] - sphere.radius < room.min[i] || sphere.center[i] + sphere.radius > room.max[i];
+            through = through || sphere.center[i] - sphere.radius < room.min[i] ||
+                      sphere.center[i] + sphere.radius > room.max[i];
         if (through)
-            warnings.push_back(file + "spheres[" + std::to_string(s) + "]: not inside the room (it reaches through or lies beyond a wall; its reflection there is meaningless)");
+            warnings.push_back(
+                file + "spheres[" + std::to_string(s) +
+                "]: not inside the room (it reaches through or lies beyond a wall; its reflection there is meaningless)");
     }
     return warnings;
 }
 
-bool policy_allows(const PathPolicy& policy, const std::filesystem::path& scene_file, const std::filesystem::path& resolved) {
+bool policy_allows(const PathPolicy& policy, const std::filesystem::path& scene_file,
+                   const std::filesystem::path& resolved) {
     namespace fs = std::filesystem;
     if (policy.allow_outside) return true;
     std::error_code error;
     const fs::path folder = fs::weakly_canonical(fs::absolute(scene_file).parent_path(), error);
-    const fs::path data = policy.data_dir.empty() ? fs::path() : fs::weakly_canonical(fs::absolute(policy.data_dir), error);
+    const fs::path data =
+        policy.data_dir.empty() ? fs::path() : fs::weakly_canonical(fs::absolute(policy.data_dir), error);
     return inside(resolved, folder) || inside(resolved, data);
 }
 
@@ -149,12 +161,14 @@ void confine_scene_paths(const Scene& scene, const PathPolicy& policy) {
     auto check = [&](const fs::path& path, const std::string& field) {
         const fs::path resolved = fs::weakly_canonical(fs::absolute(path), error);
         if (!policy_allows(policy, scene.file, resolved))
-            throw InputError(InputLocation(scene.file, 0, field),
-                             "a path outside the scene's folder and the database (glpreview --allow-paths-outside to allow it)");
+            throw InputError(
+                InputLocation(scene.file, 0, field),
+                "a path outside the scene's folder and the database (glpreview --allow-paths-outside to allow it)");
     };
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
         if (const fs::path written = scene.spheres[i].material; looks_like_path(scene.spheres[i].material))
-            check(written.is_absolute() ? written : scene.file.parent_path() / written, "spheres[" + std::to_string(i) + "].material");
+            check(written.is_absolute() ? written : scene.file.parent_path() / written,
+                  "spheres[" + std::to_string(i) + "].material");
     if (scene.environment.type == EnvironmentType::equirect) check(scene.environment.equirect.file, "environment.file");
 }
 
@@ -215,15 +229,19 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         FieldTracker tracker;
         json::sax_parse(json_text, &tracker);
         const auto offset = std::min<std::size_t>(tracker.error_byte, json_text.size());
-        const int line = 1 + static_cast<int>(std::count(json_text.begin(), json_text.begin() + static_cast<long>(offset), '\n'));
+        const int line =
+            1 + static_cast<int>(std::count(json_text.begin(), json_text.begin() + static_cast<long>(offset), '\n'));
         throw InputError(InputLocation(file, line, tracker.error_field), "number beyond the range of a double");
     } catch (const json::parse_error& e) {
         // nlohmann reports the byte offset; turn it into a line number.
         const auto offset = std::min<std::size_t>(e.byte, json_text.size());
-        const int line = 1 + static_cast<int>(std::count(json_text.begin(), json_text.begin() + static_cast<long>(offset), '\n'));
+        const int line =
+            1 + static_cast<int>(std::count(json_text.begin(), json_text.begin() + static_cast<long>(offset), '\n'));
         std::string what = e.what();
         const auto colon = what.rfind(": ");
-        throw InputError(InputLocation(file, line), "invalid JSON: " + scene_excerpt(colon == std::string::npos ? what : what.substr(colon + 2), 120));
+        throw InputError(InputLocation(file, line),
+                         "invalid JSON: " +
+                             scene_excerpt(colon == std::string::npos ? what : what.substr(colon + 2), 120));
     }
     Scene scene;
     scene.file = file;
@@ -263,13 +281,15 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         r.read("center", s.center);
         r.read("radius", s.radius, 1e-4, kSceneBig);
         for (const Effect* effect : all_effects()) effect->read_sphere(r, s, scene);
-        if (scene.spheres.size() >= kMaxSpheres) top.fail("spheres", "at most " + std::to_string(kMaxSpheres) + " spheres");
+        if (scene.spheres.size() >= kMaxSpheres)
+            top.fail("spheres", "at most " + std::to_string(kMaxSpheres) + " spheres");
         scene.spheres.push_back(s);
     });
     if (scene.spheres.empty()) top.fail("spheres", "at least one sphere");
     if (top.has("outputs")) {
-        Reader r(top.at("outputs"), "outputs", file, {"beauty", "reference", "difference", "metrics", "exr", "png", "localization",
-                                                             "timing_frames", "reference_samples"});
+        Reader r(top.at("outputs"), "outputs", file,
+                 {"beauty", "reference", "difference", "metrics", "exr", "png", "localization", "timing_frames",
+                  "reference_samples"});
         Outputs& o = scene.outputs;
         r.read("beauty", o.beauty);
         r.read("reference", o.reference);
@@ -280,7 +300,8 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         r.read("localization", o.localization);
         r.read("timing_frames", o.timing_frames, 5, 1000);
         r.read("reference_samples", o.reference_samples, 1, 65536);
-        if (!o.exr && !o.png && (o.beauty || o.reference || o.difference)) r.fail("outputs.exr", "images asked for but neither exr nor png");
+        if (!o.exr && !o.png && (o.beauty || o.reference || o.difference))
+            r.fail("outputs.exr", "images asked for but neither exr nor png");
     }
     for (const Effect* effect : all_effects()) effect->check_scene(top, scene);
     for (std::string& w : placement_warnings(scene)) scene.warnings.push_back(std::move(w));
@@ -290,7 +311,8 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
 Scene load_scene(const std::filesystem::path& file) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(file, error))  // a FIFO or a device would hang or never end
-        throw InputError(InputLocation(file), std::filesystem::exists(file, error) ? "not a regular file" : "cannot read the scene file");
+        throw InputError(InputLocation(file),
+                         std::filesystem::exists(file, error) ? "not a regular file" : "cannot read the scene file");
     if (std::filesystem::file_size(file, error) > kMaxSceneBytes)
         throw InputError(InputLocation(file), "larger than 16 MiB: not a scene");
     std::ifstream in(file, std::ios::binary);

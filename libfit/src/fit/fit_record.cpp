@@ -52,7 +52,7 @@ Json solver_json(const FitResult& fit) {
 
 Json data_provenance(const Material& material) {
     const Provenance& p = material.provenance;
-    Json data = {{"file", p.file.string()},  {"sha256", p.sha256},       {"format", p.format},
+    Json data = {{"file", p.file.string()},  {"sha256", p.sha256},        {"format", p.format},
                  {"data_type", p.data_type}, {"reference", p.references}, {"note", p.note}};
     // Only for a layered material (a film, a coat), so that bare records keep their keys.
     if (material.layers && !material.layers->empty()) data["stack"] = stack_record(material);

@@ -33,7 +33,8 @@ std::optional<double> whole_number(std::string_view text) {
 // "80nm" → 80, "0.12 um" / "0.12µm" → 120; nullopt when the text does not end in a unit.
 std::optional<std::pair<std::string_view, double>> split_unit(std::string_view text) {
     text = trim(text);
-    for (const auto& [unit, scale] : {std::pair<std::string_view, double>{"nm", 1.0}, {"um", 1000.0}, {"µm", 1000.0}, {"μm", 1000.0}})
+    for (const auto& [unit, scale] :
+         {std::pair<std::string_view, double>{"nm", 1.0}, {"um", 1000.0}, {"µm", 1000.0}, {"μm", 1000.0}})
         if (text.size() > unit.size() && text.substr(text.size() - unit.size()) == unit)
             return std::pair{text.substr(0, text.size() - unit.size()), scale};
     return std::nullopt;
@@ -68,10 +69,12 @@ std::string known_names(const FilmCatalog& films) {
 }
 
 // The layer's material: a constant, a film-catalog name or a file.
-Material layer_material(const FilmCatalog& films, std::string_view option, std::string_view whole, std::string_view text) {
+Material layer_material(const FilmCatalog& films, std::string_view option, std::string_view whole,
+                        std::string_view text) {
     if (const auto n = whole_number(text)) {
         if (!std::isfinite(*n) || *n <= 0.0 || *n > 1e6)
-            throw InputError({argument_name(option, whole)}, "index " + number(*n) + " is not a finite number in (0, 1e6]");
+            throw InputError({argument_name(option, whole)},
+                             "index " + number(*n) + " is not a finite number in (0, 1e6]");
         return constant_index(text, *n);
     }
     const std::string name(trim(text));
@@ -80,8 +83,8 @@ Material layer_material(const FilmCatalog& films, std::string_view option, std::
         if (films.catalog.find(name) == nullptr) {
             for (const auto& [id, why] : films.without_visible_data)
                 if (id == name) throw UsageError(argument_name(option, whole) + ": " + why);
-            throw UsageError(argument_name(option, whole) + ": unknown film or coat material '" + name + "' (known: " +
-                             known_names(films) + "; or an index such as 1.5, or a .yml/.csv file)");
+            throw UsageError(argument_name(option, whole) + ": unknown film or coat material '" + name +
+                             "' (known: " + known_names(films) + "; or an index such as 1.5, or a .yml/.csv file)");
         }
         return load_material(films.catalog, name);
     }
@@ -98,8 +101,10 @@ FilmCatalog FilmCatalog::load(const std::filesystem::path& data_dir) {
         if (!list->is_array()) throw InputError({file, 0, "without_visible_data"}, "expected a list");
         for (std::size_t i = 0; i < list->size(); ++i) {
             const auto& e = (*list)[i];
-            if (!e.is_object() || !e.contains("id") || !e["id"].is_string() || !e.contains("why") || !e["why"].is_string())
-                throw InputError({file, 0, "without_visible_data[" + std::to_string(i) + "]"}, "expected {\"id\", \"why\"}");
+            if (!e.is_object() || !e.contains("id") || !e["id"].is_string() || !e.contains("why") ||
+                !e["why"].is_string())
+                throw InputError({file, 0, "without_visible_data[" + std::to_string(i) + "]"},
+                                 "expected {\"id\", \"why\"}");
             films.without_visible_data.emplace_back(e["id"].get<std::string>(), e["why"].get<std::string>());
         }
     }
@@ -126,7 +131,8 @@ LayerArgument parse_layer_argument(std::string_view option, std::string_view tex
 ThinFilm load_film(const FilmCatalog& films, std::string_view text) {
     const LayerArgument a = parse_layer_argument("--film", text);
     if (!a.thickness_nm)
-        throw UsageError("--film " + std::string(text) + ": give the film's thickness with a unit (" + a.material + ":80nm)");
+        throw UsageError("--film " + std::string(text) + ": give the film's thickness with a unit (" + a.material +
+                         ":80nm)");
     if (const std::string problem = film_thickness_problem(*a.thickness_nm); !problem.empty())
         throw InputError({argument_name("--film", text)}, problem);
     return {layer_material(films, "--film", text, a.material), *a.thickness_nm};

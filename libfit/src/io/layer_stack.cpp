@@ -43,9 +43,12 @@ std::string describe_stack(const Material& metal) {
 namespace {
 
 nlohmann::ordered_json layer_material_record(const LayerMaterial& m) {
-    return {{"material", m.id},           {"name", m.name},
-            {"source", m.source},         {"file", m.provenance.file.string()},
-            {"sha256", m.provenance.sha256}, {"reference", m.provenance.references},
+    return {{"material", m.id},
+            {"name", m.name},
+            {"source", m.source},
+            {"file", m.provenance.file.string()},
+            {"sha256", m.provenance.sha256},
+            {"reference", m.provenance.references},
             {"data_type", m.provenance.data_type}};
 }
 
@@ -57,7 +60,8 @@ nlohmann::ordered_json stack_record(const Material& metal) {
     nlohmann::ordered_json j = {{"description", describe_stack(metal)}};
     if (s.coat) {
         nlohmann::ordered_json coat = layer_material_record(s.coat->material);
-        coat["thickness_nm"] = s.coat->thickness_nm ? nlohmann::ordered_json(*s.coat->thickness_nm) : nlohmann::ordered_json(nullptr);
+        coat["thickness_nm"] =
+            s.coat->thickness_nm ? nlohmann::ordered_json(*s.coat->thickness_nm) : nlohmann::ordered_json(nullptr);
         j["coat"] = std::move(coat);
     }
     if (s.film) {
@@ -72,7 +76,8 @@ std::string film_thickness_problem(double d) {
     if (!std::isfinite(d)) return "thickness " + number(d) + " is not a finite number";
     if (d < 0) return "thickness " + number(d) + " nm is negative";
     if (d > kMaxFilmThicknessNm)
-        return "thickness " + number(d) + " nm is beyond 2 µm, where a film is no longer coherent (its interference "
+        return "thickness " + number(d) +
+               " nm is beyond 2 µm, where a film is no longer coherent (its interference "
                "colours average out); give a thick layer as a coat (--coat)";
     return {};
 }

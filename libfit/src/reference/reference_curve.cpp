@@ -70,7 +70,8 @@ ReferenceCurve::ReferenceCurve(const Material& material, const Colorimetry& colo
     if (material.layers && !material.layers->empty()) {
         require_layer_coverage(*material.layers, kVisibleRange, options);
         stack_ = stack_optics_on_grid(material, grid.first_nm(), grid.last_nm(), options);
-        for (std::string& note : layer_held_constant(*material.layers, needed, options)) held_constant_.push_back(std::move(note));
+        for (std::string& note : layer_held_constant(*material.layers, needed, options))
+            held_constant_.push_back(std::move(note));
     }
 }
 
@@ -127,8 +128,8 @@ std::vector<XYZ> ReferenceCurve::xyz(std::span<const double> mu) const {
         }
         return out;
     }
-    const SpectralColumns columns{eta2_re_.data(), eta2_re_minus_1_.data(), eta2_im_.data(), eta2_norm2_.data(),
-                                  weight_x_.data(), weight_y_.data(), weight_z_.data(), eta2_re_.size()};
+    const SpectralColumns columns{eta2_re_.data(),  eta2_re_minus_1_.data(), eta2_im_.data(),  eta2_norm2_.data(),
+                                  weight_x_.data(), weight_y_.data(),        weight_z_.data(), eta2_re_.size()};
     for (std::size_t first = 0; first < mu.size(); first += kLanes) {
         const std::size_t count = std::min(kLanes, mu.size() - first);
         double m[kLanes], x[kLanes], y[kLanes], z[kLanes];

@@ -28,11 +28,12 @@ void require_covers(const LayerMaterial& m, const char* layer, const WavelengthR
         std::string missing;
         if (r.min_nm > needed.min_nm) missing = nm(needed.min_nm) + "–" + nm(std::min(r.min_nm, needed.max_nm)) + " nm";
         if (r.max_nm < needed.max_nm)
-            missing += (missing.empty() ? "" : " and ") + nm(std::max(r.max_nm, needed.min_nm)) + "–" + nm(needed.max_nm) + " nm";
+            missing += (missing.empty() ? "" : " and ") + nm(std::max(r.max_nm, needed.min_nm)) + "–" +
+                       nm(needed.max_nm) + " nm";
         throw InputError({where(m), 0, "DATA"},
                          std::string(layer) + " " + what + " covers " + nm(r.min_nm) + "–" + nm(r.max_nm) +
-                             " nm, but colour needs " + nm(needed.min_nm) + "–" + nm(needed.max_nm) + " nm: " + missing +
-                             " missing (--extrapolate holds the end values outside the measured range)");
+                             " nm, but colour needs " + nm(needed.min_nm) + "–" + nm(needed.max_nm) + " nm: " +
+                             missing + " missing (--extrapolate holds the end values outside the measured range)");
     }
 }
 
@@ -40,7 +41,8 @@ void require_covers(const LayerMaterial& m, const char* layer, const WavelengthR
 void require_coat_index(const ClearCoat& coat, int lambda, double n) {
     if (!(n >= 1.0))
         throw InputError({where(coat.material), 0, "DATA"},
-                         "coat n = " + nm(n) + " at " + nm(lambda) + " nm is below 1: a coat is a dielectric at least as dense as air");
+                         "coat n = " + nm(n) + " at " + nm(lambda) +
+                             " nm is below 1: a coat is a dielectric at least as dense as air");
 }
 
 std::string layer_label(const char* layer, const LayerMaterial& m) {
@@ -56,7 +58,8 @@ void require_layer_coverage(const LayerStack& layers, const WavelengthRange& nee
     }
     if (layers.coat)
         for (int lambda = int(std::ceil(needed.min_nm)); lambda <= int(std::floor(needed.max_nm)); ++lambda)
-            require_coat_index(*layers.coat, lambda, layers.coat->material.index.n(lambda, options.interpolation, options.out_of_range));
+            require_coat_index(*layers.coat, lambda,
+                               layers.coat->material.index.n(lambda, options.interpolation, options.out_of_range));
 }
 
 std::vector<StackOptics<double>> stack_optics_on_grid(const Material& metal, int first_nm, int last_nm,
@@ -78,17 +81,20 @@ std::vector<StackOptics<double>> stack_optics_on_grid(const Material& metal, int
             require_coat_index(coat, lambda, eta.real());
             o.has_coat = true;
             o.coat_index = eta.real();
-            if (coat.thickness_nm) o.coat_absorbance = 4.0 * std::numbers::pi * std::max(eta.imag(), 0.0) * *coat.thickness_nm / lambda;
+            if (coat.thickness_nm)
+                o.coat_absorbance = 4.0 * std::numbers::pi * std::max(eta.imag(), 0.0) * *coat.thickness_nm / lambda;
         }
         grid.push_back(o);
     }
     return grid;
 }
 
-std::vector<std::string> layer_held_constant(const LayerStack& layers, const WavelengthRange& needed, const SpectralOptions& options) {
+std::vector<std::string> layer_held_constant(const LayerStack& layers, const WavelengthRange& needed,
+                                             const SpectralOptions& options) {
     std::vector<std::string> notes;
     const auto add = [&](const char* layer, const LayerMaterial& m) {
-        for (const std::string& note : held_constant_ranges(m, needed, options)) notes.push_back(layer_label(layer, m) + ": " + note);
+        for (const std::string& note : held_constant_ranges(m, needed, options))
+            notes.push_back(layer_label(layer, m) + ": " + note);
     };
     if (layers.film) add("film", layers.film->material);
     if (layers.coat) add("coat", layers.coat->material);

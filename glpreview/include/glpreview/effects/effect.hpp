@@ -89,7 +89,9 @@ public:
     virtual void set_program_uniforms(const Scene&, GLuint /*program*/) const {}
     // The CPU references: what this effect adds (render/cpu_lighting.hpp), for one scene. Thread-safe: the
     // references call them from several threads.
-    virtual RGB cpu_surface_light(const Scene&, const RGB& /*albedo*/, Vec3 /*p*/, Vec3 /*n*/) const { return {0, 0, 0}; }
+    virtual RGB cpu_surface_light(const Scene&, const RGB& /*albedo*/, Vec3 /*p*/, Vec3 /*n*/) const {
+        return {0, 0, 0};
+    }
     virtual std::optional<RGB> cpu_emitter(const Scene&, Vec3 /*origin*/, Vec3 /*dir*/) const { return std::nullopt; }
     virtual RadianceEstimate cpu_sphere_light(const Scene&, std::size_t /*sphere*/, Vec3 /*p*/, Vec3 /*n*/, Vec3 /*v*/,
                                               const SphereFresnel&, int /*samples*/, std::uint64_t /*seed*/) const {

@@ -49,8 +49,8 @@ void check_gl(std::string_view what);
 
 // A linked program from shader stages; GlError with the name, the stage and the info log's first line on failure.
 struct ShaderStage {
-    GLenum type;          // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER
-    std::string source;   // complete source, #version line included
+    GLenum type;         // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER
+    std::string source;  // complete source, #version line included
 };
 gl::Program link_program(const std::vector<ShaderStage>& stages, std::string_view name);
 gl::Program compile_compute_program(std::string_view source, std::string_view name);

@@ -19,13 +19,18 @@ inline void set_uniform(GLuint program, const char* name, const RGB& v) {
     glProgramUniform3f(program, glGetUniformLocation(program, name), static_cast<float>(v.r), static_cast<float>(v.g),
                        static_cast<float>(v.b));
 }
-inline void set_uniform(GLuint program, const char* name, float v) { glProgramUniform1f(program, glGetUniformLocation(program, name), v); }
-inline void set_uniform(GLuint program, const char* name, int v) { glProgramUniform1i(program, glGetUniformLocation(program, name), v); }
+inline void set_uniform(GLuint program, const char* name, float v) {
+    glProgramUniform1f(program, glGetUniformLocation(program, name), v);
+}
+inline void set_uniform(GLuint program, const char* name, int v) {
+    glProgramUniform1i(program, glGetUniformLocation(program, name), v);
+}
 
 // u_param[k] of `program` to parameter k's values for R, G and B, for every parameter the model has.
 inline void set_model_parameters(GLuint program, const Model& model, const ModelParameters& params) {
     for (std::size_t k = 0; k < model.parameters().size(); ++k)
-        set_uniform(program, ("u_param[" + std::to_string(k) + "]").c_str(), Vec3{params[0][k], params[1][k], params[2][k]});
+        set_uniform(program, ("u_param[" + std::to_string(k) + "]").c_str(),
+                    Vec3{params[0][k], params[1][k], params[2][k]});
 }
 
 }  // namespace metalfit::glpreview

@@ -48,7 +48,7 @@ struct OutputFile {
 // Descriptor&)` (a cube map of a size and format, a 1D LUT texture, a colour target ...).
 template <typename T>
 concept Creatable = requires(const typename T::Descriptor& d) {
-    { T::create(d) };
+    {T::create(d)};
 };
 
 struct PassInfo {
@@ -147,10 +147,10 @@ public:
     void execute();
 
     bool runs(const std::string& pass) const;
-    const std::vector<CompiledPass>& passes() const { return compiled_; }   // kept, in execution order
-    const std::vector<SkippedPass>& skipped() const { return skipped_; }    // not planned, then culled
+    const std::vector<CompiledPass>& passes() const { return compiled_; }  // kept, in execution order
+    const std::vector<SkippedPass>& skipped() const { return skipped_; }   // not planned, then culled
     const std::vector<Lifetime>& lifetimes() const { return lifetimes_; }
-    std::vector<std::string> output_files() const;                          // sinks, in declaration order
+    std::vector<std::string> output_files() const;  // sinks, in declaration order
 
     // A retained or requested resource after execute() (nullptr when its writer was culled).
     template <typename T>
@@ -255,7 +255,9 @@ const Data& PassGraph::add_pass(PassInfo info, Setup&& setup, Execute&& execute)
     pass_data_.push_back(data);
     Builder builder(*this, index);
     setup(builder, *data);
-    passes_[index].execute = [data, run = std::forward<Execute>(execute)](Resources& resources) { run(*data, resources); };
+    passes_[index].execute = [data, run = std::forward<Execute>(execute)](Resources& resources) {
+        run(*data, resources);
+    };
     return *data;
 }
 

@@ -27,8 +27,8 @@ struct CpuLighting {
     // The emitter a ray from `origin` along unit `dir` meets first, if any: its radiance.
     std::function<std::optional<RGB>(Vec3 origin, Vec3 dir)> emitter;
     // The direct light reflected towards unit `v` at point p (unit normal n) of sphere `sphere`, roughness > 0.
-    std::function<RadianceEstimate(std::size_t sphere, Vec3 p, Vec3 n, Vec3 v, const SphereFresnel& fresnel, int samples,
-                                   std::uint64_t seed)>
+    std::function<RadianceEstimate(std::size_t sphere, Vec3 p, Vec3 n, Vec3 v, const SphereFresnel& fresnel,
+                                   int samples, std::uint64_t seed)>
         sphere_light;
 };
 

@@ -5,11 +5,11 @@
 
 #include <vector>
 
+#include "glpreview/io/image.hpp"
 #include "glpreview/render/cpu_lighting.hpp"
 #include "glpreview/render/environment.hpp"
-#include "glpreview/io/image.hpp"
-#include "glpreview/scene/scene.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
+#include "glpreview/scene/scene.hpp"
 
 namespace metalfit::glpreview {
 
@@ -21,6 +21,7 @@ struct ReferenceRender {
 // fresnel[i] belongs to scene.spheres[i]. Runs on `threads` threads (0: all cores). `lighting`: what effects add
 // (emitters seen by camera and mirror rays; the room's light is the tracer's).
 ReferenceRender render_reference(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel,
-                                 const EnvironmentTracer& environment, int threads = 0, const CpuLighting* lighting = nullptr);
+                                 const EnvironmentTracer& environment, int threads = 0,
+                                 const CpuLighting* lighting = nullptr);
 
 }  // namespace metalfit::glpreview

@@ -19,7 +19,9 @@ struct DfgTable {
 
     std::vector<RGB> values;  // [j * kMuSize + i]
 
-    RGB at(int mu_index, int roughness_index) const { return values[static_cast<std::size_t>(roughness_index) * kMuSize + mu_index]; }
+    RGB at(int mu_index, int roughness_index) const {
+        return values[static_cast<std::size_t>(roughness_index) * kMuSize + mu_index];
+    }
     // Bilinear between the entries, clamped to the table (as the GPU's linear filter between texel centres).
     RGB operator()(double mu, double roughness) const;
 };

@@ -24,8 +24,9 @@ public:
     // The frame reads `handle` and finds its value on the renderer's blackboard under T and `name`.
     template <class T>
     void add(graph::Handle<T> handle, const std::string& name = {}) {
-        inputs_.push_back({[handle](graph::Builder& b) { b.read(handle); },
-                           [handle, name](GpuRenderer& gpu, graph::Resources& r) { frame_of(gpu).put(r.get(handle), name); }});
+        inputs_.push_back(
+            {[handle](graph::Builder& b) { b.read(handle); },
+             [handle, name](GpuRenderer& gpu, graph::Resources& r) { frame_of(gpu).put(r.get(handle), name); }});
     }
     // The frame reads what `declare` declares and `bind` hands it to the renderer.
     void add(std::function<void(graph::Builder&)> declare, std::function<void(GpuRenderer&, graph::Resources&)> bind) {

@@ -45,7 +45,7 @@ struct GpuBenchRun {
     bool quick = false;
     GlContext* context = nullptr;
     std::vector<LocalizationRoom> rooms;
-    std::optional<FresnelLibrary> library;  // made by the localization's first pass
+    std::optional<FresnelLibrary> library;         // made by the localization's first pass
     std::optional<FresnelLibrary> glossy_library;  // made by the glossy benchmark's first pass
 };
 
@@ -70,11 +70,12 @@ struct GlossyVariant {
     double roughness = 0;
     GlossyMethod glossy = GlossyMethod::prefiltered;
     ReflectionMode reflection = ReflectionMode::classic;  // the prefiltered lookup's localization
-    int localized_size = 8;                                // M of `localized`
+    int localized_size = 8;                               // M of `localized`
 };
-std::vector<double> glossy_bench_roughness();       // 0.05, 0.1, 0.2, 0.4, 0.8
+std::vector<double> glossy_bench_roughness();        // 0.05, 0.1, 0.2, 0.4, 0.8
 std::vector<GlossyVariant> glossy_bench_variants();  // the mirror classic pass, then roughness × method
-std::string glossy_variant_name(const GlossyVariant& v);  // "prefiltered box-parallax", "localized M=4", "mirror classic"
+std::string
+glossy_variant_name(const GlossyVariant& v);  // "prefiltered box-parallax", "localized M=4", "mirror classic"
 // The scene of one variant: the difficult room of the localization benchmark (the camera close to its one sphere,
 // gold, reference Fresnel), 128² (quick: 48²), the Monte-Carlo reference at 256 (quick: 32) samples per pixel. A
 // preview of it gives the bench's RMSE in its metrics.json.

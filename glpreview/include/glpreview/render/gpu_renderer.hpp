@@ -20,8 +20,8 @@
 #include "glpreview/render/blackboard.hpp"
 #include "glpreview/render/gpu_resources.hpp"
 #include "glpreview/render/shader_builder.hpp"
-#include "glpreview/render/sphere_shader.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
+#include "glpreview/render/sphere_shader.hpp"
 #include "glpreview/scene/scene.hpp"
 
 namespace metalfit::glpreview {

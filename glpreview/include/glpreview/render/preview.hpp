@@ -11,9 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/gl/gl_context.hpp"
 #include "glpreview/io/image.hpp"
+#include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/plan.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "libfit/color/color_space.hpp"
@@ -21,22 +21,22 @@
 namespace metalfit::glpreview {
 
 struct PreviewOptions {
-    std::filesystem::path data_dir;      // libfit's built-in database
-    OcioConfigChoice ocio;               // for the reference curves and the PNG display transform
-    std::filesystem::path output_dir;    // empty: write nothing (tests)
-    int threads = 0;                     // CPU reference threads (0: all cores)
+    std::filesystem::path data_dir;    // libfit's built-in database
+    OcioConfigChoice ocio;             // for the reference curves and the PNG display transform
+    std::filesystem::path output_dir;  // empty: write nothing (tests)
+    int threads = 0;                   // CPU reference threads (0: all cores)
 };
 
 struct PreviewResult {
     Plan plan;
-    std::string renderer;                     // GL_RENDERER, "" when no GPU pass ran
+    std::string renderer;  // GL_RENDERER, "" when no GPU pass ran
     std::optional<Image> beauty;
     std::optional<ReferenceRender> reference;
     std::optional<Image> reference_standard_error;  // the Monte-Carlo reference's, when a sphere is rough
     std::optional<Image> difference;
-    std::optional<Image> localization;        // GpuRenderer::render_localization(), when metrics or the file ran it
+    std::optional<Image> localization;  // GpuRenderer::render_localization(), when metrics or the file ran it
     std::vector<double> frame_ms;
-    nlohmann::ordered_json metrics;           // as written to metrics.json (null when not asked for)
+    nlohmann::ordered_json metrics;  // as written to metrics.json (null when not asked for)
     std::vector<std::filesystem::path> written;
 };
 

@@ -11,9 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "glpreview/gl/gl_context.hpp"
 #include "glpreview/graph/features.hpp"
 #include "glpreview/graph/pass_graph.hpp"
-#include "glpreview/gl/gl_context.hpp"
+#include "glpreview/io/image.hpp"
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/dfg_table.hpp"
@@ -21,7 +22,6 @@
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/gpu_resources.hpp"
 #include "glpreview/render/output_staging.hpp"
-#include "glpreview/io/image.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
 #include "libfit/color/color_space.hpp"
 
@@ -44,15 +44,15 @@ struct PreviewRun {
     std::vector<const SphereFresnel*> fresnel;  // fresnel[i] of scene.spheres[i]
     GlContext* context = nullptr;               // the caller's, or own_context
     std::optional<GlContext> own_context;
-    std::string renderer_name;                  // GL_RENDERER once a GPU pass ran
+    std::string renderer_name;  // GL_RENDERER once a GPU pass ran
     std::optional<GpuRenderer> gpu;
     std::optional<DisplayTransform> display;
-    std::optional<ExrColour> exr_colour;        // the scene's space, written into every EXR
-    std::optional<OutputStaging> staging;       // made by the first file written
+    std::optional<ExrColour> exr_colour;         // the scene's space, written into every EXR
+    std::optional<OutputStaging> staging;        // made by the first file written
     std::vector<std::filesystem::path> written;  // final paths (output_dir / name), valid after commit_outputs()
     ExrMetadata exr_metadata = {};               // the spheres (render/exr_metadata.hpp), written into every EXR
 
-    void open_gl();             // the context (if none) and the renderer; called before the first GPU pass
+    void open_gl();  // the context (if none) and the renderer; called before the first GPU pass
     GpuRenderer& renderer();
     // Where a pass writes the output file `name` (staged; the display transform is made with the first file) and
     // records output_dir / name as written.
@@ -74,13 +74,14 @@ struct EnvironmentInputs {
     std::optional<graph::Handle<EquirectTexture>> equirect_texture;
     std::optional<graph::Handle<Image>> equirect_image;
 
-    void declare(graph::Builder& b) const;                 // the frame pass reads what exists
+    void declare(graph::Builder& b) const;                   // the frame pass reads what exists
     void bind(GpuRenderer& gpu, graph::Resources& r) const;  // and hands it to the renderer
 };
 // The environment passes the features call for (capture-environment or load-equirect) and the skips --explain lists.
 // `capture_inputs`: what the capture reads besides the scene (the lights' shadow maps), declared and bound by it.
 EnvironmentInputs add_environment_passes(graph::PassGraph& graph, const Scene& scene, const Features& features,
-                                         const SceneInputs& in, PreviewRun* run, const FrameInputs* capture_inputs = nullptr);
+                                         const SceneInputs& in, PreviewRun* run,
+                                         const FrameInputs* capture_inputs = nullptr);
 
 // The CPU images and values a preview produces (handles into the graph; a culled writer leaves them empty).
 struct PreviewHandles {
@@ -96,7 +97,8 @@ struct PreviewHandles {
 };
 
 // Every pass of a preview and the skips --explain lists. `run` may be null (compile and explain only).
-PreviewHandles add_preview_passes(graph::PassGraph& graph, const Scene& scene, const Features& features, PreviewRun* run);
+PreviewHandles add_preview_passes(graph::PassGraph& graph, const Scene& scene, const Features& features,
+                                  PreviewRun* run);
 // The effects no scene needs yet, listed after the culled passes.
 void skip_unneeded_effects(graph::PassGraph& graph);
 
@@ -107,9 +109,10 @@ graph::Handle<EnvironmentCube> add_capture_environment_pass(graph::PassGraph&, c
                                                             std::optional<graph::Handle<EquirectTexture>> equirect = {},
                                                             const FrameInputs* capture_inputs = nullptr);
 std::pair<graph::Handle<EquirectTexture>, graph::Handle<Image>> add_load_equirect_pass(graph::PassGraph&, const Scene&,
-                                                                                      PreviewRun*);
+                                                                                       PreviewRun*);
 graph::Handle<FresnelSet> add_reference_luts_pass(graph::PassGraph&, const Scene&, const SceneInputs&, PreviewRun*);
-graph::Handle<FresnelSet> add_model_parameters_pass(graph::PassGraph&, const Features&, const SceneInputs&, PreviewRun*);
+graph::Handle<FresnelSet> add_model_parameters_pass(graph::PassGraph&, const Features&, const SceneInputs&,
+                                                    PreviewRun*);
 void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<Image> image, PreviewRun*);
 void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<ReferenceRender> image, PreviewRun*);
 void add_json_file_pass(graph::PassGraph&, const std::string& file, const std::string& why, graph::Handle<Json> json,

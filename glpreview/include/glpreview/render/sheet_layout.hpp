@@ -16,7 +16,7 @@ struct SheetRequest {
     std::vector<std::string> models;     // libfit model ids, in the order shown
     std::vector<double> roughness;       // GGX roughness of the columns, each in [0, 1]
     bool labels = true;                  // drawn on sheet.png (sheet.exr stays the bare renders)
-    bool light = false;                  // one more column: roughness kSheetLightRoughness under a point light grazing the sphere
+    bool light = false;  // one more column: roughness kSheetLightRoughness under a point light grazing the sphere
 };
 
 // The lit column's roughness: a point light's highlight needs a lobe.
@@ -32,8 +32,8 @@ enum class SheetCellKind { reference, model, difference };
 // roughness, side by side: reference(r…) | model₁ r₁, |Δ₁| r₁, model₁ r₂, |Δ₁| r₂, … | model₂ …
 struct SheetColumn {
     SheetCellKind kind;
-    int group;         // 0: the reference; g ≥ 1: the g-th model group
-    int roughness;     // index into the roughness list
+    int group;      // 0: the reference; g ≥ 1: the g-th model group
+    int roughness;  // index into the roughness list
 };
 std::vector<SheetColumn> sheet_columns(int model_groups, int roughness_values);
 // The column of a cell (the inverse of sheet_columns).
@@ -45,8 +45,8 @@ struct SheetCell {
     SheetCellKind kind = SheetCellKind::reference;
     std::string material, model;  // model: empty for the reference
     double roughness = 0;
-    double error = 0;             // model: worst-channel fitted rel_rms; difference: image RMSE; reference: unused
-    bool lit = false;             // the light column (a point light grazing the sphere)
+    double error = 0;  // model: worst-channel fitted rel_rms; difference: image RMSE; reference: unused
+    bool lit = false;  // the light column (a point light grazing the sphere)
 };
 
 // The two label bands of a cell: its top and bottom rows of label_band_height(cell_height) pixels. Nothing else of the

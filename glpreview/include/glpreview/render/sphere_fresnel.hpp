@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "glpreview/scene/scene.hpp"
-#include "libfit/io/catalog.hpp"
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/colorimetry.hpp"
 #include "libfit/fit/fit.hpp"
+#include "libfit/io/catalog.hpp"
 #include "libfit/models/model.hpp"
 
 namespace metalfit::glpreview {
@@ -23,14 +23,14 @@ namespace metalfit::glpreview {
 inline constexpr int kReferenceLutSize = 256;
 
 struct SphereFresnel {
-    std::string material;       // "gold"
-    std::string source;         // "Johnson"
-    std::string fresnel;        // "reference" or a model id
+    std::string material;                   // "gold"
+    std::string source;                     // "Johnson"
+    std::string fresnel;                    // "reference" or a model id
     std::optional<ParameterSource> params;  // models: fitted or closed-form parameters
-    std::vector<RGB> lut;       // reference: R_c(μ_i)
+    std::vector<RGB> lut;                   // reference: R_c(μ_i)
     const Model* model = nullptr;
-    ModelParameters parameters;   // model: values per channel (set with set_parameters)
-    double worst_rel_rms = 0;   // model: worst-channel rel_rms of these parameters (0 for the reference)
+    ModelParameters parameters;  // model: values per channel (set with set_parameters)
+    double worst_rel_rms = 0;    // model: worst-channel rel_rms of these parameters (0 for the reference)
 
     // CPU evaluation, as the GPU does it: the table with linear interpolation, or the model in float (any number of
     // parameters; std::logic_error when `parameters` was set without set_parameters).

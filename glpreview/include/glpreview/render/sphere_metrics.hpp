@@ -5,8 +5,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/io/image.hpp"
+#include "glpreview/render/cpu_reference.hpp"
 
 namespace metalfit::glpreview {
 
@@ -30,7 +30,8 @@ std::vector<SphereLocalization> sphere_localization(const Image& diagnostics, co
 
 // The noise of a Monte-Carlo reference per sphere: sqrt(mean over the mask's pixels and channels of the standard
 // error²), comparable to the RMSE (0 for mirror spheres, NaN where the mask is empty).
-std::vector<double> sphere_reference_noise(const Image& standard_error, const ReferenceRender& reference, std::size_t spheres);
+std::vector<double> sphere_reference_noise(const Image& standard_error, const ReferenceRender& reference,
+                                           std::size_t spheres);
 
 // |a − b| per pixel and channel, times `scale`.
 Image absolute_difference(const Image& a, const Image& b, double scale = 1.0);

@@ -11,7 +11,8 @@ struct SphereFresnel;
 
 // The sphere shader of one sphere: the environment, every registered effect's part, the camera and sphere.frag.
 // `fresnel` resolves the model (null while planning: the variant's name only); `diagnostics`: the localization frame.
-ShaderBuilder sphere_shader(const Scene& scene, const Sphere& sphere, const SphereFresnel* fresnel, bool diagnostics = false);
+ShaderBuilder sphere_shader(const Scene& scene, const Sphere& sphere, const SphereFresnel* fresnel,
+                            bool diagnostics = false);
 // The environment's part of a program: what the effects add to it (Effect::declare_environment_program), its
 // #define, environment.glsl and the equirect image's sampler.
 void declare_environment(const Scene& scene, ShaderBuilder& builder);

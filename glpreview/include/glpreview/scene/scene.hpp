@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <map>
 #include <memory>
-#include <typeindex>
 #include <optional>
 #include <string>
+#include <typeindex>
 #include <variant>
 #include <vector>
 
@@ -124,20 +124,21 @@ inline constexpr double kDefaultTolerance = 1e-4;
 inline constexpr int kMaxImageEdge = 8192;
 inline constexpr long long kMaxImagePixels = 16777216;  // 4096²
 inline constexpr std::size_t kMaxSpheres = 256;
-inline constexpr std::size_t kMaxRoomBoxes = 32;   // boxes + columns (the shader's MAX_BOXES)
-inline constexpr std::size_t kMaxPanels = 16;      // the shader's MAX_PANELS
+inline constexpr std::size_t kMaxRoomBoxes = 32;  // boxes + columns (the shader's MAX_BOXES)
+inline constexpr std::size_t kMaxPanels = 16;     // the shader's MAX_PANELS
 
 struct Sphere {
     Vec3 center;
     double radius = 0.5;
     std::string material = "Au";  // catalog name or a file (resolved against the scene file's folder)
     std::string source;           // catalog source ("" = primary)
-    FresnelChoice fresnel = ReferenceFresnel{};  // JSON: "fresnel": "reference" or a model id, "params": "fit" | "closed"
+    FresnelChoice fresnel =
+        ReferenceFresnel{};  // JSON: "fresnel": "reference" or a model id, "params": "fit" | "closed"
     ReflectionMode reflection = ReflectionMode::distance_impostor;
     Strategy strategy = kDefaultStrategy;
-    int iterations = kDefaultIterations;  // the most refinement steps a pixel takes
+    int iterations = kDefaultIterations;   // the most refinement steps a pixel takes
     double tolerance = kDefaultTolerance;  // a pixel stops once |ρ − 1| < tolerance (0: always `iterations` steps)
-    double roughness = 0;  // GGX, α = roughness²; 0: the perfect mirror
+    double roughness = 0;                  // GGX, α = roughness²; 0: the perfect mirror
     GlossyMethod glossy = GlossyMethod::prefiltered;  // the GPU method when roughness > 0
     int localized_size = 8;  // `localized`: M, the downsampled cube's texels per face edge (2–16), each an area light
 
@@ -145,14 +146,14 @@ struct Sphere {
 };
 
 struct Outputs {
-    bool beauty = true;      // GPU image
-    bool reference = true;   // CPU ray-traced image
-    bool difference = true;  // |beauty − reference|
-    bool metrics = true;     // metrics.json (needs the reference)
-    bool exr = true;         // linear images
-    bool png = true;         // through the OCIO display transform
-    bool localization = false;  // localization.exr: per pixel the refinement steps taken and the final |ρ − 1|
-    int timing_frames = 5;   // frames for ms_per_frame (median)
+    bool beauty = true;           // GPU image
+    bool reference = true;        // CPU ray-traced image
+    bool difference = true;       // |beauty − reference|
+    bool metrics = true;          // metrics.json (needs the reference)
+    bool exr = true;              // linear images
+    bool png = true;              // through the OCIO display transform
+    bool localization = false;    // localization.exr: per pixel the refinement steps taken and the final |ρ − 1|
+    int timing_frames = 5;        // frames for ms_per_frame (median)
     int reference_samples = 256;  // Monte-Carlo samples per pixel of the reference on rough spheres
 };
 
@@ -192,7 +193,7 @@ struct Scene {
     std::vector<Sphere> spheres;
     Outputs outputs;
     bool camera_position_given = false;  // the default camera (z = 3.5) stands outside the default room: no warning
-    std::vector<std::string> warnings;  // settings that are accepted but mean nothing or look wrong, one line each
+    std::vector<std::string> warnings;   // settings that are accepted but mean nothing or look wrong, one line each
     // Set by the CLI after confine_scene_paths: every file the scene names is then opened once and the policy checked
     // again on the open descriptor (ConfinedFile), so a link swapped in after the first check leads nowhere outside.
     // Unset (library use): no confinement.
@@ -205,7 +206,8 @@ struct Scene {
 void confine_scene_paths(const Scene& scene, const PathPolicy& policy);
 // Whether `resolved` (an absolute path, links resolved) lies in the folder of `scene_file` or the database, or the
 // policy allows paths outside: the one test of confine_scene_paths and ConfinedFile.
-bool policy_allows(const PathPolicy& policy, const std::filesystem::path& scene_file, const std::filesystem::path& resolved);
+bool policy_allows(const PathPolicy& policy, const std::filesystem::path& scene_file,
+                   const std::filesystem::path& resolved);
 // Checks the image size against the limits (kMaxImageEdge, kMaxImagePixels); throws InputError naming `what`.
 void check_image_size(const std::filesystem::path& file, const std::string& what, int width, int height);
 
@@ -216,10 +218,10 @@ Scene load_scene(const std::filesystem::path& file);
 // a wall); parse_scene adds them to Scene::warnings.
 std::vector<std::string> placement_warnings(const Scene& scene);
 
-const char* to_string(ReflectionMode mode);  // "classic", "distance-impostor", "box-parallax"
-const char* to_string(Strategy strategy);    // "secant", "false-position", "mixed", "illinois", "safe-secant"
+const char* to_string(ReflectionMode mode);   // "classic", "distance-impostor", "box-parallax"
+const char* to_string(Strategy strategy);     // "secant", "false-position", "mixed", "illinois", "safe-secant"
 const char* to_string(EnvironmentType type);  // "room", "sphere-room", "equirect"
-const char* to_string(GlossyMethod method);     // "prefiltered", "localized"
+const char* to_string(GlossyMethod method);   // "prefiltered", "localized"
 std::string fresnel_name(const FresnelChoice& fresnel);  // "reference" or the model id, as in the scene JSON
 inline bool shows_reference(const Sphere& sphere) { return std::holds_alternative<ReferenceFresnel>(sphere.fresnel); }
 

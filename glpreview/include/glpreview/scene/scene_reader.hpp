@@ -50,7 +50,8 @@ public:
                 std::initializer_list<const char*> keys)
         : SceneReader(value, std::move(path), file, std::vector<const char*>(keys)) {}
     // `keys` the known keys: those of the core and those the registered effects read (Effect::scene_keys).
-    SceneReader(const nlohmann::json& value, std::string path, const std::filesystem::path& file, const std::vector<const char*>& keys)
+    SceneReader(const nlohmann::json& value, std::string path, const std::filesystem::path& file,
+                const std::vector<const char*>& keys)
         : value_(value), path_(std::move(path)), file_(file) {
         if (!value_.is_object()) fail(path_, "expected an object");
         for (const auto& item : value_.items()) {
@@ -103,7 +104,8 @@ public:
     void read(const char* key, Vec3& out) const {
         if (!has(key)) return;
         const nlohmann::json& v = at(key);
-        if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), [](const nlohmann::json& e) { return e.is_number(); }))
+        if (!v.is_array() || v.size() != 3 ||
+            !std::all_of(v.begin(), v.end(), [](const nlohmann::json& e) { return e.is_number(); }))
             fail(field(key), "expected an array of 3 numbers");
         out = {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
     }

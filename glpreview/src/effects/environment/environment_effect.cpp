@@ -77,7 +77,8 @@ void set_environment_uniforms(const Environment& env, GLuint p) {
 using Reader = SceneReader;
 
 void check_box(const Reader& r, const char* what, const Vec3& min, const Vec3& max) {
-    if (!(min.x < max.x && min.y < max.y && min.z < max.z)) r.fail(r.field(what), "min must be below max on every axis");
+    if (!(min.x < max.x && min.y < max.y && min.z < max.z))
+        r.fail(r.field(what), "min must be below max on every axis");
 }
 
 Room read_room(const Reader& r) {
@@ -110,7 +111,8 @@ Room read_room(const Reader& r) {
         read2("max", panel.max_x, panel.max_z);
         if (!(panel.min_x < panel.max_x && panel.min_z < panel.max_z)) p.fail(p.field("max"), "min must be below max");
         p.read_color("radiance", panel.radiance);
-        if (room.panels.size() >= kMaxPanels) r.fail(r.field("panels"), "at most " + std::to_string(kMaxPanels) + " panels");
+        if (room.panels.size() >= kMaxPanels)
+            r.fail(r.field("panels"), "at most " + std::to_string(kMaxPanels) + " panels");
         room.panels.push_back(panel);
     });
     if (!panels_given) {  // default: a 2 × 2 grid of panels over the room's middle
@@ -118,8 +120,11 @@ Room read_room(const Reader& r) {
         const double sx = 0.15 * (room.max.x - room.min.x), sz = 0.15 * (room.max.z - room.min.z);
         for (int i : {-1, 1})
             for (int j : {-1, 1})
-                room.panels.push_back({cx + i * sx - 0.4 * sx, cz + j * sz - 0.4 * sz, cx + i * sx + 0.4 * sx,
-                                       cz + j * sz + 0.4 * sz, {6, 6, 6}});
+                room.panels.push_back({cx + i * sx - 0.4 * sx,
+                                       cz + j * sz - 0.4 * sz,
+                                       cx + i * sx + 0.4 * sx,
+                                       cz + j * sz + 0.4 * sz,
+                                       {6, 6, 6}});
     }
     r.each("boxes", [&](const nlohmann::json& v, const std::string& path) {
         Reader b(v, path, r.file(), {"min", "max", "color"});
@@ -129,7 +134,8 @@ Room read_room(const Reader& r) {
         b.read("max", box.max);
         check_box(b, "max", box.min, box.max);
         b.read_color("color", box.color);
-        if (room.boxes.size() >= kMaxRoomBoxes) b.fail(path, "at most " + std::to_string(kMaxRoomBoxes) + " boxes and columns together");
+        if (room.boxes.size() >= kMaxRoomBoxes)
+            b.fail(path, "at most " + std::to_string(kMaxRoomBoxes) + " boxes and columns together");
         room.boxes.push_back(box);
     });
     r.each("columns", [&](const nlohmann::json& v, const std::string& path) {
@@ -144,7 +150,8 @@ Room read_room(const Reader& r) {
         box.min = {e[0].get<double>() - half, room.min.y, e[1].get<double>() - half};
         box.max = {e[0].get<double>() + half, room.max.y, e[1].get<double>() + half};
         c.read_color("color", box.color);
-        if (room.boxes.size() >= kMaxRoomBoxes) c.fail(path, "at most " + std::to_string(kMaxRoomBoxes) + " boxes and columns together");
+        if (room.boxes.size() >= kMaxRoomBoxes)
+            c.fail(path, "at most " + std::to_string(kMaxRoomBoxes) + " boxes and columns together");
         room.boxes.push_back(box);
     });
     return room;
@@ -168,11 +175,11 @@ EnvironmentProxy read_proxy(const Reader& environment) {
     for (int i = 0; i < 3; ++i) {
         if (std::abs(box.min[i]) > kSceneBig) b.fail(b.field("min"), "coordinates must be in [-1e+06, 1e+06]");
         if (std::abs(box.max[i]) > kSceneBig) b.fail(b.field("max"), "coordinates must be in [-1e+06, 1e+06]");
-        if (!(box.max[i] - box.min[i] >= 1e-3)) b.fail(b.field("max"), "must exceed min by at least 1e-3 on every axis");
+        if (!(box.max[i] - box.min[i] >= 1e-3))
+            b.fail(b.field("max"), "must exceed min by at least 1e-3 on every axis");
     }
     return box;
 }
-
 
 class EnvironmentEffect final : public Effect {
 public:
@@ -182,79 +189,88 @@ public:
 
     void read_scene(const SceneReader& top, Scene& scene) const override {
         const std::filesystem::path& file = top.file();
-    {
-        static const nlohmann::json no_environment = nlohmann::json::object();  // the default room, with its default panels
-        const nlohmann::json& env = top.has("environment") ? top.at("environment") : no_environment;
-        Environment& e = scene.environment;
-        std::string type = "room";
-        if (env.is_object() && env.contains("type")) {
-            if (!env["type"].is_string()) top.fail("environment.type", "expected a string");
-            type = env["type"].get<std::string>();
+        {
+            static const nlohmann::json no_environment =
+                nlohmann::json::object();  // the default room, with its default panels
+            const nlohmann::json& env = top.has("environment") ? top.at("environment") : no_environment;
+            Environment& e = scene.environment;
+            std::string type = "room";
+            if (env.is_object() && env.contains("type")) {
+                if (!env["type"].is_string()) top.fail("environment.type", "expected a string");
+                type = env["type"].get<std::string>();
+            }
+            if (type == "room") {
+                Reader r(env, "environment", file,
+                         {"type", "reference_point", "cube_size", "min", "max", "wall_x_min", "wall_x_max",
+                          "wall_z_min", "wall_z_max", "floor_light", "floor_dark", "ceiling", "checker", "panels",
+                          "boxes", "columns"});
+                e.type = EnvironmentType::room;
+                e.room = read_room(r);
+                r.read("cube_size", e.cube_size, 8, 4096);
+                if (r.has("reference_point")) {
+                    Vec3 p;
+                    r.read("reference_point", p);
+                    e.reference_point = p;
+                    for (int i = 0; i < 3; ++i)
+                        if (!(p[i] > e.room.min[i] && p[i] < e.room.max[i]))
+                            r.fail("environment.reference_point", "must be inside the room");
+                }
+            } else if (type == "sphere-room") {
+                Reader r(env, "environment", file,
+                         {"type", "reference_point", "cube_size", "radius", "checker_deg", "light", "dark"});
+                e.type = EnvironmentType::sphere_room;
+                r.read("radius", e.sphere_room.radius, 1e-3, kSceneBig);
+                r.read("checker_deg", e.sphere_room.checker_deg, 0.1, 180);
+                r.read_color("light", e.sphere_room.light);
+                r.read_color("dark", e.sphere_room.dark);
+                r.read("cube_size", e.cube_size, 8, 4096);
+                if (r.has("reference_point")) {
+                    Vec3 p;
+                    r.read("reference_point", p);
+                    e.reference_point = p;
+                }
+            } else if (type == "equirect") {
+                Reader r(env, "environment", file,
+                         {"type", "file", "intensity", "colorspace", "proxy", "reference_point", "cube_size"});
+                e.type = EnvironmentType::equirect;
+                std::string path;
+                r.read("file", path);
+                if (path.empty()) r.fail("environment.file", "missing (an equirectangular EXR or HDR image)");
+                e.equirect.file =
+                    std::filesystem::path(path).is_absolute() ? std::filesystem::path(path) : file.parent_path() / path;
+                r.read("intensity", e.equirect.intensity, 0, kSceneBig);
+                if (r.has("colorspace")) r.read("colorspace", e.equirect.colorspace);
+                if (r.has("proxy")) e.equirect.proxy = read_proxy(r);
+                r.read("cube_size", e.cube_size, 8, 4096);
+                if (r.has("reference_point")) {
+                    Vec3 p;
+                    r.read("reference_point", p);
+                    e.reference_point = p;
+                }
+                if (const auto* box = e.equirect.proxy ? std::get_if<BoxProxy>(&*e.equirect.proxy) : nullptr) {
+                    const Vec3 o = e.reference();
+                    for (int i = 0; i < 3; ++i)
+                        if (!(o[i] > box->min[i] && o[i] < box->max[i]))
+                            r.fail(
+                                r.has("reference_point") ? "environment.reference_point" : "environment.proxy.box",
+                                "the capture point (environment.reference_point, default the origin) must lie inside the proxy box");
+                }
+                if (!e.equirect.proxy)
+                    for (const char* key : {"reference_point", "cube_size"})
+                        if (r.has(key))
+                            scene.warnings.push_back(
+                                file.string() + ": environment." + key +
+                                ": ignored: an equirect without a proxy is at infinity (nothing is captured)");
+            } else {
+                top.fail("environment.type",
+                         "unknown value '" + scene_excerpt(type) + "' (known: room, sphere-room, equirect)");
+            }
         }
-        if (type == "room") {
-            Reader r(env, "environment", file,
-                     {"type", "reference_point", "cube_size", "min", "max", "wall_x_min", "wall_x_max", "wall_z_min",
-                      "wall_z_max", "floor_light", "floor_dark", "ceiling", "checker", "panels", "boxes", "columns"});
-            e.type = EnvironmentType::room;
-            e.room = read_room(r);
-            r.read("cube_size", e.cube_size, 8, 4096);
-            if (r.has("reference_point")) {
-                Vec3 p;
-                r.read("reference_point", p);
-                e.reference_point = p;
-                for (int i = 0; i < 3; ++i)
-                    if (!(p[i] > e.room.min[i] && p[i] < e.room.max[i])) r.fail("environment.reference_point", "must be inside the room");
-            }
-        } else if (type == "sphere-room") {
-            Reader r(env, "environment", file, {"type", "reference_point", "cube_size", "radius", "checker_deg", "light", "dark"});
-            e.type = EnvironmentType::sphere_room;
-            r.read("radius", e.sphere_room.radius, 1e-3, kSceneBig);
-            r.read("checker_deg", e.sphere_room.checker_deg, 0.1, 180);
-            r.read_color("light", e.sphere_room.light);
-            r.read_color("dark", e.sphere_room.dark);
-            r.read("cube_size", e.cube_size, 8, 4096);
-            if (r.has("reference_point")) {
-                Vec3 p;
-                r.read("reference_point", p);
-                e.reference_point = p;
-            }
-        } else if (type == "equirect") {
-            Reader r(env, "environment", file, {"type", "file", "intensity", "colorspace", "proxy", "reference_point", "cube_size"});
-            e.type = EnvironmentType::equirect;
-            std::string path;
-            r.read("file", path);
-            if (path.empty()) r.fail("environment.file", "missing (an equirectangular EXR or HDR image)");
-            e.equirect.file = std::filesystem::path(path).is_absolute() ? std::filesystem::path(path)
-                                                                        : file.parent_path() / path;
-            r.read("intensity", e.equirect.intensity, 0, kSceneBig);
-            if (r.has("colorspace")) r.read("colorspace", e.equirect.colorspace);
-            if (r.has("proxy")) e.equirect.proxy = read_proxy(r);
-            r.read("cube_size", e.cube_size, 8, 4096);
-            if (r.has("reference_point")) {
-                Vec3 p;
-                r.read("reference_point", p);
-                e.reference_point = p;
-            }
-            if (const auto* box = e.equirect.proxy ? std::get_if<BoxProxy>(&*e.equirect.proxy) : nullptr) {
-                const Vec3 o = e.reference();
-                for (int i = 0; i < 3; ++i)
-                    if (!(o[i] > box->min[i] && o[i] < box->max[i]))
-                        r.fail(r.has("reference_point") ? "environment.reference_point" : "environment.proxy.box",
-                               "the capture point (environment.reference_point, default the origin) must lie inside the proxy box");
-            }
-            if (!e.equirect.proxy)
-                for (const char* key : {"reference_point", "cube_size"})
-                    if (r.has(key))
-                        scene.warnings.push_back(file.string() + ": environment." + key +
-                                                 ": ignored: an equirect without a proxy is at infinity (nothing is captured)");
-        } else {
-            top.fail("environment.type", "unknown value '" + scene_excerpt(type) + "' (known: room, sphere-room, equirect)");
-        }
-    }
     }
 
     void add_frame_input_passes(PreviewGraph& g) const override {
-        const EnvironmentInputs environment = add_environment_passes(g.graph, g.scene, g.features, g.in, g.run, &g.environment);
+        const EnvironmentInputs environment =
+            add_environment_passes(g.graph, g.scene, g.features, g.in, g.run, &g.environment);
         g.handles.environment = environment;
         g.frame.add([environment](Builder& b) { environment.declare(b); },
                     [environment](GpuRenderer& gpu, Resources& r) { environment.bind(gpu, r); });
@@ -284,7 +300,8 @@ std::string captured_environment_name(const Environment& environment) {
 
 Handle<EnvironmentCube> add_capture_environment_pass(PassGraph& graph, const Scene& scene, const Features& f,
                                                      const SceneInputs& in, PreviewRun* run,
-                                                     std::optional<Handle<EquirectTexture>> equirect, const FrameInputs* capture_inputs) {
+                                                     std::optional<Handle<EquirectTexture>> equirect,
+                                                     const FrameInputs* capture_inputs) {
     struct Data {
         std::optional<Handle<EquirectTexture>> equirect;
         Handle<EnvironmentCube> out;
@@ -293,16 +310,19 @@ Handle<EnvironmentCube> add_capture_environment_pass(PassGraph& graph, const Sce
         .add_pass<Data>(
             {"capture-environment",
              captured_environment_name(scene.environment) + ": ray-cast by GL into a " +
-                 std::to_string(scene.environment.cube_size) + "² cube map (radiance" + (f.distance_channel ? " + distance" : "") +
-                 ")" + (f.prefiltered_map ? " with a mip chain for the prefilter" : "") + ", once, reused by every frame",
+                 std::to_string(scene.environment.cube_size) + "² cube map (radiance" +
+                 (f.distance_channel ? " + distance" : "") + ")" +
+                 (f.prefiltered_map ? " with a mip chain for the prefilter" : "") + ", once, reused by every frame",
              Processor::gpu},
             [&](Builder& b, Data& d) {
                 b.read(in.environment);
                 if (equirect) d.equirect = b.read(*equirect);
                 if (capture_inputs) capture_inputs->declare(b);
-                d.out = b.create<EnvironmentCube>("environment-cube", {scene.environment.cube_size, f.distance_channel, f.prefiltered_map});
+                d.out = b.create<EnvironmentCube>("environment-cube",
+                                                  {scene.environment.cube_size, f.distance_channel, f.prefiltered_map});
             },
-            [run, capture_inputs = capture_inputs ? std::optional<FrameInputs>(*capture_inputs) : std::nullopt](const Data& d, Resources& r) {
+            [run, capture_inputs = capture_inputs ? std::optional<FrameInputs>(*capture_inputs)
+                                                  : std::nullopt](const Data& d, Resources& r) {
                 if (d.equirect) run->renderer().use_equirect(r.get(*d.equirect));
                 if (capture_inputs) capture_inputs->bind(run->renderer(), r);
                 run->renderer().capture_environment(r.get(d.out));
@@ -310,7 +330,8 @@ Handle<EnvironmentCube> add_capture_environment_pass(PassGraph& graph, const Sce
         .out;
 }
 
-std::pair<Handle<EquirectTexture>, Handle<Image>> add_load_equirect_pass(PassGraph& graph, const Scene& scene, PreviewRun* run) {
+std::pair<Handle<EquirectTexture>, Handle<Image>> add_load_equirect_pass(PassGraph& graph, const Scene& scene,
+                                                                         PreviewRun* run) {
     struct Data {
         Handle<EquirectTexture> texture;
         Handle<Image> image;
@@ -318,7 +339,8 @@ std::pair<Handle<EquirectTexture>, Handle<Image>> add_load_equirect_pass(PassGra
     const Equirect& equirect = scene.environment.equirect;
     const Data& d = graph.add_pass<Data>(
         {"load-equirect",
-         std::string(equirect.proxy ? "environment image on a proxy: " : "environment at infinity: ") + equirect.file.string() + " (OpenImageIO)" +
+         std::string(equirect.proxy ? "environment image on a proxy: " : "environment at infinity: ") +
+             equirect.file.string() + " (OpenImageIO)" +
              (equirect.colorspace.empty() ? std::string(", taken as the scene's space (untagged)")
                                           : ", from " + equirect.colorspace + " into the scene's space"),
          Processor::cpu},
@@ -352,9 +374,11 @@ EnvironmentInputs add_environment_passes(PassGraph& graph, const Scene& scene, c
         environment.equirect_image = image;
     }
     if (f.environment_capture) {
-        environment.cube = add_capture_environment_pass(graph, scene, f, in, run, environment.equirect_texture, capture_inputs);
+        environment.cube =
+            add_capture_environment_pass(graph, scene, f, in, run, environment.equirect_texture, capture_inputs);
         if (!f.distance_channel)
-            graph.skip("distance channel", "no sphere uses the distance impostor: the cube map stores radiance only (RGBA16F)");
+            graph.skip("distance channel",
+                       "no sphere uses the distance impostor: the cube map stores radiance only (RGBA16F)");
     } else {
         graph.skip("capture-environment", "the environment is an image at infinity: nothing to capture");
     }

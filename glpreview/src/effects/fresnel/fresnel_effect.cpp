@@ -3,13 +3,13 @@
 #include <map>
 #include <stdexcept>
 
-#include "render/embedded_shaders.hpp"
 #include "glpreview/gl/objects.hpp"
 #include "glpreview/gl/uniforms.hpp"
 #include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/preview_passes.hpp"
 #include "libfit/base/text.hpp"
+#include "render/embedded_shaders.hpp"
 
 namespace metalfit::glpreview {
 namespace {
@@ -45,16 +45,17 @@ public:
         std::string fresnel = "reference", params = "fit";
         r.read("fresnel", fresnel);
         r.read("params", params);
-        if (params != "fit" && params != "closed") r.fail(r.field("params"), "unknown value '" + scene_excerpt(params) + "' (known: fit, closed)");
+        if (params != "fit" && params != "closed")
+            r.fail(r.field("params"), "unknown value '" + scene_excerpt(params) + "' (known: fit, closed)");
         if (fresnel != "reference")  // "params" is checked on a reference sphere too, and means nothing there
             s.fresnel = ModelFresnel{fresnel, params == "closed" ? ParameterSource::closed : ParameterSource::fit};
     }
 
-
     void declare_sphere(const SphereShader& shader, ShaderBuilder& builder) const override {
         if (const auto* model = std::get_if<ModelFresnel>(&shader.sphere.fresnel)) {
             if (shader.fresnel && !shader.fresnel->model)
-                throw std::logic_error("GpuRenderer: sphere shows model " + model->model + " but its Fresnel is the reference");
+                throw std::logic_error("GpuRenderer: sphere shows model " + model->model +
+                                       " but its Fresnel is the reference");
             builder.fresnel_model(model->model, shader.fresnel ? shader.fresnel->model : nullptr);
         } else {
             if (shader.fresnel && shader.fresnel->model)
@@ -66,24 +67,32 @@ public:
     }
 
     void add_frame_input_passes(PreviewGraph& g) const override {
-        if (g.features.reference_lut) g.frame.read(*(g.handles.luts = add_reference_luts_pass(g.graph, g.scene, g.in, g.run)));
-        else g.graph.skip("reference-luts", "no sphere uses fresnel 'reference'");
-        if (g.features.model_fits) g.frame.read(*(g.handles.parameters = add_model_parameters_pass(g.graph, g.features, g.in, g.run)));
-        else g.graph.skip("model-parameters", "no sphere uses a libfit model");
+        if (g.features.reference_lut)
+            g.frame.read(*(g.handles.luts = add_reference_luts_pass(g.graph, g.scene, g.in, g.run)));
+        else
+            g.graph.skip("reference-luts", "no sphere uses fresnel 'reference'");
+        if (g.features.model_fits)
+            g.frame.read(*(g.handles.parameters = add_model_parameters_pass(g.graph, g.features, g.in, g.run)));
+        else
+            g.graph.skip("model-parameters", "no sphere uses a libfit model");
     }
 
     void bind_sphere(const SphereDraw& draw) const override {
-        if (draw.fresnel.model) set_model_parameters(draw.program.id(), *draw.fresnel.model, draw.fresnel.parameters);
-        else draw.program.bind("u_fresnel_lut", draw.renderer.frame().state<ReferenceLuts>().texture(draw.fresnel));
+        if (draw.fresnel.model)
+            set_model_parameters(draw.program.id(), *draw.fresnel.model, draw.fresnel.parameters);
+        else
+            draw.program.bind("u_fresnel_lut", draw.renderer.frame().state<ReferenceLuts>().texture(draw.fresnel));
     }
 };
 
 }  // namespace
 
-graph::Handle<FresnelSet> add_reference_luts_pass(graph::PassGraph& graph, const Scene& scene, const SceneInputs& in, PreviewRun* run) {
+graph::Handle<FresnelSet> add_reference_luts_pass(graph::PassGraph& graph, const Scene& scene, const SceneInputs& in,
+                                                  PreviewRun* run) {
     return graph
         .add_pass<graph::Out<FresnelSet>>(
-            {"reference-luts", "some sphere shows the exact reference: R_c(μ) from libfit into 1D RGB textures (256 texels)",
+            {"reference-luts",
+             "some sphere shows the exact reference: R_c(μ) from libfit into 1D RGB textures (256 texels)",
              graph::Processor::cpu},
             [&](graph::Builder& b, graph::Out<FresnelSet>& d) {
                 b.read(in.materials);
@@ -97,10 +106,13 @@ graph::Handle<FresnelSet> add_reference_luts_pass(graph::PassGraph& graph, const
         .out;
 }
 
-graph::Handle<FresnelSet> add_model_parameters_pass(graph::PassGraph& graph, const Features& f, const SceneInputs& in, PreviewRun* run) {
+graph::Handle<FresnelSet> add_model_parameters_pass(graph::PassGraph& graph, const Features& f, const SceneInputs& in,
+                                                    PreviewRun* run) {
     return graph
         .add_pass<graph::Out<FresnelSet>>(
-            {"model-parameters", "models " + join({f.models.begin(), f.models.end()}) + ": parameters from libfit (Ceres fit or closed form)",
+            {"model-parameters",
+             "models " + join({f.models.begin(), f.models.end()}) +
+                 ": parameters from libfit (Ceres fit or closed form)",
              graph::Processor::cpu},
             [&](graph::Builder& b, graph::Out<FresnelSet>& d) {
                 b.read(in.materials);
@@ -108,7 +120,8 @@ graph::Handle<FresnelSet> add_model_parameters_pass(graph::PassGraph& graph, con
             },
             [run](const graph::Out<FresnelSet>& d, graph::Resources& r) {
                 FresnelSet& set = r.emplace(d.out);
-                for (const SphereFresnel* fresnel : run->fresnel) set.spheres.push_back(fresnel->model ? fresnel : nullptr);
+                for (const SphereFresnel* fresnel : run->fresnel)
+                    set.spheres.push_back(fresnel->model ? fresnel : nullptr);
             })
         .out;
 }

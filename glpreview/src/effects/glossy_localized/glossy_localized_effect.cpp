@@ -2,12 +2,12 @@
 
 #include <map>
 
-#include "render/embedded_shaders.hpp"
 #include "glpreview/gl/uniforms.hpp"
 #include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/preview_passes.hpp"
 #include "libfit/base/text.hpp"
+#include "render/embedded_shaders.hpp"
 
 namespace metalfit::glpreview {
 namespace {
@@ -37,15 +37,16 @@ public:
             scene.warnings.push_back(r.file().string() + ": " + r.field("reflection") +
                                      ": ignored: glossy 'localized' localizes by the area lights' positions");
         if (r.has("localized_size") && !applies(s))
-            scene.warnings.push_back(r.file().string() + ": " + r.field("localized_size") + ": ignored: only a rough sphere with glossy 'localized' uses it");
+            scene.warnings.push_back(r.file().string() + ": " + r.field("localized_size") +
+                                     ": ignored: only a rough sphere with glossy 'localized' uses it");
     }
-
 
     void declare_sphere(const SphereShader& shader, ShaderBuilder& builder) const override {
         const Sphere& sphere = shader.sphere;
         if (!applies(sphere)) return;
         builder.define("GLOSSY_LOCALIZED")
-            .define("LOCALIZED_SUBDIVISIONS", std::to_string(localized_subdivisions(sphere.roughness, sphere.localized_size)))
+            .define("LOCALIZED_SUBDIVISIONS",
+                    std::to_string(localized_subdivisions(sphere.roughness, sphere.localized_size)))
             .source(shader_text("cube_face.glsl"))
             .source(shader_text("glossy_localized.glsl"))
             .sampler("u_area_radiance")
@@ -56,7 +57,8 @@ public:
     void bind_sphere(const SphereDraw& draw) const override {
         if (!applies(draw.sphere)) return;
         const DownsampledCube& cube = draw.renderer.frame().get<DownsampledCube>(
-            "the downsampled cube of M = " + std::to_string(draw.sphere.localized_size) + " (a localized sphere needs it)",
+            "the downsampled cube of M = " + std::to_string(draw.sphere.localized_size) +
+                " (a localized sphere needs it)",
             std::to_string(draw.sphere.localized_size));
         set_uniform(draw.program.id(), "u_roughness", static_cast<float>(draw.sphere.roughness));
         draw.program.bind("u_area_radiance", cube.radiance.id());
@@ -66,7 +68,8 @@ public:
     void add_frame_input_passes(PreviewGraph& g) const override {
         if (!g.features.downsample_sizes.empty() && g.handles.environment.cube) {
             for (int m : g.features.downsample_sizes)
-                g.frame.add(add_downsample_environment_pass(g.graph, g.scene, m, *g.handles.environment.cube, g.run), std::to_string(m));
+                g.frame.add(add_downsample_environment_pass(g.graph, g.scene, m, *g.handles.environment.cube, g.run),
+                            std::to_string(m));
         } else {
             g.graph.skip("downsample-environment", "no sphere is rough with glossy 'localized'");
         }
@@ -117,8 +120,8 @@ void downsample_environment(GpuRenderer& renderer, const EnvironmentCube& source
     renderer.frame().put(target, std::to_string(target.m));
 }
 
-Handle<DownsampledCube> add_downsample_environment_pass(PassGraph& graph, const Scene& scene, int m, Handle<EnvironmentCube> cube,
-                                                       PreviewRun* run) {
+Handle<DownsampledCube> add_downsample_environment_pass(PassGraph& graph, const Scene& scene, int m,
+                                                        Handle<EnvironmentCube> cube, PreviewRun* run) {
     struct Data {
         Handle<EnvironmentCube> in;
         Handle<DownsampledCube> out;
@@ -128,15 +131,16 @@ Handle<DownsampledCube> add_downsample_environment_pass(PassGraph& graph, const 
         if (applies(scene.spheres[i]) && scene.spheres[i].localized_size == m) spheres.push_back(std::to_string(i));
     const std::string size = std::to_string(m);
     return graph
-        .add_pass<Data>({"downsample-environment " + size,
-                         "sphere(s) " + join(spheres) + " rough with glossy 'localized': the cube as " + size + " × " + size +
-                             " area lights per face (average radiance and position, thesis ch. 5)",
-                         Processor::gpu},
-                        [&](Builder& b, Data& d) {
-                            d.in = b.read(cube);
-                            d.out = b.create<DownsampledCube>("downsampled-cube " + size, {m});
-                        },
-                        [run](const Data& d, Resources& r) { downsample_environment(run->renderer(), r.get(d.in), r.get(d.out)); })
+        .add_pass<Data>(
+            {"downsample-environment " + size,
+             "sphere(s) " + join(spheres) + " rough with glossy 'localized': the cube as " + size + " × " + size +
+                 " area lights per face (average radiance and position, thesis ch. 5)",
+             Processor::gpu},
+            [&](Builder& b, Data& d) {
+                d.in = b.read(cube);
+                d.out = b.create<DownsampledCube>("downsampled-cube " + size, {m});
+            },
+            [run](const Data& d, Resources& r) { downsample_environment(run->renderer(), r.get(d.in), r.get(d.out)); })
         .out;
 }
 

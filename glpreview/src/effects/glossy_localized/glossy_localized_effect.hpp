@@ -14,6 +14,6 @@ const Effect& glossy_localized_effect();
 void downsample_environment(GpuRenderer& renderer, const EnvironmentCube& source, const DownsampledCube& target);
 // The downsample pass of one M (reads the captured cube, creates the downsampled cube).
 graph::Handle<DownsampledCube> add_downsample_environment_pass(graph::PassGraph& graph, const Scene& scene, int m,
-                                                              graph::Handle<EnvironmentCube> cube, PreviewRun* run);
+                                                               graph::Handle<EnvironmentCube> cube, PreviewRun* run);
 
 }  // namespace metalfit::glpreview

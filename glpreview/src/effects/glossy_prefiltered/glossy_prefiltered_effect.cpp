@@ -3,13 +3,13 @@
 #include <map>
 #include <stdexcept>
 
-#include "render/embedded_shaders.hpp"
 #include "glpreview/gl/uniforms.hpp"
 #include "glpreview/render/dfg_table.hpp"
 #include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/preview_passes.hpp"
 #include "libfit/base/text.hpp"
+#include "render/embedded_shaders.hpp"
 
 namespace metalfit::glpreview {
 namespace {
@@ -38,7 +38,8 @@ struct DfgTextures {
         std::vector<float> texels;
         for (const RGB& v : table.values) texels.insert(texels.end(), {float(v.r), float(v.g), float(v.b)});
         glTextureStorage2D(texture.id(), 1, GL_RGB32F, DfgTable::kMuSize, DfgTable::kRoughnessSize);
-        glTextureSubImage2D(texture.id(), 0, 0, 0, DfgTable::kMuSize, DfgTable::kRoughnessSize, GL_RGB, GL_FLOAT, texels.data());
+        glTextureSubImage2D(texture.id(), 0, 0, 0, DfgTable::kMuSize, DfgTable::kRoughnessSize, GL_RGB, GL_FLOAT,
+                            texels.data());
         glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -53,8 +54,8 @@ struct OwnPrefilteredCube {
     std::optional<PrefilteredCube> cube;
 };
 
-Handle<DfgSet> add_dfg_table_pass(PassGraph& graph, const Scene& scene, const std::string& fresnel, const SceneInputs& in,
-                                  PreviewRun* run) {
+Handle<DfgSet> add_dfg_table_pass(PassGraph& graph, const Scene& scene, const std::string& fresnel,
+                                  const SceneInputs& in, PreviewRun* run) {
     std::vector<std::size_t> spheres;
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
         if (applies(scene.spheres[i]) && fresnel_name(scene.spheres[i].fresnel) == fresnel) spheres.push_back(i);
@@ -63,8 +64,9 @@ Handle<DfgSet> add_dfg_table_pass(PassGraph& graph, const Scene& scene, const st
     return graph
         .add_pass<Out<DfgSet>>(
             {"dfg-table " + fresnel,
-             "rough sphere(s) " + join(names) + " use " + fresnel + ": the GGX-weighted integral of its own F over (μ, roughness), " +
-                 std::to_string(DfgTable::kMuSize) + " × " + std::to_string(DfgTable::kRoughnessSize) + " per material",
+             "rough sphere(s) " + join(names) + " use " + fresnel +
+                 ": the GGX-weighted integral of its own F over (μ, roughness), " + std::to_string(DfgTable::kMuSize) +
+                 " × " + std::to_string(DfgTable::kRoughnessSize) + " per material",
              Processor::cpu},
             [&](Builder& b, Out<DfgSet>& d) {
                 b.read(in.materials);
@@ -73,7 +75,8 @@ Handle<DfgSet> add_dfg_table_pass(PassGraph& graph, const Scene& scene, const st
             [run, spheres](const Out<DfgSet>& d, Resources& r) {
                 DfgSet& set = r.emplace(d.out);
                 for (std::size_t i : spheres)
-                    if (!set.tables.count(run->fresnel[i])) set.tables.emplace(run->fresnel[i], make_dfg_table(*run->fresnel[i]));
+                    if (!set.tables.count(run->fresnel[i]))
+                        set.tables.emplace(run->fresnel[i], make_dfg_table(*run->fresnel[i]));
             })
         .out;
 }
@@ -86,13 +89,16 @@ public:
 
     void read_sphere(const SceneReader& r, Sphere& s, Scene& scene) const override {
         r.read("roughness", s.roughness, 0, 1);
-        r.read_enum("glossy", s.glossy, {{"prefiltered", GlossyMethod::prefiltered}, {"localized", GlossyMethod::localized}});
+        r.read_enum("glossy", s.glossy,
+                    {{"prefiltered", GlossyMethod::prefiltered}, {"localized", GlossyMethod::localized}});
         if (s.rough() && !scene.environment.captured())
-            r.fail(r.field("roughness"), "rough spheres need a captured environment (room, sphere-room or an equirect with a proxy): an equirect at infinity is not prefiltered");
+            r.fail(
+                r.field("roughness"),
+                "rough spheres need a captured environment (room, sphere-room or an equirect with a proxy): an equirect at infinity is not prefiltered");
         if (r.has("glossy") && !s.rough())
-            scene.warnings.push_back(r.file().string() + ": " + r.field("glossy") + ": ignored: the sphere is a mirror (roughness 0)");
+            scene.warnings.push_back(r.file().string() + ": " + r.field("glossy") +
+                                     ": ignored: the sphere is a mirror (roughness 0)");
     }
-
 
     void declare_sphere(const SphereShader& shader, ShaderBuilder& builder) const override {
         if (!applies(shader.sphere)) return;
@@ -111,7 +117,8 @@ public:
         set_uniform(p, "u_roughness", static_cast<float>(draw.sphere.roughness));
         set_uniform(p, "u_prefiltered_levels", static_cast<float>(cube.levels));
         draw.program.bind("u_prefiltered", cube.texture.id());
-        draw.program.bind("u_dfg", frame.state<DfgTextures>().texture(draw.fresnel, frame.find<DfgSet>(fresnel_name(draw.sphere.fresnel))));
+        draw.program.bind("u_dfg", frame.state<DfgTextures>().texture(
+                                       draw.fresnel, frame.find<DfgSet>(fresnel_name(draw.sphere.fresnel))));
     }
 
     void add_frame_input_passes(PreviewGraph& g) const override {
@@ -120,7 +127,8 @@ public:
             for (const std::string& fresnel : g.features.dfg_models)
                 g.frame.add(add_dfg_table_pass(g.graph, g.scene, fresnel, g.in, g.run), fresnel);
         } else {
-            g.graph.skip("prefilter-environment", "no sphere is rough with glossy 'prefiltered' (mirrors: roughness 0)");
+            g.graph.skip("prefilter-environment",
+                         "no sphere is rough with glossy 'prefiltered' (mirrors: roughness 0)");
             g.graph.skip("dfg-table", "no sphere is rough with glossy 'prefiltered'");
         }
     }
@@ -163,7 +171,8 @@ void prefilter_environment(GpuRenderer& renderer, const EnvironmentCube& source,
         for (int face = 0; face < 6; ++face) {
             glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, target.texture.id(), level, face);
             if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-                throw GlError("prefiltered cube face " + std::to_string(face) + " level " + std::to_string(level) + " cannot be rendered to");
+                throw GlError("prefiltered cube face " + std::to_string(face) + " level " + std::to_string(level) +
+                              " cannot be rendered to");
             glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
             set_uniform(p.id(), "u_face", face);
             glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -174,8 +183,8 @@ void prefilter_environment(GpuRenderer& renderer, const EnvironmentCube& source,
     renderer.frame().put(target);
 }
 
-Handle<PrefilteredCube> add_prefilter_environment_pass(PassGraph& graph, const Scene& scene, Handle<EnvironmentCube> cube,
-                                                       PreviewRun* run) {
+Handle<PrefilteredCube> add_prefilter_environment_pass(PassGraph& graph, const Scene& scene,
+                                                       Handle<EnvironmentCube> cube, PreviewRun* run) {
     struct Data {
         Handle<EnvironmentCube> in;
         Handle<PrefilteredCube> out;
@@ -185,16 +194,17 @@ Handle<PrefilteredCube> add_prefilter_environment_pass(PassGraph& graph, const S
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
         if (applies(scene.spheres[i])) rough.push_back(std::to_string(i));
     return graph
-        .add_pass<Data>({"prefilter-environment",
-                         "sphere(s) " + join(rough) + " rough with glossy 'prefiltered': GGX-prefiltered " + std::to_string(size) + "² cube, " +
-                             std::to_string(levels) + " mip levels (one per roughness step of 1/" + std::to_string(levels - 1) +
-                             "), filtered importance sampling",
-                         Processor::gpu},
-                        [&](Builder& b, Data& d) {
-                            d.in = b.read(cube);
-                            d.out = b.create<PrefilteredCube>("prefiltered-cube", {size, levels});
-                        },
-                        [run](const Data& d, Resources& r) { prefilter_environment(run->renderer(), r.get(d.in), r.get(d.out)); })
+        .add_pass<Data>(
+            {"prefilter-environment",
+             "sphere(s) " + join(rough) + " rough with glossy 'prefiltered': GGX-prefiltered " + std::to_string(size) +
+                 "² cube, " + std::to_string(levels) + " mip levels (one per roughness step of 1/" +
+                 std::to_string(levels - 1) + "), filtered importance sampling",
+             Processor::gpu},
+            [&](Builder& b, Data& d) {
+                d.in = b.read(cube);
+                d.out = b.create<PrefilteredCube>("prefiltered-cube", {size, levels});
+            },
+            [run](const Data& d, Resources& r) { prefilter_environment(run->renderer(), r.get(d.in), r.get(d.out)); })
         .out;
 }
 

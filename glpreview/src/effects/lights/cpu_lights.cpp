@@ -133,8 +133,8 @@ std::optional<RGB> emitter_seen(const Lights& lights, Vec3 origin, Vec3 dir) {
     return seen;
 }
 
-RadianceEstimate specular_from_lights(const Scene& scene, const Lights& lights, std::size_t sphere, Vec3 p, Vec3 n, Vec3 v,
-                                      const SphereFresnel& fresnel, int samples, std::uint64_t seed) {
+RadianceEstimate specular_from_lights(const Scene& scene, const Lights& lights, std::size_t sphere, Vec3 p, Vec3 n,
+                                      Vec3 v, const SphereFresnel& fresnel, int samples, std::uint64_t seed) {
     const double alpha = std::max(ggx::alpha(scene.spheres[sphere].roughness), 1e-3);
     const ggx::Frame frame(n);
     Vec3 v_local = frame.to_local(v);
@@ -162,13 +162,15 @@ RadianceEstimate specular_from_lights(const Scene& scene, const Lights& lights, 
                 const Vec3 dir = cone_direction((1.0 / d) * to, cos_max, uniform(random), uniform(random));
                 if (dot(n, dir) <= 0 || occluded(scene, p, dir, light_distance(light, p, dir), sphere)) continue;
                 const RGB f = brdf_cos(dir);
-                const RGB x{solid_angle * f.r * light.power().r, solid_angle * f.g * light.power().g, solid_angle * f.b * light.power().b};
+                const RGB x{solid_angle * f.r * light.power().r, solid_angle * f.g * light.power().g,
+                            solid_angle * f.b * light.power().b};
                 sum = sum + x;
                 sum2 = sum2 + RGB{x.r * x.r, x.g * x.g, x.b * x.b};
             }
             for (int c = 0; c < 3; ++c) {
                 const double mean = sum[c] / samples;
-                const double variance = samples > 1 ? std::max(0.0, (sum2[c] - samples * mean * mean) / (samples - 1)) : 0.0;
+                const double variance =
+                    samples > 1 ? std::max(0.0, (sum2[c] - samples * mean * mean) / (samples - 1)) : 0.0;
                 result.mean[c] += mean;
                 result.variance[c] += variance / samples;
             }

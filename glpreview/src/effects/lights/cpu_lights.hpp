@@ -18,8 +18,8 @@ RGB light_on_surface(const Scene& scene, const Lights& lights, const RGB& albedo
 std::optional<RGB> emitter_seen(const Lights& lights, Vec3 origin, Vec3 dir);
 // The lights' direct specular at point p of rough sphere `sphere` towards v: exact for point, spot and directional
 // lights; sphere lights by Monte Carlo over their cone (`samples` directions, seeded by `seed`).
-RadianceEstimate specular_from_lights(const Scene& scene, const Lights& lights, std::size_t sphere, Vec3 p, Vec3 n, Vec3 v,
-                                      const SphereFresnel& fresnel, int samples, std::uint64_t seed);
+RadianceEstimate specular_from_lights(const Scene& scene, const Lights& lights, std::size_t sphere, Vec3 p, Vec3 n,
+                                      Vec3 v, const SphereFresnel& fresnel, int samples, std::uint64_t seed);
 // Whether the segment from o along unit d up to t_max meets a sphere (but `skip`) or a room box.
 bool occluded(const Scene& scene, Vec3 o, Vec3 d, double t_max, std::optional<std::size_t> skip = std::nullopt);
 // A spot's cone weight at cos_angle, as GLSL's smoothstep(cos outer, cos inner, cos_angle) in lights.glsl.

@@ -31,22 +31,29 @@ Lights read_lights(const SceneReader& top) {
     top.each("lights", [&](const nlohmann::json& v, const std::string& path) {
         if (result.lights.size() >= kMaxLights) top.fail("lights", "at most " + std::to_string(kMaxLights) + " lights");
         const SceneReader r(v, path, top.file(),
-                            {"type", "position", "direction", "radius", "colour", "intensity", "unit", "cone_inner_deg", "cone_outer_deg"});
+                            {"type", "position", "direction", "radius", "colour", "intensity", "unit", "cone_inner_deg",
+                             "cone_outer_deg"});
         Light light;
         if (!r.has("type")) r.fail(r.field("type"), "missing (point, spot, directional or sphere)");
         r.read_enum("type", light.type,
-                    {{"point", LightType::point}, {"spot", LightType::spot}, {"directional", LightType::directional}, {"sphere", LightType::sphere}});
+                    {{"point", LightType::point},
+                     {"spot", LightType::spot},
+                     {"directional", LightType::directional},
+                     {"sphere", LightType::sphere}});
         const auto require = [&](const char* key) {
-            if (!r.has(key)) r.fail(r.field(key), std::string("missing (a ") + to_string(light.type) + " light needs it)");
+            if (!r.has(key))
+                r.fail(r.field(key), std::string("missing (a ") + to_string(light.type) + " light needs it)");
         };
         const auto refuse = [&](const char* key) {
-            if (r.has(key)) r.fail(r.field(key), std::string("means nothing for a ") + to_string(light.type) + " light");
+            if (r.has(key))
+                r.fail(r.field(key), std::string("means nothing for a ") + to_string(light.type) + " light");
         };
         if (light.local()) {
             require("position");
             r.read("position", light.position);
             for (int i = 0; i < 3; ++i)
-                if (std::abs(light.position[i]) > kSceneBig) r.fail(r.field("position"), "coordinates must be in [-1e+06, 1e+06]");
+                if (std::abs(light.position[i]) > kSceneBig)
+                    r.fail(r.field("position"), "coordinates must be in [-1e+06, 1e+06]");
         } else {
             refuse("position");
         }
@@ -54,7 +61,8 @@ Lights read_lights(const SceneReader& top) {
             require("direction");
             r.read("direction", light.direction);
             const double length_of = length(light.direction);
-            if (!(length_of > 1e-12) || !std::isfinite(length_of)) r.fail(r.field("direction"), "must be a non-zero vector");
+            if (!(length_of > 1e-12) || !std::isfinite(length_of))
+                r.fail(r.field("direction"), "must be a non-zero vector");
             light.direction = (1.0 / length_of) * light.direction;
         } else {
             refuse("direction");
@@ -69,7 +77,8 @@ Lights read_lights(const SceneReader& top) {
             r.read("cone_inner_deg", light.cone_inner_deg, 0, 90);
             r.read("cone_outer_deg", light.cone_outer_deg, 0, 90);
             if (!(light.cone_outer_deg > 0)) r.fail(r.field("cone_outer_deg"), "must be in (0, 90]");
-            if (light.cone_inner_deg > light.cone_outer_deg) r.fail(r.field("cone_inner_deg"), "must not exceed cone_outer_deg");
+            if (light.cone_inner_deg > light.cone_outer_deg)
+                r.fail(r.field("cone_inner_deg"), "must not exceed cone_outer_deg");
         } else {
             refuse("cone_inner_deg");
             refuse("cone_outer_deg");
@@ -81,8 +90,8 @@ Lights read_lights(const SceneReader& top) {
             std::string unit;
             r.read("unit", unit);
             if (unit != intensity_unit(light.type))
-                r.fail(r.field("unit"), "'" + scene_excerpt(unit) + "': a " + to_string(light.type) + " light's intensity is in " +
-                                            intensity_unit(light.type));
+                r.fail(r.field("unit"), "'" + scene_excerpt(unit) + "': a " + to_string(light.type) +
+                                            " light's intensity is in " + intensity_unit(light.type));
         }
         result.lights.push_back(light);
     });
@@ -104,12 +113,15 @@ void check_lights(const SceneReader& top, const Scene& scene, const Lights& ligh
         for (std::size_t s = 0; s < scene.spheres.size(); ++s) {
             const Sphere& sphere = scene.spheres[s];
             if (length(light.position - sphere.center) < sphere.radius + light.radius)
-                top.fail(field, light.radius > 0 ? "the light's sphere meets sphere " + std::to_string(s) : "inside sphere " + std::to_string(s));
+                top.fail(field, light.radius > 0 ? "the light's sphere meets sphere " + std::to_string(s)
+                                                 : "inside sphere " + std::to_string(s));
         }
         for (std::size_t b = 0; b < room.boxes.size(); ++b) {
             const RoomBox& box = room.boxes[b];
             bool inside = true;
-            for (int a = 0; a < 3; ++a) inside = inside && light.position[a] > box.min[a] - light.radius && light.position[a] < box.max[a] + light.radius;
+            for (int a = 0; a < 3; ++a)
+                inside = inside && light.position[a] > box.min[a] - light.radius &&
+                         light.position[a] < box.max[a] + light.radius;
             if (inside) top.fail(field, "inside (or touching) room box " + std::to_string(b));
         }
     }
@@ -138,7 +150,8 @@ ShadowLayout shadow_layout(const Scene& scene, const Lights& lights) {
         if (casts && light.type == LightType::spot) {
             casts = false;
             for (const Sphere& s : scene.spheres) casts = casts || in_cone(light, s.center, s.radius);
-            for (const RoomBox& b : room.boxes) casts = casts || in_cone(light, 0.5 * (b.min + b.max), 0.5 * length(b.max - b.min));
+            for (const RoomBox& b : room.boxes)
+                casts = casts || in_cone(light, 0.5 * (b.min + b.max), 0.5 * length(b.max - b.min));
             if (!casts) why = "no sphere or room box lies in its cone";
         }
         if (!casts) {
@@ -161,7 +174,8 @@ ShadowPlane shadow_plane(const Room& room, const Light& light) {
     const Vec3 u = normalize(cross(helper, d)), v = cross(d, u);
     double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300, w0 = 1e300;
     for (int corner = 0; corner < 8; ++corner) {
-        const Vec3 c{(corner & 1) ? room.max.x : room.min.x, (corner & 2) ? room.max.y : room.min.y, (corner & 4) ? room.max.z : room.min.z};
+        const Vec3 c{(corner & 1) ? room.max.x : room.min.x, (corner & 2) ? room.max.y : room.min.y,
+                     (corner & 4) ? room.max.z : room.min.z};
         u0 = std::min(u0, dot(c, u));
         u1 = std::max(u1, dot(c, u));
         v0 = std::min(v0, dot(c, v));

@@ -17,12 +17,12 @@ enum class LightType { point, spot, directional, sphere };
 
 struct Light {
     LightType type = LightType::point;
-    Vec3 position;                     // point, spot, sphere
-    Vec3 direction{0, -1, 0};          // unit: where a spot points, where directional light travels
+    Vec3 position;             // point, spot, sphere
+    Vec3 direction{0, -1, 0};  // unit: where a spot points, where directional light travels
     RGB colour{1, 1, 1};
-    double intensity = 1;              // W/sr (point, spot), W/m² (directional), W/(m²·sr) (sphere)
-    double radius = 0;                 // sphere
-    double cone_inner_deg = 30;        // spot: full intensity inside, none outside the outer angle
+    double intensity = 1;        // W/sr (point, spot), W/m² (directional), W/(m²·sr) (sphere)
+    double radius = 0;           // sphere
+    double cone_inner_deg = 30;  // spot: full intensity inside, none outside the outer angle
     double cone_outer_deg = 45;
 
     RGB power() const { return intensity * colour; }
@@ -36,7 +36,7 @@ struct Lights {
 inline constexpr std::size_t kMaxLights = 8;
 inline constexpr int kShadowMapSize = 256;
 
-const char* to_string(LightType type);   // "point", "spot", "directional", "sphere"
+const char* to_string(LightType type);       // "point", "spot", "directional", "sphere"
 const char* intensity_unit(LightType type);  // "W/sr", "W/m2", "W/m2/sr"
 
 // The "lights" key (an array), read strictly: errors name the file and the field.
@@ -47,7 +47,7 @@ void check_lights(const SceneReader& top, const Scene& scene, const Lights& ligh
 // Which shadow map each light draws into: its layer among the cube maps (point, spot, sphere) or the planes
 // (directional), or none when nothing can cast a shadow from it (no sphere or box; for a spot, none in its cone).
 struct ShadowLayout {
-    std::vector<int> layer;  // per light; −1: none
+    std::vector<int> layer;        // per light; −1: none
     std::vector<std::string> why;  // per light: why it has a map or not (--explain)
     int cubes = 0, planes = 0;
 };

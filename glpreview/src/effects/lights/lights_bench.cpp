@@ -16,7 +16,8 @@ namespace {
 
 // The bench room with `lights` point lights (in a row under the ceiling) and the sphere at `roughness`.
 Scene lit_scene(const PreviewOptions& options, bool quick, int lights, double roughness) {
-    GlossyVariant variant{roughness, GlossyMethod::prefiltered, roughness > 0 ? ReflectionMode::box_parallax : ReflectionMode::classic, 8};
+    GlossyVariant variant{roughness, GlossyMethod::prefiltered,
+                          roughness > 0 ? ReflectionMode::box_parallax : ReflectionMode::classic, 8};
     Scene scene = glossy_bench_scene(options.data_dir, quick, variant);
     Lights all;
     for (int i = 0; i < lights; ++i) {
@@ -46,8 +47,8 @@ nlohmann::ordered_json bench_lights(GlContext& context, const PreviewOptions& op
     std::vector<std::unique_ptr<GpuRenderer>> renderers;
     std::vector<std::function<void()>> variants;
     for (const Case& c : cases) {
-        auto gpu = std::make_unique<GpuRenderer>(c.scene, plan_features(c.scene), std::vector<const SphereFresnel*>{gold}, nullptr,
-                                                 &context.programs());
+        auto gpu = std::make_unique<GpuRenderer>(c.scene, plan_features(c.scene),
+                                                 std::vector<const SphereFresnel*>{gold}, nullptr, &context.programs());
         gpu->capture_environment();
         gpu->render();  // compiles its programs and makes its shadow maps before the timing
         GpuRenderer* raw = gpu.get();
@@ -73,7 +74,10 @@ nlohmann::ordered_json bench_lights(GlContext& context, const PreviewOptions& op
     names.push_back("shadow pass of 1 light (256² cube, 6 faces)");
     for (std::size_t i = 0; i < names.size(); ++i) {
         const Ratio r = paired_ratio(ms[i], ms[0]);
-        j["rows"].push_back({{"variant", names[i]}, {"ms", median(ms[i])}, {"ratio_to_mirror_frame", r.median}, {"ratio_noise", r.noise}});
+        j["rows"].push_back({{"variant", names[i]},
+                             {"ms", median(ms[i])},
+                             {"ratio_to_mirror_frame", r.median},
+                             {"ratio_noise", r.noise}});
     }
     // Per light: the frame with four lights less the frame without, over four; the shadow pass as it is.
     std::vector<double> per_light;

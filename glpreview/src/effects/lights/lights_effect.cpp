@@ -30,7 +30,8 @@ const Lights* lights_of(const Scene& scene) {
 }
 
 bool has_sphere_light(const Lights& lights) {
-    return std::any_of(lights.lights.begin(), lights.lights.end(), [](const Light& l) { return l.type == LightType::sphere; });
+    return std::any_of(lights.lights.begin(), lights.lights.end(),
+                       [](const Light& l) { return l.type == LightType::sphere; });
 }
 
 // The shadow maps the renderer made itself (no graph: tests, benchmarks).
@@ -82,7 +83,8 @@ public:
             set_uniform(p, name("u_light_radius").c_str(), static_cast<float>(light.radius));
             const double to_radians = std::numbers::pi / 180;
             const double cos_outer = std::cos(light.cone_outer_deg * to_radians);
-            const double cos_inner = std::max(std::cos(light.cone_inner_deg * to_radians), cos_outer + 1e-6);  // as spot_weight
+            const double cos_inner =
+                std::max(std::cos(light.cone_inner_deg * to_radians), cos_outer + 1e-6);  // as spot_weight
             glProgramUniform2f(p, glGetUniformLocation(p, name("u_light_cone").c_str()), static_cast<float>(cos_outer),
                                static_cast<float>(cos_inner));
             set_uniform(p, name("u_light_shadow").c_str(), layout.layer[i]);
@@ -129,7 +131,8 @@ public:
         const ShadowLayout layout = shadow_layout(g.scene, *lights);
         std::vector<std::string> why;
         for (std::size_t i = 0; i < lights->lights.size(); ++i)
-            why.push_back("light " + std::to_string(i) + " (" + to_string(lights->lights[i].type) + "): " + layout.why[i]);
+            why.push_back("light " + std::to_string(i) + " (" + to_string(lights->lights[i].type) +
+                          "): " + layout.why[i]);
         if (layout.cubes + layout.planes == 0) {
             g.graph.skip("shadow-maps", join(why, "; "));
             return;
@@ -140,17 +143,18 @@ public:
         PreviewRun* run = g.run;
         const Handle<ShadowMaps> maps =
             g.graph
-                .add_pass<Data>({"shadow-maps",
-                                 join(why, "; ") + "; distances to the first sphere or room box, sampled with PCSS by the capture, "
-                                                   "the background and the rough spheres",
-                                 Processor::gpu},
-                                [&](Builder& b, Data& d) {
-                                    b.read(g.in.environment);
-                                    d.out = b.create<ShadowMaps>("shadow-maps", {kShadowMapSize, layout.cubes, layout.planes});
-                                },
-                                [run, lights = *lights, layout](const Data& d, Resources& r) {
-                                    render_shadow_maps(run->renderer(), lights, layout, r.get(d.out));
-                                })
+                .add_pass<Data>(
+                    {"shadow-maps",
+                     join(why, "; ") + "; distances to the first sphere or room box, sampled with PCSS by the capture, "
+                                       "the background and the rough spheres",
+                     Processor::gpu},
+                    [&](Builder& b, Data& d) {
+                        b.read(g.in.environment);
+                        d.out = b.create<ShadowMaps>("shadow-maps", {kShadowMapSize, layout.cubes, layout.planes});
+                    },
+                    [run, lights = *lights, layout](const Data& d, Resources& r) {
+                        render_shadow_maps(run->renderer(), lights, layout, r.get(d.out));
+                    })
                 .out;
         g.frame.add(maps);
         g.environment.add(maps);
@@ -163,8 +167,8 @@ public:
     std::optional<RGB> cpu_emitter(const Scene& scene, Vec3 origin, Vec3 dir) const override {
         return emitter_seen(*lights_of(scene), origin, dir);
     }
-    RadianceEstimate cpu_sphere_light(const Scene& scene, std::size_t sphere, Vec3 p, Vec3 n, Vec3 v, const SphereFresnel& fresnel,
-                                      int samples, std::uint64_t seed) const override {
+    RadianceEstimate cpu_sphere_light(const Scene& scene, std::size_t sphere, Vec3 p, Vec3 n, Vec3 v,
+                                      const SphereFresnel& fresnel, int samples, std::uint64_t seed) const override {
         return specular_from_lights(scene, *lights_of(scene), sphere, p, n, v, fresnel, samples, seed);
     }
 };

@@ -24,7 +24,8 @@ ShadowMaps ShadowMaps::create(const Descriptor& d) {
     return maps;
 }
 
-void render_shadow_maps(GpuRenderer& renderer, const Lights& lights, const ShadowLayout& layout, const ShadowMaps& maps) {
+void render_shadow_maps(GpuRenderer& renderer, const Lights& lights, const ShadowLayout& layout,
+                        const ShadowMaps& maps) {
     const Scene& scene = renderer.scene();
     ShaderBuilder builder("shadow-map");
     declare_environment(scene, builder);
@@ -35,8 +36,8 @@ void render_shadow_maps(GpuRenderer& renderer, const Lights& lights, const Shado
     set_uniform(id, "u_occluder_count", occluders);
     for (int i = 0; i < occluders; ++i) {
         const Sphere& s = scene.spheres[static_cast<std::size_t>(i)];
-        glProgramUniform4f(id, glGetUniformLocation(id, ("u_occluders[" + std::to_string(i) + "]").c_str()), float(s.center.x),
-                           float(s.center.y), float(s.center.z), float(s.radius));
+        glProgramUniform4f(id, glGetUniformLocation(id, ("u_occluders[" + std::to_string(i) + "]").c_str()),
+                           float(s.center.x), float(s.center.y), float(s.center.z), float(s.radius));
     }
     set_uniform(id, "u_size", maps.size);
     const gl::Framebuffer fbo = gl::create_framebuffer();

@@ -13,7 +13,7 @@ class GpuRenderer;
 struct ShadowMaps {
     struct Descriptor {
         int size = kShadowMapSize;
-        int cubes = 0;   // layers (at least one is made, so the samplers always have a texture)
+        int cubes = 0;  // layers (at least one is made, so the samplers always have a texture)
         int planes = 0;
     };
     static ShadowMaps create(const Descriptor& descriptor);
@@ -23,6 +23,7 @@ struct ShadowMaps {
 };
 
 // Renders every light's map of `layout` into `maps` (the renderer's scene: its spheres and room boxes occlude).
-void render_shadow_maps(GpuRenderer& renderer, const Lights& lights, const ShadowLayout& layout, const ShadowMaps& maps);
+void render_shadow_maps(GpuRenderer& renderer, const Lights& lights, const ShadowLayout& layout,
+                        const ShadowMaps& maps);
 
 }  // namespace metalfit::glpreview

@@ -29,19 +29,20 @@ public:
         PreviewRun* run = g.run;
         PreviewHandles& h = g.handles;
         const FrameInputs& frame = g.frame;
-    // localization: the impostor's steps taken and final |ρ − 1| per pixel, one diagnostics frame.
-    h.localization = graph
-                         .add_pass<Out<Image>>(
-                             {"localization", "per pixel: the impostor's refinement steps taken and |ρ − 1| at its lookup point",
-                              Processor::gpu},
-                             [&](Builder& b, Out<Image>& d) {
-                                 frame.declare(b);
-                                 d.out = b.produce<Image>("localization-image");
-                             },
-                             [run, frame](const Out<Image>& d, Resources& r) {
-                                 r.emplace(d.out, (frame.bind(run->renderer(), r), run->renderer().render_localization()));
-                             })
-                         .out;
+        // localization: the impostor's steps taken and final |ρ − 1| per pixel, one diagnostics frame.
+        h.localization =
+            graph
+                .add_pass<Out<Image>>(
+                    {"localization", "per pixel: the impostor's refinement steps taken and |ρ − 1| at its lookup point",
+                     Processor::gpu},
+                    [&](Builder& b, Out<Image>& d) {
+                        frame.declare(b);
+                        d.out = b.produce<Image>("localization-image");
+                    },
+                    [run, frame](const Out<Image>& d, Resources& r) {
+                        r.emplace(d.out, (frame.bind(run->renderer(), r), run->renderer().render_localization()));
+                    })
+                .out;
     }
 };
 

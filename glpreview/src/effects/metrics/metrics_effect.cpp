@@ -14,8 +14,8 @@ using graph::Out;
 using graph::Processor;
 using graph::Resources;
 
-Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRender& reference, const Image& localization,
-                  const Image* standard_error) {
+Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRender& reference,
+                  const Image& localization, const Image* standard_error) {
     const Scene& scene = run.scene;
     Json j;
     j["schema"] = "metalfit.preview-metrics/1";
@@ -31,7 +31,8 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
         const Sphere& s = scene.spheres[i];
         // A localized rough sphere looks nothing up along its reflection mode: no impostor statistics.
-        const bool impostor = s.reflection == ReflectionMode::distance_impostor && !(s.rough() && s.glossy == GlossyMethod::localized);
+        const bool impostor =
+            s.reflection == ReflectionMode::distance_impostor && !(s.rough() && s.glossy == GlossyMethod::localized);
         Json e;
         e["sphere"] = i;
         e["material"] = run.fresnel[i]->material;
@@ -57,7 +58,6 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
     return j;
 }
 
-
 class MetricsEffect final : public Effect {
 public:
     std::string_view name() const override { return "metrics"; }
@@ -68,47 +68,51 @@ public:
         PreviewRun* run = g.run;
         PreviewHandles& h = g.handles;
         const FrameInputs& frame = g.frame;
-    h.difference = graph
-                       .add_pass<Out<Image>>(
-                           {"difference", "|beauty − reference| per pixel", Processor::cpu},
-                           [&](Builder& b, Out<Image>& d) {
-                               b.read(h.beauty);
-                               b.read(h.reference);
-                               d.out = b.produce<Image>("difference-image");
-                           },
-                           [beauty = h.beauty, reference = h.reference](const Out<Image>& d, Resources& r) {
-                               r.emplace(d.out, absolute_difference(r.get(beauty), r.get(reference).image));
-                           })
-                       .out;
-    h.frame_times = graph
-                        .add_pass<Out<FrameTimes>>(
-                            {"timing", "ms per frame: median of " + std::to_string(scene.outputs.timing_frames) +
-                                           " frames between glFinish calls",
-                             Processor::gpu},
-                            [&](Builder& b, Out<FrameTimes>& d) {
-                                frame.declare(b);
-                                d.out = b.produce<FrameTimes>("frame-times");
-                            },
-                            [run, frame](const Out<FrameTimes>& d, Resources& r) {
-                                r.emplace(d.out, (frame.bind(run->renderer(), r), run->renderer().time_frames(run->scene.outputs.timing_frames)));
-                            })
-                        .out;
-    h.metrics = graph
-                    .add_pass<Out<Json>>(
-                        {"metrics", "per sphere: RMSE and mean |difference| of linear radiance inside the sphere mask", Processor::cpu},
-                        [&](Builder& b, Out<Json>& d) {
-                            b.read(h.beauty);
-                            b.read(h.reference);
-                            b.read(h.localization);
-                            if (h.reference_standard_error) b.read(*h.reference_standard_error);
-                            d.out = b.produce<Json>("metrics");
-                        },
-                        [run, h](const Out<Json>& d, Resources& r) {
-                            r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.localization),
-                                                        h.reference_standard_error ? &r.get(*h.reference_standard_error) : nullptr));
-                        })
-                    .out;
-
+        h.difference = graph
+                           .add_pass<Out<Image>>(
+                               {"difference", "|beauty − reference| per pixel", Processor::cpu},
+                               [&](Builder& b, Out<Image>& d) {
+                                   b.read(h.beauty);
+                                   b.read(h.reference);
+                                   d.out = b.produce<Image>("difference-image");
+                               },
+                               [beauty = h.beauty, reference = h.reference](const Out<Image>& d, Resources& r) {
+                                   r.emplace(d.out, absolute_difference(r.get(beauty), r.get(reference).image));
+                               })
+                           .out;
+        h.frame_times = graph
+                            .add_pass<Out<FrameTimes>>(
+                                {"timing",
+                                 "ms per frame: median of " + std::to_string(scene.outputs.timing_frames) +
+                                     " frames between glFinish calls",
+                                 Processor::gpu},
+                                [&](Builder& b, Out<FrameTimes>& d) {
+                                    frame.declare(b);
+                                    d.out = b.produce<FrameTimes>("frame-times");
+                                },
+                                [run, frame](const Out<FrameTimes>& d, Resources& r) {
+                                    r.emplace(d.out, (frame.bind(run->renderer(), r),
+                                                      run->renderer().time_frames(run->scene.outputs.timing_frames)));
+                                })
+                            .out;
+        h.metrics =
+            graph
+                .add_pass<Out<Json>>(
+                    {"metrics", "per sphere: RMSE and mean |difference| of linear radiance inside the sphere mask",
+                     Processor::cpu},
+                    [&](Builder& b, Out<Json>& d) {
+                        b.read(h.beauty);
+                        b.read(h.reference);
+                        b.read(h.localization);
+                        if (h.reference_standard_error) b.read(*h.reference_standard_error);
+                        d.out = b.produce<Json>("metrics");
+                    },
+                    [run, h](const Out<Json>& d, Resources& r) {
+                        r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.localization),
+                                                      h.reference_standard_error ? &r.get(*h.reference_standard_error)
+                                                                                 : nullptr));
+                    })
+                .out;
     }
 };
 

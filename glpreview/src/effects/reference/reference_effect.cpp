@@ -2,12 +2,12 @@
 
 #include <optional>
 
+#include "glpreview/effects/registry.hpp"
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/monte_carlo_reference.hpp"
 #include "glpreview/render/preview_passes.hpp"
-#include "glpreview/effects/registry.hpp"
 #include "libfit/base/text.hpp"
 
 namespace metalfit::glpreview {
@@ -18,7 +18,6 @@ using graph::Handle;
 using graph::Out;
 using graph::Processor;
 using graph::Resources;
-
 
 // What the registered effects add to the references of `scene` (lights), or nothing.
 std::optional<CpuLighting> cpu_lighting(const Scene& scene) {
@@ -37,8 +36,8 @@ std::optional<CpuLighting> cpu_lighting(const Scene& scene) {
             if (const std::optional<RGB> emitted = effect->cpu_emitter(scene, origin, dir)) return emitted;
         return std::nullopt;
     };
-    all.sphere_light = [&scene, lighting](std::size_t sphere, Vec3 p, Vec3 n, Vec3 v, const SphereFresnel& fresnel, int samples,
-                                          std::uint64_t seed) {
+    all.sphere_light = [&scene, lighting](std::size_t sphere, Vec3 p, Vec3 n, Vec3 v, const SphereFresnel& fresnel,
+                                          int samples, std::uint64_t seed) {
         RadianceEstimate sum;
         for (const Effect* effect : lighting) {
             const RadianceEstimate e = effect->cpu_sphere_light(scene, sphere, p, n, v, fresnel, samples, seed);
@@ -61,62 +60,67 @@ public:
         const SceneInputs& in = g.in;
         PreviewRun* run = g.run;
         PreviewHandles& h = g.handles;
-    // cpu-reference: the ground truth.
-    h.reference = graph
-                      .add_pass<Out<ReferenceRender>>(
-                          {"cpu-reference", "analytic ray tracing of the same scene: exact mirror reflections, same Fresnel, same camera",
-                           Processor::cpu},
-                          [&](Builder& b, Out<ReferenceRender>& d) {
-                              b.read(in.camera);
-                              if (h.environment.equirect_image) b.read(*h.environment.equirect_image);
-                              if (h.luts) b.read(*h.luts);
-                              if (h.parameters) b.read(*h.parameters);
-                              d.out = b.produce<ReferenceRender>("reference-image");
-                          },
-                          [run, equirect = h.environment.equirect_image](const Out<ReferenceRender>& d, Resources& r) {
-                              const std::optional<CpuLighting> lighting = cpu_lighting(run->scene);
-                              const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr,
-                                                             lighting ? lighting->surface : SurfaceLight{});
-                              r.emplace(d.out, render_reference(run->scene, run->fresnel, tracer, run->threads, lighting ? &*lighting : nullptr));
-                          })
-                      .out;
-    // monte-carlo-reference: the rough spheres' lobes by Monte Carlo, over the analytic reference's pixels.
-    if (f.monte_carlo_reference) {
-        struct Data {
-            Handle<ReferenceRender> analytic, out;
-            Handle<Image> standard_error;
-        };
-        std::vector<std::string> rough;
-        for (std::size_t i = 0; i < scene.spheres.size(); ++i)
-            if (scene.spheres[i].rough()) rough.push_back(std::to_string(i));
-        const Data& mc = graph.add_pass<Data>(
-            {"monte-carlo-reference",
-             "sphere(s) " + join(rough) + " rough: the GGX lobe by Monte Carlo (" + std::to_string(scene.outputs.reference_samples) +
-                 " visible-normal samples per pixel, fixed seed), exact reflected rays, same Fresnel; standard error beside it",
-             Processor::cpu},
-            [&](Builder& b, Data& d) {
-                b.read(in.camera);
-                if (h.environment.equirect_image) b.read(*h.environment.equirect_image);
-                d.analytic = b.read(h.reference);
-                d.out = b.produce<ReferenceRender>("monte-carlo-reference-image");
-                d.standard_error = b.produce<Image>("reference-standard-error");
-            },
-            [run, equirect = h.environment.equirect_image](const Data& d, Resources& r) {
-                const std::optional<CpuLighting> lighting = cpu_lighting(run->scene);
-                const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr,
-                                               lighting ? lighting->surface : SurfaceLight{});
-                MonteCarloReference result = render_monte_carlo_reference(run->scene, run->fresnel, tracer, r.get(d.analytic),
-                                                                          run->scene.outputs.reference_samples, run->threads,
-                                                                          lighting ? &*lighting : nullptr);
-                r.emplace(d.out, std::move(result.render));
-                r.emplace(d.standard_error, std::move(result.standard_error));
-            });
-        h.reference = mc.out;
-        h.reference_standard_error = mc.standard_error;
-    } else {
-        graph.skip("monte-carlo-reference", f.cpu_reference ? "every sphere is a mirror: the analytic reference is exact"
-                                                            : "no reference, difference or metrics asked for");
-    }
+        // cpu-reference: the ground truth.
+        h.reference =
+            graph
+                .add_pass<Out<ReferenceRender>>(
+                    {"cpu-reference",
+                     "analytic ray tracing of the same scene: exact mirror reflections, same Fresnel, same camera",
+                     Processor::cpu},
+                    [&](Builder& b, Out<ReferenceRender>& d) {
+                        b.read(in.camera);
+                        if (h.environment.equirect_image) b.read(*h.environment.equirect_image);
+                        if (h.luts) b.read(*h.luts);
+                        if (h.parameters) b.read(*h.parameters);
+                        d.out = b.produce<ReferenceRender>("reference-image");
+                    },
+                    [run, equirect = h.environment.equirect_image](const Out<ReferenceRender>& d, Resources& r) {
+                        const std::optional<CpuLighting> lighting = cpu_lighting(run->scene);
+                        const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr,
+                                                       lighting ? lighting->surface : SurfaceLight{});
+                        r.emplace(d.out, render_reference(run->scene, run->fresnel, tracer, run->threads,
+                                                          lighting ? &*lighting : nullptr));
+                    })
+                .out;
+        // monte-carlo-reference: the rough spheres' lobes by Monte Carlo, over the analytic reference's pixels.
+        if (f.monte_carlo_reference) {
+            struct Data {
+                Handle<ReferenceRender> analytic, out;
+                Handle<Image> standard_error;
+            };
+            std::vector<std::string> rough;
+            for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+                if (scene.spheres[i].rough()) rough.push_back(std::to_string(i));
+            const Data& mc = graph.add_pass<Data>(
+                {"monte-carlo-reference",
+                 "sphere(s) " + join(rough) + " rough: the GGX lobe by Monte Carlo (" +
+                     std::to_string(scene.outputs.reference_samples) +
+                     " visible-normal samples per pixel, fixed seed), exact reflected rays, same Fresnel; standard error beside it",
+                 Processor::cpu},
+                [&](Builder& b, Data& d) {
+                    b.read(in.camera);
+                    if (h.environment.equirect_image) b.read(*h.environment.equirect_image);
+                    d.analytic = b.read(h.reference);
+                    d.out = b.produce<ReferenceRender>("monte-carlo-reference-image");
+                    d.standard_error = b.produce<Image>("reference-standard-error");
+                },
+                [run, equirect = h.environment.equirect_image](const Data& d, Resources& r) {
+                    const std::optional<CpuLighting> lighting = cpu_lighting(run->scene);
+                    const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr,
+                                                   lighting ? lighting->surface : SurfaceLight{});
+                    MonteCarloReference result = render_monte_carlo_reference(
+                        run->scene, run->fresnel, tracer, r.get(d.analytic), run->scene.outputs.reference_samples,
+                        run->threads, lighting ? &*lighting : nullptr);
+                    r.emplace(d.out, std::move(result.render));
+                    r.emplace(d.standard_error, std::move(result.standard_error));
+                });
+            h.reference = mc.out;
+            h.reference_standard_error = mc.standard_error;
+        } else {
+            graph.skip("monte-carlo-reference", f.cpu_reference
+                                                    ? "every sphere is a mirror: the analytic reference is exact"
+                                                    : "no reference, difference or metrics asked for");
+        }
     }
 };
 

@@ -2,9 +2,9 @@
 
 #include <stdexcept>
 
-#include "render/embedded_shaders.hpp"
 #include "glpreview/gl/uniforms.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
+#include "render/embedded_shaders.hpp"
 
 namespace metalfit::glpreview {
 
@@ -28,7 +28,9 @@ class ReflectionEffect final : public Effect {
 public:
     std::string_view name() const override { return "reflection"; }
 
-    std::vector<const char*> sphere_keys() const override { return {"reflection", "strategy", "iterations", "tolerance"}; }
+    std::vector<const char*> sphere_keys() const override {
+        return {"reflection", "strategy", "iterations", "tolerance"};
+    }
 
     void read_sphere(const SceneReader& r, Sphere& s, Scene& scene) const override {
         r.read_enum("reflection", s.reflection,
@@ -46,10 +48,12 @@ public:
         if (s.reflection != ReflectionMode::distance_impostor)
             for (const char* key : {"strategy", "iterations", "tolerance"})
                 if (r.has(key))
-                    scene.warnings.push_back(r.file().string() + ": " + r.field(key) + ": ignored: only the distance impostor refines (reflection '" +
+                    scene.warnings.push_back(r.file().string() + ": " + r.field(key) +
+                                             ": ignored: only the distance impostor refines (reflection '" +
                                              to_string(s.reflection) + "')");
         if (s.reflection != ReflectionMode::classic && !scene.environment.captured())
-            r.fail(r.field("reflection"), "an equirect environment is at infinity without a proxy: only 'classic' reflections");
+            r.fail(r.field("reflection"),
+                   "an equirect environment is at infinity without a proxy: only 'classic' reflections");
         if (s.reflection == ReflectionMode::box_parallax && !scene.environment.parallax_box())
             r.fail(r.field("reflection"), "box-parallax needs a room environment or an equirect with a box proxy");
     }
@@ -77,7 +81,8 @@ std::vector<ProbeResult> probe_reflection_lookups(GpuRenderer& renderer, const S
     const int count = static_cast<int>(rays.size());
     set_uniform(p.id(), "u_count", count);
     std::vector<float> input;
-    for (const auto& [x, r] : rays) input.insert(input.end(), {float(x.x), float(x.y), float(x.z), 0.f, float(r.x), float(r.y), float(r.z), 0.f});
+    for (const auto& [x, r] : rays)
+        input.insert(input.end(), {float(x.x), float(x.y), float(x.z), 0.f, float(r.x), float(r.y), float(r.z), 0.f});
     const gl::Buffer input_buffer = gl::create_buffer(), output_buffer = gl::create_buffer();
     const GLuint buffers[2] = {input_buffer.id(), output_buffer.id()};
     glNamedBufferStorage(buffers[0], static_cast<GLsizeiptr>(input.size() * sizeof(float)), input.data(), 0);

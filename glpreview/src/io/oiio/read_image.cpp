@@ -36,11 +36,13 @@ std::string read_rgb(const char* file, Image& image, bool header_only) {
     auto copy = [&](const std::vector<float>& band, int y0, int rows) {
         for (std::size_t i = 0; i < static_cast<std::size_t>(rows) * spec.width; ++i)
             for (int c = 0; c < 3; ++c)
-                image.rgb[3 * (static_cast<std::size_t>(y0) * spec.width + i) + c] = band[i * channels + std::min(c, channels - 1)];
+                image.rgb[3 * (static_cast<std::size_t>(y0) * spec.width + i) + c] =
+                    band[i * channels + std::min(c, channels - 1)];
     };
     if (spec.tile_width > 0) {  // tiled (TIFF): the whole image at once
         std::vector<float> pixels(row * spec.height);
-        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data())) return "cannot read the image: " + in->geterror();
+        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
+            return "cannot read the image: " + in->geterror();
         copy(pixels, 0, spec.height);
         return {};
     }
@@ -49,7 +51,8 @@ std::string read_rgb(const char* file, Image& image, bool header_only) {
     for (int y = 0; y < spec.height; y += band_rows) {
         const int rows = std::min(band_rows, spec.height - y);
         band.resize(row * rows);
-        if (!in->read_scanlines(0, 0, spec.y + y, spec.y + y + rows, 0, 0, channels, OIIO::TypeDesc::FLOAT, band.data()))
+        if (!in->read_scanlines(0, 0, spec.y + y, spec.y + y + rows, 0, 0, channels, OIIO::TypeDesc::FLOAT,
+                                band.data()))
             return "cannot read the image: " + in->geterror();
         copy(band, y, rows);
     }

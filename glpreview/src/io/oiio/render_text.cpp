@@ -20,7 +20,8 @@ struct FontMissing : std::runtime_error {
 int text_width(const std::string& text, int size) {
     const OIIO::ROI extent = OIIO::ImageBufAlgo::text_size(text, size, kLabelFont);
     if (!extent.defined())
-        throw FontMissing("OpenImageIO's font search did not find it (Debian package fonts-dejavu-core; or --sheet-labels off)");
+        throw FontMissing(
+            "OpenImageIO's font search did not find it (Debian package fonts-dejavu-core; or --sheet-labels off)");
     return extent.width();
 }
 
@@ -47,7 +48,8 @@ std::string draw_text(Image& image, const std::vector<TextBox>& boxes) try {
         // Baseline near the box's bottom, leaving room for descenders (about a fifth of the size).
         const int baseline = box.y + box.height - std::max(1, (box.height - size) / 2) - size / 5 - y0;
         if (!OIIO::ImageBufAlgo::render_text(patch, box.x + 1 - x0, baseline, box.text, size, kLabelFont, white,
-                                             OIIO::ImageBufAlgo::TextAlignX::Left, OIIO::ImageBufAlgo::TextAlignY::Baseline, 1))
+                                             OIIO::ImageBufAlgo::TextAlignX::Left,
+                                             OIIO::ImageBufAlgo::TextAlignY::Baseline, 1))
             return patch.geterror();
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {

@@ -27,8 +27,8 @@ struct ThinFilm {
 };
 
 struct ClearCoat {
-    LayerMaterial material;                 // n_c ≥ 1 (its k, if any, absorbs only when a thickness is given)
-    std::optional<double> thickness_nm;     // the path of the absorption; absent: a clear coat
+    LayerMaterial material;              // n_c ≥ 1 (its k, if any, absorbs only when a thickness is given)
+    std::optional<double> thickness_nm;  // the path of the absorption; absent: a clear coat
 };
 
 struct LayerStack {

@@ -23,7 +23,7 @@ template <class T>
 struct StackOptics {
     std::complex<T> metal{1, 0};  // η = n + ik of the substrate
     bool has_film = false;
-    std::complex<T> film{1, 0};    // η_f = n_f + i k_f
+    std::complex<T> film{1, 0};           // η_f = n_f + i k_f
     T film_thickness_per_wavelength = 0;  // d / λ (both in nm)
     bool has_coat = false;
     T coat_index = 1;       // n_c ≥ 1, real: the coat's interfaces are those of a clear dielectric

@@ -33,8 +33,8 @@ class ReferenceCurve {
 public:
     // Throws InputError naming the material's file (or its film's or coat's) when its data do not cover 360–830 nm
     // (and options.out_of_range is error).
-    ReferenceCurve(const Material& material, const Colorimetry& colorimetry,
-                   ColorSpaceConverter converter, SpectralOptions options = {});
+    ReferenceCurve(const Material& material, const Colorimetry& colorimetry, ColorSpaceConverter converter,
+                   SpectralOptions options = {});
 
     RGB operator()(double mu) const;                                // white balanced
     XYZ xyz(double mu) const;                                       // before the colour space
