@@ -8,12 +8,13 @@ import os
 import re
 import sys
 
-# The stage order of each library, as docs/development.md draws it.
+# The stage order of each library, as docs/development.md draws it. A tuple is one stage of several folders:
+# glpreview's effects are the renderer's plug-ins (the renderer calls the registry, each effect uses the renderer).
 LIBRARIES = {
     "libfit": (["libfit/include/libfit", "libfit/src"], "libfit",
                ["base", "spectral", "io", "optics", "color", "reference", "models", "fit", "export", "report"]),
     "glpreview": (["glpreview/include/glpreview", "glpreview/src"], "glpreview",
-                  ["scene", "graph", "gl", "io", "render"]),
+                  ["scene", "graph", "gl", "io", ("render", "effects")]),
 }
 
 
@@ -27,7 +28,9 @@ def includes(path):
 
 def main(root):
     upward = 0
-    for name, (trees, prefix, order) in LIBRARIES.items():
+    for name, (trees, prefix, stages) in LIBRARIES.items():
+        # folder → its stage's position
+        order = {folder: i for i, stage in enumerate(stages) for folder in (stage if isinstance(stage, tuple) else (stage,))}
         seen = 0
         for tree in trees:
             for folder, _, files in os.walk(os.path.join(root, tree)):
@@ -41,7 +44,7 @@ def main(root):
                         parts = target.split("/")
                         if parts[0] == prefix:
                             parts = parts[1:]
-                        if len(parts) > 1 and parts[0] in order and order.index(parts[0]) > order.index(stage):
+                        if len(parts) > 1 and parts[0] in order and order[parts[0]] > order[stage]:
                             print(f"{os.path.relpath(path, root)}:{number}: {stage}/ includes {target}, a later stage")
                             upward += 1
         if seen == 0:

@@ -14,11 +14,11 @@
 #include <numbers>
 
 #include "glpreview/gl/gl_context.hpp"
-#include "glpreview/graph/features.hpp"
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/dfg_table.hpp"
 #include "glpreview/render/environment.hpp"
+#include "glpreview/render/features.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/monte_carlo_reference.hpp"
 #include "glpreview/render/preview.hpp"

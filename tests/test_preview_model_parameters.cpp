@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "glpreview/gl/gl_context.hpp"
-#include "glpreview/graph/features.hpp"
+#include "glpreview/render/features.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
 #include "glpreview/render/sphere_shader.hpp"

@@ -9,9 +9,9 @@
 #include <cstdio>
 
 #include "glpreview/gl/gl_context.hpp"
-#include "glpreview/graph/features.hpp"
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/render/environment.hpp"
+#include "glpreview/render/features.hpp"
 #include "glpreview/render/plan.hpp"
 #include "glpreview/render/preview.hpp"
 #include "glpreview/render/sphere_metrics.hpp"

@@ -3,6 +3,7 @@
 #include "glpreview/effects/registry.hpp"
 
 #include <array>
+#include <vector>
 
 #include "environment/environment_effect.hpp"
 #include "fresnel/fresnel_effect.hpp"
@@ -29,6 +30,11 @@ std::span<const Effect* const> all_effects() {
         &metrics_effect(),                   // after the reference and the localization frame it reads
     };
     return effects;
+}
+
+std::span<const SceneKeys* const> scene_key_readers() {
+    static const std::vector<const SceneKeys*> readers(all_effects().begin(), all_effects().end());
+    return readers;
 }
 
 }  // namespace metalfit::glpreview

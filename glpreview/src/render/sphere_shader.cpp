@@ -2,7 +2,7 @@
 
 #include "embedded_shaders.hpp"
 #include "glpreview/effects/registry.hpp"
-#include "glpreview/graph/features.hpp"
+#include "glpreview/render/features.hpp"
 
 namespace metalfit::glpreview {
 

@@ -12,7 +12,7 @@
 #include <sstream>
 #include <string_view>
 
-#include "glpreview/effects/registry.hpp"
+#include "glpreview/scene/scene_keys.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/io/catalog.hpp"
 
@@ -246,7 +246,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
     Scene scene;
     scene.file = file;
     std::vector<const char*> top_keys{"image", "space", "camera", "spheres", "outputs"};
-    for (const Effect* effect : all_effects())
+    for (const SceneKeys* effect : scene_key_readers())
         for (const char* key : effect->scene_keys()) top_keys.push_back(key);
     Reader top(root, "", file, top_keys);
     if (top.has("space")) top.read("space", scene.space);
@@ -269,18 +269,18 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
             r.fail("camera.up", "is parallel to the viewing direction");
     }
     // The keys the registered effects read (the environment, ...), before the spheres.
-    for (const Effect* effect : all_effects()) effect->read_scene(top, scene);
+    for (const SceneKeys* effect : scene_key_readers()) effect->read_scene(top, scene);
     if (!top.has("spheres")) top.fail("spheres", "missing (at least one sphere)");
     top.each("spheres", [&](const json& v, const std::string& path) {
         std::vector<const char*> keys{"center", "radius"};
-        for (const Effect* effect : all_effects())
+        for (const SceneKeys* effect : scene_key_readers())
             for (const char* key : effect->sphere_keys()) keys.push_back(key);
         Reader r(v, path, file, keys);
         Sphere s;
         if (!r.has("center")) r.fail(r.field("center"), "missing");
         r.read("center", s.center);
         r.read("radius", s.radius, 1e-4, kSceneBig);
-        for (const Effect* effect : all_effects()) effect->read_sphere(r, s, scene);
+        for (const SceneKeys* effect : scene_key_readers()) effect->read_sphere(r, s, scene);
         if (scene.spheres.size() >= kMaxSpheres)
             top.fail("spheres", "at most " + std::to_string(kMaxSpheres) + " spheres");
         scene.spheres.push_back(s);
@@ -303,7 +303,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         if (!o.exr && !o.png && (o.beauty || o.reference || o.difference))
             r.fail("outputs.exr", "images asked for but neither exr nor png");
     }
-    for (const Effect* effect : all_effects()) effect->check_scene(top, scene);
+    for (const SceneKeys* effect : scene_key_readers()) effect->check_scene(top, scene);
     for (std::string& w : placement_warnings(scene)) scene.warnings.push_back(std::move(w));
     return scene;
 }

@@ -9,12 +9,13 @@
 #include <string_view>
 #include <vector>
 
-#include "glpreview/graph/features.hpp"
 #include "glpreview/graph/pass_graph.hpp"
 #include "glpreview/render/blackboard.hpp"
 #include "glpreview/render/cpu_lighting.hpp"
+#include "glpreview/render/features.hpp"
 #include "glpreview/render/shader_builder.hpp"
 #include "glpreview/scene/scene.hpp"
+#include "glpreview/scene/scene_keys.hpp"
 #include "glpreview/scene/scene_reader.hpp"
 
 namespace metalfit::glpreview {
@@ -58,19 +59,11 @@ struct PreviewGraph {
     PreviewHandles& handles;
 };
 
-class Effect {
+// An effect reads its own scene keys (SceneKeys: scene_keys, read_scene, sphere_keys, read_sphere, check_scene).
+class Effect : public SceneKeys {
 public:
     virtual ~Effect() = default;
     virtual std::string_view name() const = 0;
-    // The scene keys this effect reads and validates (errors name the file and the field, as the scene's own):
-    // top-level keys, read into the scene before its spheres, and keys of each sphere, read after the sphere's
-    // centre and radius (the sphere is not in scene.spheres yet).
-    virtual std::vector<const char*> scene_keys() const { return {}; }
-    virtual void read_scene(const SceneReader& /*top*/, Scene&) const {}
-    virtual std::vector<const char*> sphere_keys() const { return {}; }
-    virtual void read_sphere(const SceneReader& /*sphere*/, Sphere&, Scene&) const {}
-    // Checks that need the whole scene (a light inside a sphere), after every key was read; errors as above.
-    virtual void check_scene(const SceneReader& /*top*/, const Scene&) const {}
     // Adds this effect's defines, GLSL, samplers and lobe to `builder` where it applies to the sphere.
     virtual void declare_sphere(const SphereShader&, ShaderBuilder&) const {}
     // Sets this effect's uniforms and binds its textures for one sphere's draw.

@@ -1,4 +1,4 @@
-// Plan first, then run only what the scene needs (docs/preview.md): Scene → Features (graph/features.hpp, a pure
+// Plan first, then run only what the scene needs (docs/preview.md): Scene → Features (render/features.hpp, a pure
 // function), then the preview's pass graph (render/preview_passes.hpp) compiled from the requested outputs, where
 // passes nobody reads are culled. A Plan is what --explain prints of the compiled graph.
 #pragma once
@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "glpreview/graph/features.hpp"
 #include "glpreview/graph/pass_graph.hpp"
+#include "glpreview/render/features.hpp"
 #include "glpreview/scene/scene.hpp"
 
 namespace metalfit::glpreview {

@@ -1,4 +1,4 @@
-// The passes of a preview, added to a pass graph from the scene's features (graph/features.hpp). Each add_*
+// The passes of a preview, added to a pass graph from the scene's features (render/features.hpp). Each add_*
 // function is one pass: its setup declares what it reads and writes, its execute does the work through a
 // PreviewRun. With a null run the graph can be compiled and explained but not executed (build_plan, --explain).
 #pragma once
@@ -12,12 +12,12 @@
 #include <nlohmann/json.hpp>
 
 #include "glpreview/gl/gl_context.hpp"
-#include "glpreview/graph/features.hpp"
 #include "glpreview/graph/pass_graph.hpp"
 #include "glpreview/io/image.hpp"
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/dfg_table.hpp"
+#include "glpreview/render/features.hpp"
 #include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/gpu_resources.hpp"

@@ -1,4 +1,4 @@
-#include "glpreview/graph/features.hpp"
+#include "glpreview/render/features.hpp"
 
 #include <algorithm>
 #include <cmath>
