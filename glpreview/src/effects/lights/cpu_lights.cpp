@@ -44,6 +44,22 @@ Vec3 cone_direction(Vec3 w, double cos_max, double u1, double u2) {
     return normalize(frame.to_world({sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t}));
 }
 
+// The cone a sphere light subtends from p: its axis, the cos of its half angle and its solid angle.
+struct LightCone {
+    Vec3 axis;
+    double cos_max = 1, solid_angle = 0;
+
+    LightCone(const Light& light, Vec3 p) {
+        const Vec3 to = light.position - p;
+        const double d = length(to);
+        axis = (1.0 / d) * to;
+        cos_max = std::sqrt(std::max(0.0, 1.0 - light.radius * light.radius / (d * d)));
+        solid_angle = 2 * kPi * (1 - cos_max);
+    }
+    // A direction of the cone for (u1, u2) ∈ [0, 1)², uniform in solid angle.
+    Vec3 direction(double u1, double u2) const { return cone_direction(axis, cos_max, u1, u2); }
+};
+
 // Where a ray from p along unit dir meets the sphere light (its first hit), or ∞.
 double light_distance(const Light& light, Vec3 p, Vec3 dir) {
     const Vec3 oc = p - light.position;
@@ -92,20 +108,17 @@ RGB light_on_surface(const Scene& scene, const Lights& lights, const RGB& albedo
     for (const Light& light : lights.lights) {
         if (light.type == LightType::sphere) {
             // ∫ L cos θ V dω over the light's cone: a fixed spiral of 64 directions (uniform in solid angle).
-            const Vec3 to = light.position - p;
-            const double d = length(to);
-            const double cos_max = std::sqrt(std::max(0.0, 1.0 - light.radius * light.radius / (d * d)));
-            const double solid_angle = 2 * kPi * (1 - cos_max);
+            const LightCone cone(light, p);
             constexpr int kSpiral = 64;
             double visible_cos = 0;
             for (int k = 0; k < kSpiral; ++k) {
                 const double u1 = (k + 0.5) / kSpiral, u2 = std::fmod(k * 0.6180339887498949, 1.0);
-                const Vec3 dir = cone_direction((1.0 / d) * to, cos_max, u1, u2);
+                const Vec3 dir = cone.direction(u1, u2);
                 const double cos_i = dot(n, dir);
                 if (cos_i <= 0) continue;
                 if (!occluded(scene, p, dir, light_distance(light, p, dir))) visible_cos += cos_i;
             }
-            sum = sum + (solid_angle * visible_cos / kSpiral) * light.power();
+            sum = sum + (cone.solid_angle * visible_cos / kSpiral) * light.power();
             continue;
         }
         Vec3 l;
@@ -153,13 +166,11 @@ RadianceEstimate specular_from_lights(const Scene& scene, const Lights& lights, 
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     for (const Light& light : lights.lights) {
         if (light.type == LightType::sphere) {
-            const Vec3 to = light.position - p;
-            const double d = length(to);
-            const double cos_max = std::sqrt(std::max(0.0, 1.0 - light.radius * light.radius / (d * d)));
-            const double solid_angle = 2 * kPi * (1 - cos_max);
+            const LightCone cone(light, p);
+            const double solid_angle = cone.solid_angle;
             RGB sum{0, 0, 0}, sum2{0, 0, 0};
             for (int k = 0; k < samples; ++k) {
-                const Vec3 dir = cone_direction((1.0 / d) * to, cos_max, uniform(random), uniform(random));
+                const Vec3 dir = cone.direction(uniform(random), uniform(random));
                 if (dot(n, dir) <= 0 || occluded(scene, p, dir, light_distance(light, p, dir), sphere)) continue;
                 const RGB f = brdf_cos(dir);
                 const RGB x{solid_angle * f.r * light.power().r, solid_angle * f.g * light.power().g,
