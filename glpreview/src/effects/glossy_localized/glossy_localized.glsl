@@ -10,24 +10,11 @@
 uniform sampler2D u_area_radiance;  // 6M × M: average radiance
 uniform sampler2D u_area_position;  // 6M × M: average position relative to the reference point; a: Δω_i from o
 uniform float u_roughness;
-const float LOCALIZED_PI = 3.14159265358979;
-float smith_lambda(float cos_t, float a2) {
-    float c2 = max(cos_t * cos_t, 1e-12);
-    return 0.5 * (-1.0 + sqrt(1.0 + a2 * (1.0 - c2) / c2));
-}
-// f_r cos θ_i for light direction l and half vector H, without the Fresnel: D G2 / (4 n·v).
-float lobe(vec3 N, vec3 H, vec3 l, float a2, float lambda_v, float n_v) {
-    float n_h = dot(N, H);
-    float d = n_h * n_h * (a2 - 1.0) + 1.0;
-    float D = a2 / (LOCALIZED_PI * d * d);
-    float G2 = 1.0 / (1.0 + lambda_v + smith_lambda(dot(N, l), a2));
-    return D * G2 / (4.0 * n_v);
-}
 vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
     int M = textureSize(u_area_radiance, 0).y;
     const int k = LOCALIZED_SUBDIVISIONS;
     float a = u_roughness * u_roughness, a2 = a * a;
-    float lambda_v = smith_lambda(mu, a2);
+    float lambda_v = ggx_smith_lambda(mu, a2);
     float n_v = max(mu, 1e-4);
     float step_st = 2.0 / float(M), step_sub = step_st / float(k);
     vec3 sum = vec3(0.0);
@@ -50,7 +37,7 @@ vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
                 if (dot(N, l) <= 0.0) continue;
                 vec3 H = normalize(V + l);
                 sum += texelFetch(u_area_radiance, texel, 0).rgb * fresnel(clamp(dot(V, H), 0.0, 1.0)) *
-                       (lobe(N, H, l, a2, lambda_v, n_v) * dw);
+                       (ggx_lobe(N, H, l, a2, lambda_v, n_v) * dw);
 #else
                 // k × k sub-lights: the sub-rectangles' centre directions d at the light's distance, p = r d; their
                 // solid angles from o in proportion to 1 / |c|³ (c the unnormalised direction; equal areas in face
@@ -72,12 +59,12 @@ vec3 localized_glossy(vec3 x, vec3 N, vec3 V, float mu) {
                         light_total += dw;
                         if (dot(N, l) <= 0.0) continue;
                         vec3 H = normalize(V + l);
-                        light_sum += fresnel(clamp(dot(V, H), 0.0, 1.0)) * (lobe(N, H, l, a2, lambda_v, n_v) * dw);
+                        light_sum += fresnel(clamp(dot(V, H), 0.0, 1.0)) * (ggx_lobe(N, H, l, a2, lambda_v, n_v) * dw);
                     }
                 float scale = position.a / weights;
                 total += scale * light_total;
                 sum += texelFetch(u_area_radiance, texel, 0).rgb * (scale * light_sum);
 #endif
             }
-    return sum * (4.0 * LOCALIZED_PI / total);
+    return sum * (4.0 * GGX_PI / total);
 }

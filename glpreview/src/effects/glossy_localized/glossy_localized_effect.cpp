@@ -48,6 +48,7 @@ public:
             .define("LOCALIZED_SUBDIVISIONS",
                     std::to_string(localized_subdivisions(sphere.roughness, sphere.localized_size)))
             .source(shader_text("cube_face.glsl"))
+            .source(shader_text("ggx.glsl"))
             .source(shader_text("glossy_localized.glsl"))
             .sampler("u_area_radiance")
             .sampler("u_area_position")

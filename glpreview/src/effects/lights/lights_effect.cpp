@@ -65,7 +65,9 @@ public:
         if (!lights_of(shader.scene) || !shader.sphere.rough() || shader.diagnostics) return;
         // Mirrors get no highlight of a point, spot or directional light (a set of measure zero) and see sphere
         // lights through REFLECTED_EMITTER; rough spheres add the lights' direct specular to their lobe.
-        builder.source(shader_text("lights_specular.glsl")).add_radiance("lights_specular(p, N, -d, u_roughness)");
+        builder.source(shader_text("ggx.glsl"))
+            .source(shader_text("lights_specular.glsl"))
+            .add_radiance("lights_specular(p, N, -d, u_roughness)");
     }
 
     void set_program_uniforms(const Scene& scene, GLuint p) const override {

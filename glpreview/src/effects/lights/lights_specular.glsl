@@ -1,18 +1,16 @@
-// The direct specular of rough spheres from the scene's lights (lights effect; lights.glsl comes first). The
-// sphere's Fresnel is defined after this file.
+// The direct specular of rough spheres from the scene's lights (lights effect; lights.glsl and ggx.glsl come first).
+// The sphere's Fresnel is defined after this file.
 vec3 fresnel(float mu);
 
-float lights_smith_lambda(float cos_t, float a2) {
-    float c2 = max(cos_t * cos_t, 1e-12);
-    return 0.5 * (-1.0 + sqrt(1.0 + a2 * (1.0 - c2) / c2));
-}
 // The direct specular of a rough sphere at p (unit normal N, unit V towards the viewer): per light
 // F(v·h) D(h) G2(l, v) / (4 n·v n·l) · E n·l · shadow. Sphere lights by a representative point (Karis 2013, "Real
 // Shading in Unreal Engine 4"): l towards the light's point nearest the mirror ray, D normalised by (α / α')² with
 // α' = α + r / (2 d), so that one GGX evaluation per light keeps the highlight's size and energy.
 vec3 lights_specular(vec3 p, vec3 N, vec3 V, float roughness) {
     float a = max(roughness * roughness, 1e-3);
+    float a2 = a * a;
     float n_v = max(dot(N, V), 1e-4);
+    float lambda_v = ggx_smith_lambda(n_v, a2);
     vec3 R = reflect(-V, N);
     vec3 sum = vec3(0.0);
     for (int i = 0; i < u_light_count; ++i) {
@@ -30,13 +28,9 @@ vec3 lights_specular(vec3 p, vec3 N, vec3 V, float roughness) {
         }
         float n_l = dot(N, l);
         if (n_l <= 0.0) continue;
-        vec3 H = normalize(V + l);
-        float n_h = max(dot(N, H), 0.0);
-        float a2 = a * a;
-        float den = n_h * n_h * (a2 - 1.0) + 1.0;
-        float D = a2 / (LIGHTS_PI * den * den) * normalisation;
-        float G2 = 1.0 / (1.0 + lights_smith_lambda(n_v, a2) + lights_smith_lambda(n_l, a2));
-        sum += fresnel(clamp(dot(V, H), 0.0, 1.0)) * E * (D * G2 / (4.0 * n_v) * lights_shadow(i, p, N));
+        vec3 H = normalize(V + l);  // n·h > 0: n·v and n·l are
+        sum += fresnel(clamp(dot(V, H), 0.0, 1.0)) * E *
+               (ggx_lobe(N, H, l, a2, lambda_v, n_v) * normalisation * lights_shadow(i, p, N));
     }
     return sum;
 }
