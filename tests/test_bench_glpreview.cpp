@@ -21,8 +21,8 @@ const char* kShaders =
   {"model": "reference-lut", "ms_per_frame": 0.3, "ratio_to_conductor_rgb": 0.6}]})";
 
 const char* kLocalization = R"({"renderer": "fake GL", "size": [700, 700], "rooms": [{"room": "difficult", "rows": [
-  {"mode": "classic", "strategy": null, "iterations": 0, "tolerance": null, "mean_iterations": 0.0, "ms_per_frame": 1.0, "ratio_to_classic": 1.0, "ratio_noise": 0.0, "rmse": 0.2, "mean_abs": 0.1},
-  {"mode": "distance-impostor", "strategy": "illinois", "iterations": 8, "tolerance": 0.0001, "mean_iterations": 3.5, "ms_per_frame": 2.0, "ratio_to_classic": 2.0, "ratio_noise": 0.25, "rmse": 0.01, "mean_abs": 0.005}]}]})";
+  {"mode": "classic", "strategy": null, "iterations": 0, "search_steps": 0, "tolerance": null, "mean_iterations": 0.0, "ms_per_frame": 1.0, "ratio_to_classic": 1.0, "ratio_noise": 0.0, "rmse": 0.2, "mean_abs": 0.1},
+  {"mode": "distance-impostor", "strategy": "illinois", "iterations": 8, "search_steps": 8, "tolerance": 0.0001, "mean_iterations": 3.5, "ms_per_frame": 2.0, "ratio_to_classic": 2.0, "ratio_noise": 0.25, "rmse": 0.01, "mean_abs": 0.005}]}]})";
 
 TEST(GlpreviewResults, ParsesTheShaderContract) {
     const ShaderBench b = parse_shader_bench(json::parse(kShaders));
@@ -44,6 +44,7 @@ TEST(GlpreviewResults, ParsesTheLocalizationContract) {
     EXPECT_EQ(b.rooms[0].rows[0].strategy, std::nullopt);
     EXPECT_EQ(b.rooms[0].rows[1].strategy, "illinois");
     EXPECT_EQ(b.rooms[0].rows[1].iterations, 8);
+    EXPECT_EQ(b.rooms[0].rows[1].search_steps, 8);
     EXPECT_DOUBLE_EQ(b.rooms[0].rows[1].mean_iterations, 3.5);
     EXPECT_DOUBLE_EQ(b.rooms[0].rows[1].ratio_noise, 0.25);
     EXPECT_EQ(b.rooms[0].rows[0].tolerance, std::nullopt);

@@ -231,7 +231,13 @@ TEST(PreviewCli, BenchmarkModesPrintTheirJson) {
     ASSERT_EQ(localization["rooms"].size(), 2u);
     for (const auto& room : localization["rooms"]) {
         const auto& rows = room["rows"];
-        ASSERT_EQ(rows.size(), 32u);  // classic, box-parallax, 5 strategies × {0, 1, 2, 4, 8, 16}
+        // classic, box-parallax, 5 strategies × {0, 1, 2, 4, 8, 16}, the default with 4 other linear searches
+        ASSERT_EQ(rows.size(), 36u);
+        std::set<int> default_searches;
+        for (const auto& r : rows)
+            if (r["strategy"] == "illinois" && r["iterations"] == 8)
+                default_searches.insert(r["search_steps"].get<int>());
+        EXPECT_EQ(default_searches, (std::set<int>{0, 4, 8, 16, 32}));
         EXPECT_EQ(rows[0]["mode"], "classic");
         EXPECT_DOUBLE_EQ(rows[0]["ratio_to_classic"].get<double>(), 1.0);
         for (const auto& r : rows) {

@@ -23,6 +23,7 @@
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
+#include "glpreview/scene/camera.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "test_support.hpp"
 
@@ -189,6 +190,26 @@ Scene off_centre_reference_point() {
     return scene;
 }
 
+// Thin occluders beside the spheres: two 6 cm columns and a 5 cm bar across the room, so that many reflected rays
+// cross ρ = 1 more than once (in front of a thin object, behind it, then the wall).
+Scene thin_occluders() {
+    Scene scene = base_scene(120, 90);
+    Room& room = scene.environment.room;
+    room.min = {-2, 0, -2};
+    room.max = {2, 3, 2};
+    room.panels = {{-1.2, -1.2, 0, 0, {6, 6, 6}}, {0.3, 0.2, 1.3, 1.2, {5, 5, 6}}};
+    room.boxes = {{{-0.1, 0, -0.62}, {-0.04, 3, -0.56}, {0.9, 0.3, 0.2}},
+                  {{0.95, 0, -0.2}, {1.01, 3, -0.14}, {0.2, 0.4, 0.9}},
+                  {{-1.6, 1.5, -1.25}, {1.6, 1.55, -1.2}, {0.9, 0.9, 0.3}}};
+    scene.environment.reference_point = Vec3{0.2, 1.4, 0.8};
+    scene.camera.position = {0, 1.3, 2.2};
+    scene.camera.look_at = {0, 0.9, -0.4};
+    scene.camera.fov_y_deg = 60;
+    scene.spheres = {sphere_at({-0.45, 0.9, -0.3}, 0.3), sphere_at({0.62, 0.8, -0.45}, 0.3),
+                     sphere_at({0.1, 0.4, 0.3}, 0.25)};
+    return scene;
+}
+
 // Boxes and columns around the spheres: parts of the room hidden from the reference point.
 Scene occluder_maze() {
     Scene scene = base_scene(120, 90);
@@ -268,17 +289,18 @@ TEST_P(PreviewLocalization, TheDefaultStrategyHoldsItsClaimsOnEverySphere) {
     for (std::size_t s = 0; s < bench.spheres(); ++s) {
         SCOPED_TRACE("sphere " + std::to_string(s));
         ASSERT_GT(classic_error[s].pixels, 150u);
-        double best = by_limit[0][s].rmse;
         for (std::size_t k = 1; k < limits.size(); ++k) {
-            best = std::min(best, by_limit[k][s].rmse);
             if (GetParam().empty && limits[k] > 2) {
                 EXPECT_TRUE(no_worse(by_limit[k][s].rmse, by_limit[k - 1][s].rmse))
                     << limits[k] << " steps: " << by_limit[k][s].rmse << " after " << by_limit[k - 1][s].rmse;
             }
         }
+        // In empty rooms the default limit and 32 steps are as good as the exact geometry's box projection, within
+        // the cube map's noise. (Not "as good as the best limit": an early guess can be luckier than convergence, the
+        // long room's sphere 2 at 0 and 1 steps 0.094 where box projection is 0.097.)
         if (GetParam().empty) {
-            EXPECT_LT(at_default[s].rmse, 1.02 * best + 2e-4);
-            EXPECT_LT(by_limit.back()[s].rmse, 1.02 * best + 2e-4);
+            EXPECT_TRUE(no_worse(at_default[s].rmse, parallax_error[s].rmse));
+            EXPECT_TRUE(no_worse(by_limit.back()[s].rmse, parallax_error[s].rmse));
         }
         const double better = std::min(classic_error[s].rmse, parallax_error[s].rmse);
         EXPECT_TRUE(no_worse(at_default[s].rmse, better)) << at_default[s].rmse << " vs " << better;
@@ -412,6 +434,197 @@ TEST(PreviewLocalizationEffort, TheStopChangesTheShippedScenesImagesOnlyWithinNo
         const auto gap = bench.own_with_and_without_stop();
         std::printf("%s: with and without the stop%s\n", name, describe(gap).c_str());
         for (std::size_t s = 0; s < bench.spheres(); ++s) EXPECT_LT(gap[s].rmse, 5e-4) << name << " sphere " << s;
+    }
+}
+
+// The reflected rays of every pixel that shows a sphere (camera ray, exact sphere hit, mirror direction), as probe
+// rays relative to the reference point.
+std::vector<std::array<Vec3, 2>> sphere_pixel_rays(const Scene& scene) {
+    const CameraBasis basis = camera_basis(scene.camera, scene.width, scene.height);
+    const Vec3 o = scene.environment.reference();
+    std::vector<std::array<Vec3, 2>> rays;
+    for (int py = 0; py < scene.height; ++py)
+        for (int px = 0; px < scene.width; ++px) {
+            const Vec3 d = camera_ray(basis, px, py, scene.width, scene.height);
+            double nearest = std::numeric_limits<double>::infinity();
+            Vec3 hit, normal;
+            for (const Sphere& s : scene.spheres) {
+                const Vec3 oc = scene.camera.position - s.center;
+                const double b = dot(oc, d), c = dot(oc, oc) - s.radius * s.radius, disc = b * b - c;
+                if (disc < 0) continue;
+                const double t = -b - std::sqrt(disc);
+                if (t > 0 && t < nearest) {
+                    nearest = t;
+                    hit = scene.camera.position + t * d;
+                    normal = normalize(hit - s.center);
+                }
+            }
+            if (std::isfinite(nearest)) rays.push_back({hit - o, normalize(d - 2 * dot(d, normal) * normal)});
+        }
+    return rays;
+}
+
+// Where f(d) = ρ(x + R d) − 1 of the exact room (the CPU tracer's distance from o, not the cube map) changes from
+// undershoot to overshoot along a ray, marched in 4000 steps even in the direction seen from o (the search's own
+// parametrisation, d = |x| t / (1 − t)) up to t = 0.9995, each crossing refined by bisection.
+std::vector<double> exact_crossings(const EnvironmentTracer& tracer, Vec3 o, Vec3 x, Vec3 r) {
+    auto f = [&](double d) {
+        const Vec3 p = x + d * r;
+        return length(p) / tracer.trace(o, normalize(p)).t - 1;
+    };
+    std::vector<double> roots;
+    const double scale = length(x);
+    double d_prev = 0, f_prev = f(0);
+    for (int k = 1; k <= 4000; ++k) {
+        const double t = 0.9995 * k / 4000, d = scale * t / (1 - t), fd = f(d);
+        if (f_prev < 0 && fd >= 0) {
+            double lo = d_prev, hi = d;
+            for (int i = 0; i < 50; ++i) (f(0.5 * (lo + hi)) < 0 ? lo : hi) = 0.5 * (lo + hi);
+            roots.push_back(0.5 * (lo + hi));
+        }
+        d_prev = d;
+        f_prev = fd;
+    }
+    return roots;
+}
+
+double angle_between(Vec3 a, Vec3 b) { return std::acos(std::clamp(dot(normalize(a), normalize(b)), -1.0, 1.0)); }
+
+Scene thin_occluders_scene() { return thin_occluders(); }
+Scene column_scene() { return sphere_beside_a_column(); }
+Scene maze_scene() { return occluder_maze(); }
+
+// The right root: in rooms with thin occluders many sphere pixels' reflected rays cross ρ = 1 more than once; the
+// linear search brackets the first crossing, so the refinement ends there. Without it (search_steps 0, the
+// refinement from the perpendicular guess) a share of those pixels converge to a later root. Measured per room: the
+// share of multi-root pixels, how many of them end at the first root (within 0.02 rad, a few cube texels), and their
+// share of the squared radiance error against the exact trace (F = 1), before and after.
+TEST(PreviewLocalizationRoots, TheSearchBracketsTheFirstCrossing) {
+    gl();
+    struct Case {
+        const char* name;
+        Scene (*make)();
+    };
+    for (const Case& room : {Case{"thin-occluders", thin_occluders_scene}, Case{"beside-a-column", column_scene},
+                             Case{"occluder-maze", maze_scene}, Case{"shipped-difficult", difficult_room}}) {
+        SCOPED_TRACE(room.name);
+        Scene scene = room.make();
+        for (Sphere& s : scene.spheres) s.reflection = ReflectionMode::distance_impostor;
+        GpuRenderer gpu(scene, plan_features(scene),
+                        std::vector<const SphereFresnel*>(scene.spheres.size(), unit_fresnel()), nullptr);
+        gpu.capture_environment();
+        const EnvironmentTracer tracer(scene.environment);
+        const Vec3 o = scene.environment.reference();
+        const auto rays = sphere_pixel_rays(scene);
+        std::vector<std::vector<double>> roots;
+        for (const auto& [x, r] : rays) roots.push_back(exact_crossings(tracer, o, x, r));
+        struct Result {
+            std::size_t at_first = 0;
+            double multi_error = 0, total_error = 0;
+        };
+        auto measure = [&](int search_steps) {
+            Sphere settings;
+            settings.search_steps = search_steps;
+            const auto probes = probe_reflection_lookups(gpu, settings, rays);
+            Result result;
+            for (std::size_t i = 0; i < rays.size(); ++i) {
+                const auto& [x, r] = rays[i];
+                const RGB truth = tracer.trace(o + x, r).radiance;
+                double e = 0;
+                for (int c = 0; c < 3; ++c) e += std::pow(double(probes[i].texel[c]) - truth[c], 2);
+                result.total_error += e;
+                if (roots[i].size() < 2) continue;
+                result.multi_error += e;
+                if (angle_between(probes[i].lookup, x + roots[i].front() * r) < 0.02) ++result.at_first;
+            }
+            return result;
+        };
+        std::size_t multi = 0;
+        for (const auto& r : roots) multi += r.size() >= 2;
+        const Result before = measure(0), after = measure(kDefaultSearchSteps);
+        for (int n : {4, 16, 32}) {  // the default's neighbours, for docs/preview.md's table
+            const Result r = measure(n);
+            std::printf(
+                "  %s search_steps %d: at the first root %zu; squared error on multi-root pixels %.3f, total %.3f\n",
+                room.name, n, r.at_first, r.multi_error, r.total_error);
+        }
+        std::printf("%s: %zu of %zu sphere pixels multi-root (%.1f %%); at the first root: %zu -> %zu; their share of "
+                    "the squared error %.1f %% -> %.1f %% (total %.3f -> %.3f)\n",
+                    room.name, multi, rays.size(), 100.0 * multi / rays.size(), before.at_first, after.at_first,
+                    100 * before.multi_error / before.total_error, 100 * after.multi_error / after.total_error,
+                    before.total_error, after.total_error);
+        ASSERT_GT(multi, 20u);  // the rooms are made for it
+        // Before, almost none end at the first root; after, most (a crossing narrower than a search step is missed).
+        EXPECT_GE(double(after.at_first), double(before.at_first) + 0.3 * double(multi));
+        EXPECT_GT(double(after.at_first), 0.4 * double(multi));
+        EXPECT_LE(after.multi_error, before.multi_error);
+        EXPECT_LE(after.total_error, before.total_error);
+    }
+}
+
+// "iterations" is the same work for every strategy: D(R), the start's ρ and one ρ per step, 2 + iterations distance
+// reads with tolerance 0 (the thesis's three and the safeguarded ones without a search); the search adds at most
+// search_steps reads.
+TEST(PreviewLocalizationProbe, IterationsAreTheSameWorkForEveryStrategy) {
+    gl();
+    Scene scene = sphere_beside_a_column();
+    GpuRenderer gpu(scene, plan_features(scene),
+                    std::vector<const SphereFresnel*>(scene.spheres.size(), unit_fresnel()), nullptr);
+    gpu.capture_environment();
+    const auto rays = sphere_pixel_rays(scene);
+    for (Strategy strategy :
+         {Strategy::secant, Strategy::false_position, Strategy::mixed, Strategy::illinois, Strategy::safe_secant})
+        for (int n : {0, 1, 4, 8}) {
+            SCOPED_TRACE(std::string(to_string(strategy)) + " " + std::to_string(n));
+            Sphere settings;
+            settings.strategy = strategy;
+            settings.iterations = n;
+            settings.tolerance = 0;
+            settings.search_steps = 0;
+            for (const ProbeResult& p : probe_reflection_lookups(gpu, settings, rays))
+                ASSERT_EQ(p.distance_lookups, 2 + n);
+            if (strategy != Strategy::illinois && strategy != Strategy::safe_secant) continue;
+            settings.search_steps = kDefaultSearchSteps;
+            int most = 0, least = 1 << 20;
+            for (const ProbeResult& p : probe_reflection_lookups(gpu, settings, rays)) {
+                most = std::max(most, p.distance_lookups);
+                least = std::min(least, p.distance_lookups);
+            }
+            EXPECT_LE(most, 2 + n + kDefaultSearchSteps);
+            EXPECT_GE(least, 2 + n + 1);  // the search reads at least once
+        }
+}
+
+// The lookup is the best evaluated guess: |ρ − 1| at the lookup point never grows with the iteration limit, ray by
+// ray, from 0 steps on (the first step cannot make the lookup worse in the quantity the finder sees).
+TEST(PreviewLocalizationProbe, RhoAtTheLookupNeverGrowsWithTheLimit) {
+    gl();
+    for (Scene (*make)() : {thin_occluders_scene, long_empty_room}) {
+        Scene scene = make();
+        GpuRenderer gpu(scene, plan_features(scene),
+                        std::vector<const SphereFresnel*>(scene.spheres.size(), unit_fresnel()), nullptr);
+        gpu.capture_environment();
+        const auto rays = sphere_pixel_rays(scene);
+        for (Strategy strategy : {Strategy::illinois, Strategy::safe_secant})
+            for (int search : {0, kDefaultSearchSteps}) {
+                SCOPED_TRACE(std::string(to_string(strategy)) + " search " + std::to_string(search));
+                std::vector<double> previous(rays.size(), std::numeric_limits<double>::infinity());
+                std::size_t raised = 0;
+                for (int n = 0; n <= 12; ++n) {
+                    Sphere settings;
+                    settings.strategy = strategy;
+                    settings.iterations = n;
+                    settings.tolerance = 0;
+                    settings.search_steps = search;
+                    const auto probes = probe_reflection_lookups(gpu, settings, rays);
+                    for (std::size_t i = 0; i < rays.size(); ++i) {
+                        const double rho_error = std::abs(length(probes[i].lookup) / probes[i].texel[3] - 1);
+                        if (rho_error > previous[i] * (1 + 1e-5) + 1e-6) ++raised;
+                        previous[i] = rho_error;
+                    }
+                }
+                EXPECT_EQ(raised, 0u);
+            }
     }
 }
 

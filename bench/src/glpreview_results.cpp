@@ -120,6 +120,7 @@ LocalizationBench parse_localization_bench(const json& j) {
             else if (!strategy.is_null())
                 throw std::runtime_error(path + ".strategy: expected a string or null");
             row.iterations = int_field(rows[i], path, "iterations");
+            row.search_steps = int_field(rows[i], path, "search_steps");
             const json& tolerance = field(rows[i], path, "tolerance");
             if (tolerance.is_number())
                 row.tolerance = tolerance.get<double>();
@@ -159,6 +160,7 @@ json to_json(const LocalizationBench& b) {
             rows.push_back({{"mode", r.mode},
                             {"strategy", r.strategy ? json(*r.strategy) : json(nullptr)},
                             {"iterations", r.iterations},
+                            {"search_steps", r.search_steps},
                             {"tolerance", r.tolerance ? json(*r.tolerance) : json(nullptr)},
                             {"mean_iterations", r.mean_iterations},
                             {"ms_per_frame", r.ms_per_frame},

@@ -156,16 +156,18 @@ std::vector<Table> report_tables(const BenchReport& r) {
         Table t{
             "GPU: localization at " + std::to_string(b.width) + "x" + std::to_string(b.height) + " (" + b.renderer +
                 "), error against the CPU ray-traced reference",
-            {"room", "mode", "strategy", "iterations (limit)", "mean steps", "ms/frame", "ratio to classic ± noise",
-             "rmse", "mean abs"},
+            {"room", "mode", "strategy", "iterations (limit)", "search steps", "mean steps", "ms/frame",
+             "ratio to classic ± noise", "rmse", "mean abs"},
             {},
             {"iterations: the most refinement steps a pixel may take; mean steps: those its pixels took (each stops once "
-             "|rho - 1| < the tolerance); noise: half the interquartile range of the per-round ratios."}};
+             "|rho - 1| < the tolerance); search steps: the linear search's distance reads before the refinement (at most; it "
+             "stops at the first overshoot); noise: half the interquartile range of the per-round ratios."}};
         bool implausible = false;
         for (const LocalizationRoom& room : b.rooms)
             for (const LocalizationRow& row : room.rows) {
                 t.rows.push_back({room.room, row.mode, row.strategy.value_or("-"), std::to_string(row.iterations),
-                                  fixed(row.mean_iterations, 2), fixed(row.ms_per_frame, 3),
+                                  std::to_string(row.search_steps), fixed(row.mean_iterations, 2),
+                                  fixed(row.ms_per_frame, 3),
                                   fixed(row.ratio_to_classic, 2) + " ± " + fixed(row.ratio_noise, 2),
                                   significant(row.rmse, 4), significant(row.mean_abs, 4)});
                 // A lookup that costs more than classic's cannot be cheaper beyond its noise: the machine's load is.

@@ -32,6 +32,7 @@ struct LocalizationRow {
     std::string mode;                     // "classic", "box-parallax", "distance-impostor"
     std::optional<std::string> strategy;  // null, "secant", "false-position", "mixed", "illinois", "safe-secant"
     int iterations = 0;                   // the limit
+    int search_steps = 0;                 // the linear search before the refinement (illinois, safe-secant)
     std::optional<double> tolerance;      // the impostor's stop on |ρ − 1| (null outside it)
     double mean_iterations = 0;           // steps the sphere's pixels took, on average
     double ms_per_frame = 0;

@@ -25,6 +25,7 @@ struct Row {
     ReflectionMode mode;
     Strategy strategy;
     int iterations;
+    int search_steps = 0;  // the safeguarded strategies' linear search (0: none)
 };
 
 std::vector<Row> localization_rows() {
@@ -32,7 +33,13 @@ std::vector<Row> localization_rows() {
                           {ReflectionMode::box_parallax, Strategy::secant, 0}};
     for (Strategy s :
          {Strategy::secant, Strategy::false_position, Strategy::mixed, Strategy::illinois, Strategy::safe_secant})
-        for (int n : {0, 1, 2, 4, 8, 16}) rows.push_back({ReflectionMode::distance_impostor, s, n});
+        for (int n : {0, 1, 2, 4, 8, 16}) {
+            const bool searches = s == Strategy::illinois || s == Strategy::safe_secant;
+            rows.push_back({ReflectionMode::distance_impostor, s, n, searches ? kDefaultSearchSteps : 0});
+        }
+    // The default's linear search against none and a finer one (docs/preview.md, "The right root").
+    for (int search : {0, 4, 16, 32})
+        rows.push_back({ReflectionMode::distance_impostor, kDefaultStrategy, kDefaultIterations, search});
     return rows;
 }
 
@@ -41,6 +48,7 @@ void apply(Sphere& sphere, const Row& row) {
     sphere.reflection = row.mode;
     sphere.strategy = row.strategy;
     sphere.iterations = row.iterations;
+    sphere.search_steps = row.search_steps;
 }
 
 using BenchFresnel = const SphereFresnel*;
@@ -69,6 +77,7 @@ Json time_rows(Scene& scene, GpuRenderer& gpu, const ReferenceRender& reference,
         out.push_back({{"mode", to_string(rows[i].mode)},
                        {"strategy", impostor ? Json(to_string(rows[i].strategy)) : Json()},
                        {"iterations", impostor ? rows[i].iterations : 0},
+                       {"search_steps", rows[i].search_steps},
                        {"tolerance", impostor ? Json(sphere.tolerance) : Json()},
                        {"mean_iterations", impostor ? effort[i].mean_iterations : 0.0},
                        {"ms_per_frame", median(ms[i])},

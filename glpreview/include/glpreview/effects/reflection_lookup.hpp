@@ -21,6 +21,7 @@ void declare_reflection_lookup(const Sphere& sphere, ShaderBuilder& builder);
 struct ProbeResult {
     Vec3 lookup;                 // not normalised
     std::array<float, 4> texel;  // rgb radiance, a distance (when the cube stores distance)
+    int distance_lookups = 0;    // the impostor's distance reads for this ray (D(R), the search, the refinement)
 };
 // Reflection lookups of a sphere's reflection settings for rays (x relative to the reference point, unit R),
 // computed by the shader code the spheres use. Needs the renderer's captured cube map.

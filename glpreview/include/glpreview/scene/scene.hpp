@@ -119,6 +119,7 @@ enum class GlossyMethod { prefiltered, localized };
 inline constexpr Strategy kDefaultStrategy = Strategy::illinois;
 inline constexpr int kDefaultIterations = 8;
 inline constexpr double kDefaultTolerance = 1e-4;
+inline constexpr int kDefaultSearchSteps = 8;
 
 // Limits on what a scene may ask for (docs/scene.md): bounded cost for any scene file.
 inline constexpr int kMaxImageEdge = 8192;
@@ -136,9 +137,10 @@ struct Sphere {
         ReferenceFresnel{};  // JSON: "fresnel": "reference" or a model id, "params": "fit" | "closed"
     ReflectionMode reflection = ReflectionMode::distance_impostor;
     Strategy strategy = kDefaultStrategy;
-    int iterations = kDefaultIterations;   // the most refinement steps a pixel takes
-    double tolerance = kDefaultTolerance;  // a pixel stops once |ρ − 1| < tolerance (0: always `iterations` steps)
-    double roughness = 0;                  // GGX, α = roughness²; 0: the perfect mirror
+    int iterations = kDefaultIterations;     // the most refinement steps a pixel takes
+    double tolerance = kDefaultTolerance;    // a pixel stops once |ρ − 1| < tolerance (0: always `iterations` steps)
+    int search_steps = kDefaultSearchSteps;  // illinois / safe-secant: linear-search reads before the refinement
+    double roughness = 0;                    // GGX, α = roughness²; 0: the perfect mirror
     GlossyMethod glossy = GlossyMethod::prefiltered;  // the GPU method when roughness > 0
     int localized_size = 8;  // `localized`: M, the downsampled cube's texels per face edge (2–16), each an area light
 

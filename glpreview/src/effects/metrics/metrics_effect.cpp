@@ -43,6 +43,8 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
         e["mode"] = to_string(s.reflection);
         e["strategy"] = impostor ? Json(to_string(s.strategy)) : Json(nullptr);
         e["iterations"] = impostor ? s.iterations : 0;
+        const bool searches = impostor && (s.strategy == Strategy::illinois || s.strategy == Strategy::safe_secant);
+        e["search_steps"] = searches ? s.search_steps : 0;
         e["tolerance"] = impostor ? Json(s.tolerance) : Json(nullptr);
         e["rmse"] = errors[i].rmse;  // NaN (null) when no pixel shows the sphere
         e["mean_abs"] = errors[i].mean_abs;

@@ -3,7 +3,8 @@
 // Returns the cube-map lookup direction (not normalised). Thesis ch. 4 (docs/preview.md, "The technique"); Lagarde & Zanuttini 2012.
 // REFLECTION_CLASSIC | REFLECTION_BOX_PARALLAX | REFLECTION_DISTANCE_IMPOSTOR; with the impostor one of
 // STRATEGY_SECANT | STRATEGY_FALSE_POSITION | STRATEGY_MIXED (the thesis's three) | STRATEGY_ILLINOIS |
-// STRATEGY_SAFE_SECANT (safeguarded), NITER (at most this many refinement steps, each one cube lookup) and TOLERANCE.
+// STRATEGY_SAFE_SECANT (safeguarded), NITER (at most this many refinement steps, each one cube lookup), TOLERANCE
+// and, for the safeguarded ones, SEARCH_STEPS (the linear search that brackets the first crossing; 0: none).
 uniform samplerCube u_env;
 
 #if defined(REFLECTION_CLASSIC)
@@ -22,8 +23,13 @@ vec3 reflection_lookup(vec3 x, vec3 R) {
 #elif defined(REFLECTION_DISTANCE_IMPOSTOR)
 // TOLERANCE: a pixel stops refining once |ρ − 1| < TOLERANCE at its latest guess (0: always NITER steps).
 // g_iterations_taken: refinement steps this pixel took (read by the LOCALIZATION_DIAGNOSTICS output).
+// g_distance_lookups: every distance read of this pixel's search (read by the probe: the same work per strategy).
 int g_iterations_taken = 0;
-float env_distance(vec3 direction) { return textureLod(u_env, direction, 0.0).a; }
+int g_distance_lookups = 0;
+float env_distance(vec3 direction) {
+    ++g_distance_lookups;
+    return textureLod(u_env, direction, 0.0).a;
+}
 // ρ(p) = |p| / D(p/|p|): < 1 undershoot (in front of the environment), > 1 overshoot.
 float impostor_rho(vec3 p) { return length(p) / env_distance(p); }
 bool converged(float rho) { return abs(rho - 1.0) < float(TOLERANCE); }
@@ -57,6 +63,12 @@ float outwards(vec3 x, vec3 R, float a, float fa, float DR) {
     return max(-xr + sqrt(max(xr * xr - dot(x, x) + D * D, 0.0)), a + 1e-4 * DR);
 }
 
+// The linear search (GPU Gems 3 ch. 17's approach, before the refinement): SEARCH_STEPS points along the ray,
+// d_k = |x| t_k / (1 − t_k) with t_k = k / (SEARCH_STEPS + 1), i.e. p = (x (1 − t) + |x| R t) / (1 − t): the
+// direction seen from o sweeps from x towards R in steps even in t, the cube map's own measure. It stops at the first
+// undershoot → overshoot change, so the bracket holds the first crossing of ρ = 1 along the ray and the refinement
+// cannot reach a later one (a later root is what a thin occluder or a ray passing a column otherwise converges to).
+// A crossing narrower than a step can still be stepped over: the search finds the first crossing it sees.
 float impostor_distance(vec3 x, vec3 R) {
     float DR = env_distance(R);
     const float infinity = 3.0e38;
@@ -65,18 +77,46 @@ float impostor_distance(vec3 x, vec3 R) {
     bool has_a = fa < 0.0;
     if (!has_a) fa = 0.0;  // the shaded point lies behind the environment seen from o: no undershoot known yet
     int last_side = 0;     // -1: a was replaced last, +1: b
-    // The first guess: the perpendicular one (eq. 4.2) when it lies beyond the shaded point, else outwards.
+    // The best evaluated guess (smallest |f|): what is returned, so that one more step never moves the lookup to a
+    // point farther from ρ = 1 than the last limit's (|ρ − 1| at the lookup does not grow with NITER).
+    float best = 0.0, best_f = has_a ? -fa : infinity;
+    bool evaluated = has_a;
+    for (int k = 1; k <= SEARCH_STEPS; ++k) {
+        float t = float(k) / float(SEARCH_STEPS + 1);
+        float dk = length(x) * t / (1.0 - t);
+        float f = impostor_rho(x + R * dk) - 1.0;
+        if (abs(f) < best_f) {
+            best = dk;
+            best_f = abs(f);
+            evaluated = true;
+        }
+        if (f < 0.0) {
+            a = dk;
+            fa = f;
+            has_a = true;
+        } else if (has_a) {
+            b = dk;
+            fb = f;
+            break;
+        }
+    }
+    // The first guess: inside a bracket false position; else the perpendicular one (eq. 4.2) when it lies beyond
+    // the shaded point (and the search), else outwards.
     float perpendicular = DR - dot(x, R);
-    float d = perpendicular > 0.0 ? perpendicular : (has_a ? outwards(x, R, a, fa, DR) : DR);
+    float d = b < infinity ? a - fa * (b - a) / (fb - fa)
+                           : (perpendicular > a ? perpendicular : (has_a ? outwards(x, R, a, fa, DR) : DR));
 #if defined(STRATEGY_SAFE_SECANT)
-    float d_prev = 0.0, f_prev = fa;
+    float d_prev = a, f_prev = fa;
     bool has_prev = has_a;
 #endif
-    float last = d;  // the latest evaluated guess
     for (int i = 0; i < NITER; ++i) {
         float f = impostor_rho(x + R * d) - 1.0;
         g_iterations_taken = i + 1;
-        last = d;
+        if (abs(f) < best_f) {
+            best = d;
+            best_f = abs(f);
+            evaluated = true;
+        }
         if (abs(f) < float(TOLERANCE)) return d;
         if (f < 0.0) {
             if (last_side == -1 && b < infinity) fb *= 0.5;
@@ -107,9 +147,9 @@ float impostor_distance(vec3 x, vec3 R) {
         else d = 0.5 * b;  // only overshoots so far: towards the shaded point
 #endif
     }
-    // With the limit reached and no overshoot known, the outward step would be a guess never checked: keep the last
-    // evaluated point instead (an undershoot; measured, this makes 1 step less often worse than 0).
-    return b < infinity || NITER == 0 ? d : last;
+    // With no step taken the first guess goes unevaluated (the thesis's 0 iterations); otherwise the best evaluated
+    // guess, never an unchecked one.
+    return NITER == 0 || !evaluated ? d : best;
 }
 #else
 // The thesis's three strategies, as described (Lazányi, ch. 4; docs/preview.md, "The technique").

@@ -16,6 +16,7 @@ void declare_reflection_lookup(const Sphere& sphere, ShaderBuilder& builder) {
             builder.define("REFLECTION_DISTANCE_IMPOSTOR")
                 .define(strategy_define(sphere.strategy))
                 .define("NITER", std::to_string(sphere.iterations))
+                .define("SEARCH_STEPS", std::to_string(sphere.search_steps))
                 .define("TOLERANCE", glsl_float(sphere.tolerance));
             break;
     }
@@ -29,7 +30,7 @@ public:
     std::string_view name() const override { return "reflection"; }
 
     std::vector<const char*> sphere_keys() const override {
-        return {"reflection", "strategy", "iterations", "tolerance"};
+        return {"reflection", "strategy", "iterations", "tolerance", "search_steps"};
     }
 
     void read_sphere(const SceneReader& r, Sphere& s, Scene& scene) const override {
@@ -45,8 +46,14 @@ public:
                      {"safe-secant", Strategy::safe_secant}});
         r.read("iterations", s.iterations, 0, 64);
         r.read("tolerance", s.tolerance, 0, 1);
+        r.read("search_steps", s.search_steps, 0, 64);
+        if (r.has("search_steps") && s.reflection == ReflectionMode::distance_impostor &&
+            s.strategy != Strategy::illinois && s.strategy != Strategy::safe_secant)
+            scene.warnings.push_back(r.file().string() + ": " + r.field("search_steps") +
+                                     ": ignored: the thesis's strategy '" + to_string(s.strategy) +
+                                     "' is kept as described (only illinois and safe-secant search first)");
         if (s.reflection != ReflectionMode::distance_impostor)
-            for (const char* key : {"strategy", "iterations", "tolerance"})
+            for (const char* key : {"strategy", "iterations", "tolerance", "search_steps"})
                 if (r.has(key))
                     scene.warnings.push_back(r.file().string() + ": " + r.field(key) +
                                              ": ignored: only the distance impostor refines (reflection '" +
@@ -99,7 +106,7 @@ std::vector<ProbeResult> probe_reflection_lookups(GpuRenderer& renderer, const S
     std::vector<ProbeResult> results;
     for (int i = 0; i < count; ++i) {
         const float* v = &output[8 * static_cast<std::size_t>(i)];
-        results.push_back({{v[0], v[1], v[2]}, {v[4], v[5], v[6], v[7]}});
+        results.push_back({{v[0], v[1], v[2]}, {v[4], v[5], v[6], v[7]}, static_cast<int>(v[3])});
     }
     return results;
 }
