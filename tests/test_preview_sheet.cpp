@@ -63,20 +63,24 @@ TEST(SheetLayout, BadRequestsAreUsageErrorsNamingTheOption) {
     EXPECT_TRUE(Contains(message({{"Au"}, {}, {0.0, 1.5}}), "--sheet-roughness"));
     EXPECT_TRUE(Contains(message({{"Au"}, {}, {0.2, 0.2}}), "--sheet-roughness"));
     EXPECT_EQ(message({{"Au"}, {"schlick", "f82-tint"}, {0.0, 0.2, 0.5}}), "");
+    EXPECT_TRUE(Contains(message({{"Au"}, {"best", "f82-tint", "best"}, {}}), "model 'best' named twice"));
+    EXPECT_EQ(message({{"Au"}, {"best", "f82-tint", "schlick"}, {}}), "");
 }
 
 TEST(SheetLayout, LabelsSayMaterialModelRoughnessAndErrorInsideTheirCellsBands) {
     const std::vector<SheetCell> cells{{0, 0, SheetCellKind::reference, "gold", "", 0.2, 0},
                                        {1, 3, SheetCellKind::model, "zinc", "f82-tint", 0.5, 0.0123},
-                                       {1, 4, SheetCellKind::difference, "zinc", "f82-tint", 0.5, 0.00031}};
-    const std::vector<TextBox> boxes = sheet_labels(cells, 100, 80);
-    ASSERT_EQ(boxes.size(), 6u);
+                                       {1, 4, SheetCellKind::difference, "zinc", "f82-tint", 0.5, 0.00031},
+                                       {1, 5, SheetCellKind::model, "zinc", "schlick", 0.5, 0.02, false, true}};
+    const std::vector<TextBox> boxes = sheet_labels(cells, 100, 80, ErrorScale{1e-5, 0.1});
+    ASSERT_EQ(boxes.size(), 8u);
     EXPECT_EQ(boxes[0].text, "gold: reference");
     EXPECT_EQ(boxes[1].text, "roughness 0.2");
     EXPECT_EQ(boxes[2].text, "zinc: f82-tint");
     EXPECT_EQ(boxes[3].text, "roughness 0.5, rel_rms 1.2%");
-    EXPECT_EQ(boxes[4].text, "|f82-tint - ref| x 10");
-    EXPECT_EQ(boxes[5].text, "roughness 0.5, RMSE 0.00031");
+    EXPECT_EQ(boxes[4].text, "f82-tint / ref - 1");
+    EXPECT_EQ(boxes[5].text, "roughness 0.5, +-1e-05..0.1 log");
+    EXPECT_EQ(boxes[6].text, "zinc: schlick (best)");
     const int band = label_band_height(80);
     for (std::size_t i = 0; i < boxes.size(); ++i) {
         const SheetCell& c = cells[i / 2];
@@ -228,6 +232,134 @@ TEST(PreviewSheet, UnknownModelOrBadRoughnessIsAOneLineUsageError) {
     }
     const CommandResult unknown = glpreview(sheet_scene() + " --sheet Au --sheet-models no-such-model --explain", dir);
     EXPECT_TRUE(Contains(unknown.err, "unknown model 'no-such-model'")) << unknown.err;
+}
+
+// The cell (column, row) of an image made of kCell × kCell cells, as a standalone image.
+Image cell_of(const Image& sheet, int column, int row) {
+    Image cell(kCell, kCell);
+    for (int y = 0; y < kCell; ++y)
+        for (int x = 0; x < kCell; ++x) cell.set(x, y, sheet.at(column * kCell + x, row * kCell + y));
+    return cell;
+}
+
+TEST(PreviewSheet, BestStandsBesideNamedModels) {
+    TempDir dir;
+    const std::string common = sheet_scene() + " --sheet Au,Cu --sheet-labels off" + kSize;
+    const CommandResult alone = glpreview(common + " -o " + (dir.path() / "best").string(), dir);
+    ASSERT_EQ(alone.exit_code, 0) << alone.err;
+    const CommandResult both =
+        glpreview(common + " --sheet-models best,f82-tint -o " + (dir.path() / "both").string(), dir);
+    ASSERT_EQ(both.exit_code, 0) << both.err;
+    const auto best = nlohmann::json::parse(read_file(dir.path() / "best" / "sheet.json"));
+    const auto record = nlohmann::json::parse(read_file(dir.path() / "both" / "sheet.json"));
+    ASSERT_EQ(best.size(), 2u);
+    ASSERT_EQ(record.size(), 4u);  // two rows × {best, f82-tint}
+    const Image best_sheet = read_image(dir.path() / "best" / "sheet.exr"),
+                both_sheet = read_image(dir.path() / "both" / "sheet.exr");
+    for (int row = 0; row < 2; ++row) {
+        EXPECT_EQ(record[2 * row]["asked_for"], "best");
+        EXPECT_EQ(record[2 * row]["model"], best[row]["model"]) << "the same model as --sheet-models best";
+        EXPECT_EQ(record[2 * row + 1]["asked_for"], "f82-tint");
+        EXPECT_EQ(record[2 * row + 1]["model"], "f82-tint");
+        // The best group's cells are those of the best-only sheet (reference | model | difference).
+        for (int column = 0; column < 3; ++column)
+            EXPECT_EQ(cell_of(both_sheet, column, row).rgb, cell_of(best_sheet, column, row).rgb)
+                << "row " << row << " column " << column;
+    }
+}
+
+// A PNG pixel as linear-ish numbers (the display transform keeps each channel's order).
+struct Pixel8 {
+    int r, g, b;
+};
+Pixel8 png_at(const Png8& png, int x, int y) {
+    const std::size_t i = 3 * (static_cast<std::size_t>(y) * png.width + x);
+    return {png.rgb[i], png.rgb[i + 1], png.rgb[i + 2]};
+}
+
+// Rec. 709 luminance (the sheet scene's space is linear Rec. 709), computed here apart from the view's OCIO path.
+double luminance_709(const RGB& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+TEST(PreviewSheet, ThePngShowsEachModelsSignedErrorInFalseColour) {
+    TempDir dir;
+    const std::string common = sheet_scene() + " --sheet Au,Ag --sheet-models best,schlick --sheet-labels off" + kSize;
+    ASSERT_EQ(glpreview(common + " -o " + (dir.path() / "out").string(), dir).exit_code, 0);
+    const CommandResult dark = glpreview(common + " --exposure=-3 -o " + (dir.path() / "dark").string(), dir);
+    ASSERT_EQ(dark.exit_code, 0) << dark.err;
+    // sheet.exr (half floats: about 5e-4 relative) holds the renders and |model - reference| x 10.
+    const Image sheet = read_image(dir.path() / "out" / "sheet.exr");
+    const Png8 png = read_png8(dir.path() / "out" / "sheet.png"),
+               dark_png = read_png8(dir.path() / "dark" / "sheet.png");
+    ASSERT_EQ(png.width, sheet.width);
+    const int band = label_band_height(kCell);
+    const CellRect bar = colour_bar_rect(0, 0, kCell, kCell);
+    long warm = 0, cold = 0, wrong = 0, black_where_equal = 0, equal = 0, small_and_shown = 0, small = 0;
+    long darker_references = 0, references = 0, same_views = 0, views = 0;
+    for (int row = 0; row < 2; ++row)
+        for (int group = 0; group < 2; ++group) {
+            const int model_column = 1 + 2 * group, difference_column = model_column + 1;
+            for (int y = band; y < kCell - band; ++y)
+                for (int x = 0; x < bar.x; ++x) {
+                    const int py = row * kCell + y;
+                    const RGB m = sheet.at(model_column * kCell + x, py), r = sheet.at(x, py);
+                    const RGB delta = sheet.at(difference_column * kCell + x, py);
+                    const Pixel8 p = png_at(png, difference_column * kCell + x, py);
+                    const Pixel8 q = png_at(dark_png, difference_column * kCell + x, py);
+                    ++views;
+                    same_views += p.r == q.r && p.g == q.g && p.b == q.b;
+                    const Pixel8 ref = png_at(png, x, py), ref_dark = png_at(dark_png, x, py);
+                    if (ref.r + ref.g + ref.b > 30) {
+                        ++references;
+                        darker_references += ref_dark.r + ref_dark.g + ref_dark.b < ref.r + ref.g + ref.b;
+                    }
+                    if (delta.r == 0 && delta.g == 0 && delta.b == 0) {  // model and reference equal as floats
+                        ++equal;
+                        black_where_equal += p.r + p.g + p.b == 0;
+                        continue;
+                    }
+                    if (luminance_709(r) < 1e-3) continue;
+                    const double e = luminance_709(m) / luminance_709(r) - 1;
+                    if (e > 4e-3) (p.r > p.b ? warm : wrong) += 1;   // the model brighter: warm
+                    if (e < -4e-3) (p.b > p.r ? cold : wrong) += 1;  // darker: cold
+                    if (std::abs(e) > 1.5e-3 && std::abs(e) < 4e-3) {
+                        ++small;
+                        small_and_shown += p.r + p.g + p.b > 24;
+                    }
+                }
+        }
+    EXPECT_GT(equal, 1000) << "the room around the sphere";
+    EXPECT_EQ(black_where_equal, equal) << "no error: black";
+    EXPECT_GT(warm, 50);
+    EXPECT_GT(cold, 50);
+    EXPECT_EQ(wrong, 0) << "warm where the model is brighter, cold where darker";
+    EXPECT_GT(small, 50);
+    EXPECT_EQ(small_and_shown, small) << "errors of 0.15-0.4 % are plainly coloured";
+    EXPECT_EQ(same_views, views) << "the error views do not change with the exposure";
+    EXPECT_GT(darker_references, references * 9 / 10) << "the renders do";
+}
+
+TEST(PreviewSheet, ExposureChangesThePngsOnlyAndANonFiniteOneIsRefused) {
+    TempDir dir;
+    const std::string scene = sheet_scene() + kSize;
+    ASSERT_EQ(glpreview(scene + " -o " + (dir.path() / "a").string(), dir).exit_code, 0);
+    const CommandResult darker = glpreview(scene + " --exposure=-2 -o " + (dir.path() / "b").string(), dir);
+    ASSERT_EQ(darker.exit_code, 0) << darker.err;
+    EXPECT_TRUE(read_image(dir.path() / "a" / "beauty.exr").rgb == read_image(dir.path() / "b" / "beauty.exr").rgb);
+    const Png8 a = read_png8(dir.path() / "a" / "beauty.png"), b = read_png8(dir.path() / "b" / "beauty.png");
+    long sum_a = 0, sum_b = 0;
+    for (std::size_t i = 0; i < a.rgb.size(); ++i) {
+        sum_a += a.rgb[i];
+        sum_b += b.rgb[i];
+    }
+    EXPECT_LT(sum_b, sum_a * 3 / 4);
+    for (const std::string bad : {"nan", "inf", "-inf", "1e9", "two", "-33"}) {
+        const fs::path out = dir.path() / "bad";
+        const CommandResult run = glpreview(scene + " '--exposure=" + bad + "' -o " + out.string(), dir);
+        EXPECT_EQ(run.exit_code, 2) << bad << ": " << run.err;
+        EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << bad << ": " << run.err;
+        EXPECT_TRUE(Contains(run.err, "--exposure")) << run.err;
+        EXPECT_FALSE(fs::exists(out)) << bad;
+    }
 }
 
 TEST(PreviewSheet, ExplainShowsTheRoughPassesAndTheLabels) {

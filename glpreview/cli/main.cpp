@@ -3,7 +3,9 @@
 // Exit codes: 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 colour configuration, 5 OpenGL/EGL failure.
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <regex>
 #include <set>
@@ -47,6 +49,17 @@ double parse_roughness(const std::string& text) {
     if (const std::optional<double> value = metalfit::roughness_from_text(text)) return *value;
     throw metalfit::UsageError("--sheet-roughness: expected numbers in [0, 1], e.g. 0,0.2,0.5 (got '" +
                                text.substr(0, 40) + "')");
+}
+
+// --exposure EV: a finite number of stops in [-kMaxExposureStops, kMaxExposureStops].
+constexpr double kMaxExposureStops = 32;
+double parse_exposure(const std::string& text) {
+    char* end = nullptr;
+    const double ev = text.empty() ? NAN : std::strtod(text.c_str(), &end);
+    if (!std::isfinite(ev) || *end != '\0' || std::abs(ev) > kMaxExposureStops)
+        throw metalfit::UsageError("--exposure: expected a finite number of stops in [-32, 32], e.g. -2.5 (got '" +
+                                   text.substr(0, 40) + "')");
+    return ev;
 }
 
 }  // namespace
@@ -143,13 +156,15 @@ int run_glpreview(int argc, char** argv) {
     app.add_flag("--allow-paths-outside", allow_paths_outside,
                  "Let the scene read files outside its own folder and the database (absolute paths, ../)");
     std::string sheet;
-    app.add_option("--sheet", sheet,
-                   "Sphere sheet instead of the scene's outputs: comma-separated materials, one row each "
-                   "(reference | model | |difference| x 10); the scene holds one sphere");
+    app.add_option(
+        "--sheet", sheet,
+        "Sphere sheet instead of the scene's outputs: comma-separated materials, one row each "
+        "(reference | model | difference: in sheet.png the signed error model/reference - 1 in false colour, "
+        "in sheet.exr |model - reference| x 10); the scene holds one sphere");
     std::string sheet_models = "best", sheet_roughness, sheet_labels = "on", sheet_light = "off";
     app.add_option("--sheet-models", sheet_models,
-                   "Sheet: the models shown, comma-separated libfit ids, one column group each, or best (each "
-                   "material's best fitted model)")
+                   "Sheet: the models shown, comma-separated, one column group each: libfit ids and best (each "
+                   "material's best fitted model), e.g. best,f82-tint,schlick")
         ->capture_default_str();
     app.add_option("--sheet-roughness", sheet_roughness,
                    "Sheet: the roughness of the columns, comma-separated in [0, 1], e.g. 0,0.2,0.5 (default: the scene "
@@ -161,6 +176,11 @@ int run_glpreview(int argc, char** argv) {
         "--sheet-light", sheet_light,
         "Sheet: one more column at roughness 0.35 under a point light beside and behind the sphere, each model's highlight next "
         "to the reference's (on|off; a room environment)");
+    std::string exposure = "0";
+    app.add_option("--exposure", exposure,
+                   "Exposure in stops applied to the PNGs' radiance before the display transform (never to EXRs; the "
+                   "sheet's labels and error views are drawn after it)")
+        ->capture_default_str();
     std::string capture_probe_size;
     app.add_option("--capture-probe", capture_probe_size,
                    "Capture the scene's environment from its reference point as a WxH equirect reflection probe: "
@@ -250,12 +270,14 @@ int run_glpreview(int argc, char** argv) {
             else
                 for (const auto& room : result["rooms"])
                     for (const auto& r : room["rows"])
-                        std::printf("%-10s %-18s %-15s %2d (mean %5.2f)  %7.2f ms  x%.2f ± %.2f  rmse %.5f\n",
-                                    room["room"].get<std::string>().c_str(), r["mode"].get<std::string>().c_str(),
-                                    r["strategy"].is_null() ? "-" : r["strategy"].get<std::string>().c_str(),
-                                    r["iterations"].get<int>(), r["mean_iterations"].get<double>(),
-                                    r["ms_per_frame"].get<double>(), r["ratio_to_classic"].get<double>(),
-                                    r["ratio_noise"].get<double>(), r["rmse"].get<double>());
+                        std::printf(
+                            "%-10s %-18s %-15s %2d (mean %5.2f) search %2d  %7.2f ms  x%.2f ± %.2f  rmse %.5f\n",
+                            room["room"].get<std::string>().c_str(), r["mode"].get<std::string>().c_str(),
+                            r["strategy"].is_null() ? "-" : r["strategy"].get<std::string>().c_str(),
+                            r["iterations"].get<int>(), r["mean_iterations"].get<double>(),
+                            r["search_steps"].get<int>(), r["ms_per_frame"].get<double>(),
+                            r["ratio_to_classic"].get<double>(), r["ratio_noise"].get<double>(),
+                            r["rmse"].get<double>());
             return ok;
         }
         if (scene_files.empty())
@@ -311,7 +333,8 @@ int run_glpreview(int argc, char** argv) {
         SheetRequest sheet_request;
         for (const std::string& m : split_list(sheet))
             sheet_request.materials.push_back(looks_like_path(m) ? std::filesystem::absolute(m).string() : m);
-        if (sheet_models != "best") sheet_request.models = split_list(sheet_models);
+        sheet_request.models = split_list(sheet_models);
+        const double exposure_ev = parse_exposure(exposure);
         for (const std::string& r : split_list(sheet_roughness)) sheet_request.roughness.push_back(parse_roughness(r));
         if (sheet_labels != "on" && sheet_labels != "off")
             throw UsageError("--sheet-labels: on or off (got '" + sheet_labels.substr(0, 40) + "')");
@@ -330,7 +353,8 @@ int run_glpreview(int argc, char** argv) {
             std::cout << explain(sheet.empty() ? build_plan(scene) : build_sheet_plan(scene, sheet_request), scene);
             return ok;
         }
-        PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), output_dir, 0};
+        PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), output_dir, 0,
+                               exposure_ev};
         if (!sheet.empty()) {
             // Printed before the sheet is switched in: a stdout that fails writes nothing.
             const auto print_sheet = [&](const SphereSheet& result) {

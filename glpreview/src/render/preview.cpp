@@ -1,5 +1,7 @@
 #include "glpreview/render/preview.hpp"
 
+#include <cmath>
+
 #include "glpreview/render/exr_metadata.hpp"
 #include "glpreview/render/preview_passes.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
@@ -13,6 +15,7 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     // bad material is reported as before any file is touched.
     FresnelLibrary library(options.data_dir, options.ocio, scene.space, scene.file, scene.paths);
     PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, {}, {}, {}};
+    run.exposure = std::exp2(options.exposure_ev);
     run.exr_colour = ExrColour{chromaticities_of(library.converter()), library.converter().space()};
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
         run.fresnel.push_back(&library.get(scene.spheres[i], "spheres[" + std::to_string(i) + "]"));

@@ -29,7 +29,8 @@ const Image& image_of(const Image& image) { return image; }
 const Image& image_of(const ReferenceRender& render) { return render.image; }
 
 template <typename T>
-void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, PreviewRun* run) {
+void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, PreviewRun* run,
+                    PngExposure exposure = PngExposure::apply) {
     const bool png = std::filesystem::path(file).extension() == ".png";
     graph.add_pass<Empty>(
         {"write " + file, png ? "through the OCIO display transform" : "linear half-float EXR", Processor::cpu},
@@ -37,11 +38,13 @@ void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, 
             b.read(image);
             b.write_file(file);
         },
-        [run, file, image, png](const Empty&, Resources& r) {
+        [run, file, image, png, exposure](const Empty&, Resources& r) {
             if (run->output_dir.empty()) return;
             const std::filesystem::path path = run->output_file(file);
-            if (png)
+            if (png && (exposure == PngExposure::already_applied || run->exposure == 1.0))
                 write_png(path, image_of(r.get(image)), *run->display);
+            else if (png)
+                write_png(path, exposed(image_of(r.get(image)), run->exposure), *run->display);
             else
                 write_exr(path, image_of(r.get(image)), run->exr_colour ? &*run->exr_colour : nullptr,
                           image_metadata(run->exr_metadata, file));
@@ -94,8 +97,15 @@ SceneInputs import_scene(PassGraph& graph, const Scene& scene) {
             graph.import <const Scene*>("materials", &scene), graph.import <const Scene*>("camera", &scene)};
 }
 
-void add_image_file_pass(PassGraph& graph, const std::string& file, Handle<Image> image, PreviewRun* run) {
-    add_image_file(graph, file, image, run);
+void add_image_file_pass(PassGraph& graph, const std::string& file, Handle<Image> image, PreviewRun* run,
+                         PngExposure exposure) {
+    add_image_file(graph, file, image, run, exposure);
+}
+
+Image exposed(const Image& image, double exposure) {
+    Image out = image;
+    for (float& v : out.rgb) v = static_cast<float>(v * exposure);
+    return out;
 }
 void add_image_file_pass(PassGraph& graph, const std::string& file, Handle<ReferenceRender> image, PreviewRun* run) {
     add_image_file(graph, file, image, run);

@@ -9,13 +9,17 @@
 
 namespace metalfit::glpreview {
 
+std::vector<std::string> sheet_model_groups(const SheetRequest& request) {
+    return request.models.empty() ? std::vector<std::string>{kBestModel} : request.models;
+}
+
 void check_sheet_request(const SheetRequest& request) {
     for (std::size_t i = 0; i < request.models.size(); ++i) {
-        try {
-            (void)find_model(request.models[i]);
-        } catch (const UsageError& e) {
-            throw UsageError(std::string("--sheet-models: ") + e.what());
-        }
+        if (request.models[i] != kBestModel) try {
+                (void)find_model(request.models[i]);
+            } catch (const UsageError& e) {
+                throw UsageError(std::string("--sheet-models: ") + e.what());
+            }
         if (std::find(request.models.begin(), request.models.begin() + i, request.models[i]) !=
             request.models.begin() + i)
             throw UsageError("--sheet-models: model '" + request.models[i] + "' named twice");
@@ -58,7 +62,8 @@ std::string format(const char* pattern, double value) {
 
 }  // namespace
 
-std::vector<TextBox> sheet_labels(const std::vector<SheetCell>& cells, int cell_width, int cell_height) {
+std::vector<TextBox> sheet_labels(const std::vector<SheetCell>& cells, int cell_width, int cell_height,
+                                  const ErrorScale& scale) {
     const int band = std::min(label_band_height(cell_height), cell_height / 2);
     const int font = std::max(6, band - 2);
     std::vector<TextBox> boxes;
@@ -68,18 +73,25 @@ std::vector<TextBox> sheet_labels(const std::vector<SheetCell>& cells, int cell_
         switch (c.kind) {
             case SheetCellKind::reference: top = c.material + ": reference"; break;
             case SheetCellKind::model:
-                top = c.material + ": " + c.model;
+                top = c.material + ": " + c.model + (c.best ? " (best)" : "");
                 bottom += ", rel_rms " + format("%.2g", 100.0 * c.error) + "%";
                 break;
             case SheetCellKind::difference:
-                top = "|" + c.model + " - ref| x 10";
-                bottom += ", RMSE " + format("%.2g", c.error);
+                top = c.model + " / ref - 1";
+                bottom += ", " + scale_label(scale);
                 break;
         }
         boxes.push_back({x, y, cell_width, band, top, font});
         boxes.push_back({x, y + cell_height - band, cell_width, band, bottom, font});
     }
     return boxes;
+}
+
+CellRect colour_bar_rect(int column, int row, int cell_width, int cell_height) {
+    const int band = std::min(label_band_height(cell_height), cell_height / 2);
+    const int width = std::max(3, cell_width / 24), margin = std::max(1, cell_width / 64);
+    return {column * cell_width + cell_width - width - margin, row * cell_height + band + margin, width,
+            std::max(1, cell_height - 2 * band - 2 * margin)};
 }
 
 }  // namespace metalfit::glpreview

@@ -9,6 +9,7 @@
 #include "effects/glossy_localized/glossy_localized_effect.hpp"
 #include "effects/glossy_prefiltered/glossy_prefiltered_effect.hpp"
 #include "effects/lights/light.hpp"
+#include "glpreview/render/error_view.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/preview_passes.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
@@ -33,10 +34,11 @@ double image_rmse(const Image& a, const Image& b) {
     return std::sqrt(squared / double(a.rgb.size()));
 }
 
-// Per material: the reference and the Fresnel of each model group.
+// Per material: the reference and the Fresnel of each model group (best[g]: group g asked for kBestModel).
 struct SheetRow {
     const SphereFresnel* reference;
     std::vector<const SphereFresnel*> models;
+    std::vector<bool> best;
 };
 using SheetRows = std::vector<SheetRow>;
 using SheetCells = std::vector<SheetCell>;
@@ -79,6 +81,35 @@ std::string roughness_list(const std::vector<double>& roughness) {
     return join(text);
 }
 
+// The cell at (column, row) of a sheet whose cells are w × h.
+Image cell_of(const Image& sheet, int column, int row, int w, int h) {
+    Image cell(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) cell.set(x, y, sheet.at(column * w + x, row * h + y));
+    return cell;
+}
+
+// Every difference cell of `out` replaced by its error view (from the model and reference cells of `renders`, the
+// sheet as rendered), one scale for the whole sheet, and a colour bar in each; returns the scale.
+ErrorScale paint_error_views(Image& out, const Image& renders, const std::vector<SheetCell>& cells, int w, int h,
+                             const LuminanceWeights& y) {
+    std::vector<std::pair<const SheetCell*, std::vector<double>>> views;
+    std::vector<double> all;
+    for (const SheetCell& c : cells)
+        if (c.kind == SheetCellKind::difference) {
+            views.emplace_back(&c, relative_luminance_error(cell_of(renders, c.model_column, c.row, w, h),
+                                                            cell_of(renders, c.reference_column, c.row, w, h), y));
+            all.insert(all.end(), views.back().second.begin(), views.back().second.end());
+        }
+    const ErrorScale scale = error_scale_from(all);
+    for (const auto& [c, errors] : views) {
+        paint_error_view(out, c->column * w, c->row * h, w, h, errors, scale);
+        const CellRect bar = colour_bar_rect(c->column, c->row, w, h);
+        paint_colour_bar(out, bar.x, bar.y, bar.width, bar.height, scale);
+    }
+    return scale;
+}
+
 // The sheet's passes. `library` and `run` are null when the graph is only planned (--explain): nothing executes.
 // `scene` is the renderer's copy of `base` with the largest roughness asked for (what the environment passes plan
 // for); only its sphere's Fresnel kind and roughness change between cells.
@@ -89,8 +120,8 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
     scene.spheres[0].roughness = *std::max_element(roughness.begin(), roughness.end());
     const Features features = plan_features(scene);
     const SceneInputs in = import_scene(graph, scene);
-    const std::string models =
-        request.models.empty() ? "the best fitted libfit model" : "models " + join(request.models);
+    const std::vector<std::string> model_groups = sheet_model_groups(request);
+    const std::string models = "models " + join(model_groups) + " (best: each material's best fitted libfit model)";
     const Handle<SheetRows> rows =
         graph
             .add_pass<Out<SheetRows>>(
@@ -100,18 +131,19 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                     b.read(in.materials);
                     d.out = b.produce<SheetRows>("sheet-fresnel");
                 },
-                [&base, &request, library, run](const Out<SheetRows>& d, Resources& r) {
+                [&base, &request, model_groups, library, run](const Out<SheetRows>& d, Resources& r) {
                     SheetRows& result = r.emplace(d.out);
                     for (const std::string& name : request.materials) {
                         Sphere sphere = base.spheres[0];
                         sphere.material = name;
                         sphere.fresnel = ReferenceFresnel{};
-                        SheetRow row{&library->get(sphere, "sheet material " + name), {}};
-                        const std::vector<std::string> ids =
-                            request.models.empty() ? std::vector{library->best_model(name)} : request.models;
-                        for (const std::string& id : ids) {
-                            sphere.fresnel = ModelFresnel{id, ParameterSource::fit};
+                        SheetRow row{&library->get(sphere, "sheet material " + name), {}, {}};
+                        for (const std::string& group : model_groups) {
+                            const bool best = group == kBestModel;
+                            sphere.fresnel =
+                                ModelFresnel{best ? library->best_model(name) : group, ParameterSource::fit};
                             row.models.push_back(&library->get(sphere, "sheet material " + name));
+                            row.best.push_back(best);
                         }
                         result.push_back(row);
                     }
@@ -133,10 +165,10 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
         Handle<Json> record;
         Handle<SheetCells> cells;
     };
-    const int groups = request.models.empty() ? 1 : static_cast<int>(request.models.size());
+    const int groups = static_cast<int>(model_groups.size());
     const Cells& cells = graph.add_pass<Cells>(
         {"sheet-cells",
-         "per material: reference | model | |difference| x 10 for " + std::to_string(groups) +
+         "per material: reference | model | difference for " + std::to_string(groups) +
              " model group(s) at roughness " + roughness_list(roughness) +
              (request.light ? " (the last lit by a point light grazing the sphere)" : "") +
              ", one GPU frame each (DFG tables of rough cells made on first use)",
@@ -188,6 +220,7 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                 }
                 for (int g = 1; g <= groups; ++g) {
                     const SphereFresnel& model = *all[row].models[g - 1];
+                    const bool best = all[row].best[g - 1];
                     for (int k = 0; k < n_roughness; ++k) {
                         scene.spheres[0].roughness = roughness[k];
                         scene.spheres[0].fresnel = ModelFresnel{model.fresnel, ParameterSource::fit};
@@ -200,19 +233,21 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                         paste(sheet, model_image, model_column, y);
                         paste(sheet, difference, difference_column, y);
                         const double rmse = image_rmse(model_image, references[k]);
+                        const int reference_column = sheet_column(SheetCellKind::reference, 0, k, n_roughness);
                         labels.push_back({y, model_column, SheetCellKind::model, material, model.fresnel, roughness[k],
-                                          model.worst_rel_rms, lit});
+                                          model.worst_rel_rms, lit, best});
                         labels.push_back({y, difference_column, SheetCellKind::difference, material, model.fresnel,
-                                          roughness[k], rmse, lit});
+                                          roughness[k], rmse, lit, best, model_column, reference_column});
                         record.push_back({{"row", row},
                                           {"material", model.material},
                                           {"source", model.source},
                                           {"model", model.fresnel},
+                                          {"asked_for", best ? kBestModel : model.fresnel},
                                           {"model_worst_rel_rms", model.worst_rel_rms},
                                           {"image_rmse_model_vs_reference", rmse},
                                           {"roughness", roughness[k]},
                                           {"columns",
-                                           {{"reference", sheet_column(SheetCellKind::reference, 0, k, n_roughness)},
+                                           {{"reference", reference_column},
                                             {"model", model_column},
                                             {"difference", difference_column}}}});
                         if (lit)
@@ -223,6 +258,29 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
             }
         });
     add_image_file_pass(graph, "sheet.exr", cells.image, run);
+    // sheet.png: the exposure on the renders, then the error views and their colour bars, then the labels, so that
+    // neither changes with the exposure.
+    struct ErrorViews {
+        Handle<Image> image;
+        Handle<ErrorScale> scale;
+    };
+    const ErrorViews& views = graph.add_pass<ErrorViews>(
+        {"sheet-error-views",
+         "exposure on the renders; each difference cell as the signed relative luminance error model / reference - 1 "
+         "in false colour, one log scale for the sheet, with its colour bar; on sheet.png only",
+         Processor::cpu},
+        [&](Builder& b, ErrorViews& d) {
+            b.read(cells.image);
+            b.read(cells.cells);
+            d.image = b.produce<Image>("sheet-display");
+            d.scale = b.produce<ErrorScale>("sheet-error-scale");
+        },
+        [&scene, image = cells.image, labels = cells.cells, library, run](const ErrorViews& d, Resources& r) {
+            const auto luminance = [&](RGB primary) { return library->converter().to_xyz(primary).Y; };
+            const LuminanceWeights y{luminance({1, 0, 0}), luminance({0, 1, 0}), luminance({0, 0, 1})};
+            Image& out = r.emplace(d.image, exposed(r.get(image), run->exposure));
+            r.emplace(d.scale, paint_error_views(out, r.get(image), r.get(labels), scene.width, scene.height, y));
+        });
     if (request.labels) {
         const Handle<Image> labelled =
             graph
@@ -232,19 +290,20 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                          std::string(kLabelFont) + "), on sheet.png only",
                      Processor::cpu},
                     [&](Builder& b, Out<Image>& d) {
-                        b.read(cells.image);
+                        b.read(views.image);
+                        b.read(views.scale);
                         b.read(cells.cells);
                         d.out = b.produce<Image>("sheet-labelled");
                     },
-                    [&scene, image = cells.image, labels = cells.cells](const Out<Image>& d, Resources& r) {
-                        Image& out = r.emplace(d.out, r.get(image));
-                        draw_text(out, sheet_labels(r.get(labels), scene.width, scene.height));
+                    [&scene, views, labels = cells.cells](const Out<Image>& d, Resources& r) {
+                        Image& out = r.emplace(d.out, r.get(views.image));
+                        draw_text(out, sheet_labels(r.get(labels), scene.width, scene.height, r.get(views.scale)));
                     })
                 .out;
-        add_image_file_pass(graph, "sheet.png", labelled, run);
+        add_image_file_pass(graph, "sheet.png", labelled, run, PngExposure::already_applied);
     } else {
         graph.skip("sheet-labels", "--sheet-labels off");
-        add_image_file_pass(graph, "sheet.png", cells.image, run);
+        add_image_file_pass(graph, "sheet.png", views.image, run, PngExposure::already_applied);
     }
     add_json_file_pass(graph, "sheet.json", "the cells' record", cells.record, run);
     graph.retain(cells.record);
@@ -277,6 +336,7 @@ SphereSheet render_sphere_sheet(const Scene& base, const SheetRequest& request, 
     FresnelLibrary library(options.data_dir, options.ocio, base.space, base.file);
     Scene scene = base;
     PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, {}, {}, {}};
+    run.exposure = std::exp2(options.exposure_ev);
     run.exr_colour = ExrColour{chromaticities_of(library.converter()), library.converter().space()};
     graph::PassGraph graph;
     const graph::Handle<Json> record = add_sheet_passes(graph, base, scene, request, &library, &run);

@@ -25,6 +25,7 @@ struct PreviewOptions {
     OcioConfigChoice ocio;             // for the reference curves and the PNG display transform
     std::filesystem::path output_dir;  // empty: write nothing (tests)
     int threads = 0;                   // CPU reference threads (0: all cores)
+    double exposure_ev = 0;            // PNGs only: radiance × 2^exposure_ev before the display transform (finite)
 };
 
 struct PreviewResult {

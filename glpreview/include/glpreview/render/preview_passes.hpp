@@ -51,6 +51,7 @@ struct PreviewRun {
     std::optional<OutputStaging> staging;        // made by the first file written
     std::vector<std::filesystem::path> written;  // final paths (output_dir / name), valid after commit_outputs()
     ExrMetadata exr_metadata = {};               // the spheres (render/exr_metadata.hpp), written into every EXR
+    double exposure = 1.0;                       // PNGs' radiance scale (2^EV); EXRs are written as rendered
 
     void open_gl();  // the context (if none) and the renderer; called before the first GPU pass
     GpuRenderer& renderer();
@@ -113,7 +114,13 @@ std::pair<graph::Handle<EquirectTexture>, graph::Handle<Image>> add_load_equirec
 graph::Handle<FresnelSet> add_reference_luts_pass(graph::PassGraph&, const Scene&, const SceneInputs&, PreviewRun*);
 graph::Handle<FresnelSet> add_model_parameters_pass(graph::PassGraph&, const Features&, const SceneInputs&,
                                                     PreviewRun*);
-void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<Image> image, PreviewRun*);
+// A PNG gets the run's exposure unless the pass that made the image applied it (a sheet whose labels and error
+// views are drawn after the exposure, so that they look the same at every exposure).
+enum class PngExposure { apply, already_applied };
+void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<Image> image, PreviewRun*,
+                         PngExposure = PngExposure::apply);
+// The run's exposure on a copy of `image` (the PNG's radiance).
+Image exposed(const Image& image, double exposure);
 void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<ReferenceRender> image, PreviewRun*);
 void add_json_file_pass(graph::PassGraph&, const std::string& file, const std::string& why, graph::Handle<Json> json,
                         PreviewRun*);
