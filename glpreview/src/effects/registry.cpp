@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "environment/environment_effect.hpp"
+#include "fit_error/fit_error_effect.hpp"
 #include "fresnel/fresnel_effect.hpp"
 #include "glossy_localized/glossy_localized_effect.hpp"
 #include "glossy_prefiltered/glossy_prefiltered_effect.hpp"
@@ -18,7 +19,7 @@
 namespace metalfit::glpreview {
 
 std::span<const Effect* const> all_effects() {
-    static const std::array<const Effect*, 9> effects{
+    static const std::array<const Effect*, 10> effects{
         &lights_effect(),  // first: the capture of the environment reads its shadow maps
         &environment_effect(),
         &reflection_effect(),
@@ -27,6 +28,7 @@ std::span<const Effect* const> all_effects() {
         &glossy_localized_effect(),
         &reference_effect(),
         &localization_diagnostics_effect(),  // after the lobes: the localization frame replaces every lobe
+        &fit_error_effect(),                 // after the reference: its error view reads it
         &metrics_effect(),                   // after the reference and the localization frame it reads
     };
     return effects;

@@ -22,6 +22,10 @@ constexpr RGB kColdMiddle{0.02, 0.08, 0.60}, kColdEnd{0.30, 0.90, 1.0};
 
 }  // namespace
 
+LuminanceWeights luminance_weights(const ColorSpaceConverter& converter) {
+    return {converter.to_xyz(RGB{1, 0, 0}).Y, converter.to_xyz(RGB{0, 1, 0}).Y, converter.to_xyz(RGB{0, 0, 1}).Y};
+}
+
 std::vector<double> relative_luminance_error(const Image& model, const Image& reference, const LuminanceWeights& y) {
     std::vector<double> errors(static_cast<std::size_t>(reference.width) * reference.height, 0.0);
     for (int py = 0; py < reference.height; ++py)
@@ -72,6 +76,18 @@ void paint_colour_bar(Image& image, int x0, int y0, int w, int h, const ErrorSca
         const double e = s == 0 ? 0.0 : std::copysign(scale.smallest * std::pow(10.0, std::abs(s) * decades), s);
         for (int x = 0; x < w; ++x) image.set(x0 + x, y0 + y, std::abs(s) < 1e-9 ? kBlack : error_colour(e, scale));
     }
+}
+
+Image error_view_image(const Image& model, const Image& reference, const LuminanceWeights& y, ErrorScale& scale) {
+    const std::vector<double> errors = relative_luminance_error(model, reference, y);
+    scale = error_scale_from(errors);
+    Image view(reference.width, reference.height);
+    paint_error_view(view, 0, 0, view.width, view.height, errors, scale);
+    const int width = std::max(3, view.width / 48), margin = std::max(1, view.width / 96);
+    const int top = std::max(margin, view.height / 10);
+    if (view.width > width + 2 * margin && view.height > 2 * top)
+        paint_colour_bar(view, view.width - width - margin, top, width, view.height - 2 * top, scale);
+    return view;
 }
 
 std::string scale_label(const ErrorScale& scale) {

@@ -76,6 +76,7 @@ Features plan_features(const Scene& scene) {
     const Outputs& o = scene.outputs;
     f.difference_image = o.difference;
     f.metrics = o.metrics;
+    f.fit_error = f.model_fits && (o.difference || o.metrics);
     f.localization_image = o.localization;
     f.cpu_reference = o.reference || o.difference || o.metrics;
     f.monte_carlo_reference = f.cpu_reference && std::any_of(scene.spheres.begin(), scene.spheres.end(),

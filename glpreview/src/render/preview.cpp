@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "glpreview/render/error_view.hpp"
 #include "glpreview/render/exr_metadata.hpp"
 #include "glpreview/render/preview_passes.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
@@ -19,6 +20,14 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     run.exr_colour = ExrColour{chromaticities_of(library.converter()), library.converter().space()};
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
         run.fresnel.push_back(&library.get(scene.spheres[i], "spheres[" + std::to_string(i) + "]"));
+    if (plan_features(scene).fit_error) {
+        for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+            Sphere exact = scene.spheres[i];
+            exact.fresnel = ReferenceFresnel{};
+            run.reference_fresnel.push_back(&library.get(exact, "spheres[" + std::to_string(i) + "]"));
+        }
+        run.luminance = luminance_weights(library.converter());
+    }
     run.exr_metadata = sphere_metadata(scene, run.fresnel);
 
     graph::PassGraph graph;
@@ -27,6 +36,7 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     graph.retain(h.beauty);
     graph.retain(h.reference);
     graph.retain(h.difference);
+    if (h.fit_reference) graph.retain(*h.fit_reference);
     graph.retain(h.localization);
     graph.retain(h.frame_times);
     graph.retain(h.metrics);
@@ -43,6 +53,8 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     if (h.reference_standard_error)
         if (const Image* error = graph.result(*h.reference_standard_error)) result.reference_standard_error = *error;
     if (const Image* difference = graph.result(h.difference)) result.difference = *difference;
+    if (h.fit_reference)
+        if (const Image* fit_reference = graph.result(*h.fit_reference)) result.fit_reference = *fit_reference;
     if (const Image* localization = graph.result(h.localization)) result.localization = *localization;
     if (const FrameTimes* frame_ms = graph.result(h.frame_times)) result.frame_ms = *frame_ms;
     if (const Json* metrics = graph.result(h.metrics)) result.metrics = *metrics;

@@ -276,8 +276,7 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
             d.scale = b.produce<ErrorScale>("sheet-error-scale");
         },
         [&scene, image = cells.image, labels = cells.cells, library, run](const ErrorViews& d, Resources& r) {
-            const auto luminance = [&](RGB primary) { return library->converter().to_xyz(primary).Y; };
-            const LuminanceWeights y{luminance({1, 0, 0}), luminance({0, 1, 0}), luminance({0, 0, 1})};
+            const LuminanceWeights y = luminance_weights(library->converter());
             Image& out = r.emplace(d.image, exposed(r.get(image), run->exposure));
             r.emplace(d.scale, paint_error_views(out, r.get(image), r.get(labels), scene.width, scene.height, y));
         });

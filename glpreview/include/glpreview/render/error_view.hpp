@@ -9,6 +9,7 @@
 
 #include "glpreview/io/image.hpp"
 #include "libfit/color/color.hpp"
+#include "libfit/color/color_space.hpp"
 
 namespace metalfit::glpreview {
 
@@ -27,6 +28,8 @@ inline constexpr double kErrorViewLowestTop = 1e-3;  // a 0.1 % error is always 
 
 // Luminance weights of a linear RGB space: Y of its three primaries at unit value (the space's RGB → XYZ row).
 using LuminanceWeights = RGB;
+// Those of the converter's target space, through OCIO (its inverse, RGB → XYZ).
+LuminanceWeights luminance_weights(const ColorSpaceConverter& converter);
 
 // The signed relative luminance error of every pixel (0 where the reference is darker than
 // kErrorViewDarkReference or either value is not finite).
@@ -47,6 +50,10 @@ void paint_error_view(Image& image, int x0, int y0, int w, int h, const std::vec
 
 // A vertical colour bar in the rectangle: +largest at the top, 0 (black) in the middle, −largest at the bottom.
 void paint_colour_bar(Image& image, int x0, int y0, int w, int h, const ErrorScale& scale);
+
+// A whole image's error view (a scene's fit-error.png and error.png): the errors of `model` against `reference` on
+// the scale chosen from them, with a colour bar at the right edge; `scale` receives the scale.
+Image error_view_image(const Image& model, const Image& reference, const LuminanceWeights& y, ErrorScale& scale);
 
 // "±1e-05..0.1 log": the scale as the label under the view says it.
 std::string scale_label(const ErrorScale& scale);

@@ -14,13 +14,14 @@ namespace metalfit::glpreview {
 struct Features {
     bool environment_capture =
         false;  // a procedural room, sphere room or an equirect on its proxy: ray-cast by GL into the cube map
-    bool distance_channel = false;    // some sphere uses the distance impostor: the cube map stores distances
-    bool equirect_image = false;      // an image environment, at infinity or on a proxy (read with OpenImageIO)
-    bool reference_lut = false;       // some sphere shows the exact reference curve (1D RGB texture)
-    bool model_fits = false;          // some sphere uses a libfit model (fit or closed-form parameters)
-    bool cpu_reference = false;       // the ray-traced reference image (asked for, or needed by difference/metrics)
-    bool difference_image = false;    // |beauty − reference| (asked for)
-    bool metrics = false;             // metrics.json: per-sphere error and ms per frame
+    bool distance_channel = false;  // some sphere uses the distance impostor: the cube map stores distances
+    bool equirect_image = false;    // an image environment, at infinity or on a proxy (read with OpenImageIO)
+    bool reference_lut = false;     // some sphere shows the exact reference curve (1D RGB texture)
+    bool model_fits = false;        // some sphere uses a libfit model (fit or closed-form parameters)
+    bool cpu_reference = false;     // the ray-traced reference image (asked for, or needed by difference/metrics)
+    bool difference_image = false;  // |beauty − reference| (asked for)
+    bool fit_error = false;  // some sphere uses a model and difference or metrics is asked: the reference-curve frame
+    bool metrics = false;    // metrics.json: per-sphere error and ms per frame
     bool localization_image = false;  // localization.exr: steps taken and final |ρ − 1| per pixel (asked for)
     bool prefiltered_map = false;  // some sphere is rough with glossy 'prefiltered': the GGX-prefiltered cube mip chain
     std::set<int> downsample_sizes;  // M of the rough spheres with glossy 'localized': one downsampled cube each

@@ -35,7 +35,8 @@ struct PreviewResult {
     std::optional<ReferenceRender> reference;
     std::optional<Image> reference_standard_error;  // the Monte-Carlo reference's, when a sphere is rough
     std::optional<Image> difference;
-    std::optional<Image> localization;  // GpuRenderer::render_localization(), when metrics or the file ran it
+    std::optional<Image> fit_reference;  // the frame with the exact curves, when some sphere uses a model
+    std::optional<Image> localization;   // GpuRenderer::render_localization(), when metrics or the file ran it
     std::vector<double> frame_ms;
     nlohmann::ordered_json metrics;  // as written to metrics.json (null when not asked for)
     std::vector<std::filesystem::path> written;

@@ -52,6 +52,10 @@ struct PreviewRun {
     std::vector<std::filesystem::path> written;  // final paths (output_dir / name), valid after commit_outputs()
     ExrMetadata exr_metadata = {};               // the spheres (render/exr_metadata.hpp), written into every EXR
     double exposure = 1.0;                       // PNGs' radiance scale (2^EV); EXRs are written as rendered
+    // The exact reference curve of each sphere's material (the fit-error frame's Fresnel), and the luminance weights
+    // of the scene's space (the error views).
+    std::vector<const SphereFresnel*> reference_fresnel = {};
+    RGB luminance{0, 0, 0};
 
     void open_gl();  // the context (if none) and the renderer; called before the first GPU pass
     GpuRenderer& renderer();
@@ -92,6 +96,9 @@ struct PreviewHandles {
     graph::Handle<ReferenceRender> reference;  // the Monte-Carlo one when a sphere is rough, else the analytic one
     std::optional<graph::Handle<Image>> reference_standard_error;  // per pixel, when a sphere is rough
     graph::Handle<Image> difference;
+    // The beauty frame with every sphere's Fresnel the exact reference curve (same localization and lobes): the model
+    // spheres' fit error alone is beauty − this. Only when some sphere uses a model and difference or metrics is asked.
+    std::optional<graph::Handle<Image>> fit_reference;
     graph::Handle<Image> localization;  // r: steps taken, g: |ρ − 1|, b: 1 on impostor spheres
     graph::Handle<FrameTimes> frame_times;
     graph::Handle<Json> metrics;

@@ -15,7 +15,7 @@ using graph::Processor;
 using graph::Resources;
 
 Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRender& reference,
-                  const Image& localization, const Image* standard_error) {
+                  const Image& localization, const Image* standard_error, const Image* fit_reference) {
     const Scene& scene = run.scene;
     Json j;
     j["schema"] = "metalfit.preview-metrics/1";
@@ -24,6 +24,10 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
     j["size"] = {scene.width, scene.height};
     j["space"] = scene.space.empty() ? std::string("scene_linear") : scene.space;  // as the scene names it
     const auto errors = sphere_errors(beauty, reference, scene.spheres.size());
+    // The models' error alone: against the frame with the exact curves, over the same sphere masks.
+    const auto fit_errors = fit_reference ? sphere_errors(beauty, ReferenceRender{*fit_reference, reference.sphere_id},
+                                                          scene.spheres.size())
+                                          : std::vector<SphereError>{};
     const auto effort = sphere_localization(localization, reference, scene.spheres.size());
     const auto noise = standard_error ? sphere_reference_noise(*standard_error, reference, scene.spheres.size())
                                       : std::vector<double>(scene.spheres.size(), 0.0);
@@ -47,6 +51,8 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
         e["search_steps"] = searches ? s.search_steps : 0;
         e["tolerance"] = impostor ? Json(s.tolerance) : Json(nullptr);
         e["rmse"] = errors[i].rmse;  // NaN (null) when no pixel shows the sphere
+        // null: no frame with the exact curves was made (no sphere of the scene uses a model)
+        e["fit_rmse"] = fit_reference ? Json(fit_errors[i].rmse) : Json(nullptr);
         e["mean_abs"] = errors[i].mean_abs;
         e["pixels"] = errors[i].pixels;
         e["mean_iterations"] = impostor ? Json(effort[i].mean_iterations) : Json(nullptr);
@@ -107,12 +113,14 @@ public:
                         b.read(h.reference);
                         b.read(h.localization);
                         if (h.reference_standard_error) b.read(*h.reference_standard_error);
+                        if (h.fit_reference) b.read(*h.fit_reference);
                         d.out = b.produce<Json>("metrics");
                     },
                     [run, h](const Out<Json>& d, Resources& r) {
                         r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.localization),
                                                       h.reference_standard_error ? &r.get(*h.reference_standard_error)
-                                                                                 : nullptr));
+                                                                                 : nullptr,
+                                                      h.fit_reference ? &r.get(*h.fit_reference) : nullptr));
                     })
                 .out;
     }
