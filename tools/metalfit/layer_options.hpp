@@ -1,5 +1,5 @@
-// --film and --coat: layers over every material a subcommand works on (docs/cli.md, "Layers"). Shared by show and
-// fit.
+// --film and --coat: layers over every material a subcommand works on (docs/cli.md, "Layers"). Shared by show, fit,
+// export, report and table (the one place they are parsed).
 #pragma once
 
 #include <CLI/CLI.hpp>

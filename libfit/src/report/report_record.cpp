@@ -11,8 +11,11 @@
 #include "libfit/base/number_text.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/fit/catalog_summary.hpp"
+#include "libfit/io/layer_stack.hpp"
 #include "libfit/optics/fresnel.hpp"
+#include "libfit/optics/stack_reflectance.hpp"
 #include "libfit/reference/reference_curve.hpp"
+#include "libfit/reference/stack_grid.hpp"
 #include "libfit/report/report.hpp"
 #include "report/report_charts.hpp"
 #include "report/report_pages.hpp"
@@ -109,9 +112,16 @@ Json spectral_reflectance_json(const Material& material, const SpectralOptions& 
     for (double theta : kSpectralAngles) {
         angles.push_back(theta);
         Json row = Json::array();
-        for (double w = kVisibleMin; w <= kVisibleMax; w += kSpectralStep)
-            row.push_back(plotted(
-                fresnel(mu_of_degrees(theta), material.index(w, spectral.interpolation, spectral.out_of_range))));
+        for (double w = kVisibleMin; w <= kVisibleMax; w += kSpectralStep) {
+            const double mu = mu_of_degrees(theta);
+            if (material.layers && !material.layers->empty()) {  // the stack's R(λ), as the reference curve's
+                const int nm = static_cast<int>(w);
+                row.push_back(plotted(
+                    stack_reflectance_unpolarized(mu, stack_optics_on_grid(material, nm, nm, spectral).front())));
+            } else {
+                row.push_back(plotted(fresnel(mu, material.index(w, spectral.interpolation, spectral.out_of_range))));
+            }
+        }
         R.push_back(row);
     }
     return {{"nm", nm}, {"theta_deg", angles}, {"R", R}};
@@ -140,7 +150,8 @@ Json sources_json(const MaterialFit& fit, const ReportInputs& in) {
     for (const CatalogSource* s : all) {
         Json j = {{"source", s->source}, {"reference", s->reference}, {"primary", s == &entry->primary}};
         try {
-            const Material m = load_material(in.catalog, entry->id, s->source);
+            Material m = load_material(in.catalog, entry->id, s->source);
+            m.layers = fit.material.layers;  // every source under the same layers
             const ReferenceCurve curve(m, in.colorimetry, in.converter, in.fit.spectral);
             const RGB f0 = curve(1.0), f82 = curve(kMuF82);
             for (int c = 0; c < 3; ++c) {
@@ -179,6 +190,7 @@ Json provenance_json(const MaterialFit& fit, const ReportInputs& in) {
         j["database_path"] = source->database_path;
         j["kind"] = entry->kind;
     }
+    if (fit.material.layers && !fit.material.layers->empty()) j["stack"] = stack_record(fit.material);
     return j;
 }
 
