@@ -48,4 +48,12 @@ std::vector<std::function<Material()>> LayerOptions::over(std::vector<std::funct
     return loaders;
 }
 
+LayerOptions::ChartLayers LayerOptions::chart_layers(const std::filesystem::path& data_dir) const {
+    if (film.empty()) throw UsageError("--thickness charts a film: give --film MATERIAL (TiO2) or an index (2.2)");
+    const FilmCatalog films = FilmCatalog::load(data_dir);
+    ChartLayers layers{load_film_material(films, film), std::nullopt};
+    if (!coat.empty()) layers.coat = load_coat(films, coat);
+    return layers;
+}
+
 }  // namespace metalfit::cli
