@@ -282,6 +282,15 @@ TEST_F(CliLayers, NamedFinishesAreTheirMetalUnderTheirLayers) {
     expect_one_line_error(run("show lacquered-brass --coat 1.5"), 2, "named finish with layers of its own");
     const Result list = run("list");
     EXPECT_TRUE(Contains(list.out, "anodized-ti-80nm")) << list.out;
+    // In a report: its metal's catalog provenance and the finish.
+    const Result report =
+        run("report tempered-steel-blue --model schlick --renders off -o '" + path("report").string() + "'");
+    ASSERT_EQ(report.exit_code, 0) << report.err;
+    std::ifstream in(path("report") / "report.json");
+    const auto m = nlohmann::json::parse(in)["materials"][0];
+    EXPECT_EQ(m["id"], "tempered-steel-blue");
+    EXPECT_EQ(m["provenance"]["kind"], "metal");
+    EXPECT_EQ(m["provenance"]["stack"]["finish"]["id"], "tempered-steel-blue");
 }
 
 TEST_F(CliLayers, EveryShippedFinishLoadsAndStatesItsSources) {

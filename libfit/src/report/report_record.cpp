@@ -73,13 +73,19 @@ private:
     bool same_space_;
 };
 
-// The catalog entry and source a material was loaded from (its data file is that source's), if it is one.
+// The catalog entry and source a material was loaded from (its data file is that source's), if it is one; a named
+// finish's metal too (its id is the finish's: found by its layers and file).
 std::pair<const CatalogEntry*, const CatalogSource*> catalog_source(const Material& material, const Catalog& catalog) {
-    const CatalogEntry* entry = catalog.find(material.id);
-    if (!entry || entry->id != material.id) return {nullptr, nullptr};
-    if (entry->primary.file == material.provenance.file) return {entry, &entry->primary};
-    for (const CatalogSource& s : entry->alternates)
-        if (s.file == material.provenance.file) return {entry, &s};
+    const auto in = [&material](const CatalogEntry* entry) -> std::pair<const CatalogEntry*, const CatalogSource*> {
+        if (entry->primary.file == material.provenance.file) return {entry, &entry->primary};
+        for (const CatalogSource& s : entry->alternates)
+            if (s.file == material.provenance.file) return {entry, &s};
+        return {nullptr, nullptr};
+    };
+    if (const CatalogEntry* entry = catalog.find(material.id); entry && entry->id == material.id) return in(entry);
+    if (material.layers && material.layers->finish)
+        for (const CatalogEntry& entry : catalog.entries())
+            if (const auto found = in(&entry); found.first) return found;
     return {nullptr, nullptr};
 }
 
