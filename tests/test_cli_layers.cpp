@@ -363,6 +363,27 @@ TEST_F(CliLayers, TitaniumsOxideColoursFollowThePublishedOrderWithThickness) {
     EXPECT_TRUE(std::equal(published.begin(), published.end(), order.begin())) << seen;
 }
 
+TEST_F(CliLayers, TemperColoursOfIronFollowThePublishedOrderAndTheFinishesSitInIt) {
+    // Temper colours of steel with temperature (thickness): faint yellow, straw, brown, purple, dark blue, light blue
+    // (data/finishes.json's sources): Fe3O4 on iron, named by hue in order of thickness, runs merged.
+    const Result r = run("table Fe --film Fe3O4 --thickness 0:100:2nm --format json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::vector<std::string> order;
+    const auto chart = nlohmann::json::parse(r.out);
+    for (const auto& row : chart["rows"]) {
+        const std::string name = colour_name(hsv(row["F0"]["display8"]));
+        if (!name.empty() && (order.empty() || order.back() != name)) order.push_back(name);
+    }
+    const std::vector<std::string> published{"yellow", "purple", "blue"};
+    ASSERT_GE(order.size(), published.size());
+    EXPECT_TRUE(std::equal(published.begin(), published.end(), order.begin()));
+    // The straw finish is a yellow, the blue one a blue.
+    const auto straw = nlohmann::json::parse(run("table tempered-steel-straw --format json").out);
+    const auto blue = nlohmann::json::parse(run("table tempered-steel-blue --format json").out);
+    EXPECT_EQ(colour_name(hsv(straw["materials"][0]["F0"]["display8"])), "yellow");
+    EXPECT_EQ(colour_name(hsv(blue["materials"][0]["F0"]["display8"])), "blue");
+}
+
 TEST_F(CliLayers, ChartAtZeroIsTheBareMetalAndItsRowsAreTheStacks) {
     const Result r = run("table Ti --film TiO2 --thickness 0:100:20nm --versus 2.488 --format json");
     ASSERT_EQ(r.exit_code, 0) << r.err;
