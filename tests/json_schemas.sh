@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ctest json_schemas.records: writes every kind of JSON record
 # metalfit writes (fit --json plain, pinned, with a budget and of a layered material; metalfit_export.json of the catalog export and of two
-# exports merged into one folder; openpbr/*.json; the glTF extras; show --json; table --format json and physicallybased; report.json;
+# exports merged into one folder, and of a coated metal; openpbr/*.json; the glTF extras; show --json (and of a named finish); table
+# --format json (bare and layered) and physicallybased; the oxide colour chart; report.json (bare and layered);
 # bench --json; glpreview's metrics.json when glpreview is given) and validates each against schemas/ with Ajv
 # (json_schemas.mjs); then has json_schemas.mjs --broken break each record in many ways and checks that every broken
 # copy is refused (the schemas can fail).
@@ -24,12 +25,20 @@ export OCIO=
 "$metalfit" show Ti --film TiO2:80nm --coat 1.5 --json > "$dir/show-layered.json"
 "$metalfit" fit Ti --film TiO2:80nm --coat PMMA:20um --extrapolate --model f82-tint,schlick --json -o "$dir/fit-layered.json" 2>/dev/null
 "$metalfit" table --format json -o "$dir/table.json"
+# The layers on table, report and export, a named finish, and the oxide colour chart with and without --versus.
+"$metalfit" table Ti,Au --film TiO2:80nm --coat 1.5 --format json -o "$dir/table-layered.json"
+"$metalfit" show anodized-ti-80nm --json > "$dir/show-finish.json"
+"$metalfit" table Ti --film TiO2 --thickness 0:300:50nm --versus 2.488 --format json -o "$dir/oxide-chart.json"
+"$metalfit" table Fe --film Fe3O4 --coat 1.5 --thickness 20nm --format json -o "$dir/oxide-chart-single.json"
 "$metalfit" table --format physicallybased -o "$dir/physicallybased.json"
 "$metalfit" report Au,Cu --renders off -o "$dir/report" > /dev/null
+"$metalfit" report Ti --film TiO2:80nm --model f82-tint --renders off -o "$dir/report-layered" > /dev/null
+"$metalfit" export Au --coat 1.5 --model f82-tint --format json,openpbr,gltf -o "$dir/ex-layered" 2>/dev/null
 # The GPU sections of bench need glpreview: without one they are skipped, which the schema describes too.
 "$metalfit" bench --quick --json --glpreview "$dir/no-glpreview" -o "$dir/bench.json" 2>/dev/null
 # The catalog export of the build (every material and model) and its OpenPBR and glTF files of the materials a…
 files=("$dir"/*.json "$dir/ex/metalfit_export.json" "$dir"/ex/openpbr/*.json "$dir"/ex/gltf/*.gltf "$dir/report/report.json"
+       "$dir/report-layered/report.json" "$dir/ex-layered/metalfit_export.json" "$dir"/ex-layered/openpbr/*.json
        "$dir/ex-studio/metalfit_export.json" "$dir"/ex-studio/openpbr/*.json "$dir"/ex-studio/gltf/*.gltf
        "$catalog_export/metalfit_export.json" "$catalog_export"/openpbr/metalfit_a*.json "$catalog_export"/gltf/metalfit_a*.gltf)
 if [ "$glpreview" != - ]; then

@@ -135,6 +135,9 @@ BenchReport run_bench(const BenchOptions& o) {
         report.convergence.push_back(
             {convergence.nodes[i], convergence.integration_ms[i], convergence.rel_rms_change[i]});
 
+    say("timing the layers on " + report.material + " (coat, film, both; ratios to the bare metal)");
+    report.layers = layers_bench(env, report.material, report.timing);
+
     say("GPU: " + (o.glpreview.empty() ? std::string("no glpreview") : o.glpreview.string()));
     report.shaders = run_shader_bench(o.glpreview, o.quick);
     report.localization = run_localization_bench(o.glpreview, o.quick);
@@ -223,6 +226,19 @@ nlohmann::json to_json(const BenchReport& r) {
                           {"cpu_array_percent", optional(t.cpu_array_percent)},
                           {"spirv_percent", optional(t.spirv_percent)},
                           {"shader_percent", optional(t.shader_percent)}});
+    json layers = nullptr;
+    if (r.layers) {
+        json rows = json::array();
+        const auto ratio_json = [](const Ratio& q) { return json{{"median", q.median}, {"noise", q.noise}}; };
+        for (const LayersRow& row : r.layers->rows)
+            rows.push_back({{"id", row.id},
+                            {"stack", row.stack},
+                            {"reference_ms", row.reference_ms},
+                            {"reference_ratio", ratio_json(row.reference_ratio)},
+                            {"fit_ms", row.fit_ms},
+                            {"fit_ratio", ratio_json(row.fit_ratio)}});
+        layers = {{"material", r.layers->material}, {"model", r.layers->model}, {"rows", rows}};
+    }
     const auto gpu = [](const auto& section) {
         return section.value ? json{{"result", to_json(*section.value)}, {"skipped", nullptr}}
                              : json{{"result", nullptr}, {"skipped", section.skipped}};
@@ -246,6 +262,7 @@ nlohmann::json to_json(const BenchReport& r) {
               {"shaders", spirv}}},
             {"convergence",
              {{"material", r.material}, {"reference_nodes", r.convergence_reference_nodes}, {"rows", convergence}}},
+            {"layers", layers},
             {"gpu", {{"shaders", gpu(r.shaders)}, {"localization", gpu(r.localization)}}},
             {"thesis_table_3_2", thesis},
             {"seconds", r.seconds}};

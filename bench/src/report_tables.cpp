@@ -136,6 +136,21 @@ std::vector<Table> report_tables(const BenchReport& r) {
                          "once; the model columns are relative changes (1e-3 = 0.1 % of the rel_rms itself)."};
     tables.push_back(std::move(convergence));
 
+    if (r.layers) {  // issue 28, goal 10: a stack's cost as ratios to the bare metal's, this run
+        Table layers{"Layers on " + r.layers->material + ": the stack's reference curve and its " + r.layers->model +
+                         " fit, as ratios to the bare metal's (measured in this run)",
+                     {"stack", "reference ms", "ratio ± noise", "fit ms", "ratio ± noise"},
+                     {},
+                     {}};
+        for (const LayersRow& row : r.layers->rows)
+            layers.rows.push_back({row.stack, fixed(row.reference_ms, 3), ratio_text(row.reference_ratio),
+                                   fixed(row.fit_ms, 2), ratio_text(row.fit_ratio)});
+        layers.notes = {"reference: the curve built from the spectral data (the layers' optics on the colour grid, "
+                        "OCIO) and sampled at the fit's nodes; fit: fit_material with that model (closed forms, "
+                        "Ceres, metrics). Coat n = 1.5, film TiO2 (Siefke) 80 nm."};
+        tables.push_back(std::move(layers));
+    }
+
     if (r.shaders.value) {
         const ShaderBench& b = *r.shaders.value;
         Table t{"GPU: full-screen model pass at " + std::to_string(b.width) + "x" + std::to_string(b.height) + ", " +

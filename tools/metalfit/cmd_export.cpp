@@ -8,6 +8,7 @@
 #include "colour_options.hpp"
 #include "commands.hpp"
 #include "export_options.hpp"
+#include "layer_options.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/export/export.hpp"
 #include "libfit/fit/budget.hpp"
@@ -21,6 +22,7 @@ namespace {
 
 struct ExportOptions {
     MaterialSelection selection;
+    LayerOptions layers;
     std::string models;
     std::string params = "fit";
     std::string formats;
@@ -57,8 +59,9 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
                           parse_id_prefix(o.id_prefix)};
     const CostTable costs = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
     const Catalog catalog = Catalog::load(global.data_dir);
-    const auto loaders = o.selection.loaders(catalog, "export");
+    const auto selected = o.selection.loaders(catalog, "export");
     const ColourSetup setup = resolve_colour_options(o.colour, global);
+    const auto loaders = o.layers.over(selected, global.data_dir, setup.spectral);
     const ErrorSettings error{};  // the defaults of `metalfit fit`: rel metric, uniform weight, 128 nodes
     FitConstraints constraints;
     constraints.gamut_fit = o.gamut_fit;
@@ -95,6 +98,7 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
 std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<ExportOptions>();
     o->selection.add_options(app, true);
+    o->layers.add_options(app);
     app.add_option("--model", o->models,
                    "Models, comma-separated, or all (" + model_ids() +
                        "), or best:BUDGET (e.g. best:0.5%: the cheapest model meeting that error in every channel)")

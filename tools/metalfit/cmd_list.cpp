@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "libfit/io/catalog.hpp"
+#include "libfit/io/finishes.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -75,7 +76,18 @@ std::function<void()> add_list_command(CLI::App& app, const GlobalOptions& globa
         const Catalog catalog = Catalog::load(global.data_dir);
         nlohmann::json rows = nlohmann::json::array();
         for (const auto& entry : catalog.entries()) rows.push_back(describe(entry, coverage_of(catalog, entry)));
-        emit(options->json ? rows.dump(2) + "\n" : table(rows), options->output);
+        std::string text;
+        if (!options->json) {
+            text = table(rows);
+            // The named finishes, usable as materials (the JSON stays the list of catalog materials).
+            const FinishCatalog finishes = FinishCatalog::load(global.data_dir);
+            if (!finishes.entries().empty()) text += "\nnamed finishes (data/finishes.json; docs/colour.md):\n";
+            for (const Finish& f : finishes.entries())
+                text += "  " + f.id + std::string(f.id.size() < 24 ? 24 - f.id.size() : 1, ' ') + f.metal +
+                        (f.coat.empty() ? "" : " --coat " + f.coat) + (f.film.empty() ? "" : " --film " + f.film) +
+                        "\n";
+        }
+        emit(options->json ? rows.dump(2) + "\n" : text, options->output);
     };
 }
 

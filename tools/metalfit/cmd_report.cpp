@@ -8,6 +8,7 @@
 #include "colour_options.hpp"
 #include "commands.hpp"
 #include "error_options.hpp"
+#include "layer_options.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/standard_output.hpp"
 #include "libfit/color/display_transform.hpp"
@@ -26,6 +27,7 @@ namespace {
 
 struct ReportOptions {
     MaterialSelection selection;
+    LayerOptions layers;
     std::string models = "all";
     ColourOptions colour;
     ErrorOptions error;
@@ -48,9 +50,10 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     const CostTable cost_table = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
     check_report_folder(o.output);  // before the fits, which take a while for --all
     const Catalog catalog = Catalog::load(global.data_dir);
-    const auto loaders = o.selection.loaders(catalog, "report");
+    const auto selected = o.selection.loaders(catalog, "report");
 
     const ColourSetup setup = resolve_colour_options(o.colour, global);
+    const auto loaders = o.layers.over(selected, global.data_dir, setup.spectral);
     const DisplayTransform display = DisplayTransform::create(setup.config);
     const ErrorSettings error = o.error.settings();
     const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models)};
@@ -60,7 +63,8 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
 
-    // glpreview renders catalog materials from their primary source, a column group per model of the report.
+    // glpreview renders bare catalog materials from their primary source, a column group per model of the report (a
+    // layered material is left out: the renderer's reference LUT is the bare metal's).
     SphereRenderRequest render_request{glpreview_beside_this_program(),
                                        global.data_dir / "scenes" / "sheet.json",
                                        {},
@@ -70,7 +74,7 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     for (const Model* m : request.models) render_request.models.emplace_back(m->id());
     for (const MaterialFit& f : fits)
         if (const CatalogEntry* e = catalog.find(f.material.id);
-            e && e->id == f.material.id && e->primary.file == f.material.provenance.file)
+            !f.material.layers && e && e->id == f.material.id && e->primary.file == f.material.provenance.file)
             render_request.materials.push_back(f.material.id);
     const SphereRenders renders = render_spheres(render_request, render_mode);
     if (!renders.sheet && render_mode == RenderMode::auto_)
@@ -97,6 +101,7 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
 std::function<void()> add_report_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<ReportOptions>();
     o->selection.add_options(app, true);
+    o->layers.add_options(app);
     app.add_option("--model", o->models, "Models, comma-separated, or all: " + model_ids());
     add_colour_options(app, o->colour);
     add_error_options(app, o->error);

@@ -1,37 +1,94 @@
-// metalfit table: F0 and F82 tint of every catalog metal, linear and as 8-bit display values / hex, with the source
-// and caveat (libfit's metal_table), as CSV, JSON or Markdown; or, in srgb-linear and ACEScg at once, in
-// physicallybased.info's material shape (libfit's physicallybased_table).
+// metalfit table: F0 and F82 tint of every catalog metal (or of the materials named, under --film/--coat when given),
+// linear and as 8-bit display values / hex, with the source and caveat (libfit's metal_table), as CSV, JSON or
+// Markdown; or, in srgb-linear and ACEScg at once, in physicallybased.info's material shape (libfit's
+// physicallybased_table).
 #include <nlohmann/json.hpp>
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "layer_options.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/fit/fit_batch.hpp"
 #include "libfit/fit/metal_table.hpp"
+#include "libfit/fit/oxide_chart.hpp"
 #include "libfit/fit/physicallybased_table.hpp"
+#include "material_selection.hpp"
 
 namespace metalfit::cli {
 namespace {
 
 struct TableOptions {
+    MaterialSelection selection;
+    LayerOptions layers;
     ColourOptions colour;
     std::string format = "md";
     std::filesystem::path output;
+    std::string thickness;  // --thickness FIRST:LAST:STEP: the oxide chart
+    std::string versus;     // --versus INDEX
 };
+
+// `table METAL --film FILM --thickness 0:300:10nm [--versus 2.488]`: the oxide colour chart (libfit's oxide_chart).
+void run_chart(const TableOptions& o, const GlobalOptions& global, const Catalog& catalog, const ColourSetup& setup) {
+    if (o.format == "physicallybased") throw UsageError("--thickness: the chart's formats are md, csv, json and html");
+    // Every argument is checked before any work.
+    const std::vector<double> thicknesses = parse_thickness_range(o.thickness);
+    const std::optional<double> versus =
+        o.versus.empty() ? std::nullopt : std::optional<double>(parse_versus_index(o.versus));
+    const auto selected = o.selection.loaders(catalog, "table --thickness");
+    if (selected.size() != 1) throw UsageError("table --thickness: give one metal (Ti)");
+    const LayerOptions::ChartLayers layers = o.layers.chart_layers(global.data_dir);
+    Material metal = selected.front()();
+    if (metal.layers && !metal.layers->empty())
+        throw UsageError("table --thickness: " + metal.id +
+                         " is a named finish with layers of its own: give its metal");
+    for (const std::string& w : metal.warnings) warn(w);
+    for (const std::string& w : layers.film.warnings) warn("film " + layers.film.id + ": " + w);
+    const ColorSpaceConverter scene_linear = ColorSpaceConverter::create(setup.config);
+    const DisplayTransform display = DisplayTransform::create(setup.config);
+    const OxideChart chart = oxide_chart({std::move(metal), layers.film, layers.coat, thicknesses, versus},
+                                         {setup.colorimetry, setup.converter, scene_linear, display, setup.spectral});
+    if (o.format == "csv")
+        emit(oxide_chart_csv(chart), o.output);
+    else if (o.format == "json")
+        emit(oxide_chart_json(chart).dump(2) + "\n", o.output);
+    else if (o.format == "html")
+        emit(oxide_chart_html(chart), o.output);
+    else
+        emit(oxide_chart_markdown(chart), o.output);
+}
 
 }  // namespace
 
 std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& global) {
     auto o = std::make_shared<TableOptions>();
+    o->selection.add_options(app, false);
+    o->layers.add_options(app);
     add_colour_options(app, o->colour);
     app.add_option("--format", o->format,
-                   "csv, json, md (Markdown; default md) or physicallybased (physicallybased.info's "
-                   "material JSON, srgb-linear and ACEScg whatever --space says)")
-        ->check(CLI::IsMember({"csv", "json", "md", "physicallybased"}));
+                   "csv, json, md (Markdown; default md), physicallybased (physicallybased.info's "
+                   "material JSON, srgb-linear and ACEScg whatever --space says) or html (the oxide chart's swatches)")
+        ->check(CLI::IsMember({"csv", "json", "md", "physicallybased", "html"}));
+    app.add_option("--thickness", o->thickness,
+                   "The oxide colour chart of one metal under --film MATERIAL: a row per film thickness, "
+                   "FIRST:LAST:STEP with a unit (0:300:10nm; 0 to 2 µm) or one thickness (80nm)");
+    app.add_option("--versus", o->versus,
+                   "With --thickness: beside each row a film of this constant index (2.488, physicallybased.info's "
+                   "anodized titanium) and the CIEDE2000 between the two");
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
     return [o, &global] {
         const Catalog catalog = Catalog::load(global.data_dir);
         const ColourSetup setup = resolve_colour_options(o->colour, global);
+        if (!o->thickness.empty()) {
+            run_chart(*o, global, catalog, setup);
+            return;
+        }
+        if (!o->versus.empty()) throw UsageError("--versus compares the oxide chart's film: give --thickness");
+        if (o->format == "html") throw UsageError("--format html is the oxide chart's (--thickness)");
+        const bool every_metal = o->selection.materials().empty();
         if (o->format == "physicallybased") {
+            if (!every_metal || !o->layers.film.empty() || !o->layers.coat.empty())
+                throw UsageError(
+                    "table --format physicallybased writes the catalog's bare metals: no materials, --film or --coat");
             const ColorSpaceConverter srgb_linear =
                 ColorSpaceConverter::create(setup.config, kPhysicallyBasedSrgbLinear, o->colour.xyz_space);
             const ColorSpaceConverter acescg =
@@ -43,8 +100,12 @@ std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& glob
         }
         const ColorSpaceConverter scene_linear = ColorSpaceConverter::create(setup.config);
         const DisplayTransform display = DisplayTransform::create(setup.config);
+        // No material named: every catalog metal (under the layers, when given).
+        const auto selected = every_metal ? material_loaders(catalog, true, {}, "", o->selection.labels)
+                                          : o->selection.loaders(catalog, "table");
+        const auto loaders = o->layers.over(selected, global.data_dir, setup.spectral);
         const MetalTable table =
-            metal_table(catalog, {setup.colorimetry, setup.converter, scene_linear, display, setup.spectral});
+            metal_table(loaders, catalog, {setup.colorimetry, setup.converter, scene_linear, display, setup.spectral});
         if (o->format == "csv")
             emit(metal_table_csv(table), o->output);
         else if (o->format == "json")

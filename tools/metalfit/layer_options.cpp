@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "libfit/base/errors.hpp"
 #include "libfit/io/layer_materials.hpp"
 #include "libfit/io/layer_stack.hpp"
 #include "libfit/reference/stack_grid.hpp"
@@ -37,11 +38,22 @@ std::vector<std::function<Material()>> LayerOptions::over(std::vector<std::funct
     for (auto& load : loaders)
         load = [load = std::move(load), layers, warnings] {
             Material m = load();
+            if (m.layers && !m.layers->empty())
+                throw UsageError(m.id + " is a named finish with layers of its own: give its metal with --film/--coat, "
+                                        "or the finish alone");
             m.layers = layers;
             m.warnings.insert(m.warnings.end(), warnings.begin(), warnings.end());
             return m;
         };
     return loaders;
+}
+
+LayerOptions::ChartLayers LayerOptions::chart_layers(const std::filesystem::path& data_dir) const {
+    if (film.empty()) throw UsageError("--thickness charts a film: give --film MATERIAL (TiO2) or an index (2.2)");
+    const FilmCatalog films = FilmCatalog::load(data_dir);
+    ChartLayers layers{load_film_material(films, film), std::nullopt};
+    if (!coat.empty()) layers.coat = load_coat(films, coat);
+    return layers;
 }
 
 }  // namespace metalfit::cli

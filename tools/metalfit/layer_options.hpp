@@ -1,14 +1,16 @@
-// --film and --coat: layers over every material a subcommand works on (docs/cli.md, "Layers"). Shared by show and
-// fit.
+// --film and --coat: layers over every material a subcommand works on (docs/cli.md, "Layers"). Shared by show, fit,
+// export, report and table (the one place they are parsed).
 #pragma once
 
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "libfit/io/layer_stack.hpp"
 #include "libfit/io/material.hpp"
 #include "libfit/reference/reference_curve.hpp"
 
@@ -25,6 +27,14 @@ struct LayerOptions {
     std::vector<std::function<Material()>> over(std::vector<std::function<Material()>> loaders,
                                                 const std::filesystem::path& data_dir,
                                                 const SpectralOptions& spectral) const;
+
+    // The oxide chart's layers (`table --thickness`): the film's material without a thickness (--film is required
+    // then) and the coat, if any, loaded and checked as for over().
+    struct ChartLayers {
+        LayerMaterial film;
+        std::optional<ClearCoat> coat;
+    };
+    ChartLayers chart_layers(const std::filesystem::path& data_dir) const;
 };
 
 }  // namespace metalfit::cli

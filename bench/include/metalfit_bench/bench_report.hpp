@@ -12,6 +12,7 @@
 #include "libfit/base/interleaved_timer.hpp"
 #include "metalfit_bench/catalog_accuracy.hpp"
 #include "metalfit_bench/glpreview_results.hpp"
+#include "metalfit_bench/layers.hpp"
 #include "metalfit_bench/machine.hpp"
 #include "metalfit_bench/pareto.hpp"
 #include "metalfit_bench/spirv_cost.hpp"
@@ -75,6 +76,7 @@ struct BenchReport {
     int convergence_reference_nodes = 0;
     std::vector<std::string> convergence_models;
     std::vector<ConvergenceRow> convergence;
+    std::optional<LayersBench> layers;  // the stacks' cost (metalfit_bench/layers.hpp)
     GpuSection<ShaderBench> shaders;
     GpuSection<LocalizationBench> localization;
     double seconds = 0;  // wall time of the whole run

@@ -2,6 +2,7 @@
 
 #include "libfit/base/text.hpp"
 #include "libfit/base/version.hpp"
+#include "libfit/io/layer_stack.hpp"
 
 namespace metalfit::detail {
 
@@ -12,6 +13,18 @@ std::vector<std::string> header_provenance_lines(const Material& m, const FitRec
     const std::string reference = one_line(m.provenance.references);
     lines.push_back("reference: " + (reference.empty() ? std::string("none given") : reference));
     if (!m.provenance.note.empty()) lines.push_back("caveat: " + one_line(m.provenance.note));
+    if (m.layers && !m.layers->empty()) {
+        // The whole stack: the constants reproduce the layered curve, not the bare metal's.
+        lines.push_back("stack: " + one_line(describe_stack(m)) +
+                        "; the parameters fit the stack's reflectance (docs/colour.md, Layered metals)");
+        const auto layer = [&lines](const char* what, const LayerMaterial& l) {
+            if (l.source == "constant") return;
+            lines.push_back(std::string(what) + " data: " + l.id + " (" + l.source + ", " +
+                            l.provenance.file.filename().string() + ", sha256 " + l.provenance.sha256 + ")");
+        };
+        if (m.layers->coat) layer("coat", m.layers->coat->material);
+        if (m.layers->film) layer("film", m.layers->film->material);
+    }
     lines.push_back("colour space: " + r.space + " (OCIO " + r.config.origin + "); " + to_string(r.illuminant) + ", " +
                     to_string(r.observer) + ", R_c(mu) white balanced to the perfect reflector");
     lines.push_back("colour convention: " + to_string(r.convention) +

@@ -1,11 +1,13 @@
 #include "libfit/fit/metal_table.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
 #include "libfit/base/number_text.hpp"
 #include "libfit/base/text.hpp"
 #include "libfit/base/version.hpp"
+#include "libfit/io/layer_stack.hpp"
 #include "libfit/models/schlick/schlick.hpp"
 
 namespace metalfit {
@@ -60,23 +62,46 @@ std::string hex(const Display8& rgb) {
 }
 
 MetalTable metal_table(const Catalog& catalog, const MetalTableColour& colour) {
+    std::vector<std::function<Material()>> loaders;
+    for (const CatalogEntry& entry : catalog.entries())
+        loaders.push_back([&catalog, id = entry.id] { return load_material(catalog, id); });
+    return metal_table(loaders, catalog, colour);
+}
+
+MetalTable metal_table(const std::vector<std::function<Material()>>& loaders, const Catalog& catalog,
+                       const MetalTableColour& colour) {
     MetalTable table{colour.working.space(), colour.display.description(), {}};
     std::vector<RGB> scene_values;  // F0 and tint of every row, in scene_linear, for one display call
-    for (const CatalogEntry& entry : catalog.entries()) {
-        const Material material = load_material(catalog, entry.id);
+    for (const auto& load : loaders) {
+        const Material material = load();
         const ReferenceCurve working(material, colour.colorimetry, colour.working, colour.spectral);
         const ReferenceCurve scene(material, colour.colorimetry, colour.scene_linear, colour.spectral);
-        MetalTableRow row{entry.id,
-                          entry.name,
-                          entry.kind,
-                          entry.primary.source,
-                          entry.primary.reference,
-                          entry.primary.note,
+        // The catalog entry whose data file it is (a named finish's metal too), for its kind and reference.
+        const CatalogEntry* entry = nullptr;
+        bool in_catalog = false;
+        for (const CatalogEntry& e : catalog.entries()) {
+            if (e.primary.file == material.provenance.file) entry = &e, in_catalog = true;
+            for (const CatalogSource& a : e.alternates)
+                if (a.file == material.provenance.file) entry = &e;
+            if (entry) break;
+        }
+        MetalTableRow row{material.id,
+                          material.name,
+                          entry ? entry->kind : "file",
+                          material.source,
+                          in_catalog ? entry->primary.reference : one_line(material.provenance.references),
+                          material.provenance.note,
                           working(1.0),
                           {},
                           {},
-                          {}};
+                          {},
+                          {},
+                          nullptr};
         row.tint = f82_tint(row.f0, working(kMuF82));
+        if (material.layers && !material.layers->empty()) {
+            row.stack = describe_stack(material);
+            row.stack_record = stack_record(material);
+        }
         const RGB scene_f0 = scene(1.0);
         scene_values.push_back(scene_f0);
         scene_values.push_back(f82_tint(scene_f0, scene(kMuF82)));
@@ -92,8 +117,11 @@ MetalTable metal_table(const Catalog& catalog, const MetalTableColour& colour) {
 
 std::string metal_table_csv(const MetalTable& table) {
     std::ostringstream s;
+    const bool layered =
+        std::any_of(table.rows.begin(), table.rows.end(), [](const auto& r) { return !r.stack.empty(); });
     s << "id,name,kind,F0_r,F0_g,F0_b,F0_hex,F0_r8,F0_g8,F0_b8,tint_r,tint_g,tint_b,tint_hex,tint_r8,tint_g8,tint_b8,"
-         "in_gamut,source,reference,caveat\n";
+         "in_gamut,source,reference,caveat"
+      << (layered ? ",stack" : "") << "\n";
     for (const MetalTableRow& r : table.rows) {
         s << csv_field(r.id) << ',' << csv_field(r.name) << ',' << r.kind;
         for (const auto& [linear, display] : {std::pair{r.f0, r.f0_display}, std::pair{r.tint, r.tint_display}}) {
@@ -102,7 +130,9 @@ std::string metal_table_csv(const MetalTable& table) {
             for (int c = 0; c < 3; ++c) s << ',' << static_cast<int>(display[static_cast<std::size_t>(c)]);
         }
         s << ',' << (in_gamut(r.f0) && in_gamut(r.tint) ? "yes" : "no") << ',' << csv_field(r.source) << ','
-          << csv_field(r.reference) << ',' << csv_field(r.note) << '\n';
+          << csv_field(r.reference) << ',' << csv_field(r.note);
+        if (layered) s << ',' << csv_field(r.stack);
+        s << '\n';
     }
     return s.str();
 }
@@ -119,7 +149,8 @@ std::string metal_table_markdown(const MetalTable& table) {
         };
         s << "| " << md_cell(r.id) << " | " << md_cell(r.name) << " | " << triple(r.f0) << " | `" << hex(r.f0_display)
           << "` | " << triple(r.tint) << " | `" << hex(r.tint_display) << "` | " << md_cell(r.source) << " ("
-          << md_cell(r.reference) << ") | " << md_cell(r.note) << " |\n";
+          << md_cell(r.reference) << ") | " << md_cell(r.note)
+          << (r.stack.empty() ? "" : std::string(r.note.empty() ? "" : " ") + "stack: " + md_cell(r.stack)) << " |\n";
     }
     return s.str();
 }
@@ -141,6 +172,7 @@ nlohmann::ordered_json metal_table_json(const MetalTable& table) {
                         {"source", r.source},
                         {"reference", r.reference},
                         {"note", r.note}});
+        if (!r.stack.empty()) rows.back()["stack"] = r.stack_record;
     }
     return {{"schema", "metalfit.table/1"},
             {"metalfit_version", METALFIT_VERSION},

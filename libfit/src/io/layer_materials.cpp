@@ -138,6 +138,14 @@ ThinFilm load_film(const FilmCatalog& films, std::string_view text) {
     return {layer_material(films, "--film", text, a.material), *a.thickness_nm};
 }
 
+LayerMaterial load_film_material(const FilmCatalog& films, std::string_view text) {
+    const LayerArgument a = parse_layer_argument("--film", text);
+    if (a.thickness_nm)
+        throw UsageError("--film " + std::string(text) + ": the thicknesses come from --thickness; give --film " +
+                         a.material + " alone");
+    return layer_material(films, "--film", text, a.material);
+}
+
 ClearCoat load_coat(const FilmCatalog& films, std::string_view text) {
     const LayerArgument a = parse_layer_argument("--coat", text);
     if (a.thickness_nm)

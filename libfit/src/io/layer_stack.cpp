@@ -34,7 +34,7 @@ std::string describe(const ClearCoat& coat) {
 std::string describe_stack(const Material& metal) {
     if (!metal.layers || metal.layers->empty()) return metal.name;
     const LayerStack& s = *metal.layers;
-    std::string text = metal.name;
+    std::string text = (s.finish ? s.finish->name + ": " : std::string()) + metal.name;
     if (s.coat) text += " under a " + describe(*s.coat);
     if (s.film) text += std::string(s.coat ? " over" : " under") + " a " + describe(*s.film);
     return text;
@@ -69,6 +69,7 @@ nlohmann::ordered_json stack_record(const Material& metal) {
         film["thickness_nm"] = s.film->thickness_nm;
         j["film"] = std::move(film);
     }
+    if (s.finish) j["finish"] = {{"id", s.finish->id}, {"name", s.finish->name}};
     return j;
 }
 

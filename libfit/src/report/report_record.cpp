@@ -11,8 +11,11 @@
 #include "libfit/base/number_text.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/fit/catalog_summary.hpp"
+#include "libfit/io/layer_stack.hpp"
 #include "libfit/optics/fresnel.hpp"
+#include "libfit/optics/stack_reflectance.hpp"
 #include "libfit/reference/reference_curve.hpp"
+#include "libfit/reference/stack_grid.hpp"
 #include "libfit/report/report.hpp"
 #include "report/report_charts.hpp"
 #include "report/report_pages.hpp"
@@ -70,13 +73,19 @@ private:
     bool same_space_;
 };
 
-// The catalog entry and source a material was loaded from (its data file is that source's), if it is one.
+// The catalog entry and source a material was loaded from (its data file is that source's), if it is one; a named
+// finish's metal too (its id is the finish's: found by its layers and file).
 std::pair<const CatalogEntry*, const CatalogSource*> catalog_source(const Material& material, const Catalog& catalog) {
-    const CatalogEntry* entry = catalog.find(material.id);
-    if (!entry || entry->id != material.id) return {nullptr, nullptr};
-    if (entry->primary.file == material.provenance.file) return {entry, &entry->primary};
-    for (const CatalogSource& s : entry->alternates)
-        if (s.file == material.provenance.file) return {entry, &s};
+    const auto in = [&material](const CatalogEntry* entry) -> std::pair<const CatalogEntry*, const CatalogSource*> {
+        if (entry->primary.file == material.provenance.file) return {entry, &entry->primary};
+        for (const CatalogSource& s : entry->alternates)
+            if (s.file == material.provenance.file) return {entry, &s};
+        return {nullptr, nullptr};
+    };
+    if (const CatalogEntry* entry = catalog.find(material.id); entry && entry->id == material.id) return in(entry);
+    if (material.layers && material.layers->finish)
+        for (const CatalogEntry& entry : catalog.entries())
+            if (const auto found = in(&entry); found.first) return found;
     return {nullptr, nullptr};
 }
 
@@ -109,9 +118,16 @@ Json spectral_reflectance_json(const Material& material, const SpectralOptions& 
     for (double theta : kSpectralAngles) {
         angles.push_back(theta);
         Json row = Json::array();
-        for (double w = kVisibleMin; w <= kVisibleMax; w += kSpectralStep)
-            row.push_back(plotted(
-                fresnel(mu_of_degrees(theta), material.index(w, spectral.interpolation, spectral.out_of_range))));
+        for (double w = kVisibleMin; w <= kVisibleMax; w += kSpectralStep) {
+            const double mu = mu_of_degrees(theta);
+            if (material.layers && !material.layers->empty()) {  // the stack's R(λ), as the reference curve's
+                const int nm = static_cast<int>(w);
+                row.push_back(plotted(
+                    stack_reflectance_unpolarized(mu, stack_optics_on_grid(material, nm, nm, spectral).front())));
+            } else {
+                row.push_back(plotted(fresnel(mu, material.index(w, spectral.interpolation, spectral.out_of_range))));
+            }
+        }
         R.push_back(row);
     }
     return {{"nm", nm}, {"theta_deg", angles}, {"R", R}};
@@ -140,7 +156,8 @@ Json sources_json(const MaterialFit& fit, const ReportInputs& in) {
     for (const CatalogSource* s : all) {
         Json j = {{"source", s->source}, {"reference", s->reference}, {"primary", s == &entry->primary}};
         try {
-            const Material m = load_material(in.catalog, entry->id, s->source);
+            Material m = load_material(in.catalog, entry->id, s->source);
+            m.layers = fit.material.layers;  // every source under the same layers
             const ReferenceCurve curve(m, in.colorimetry, in.converter, in.fit.spectral);
             const RGB f0 = curve(1.0), f82 = curve(kMuF82);
             for (int c = 0; c < 3; ++c) {
@@ -179,6 +196,7 @@ Json provenance_json(const MaterialFit& fit, const ReportInputs& in) {
         j["database_path"] = source->database_path;
         j["kind"] = entry->kind;
     }
+    if (fit.material.layers && !fit.material.layers->empty()) j["stack"] = stack_record(fit.material);
     return j;
 }
 

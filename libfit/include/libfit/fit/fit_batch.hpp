@@ -13,8 +13,8 @@
 
 namespace metalfit {
 
-// One loader per material: every catalog entry (`all`), or each material or file named (loaded here, so that an
-// unknown name or a bad file fails before any work). The loaders refer to `catalog`, which must outlive them.
+// One loader per material: every catalog entry (`all`), or each material, named finish (data/finishes.json:
+// io/finishes.hpp) or file named (loaded here, so that an unknown name or a bad file fails before any work). The loaders refer to `catalog`, which must outlive them.
 // `labels` name and cite a user file (UsageError with `all`, several materials or a catalog material).
 std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, bool all,
                                                         const std::vector<std::string>& materials,

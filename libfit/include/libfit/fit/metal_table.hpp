@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ struct MetalTableRow {
     std::string id, name, kind, source, reference, note;
     RGB f0, tint;  // linear, in the table's working space (may leave [0, 1]: flagged in the outputs)
     Display8 f0_display{}, tint_display{};  // 8-bit display-referred (clamped to [0, 1] by the transform)
+    std::string stack;                      // the layers over the metal (describe_stack); empty for a bare one
+    nlohmann::ordered_json stack_record;    // their provenance (stack_record); null for a bare one
 };
 
 struct MetalTable {
@@ -45,6 +48,10 @@ struct MetalTableColour {
 
 // Every catalog material's primary source, in catalog order.
 MetalTable metal_table(const Catalog& catalog, const MetalTableColour& colour);
+// The materials `loaders` load, in order (catalog or file materials, with layers when they have them: `metalfit
+// table Ti --film TiO2:80nm`); `catalog` gives a catalog material's kind and reference.
+MetalTable metal_table(const std::vector<std::function<Material()>>& loaders, const Catalog& catalog,
+                       const MetalTableColour& colour);
 
 // "#rrggbb" (lower case).
 std::string hex(const Display8& rgb);

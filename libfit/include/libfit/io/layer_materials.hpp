@@ -38,6 +38,9 @@ LayerArgument parse_layer_argument(std::string_view option, std::string_view tex
 // that is negative, not finite or beyond 2 µm, an index that is not a finite positive number, a bad file:
 // InputError naming the option or the file (exit 3).
 ThinFilm load_film(const FilmCatalog& films, std::string_view text);
+// `--film IOR|MATERIAL|FILE` without a thickness (the oxide chart's film, its thicknesses given apart): the material
+// alone, with load_film's errors; a thickness given: UsageError.
+LayerMaterial load_film_material(const FilmCatalog& films, std::string_view text);
 // `--coat IOR|MATERIAL|FILE[:THICKNESS]`: as load_film; a constant index below 1 is InputError (a table's index is
 // checked on the colour grid by the reference curve).
 ClearCoat load_coat(const FilmCatalog& films, std::string_view text);

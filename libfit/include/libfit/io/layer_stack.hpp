@@ -31,9 +31,16 @@ struct ClearCoat {
     std::optional<double> thickness_nm;  // the path of the absorption; absent: a clear coat
 };
 
+// The named finish a stack was loaded as (io/finishes.hpp: data/finishes.json), for the records.
+struct FinishName {
+    std::string id;    // "anodized-ti-80nm"
+    std::string name;  // "anodized titanium, 80 nm"
+};
+
 struct LayerStack {
     std::optional<ThinFilm> film;
     std::optional<ClearCoat> coat;
+    std::optional<FinishName> finish;  // absent: layers from --film/--coat
 
     bool empty() const { return !film && !coat; }
 };
@@ -41,11 +48,13 @@ struct LayerStack {
 // "TiO2 (Siefke) film of 80 nm", "coat n = 1.5", "coat PMMA (Szczurowski) 20000 nm thick": for the human output.
 std::string describe(const ThinFilm& film);
 std::string describe(const ClearCoat& coat);
-// "gold under a coat n = 1.5 over a TiO2 (Siefke) film of 80 nm": the whole stack, top down, or the name alone.
+// "gold under a coat n = 1.5 over a TiO2 (Siefke) film of 80 nm": the whole stack, top down, or the name alone; a
+// named finish's name first ("anodized titanium, 80 nm: titanium under a TiO2 (Siefke) film of 80 nm").
 std::string describe_stack(const Material& metal);
 
 // The provenance of the layers over `metal` (schemas/common.schema.json, "stack"): the description, and per layer its
-// material (id, name, source, file, sha256, reference, data_type) and thickness; null for a bare material.
+// material (id, name, source, file, sha256, reference, data_type) and thickness, and the finish's id and name when
+// it is a named finish; null for a bare material.
 nlohmann::ordered_json stack_record(const Material& metal);
 
 // The one rule for thicknesses: "" when valid, else why not ("thickness -5 nm is negative", "thickness 2500 nm is

@@ -1,0 +1,118 @@
+#include "libfit/io/finishes.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <memory>
+
+#include "libfit/base/errors.hpp"
+#include "libfit/base/input_file.hpp"
+#include "libfit/io/layer_stack.hpp"
+
+namespace metalfit {
+namespace {
+
+bool iequal(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](unsigned char x, unsigned char y) {
+               return std::tolower(x) == std::tolower(y);
+           });
+}
+
+std::string text_field(const nlohmann::json& j, const char* key, const std::filesystem::path& file,
+                       const std::string& where, bool required) {
+    const auto it = j.find(key);
+    if (it == j.end() || it->is_null()) {
+        if (required) throw InputError({file, 0, where + "." + key}, "missing");
+        return {};
+    }
+    if (!it->is_string()) throw InputError({file, 0, where + "." + key}, "expected a string");
+    return it->get<std::string>();
+}
+
+std::vector<std::string> text_list(const nlohmann::json& j, const char* key, const std::filesystem::path& file,
+                                   const std::string& where) {
+    std::vector<std::string> out;
+    const auto it = j.find(key);
+    if (it == j.end()) return out;
+    if (!it->is_array()) throw InputError({file, 0, where + "." + key}, "expected a list of strings");
+    for (const auto& v : *it) {
+        if (!v.is_string()) throw InputError({file, 0, where + "." + key}, "expected a list of strings");
+        out.push_back(v.get<std::string>());
+    }
+    return out;
+}
+
+}  // namespace
+
+FinishCatalog FinishCatalog::load(const std::filesystem::path& data_dir) {
+    FinishCatalog catalog;
+    catalog.file_ = data_dir / "finishes.json";
+    const auto& file = catalog.file_;
+    std::error_code missing;
+    if (!std::filesystem::exists(file, missing)) return catalog;  // a database of metals alone
+    nlohmann::json j;
+    try {
+        j = nlohmann::json::parse(read_input_file(file));
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError({file}, std::string("invalid JSON: ") + e.what());
+    }
+    const auto finishes = j.find("finishes");
+    if (finishes == j.end() || !finishes->is_array()) throw InputError({file, 0, "finishes"}, "expected a list");
+    for (std::size_t i = 0; i < finishes->size(); ++i) {
+        const auto& f = (*finishes)[i];
+        const std::string where = "finishes[" + std::to_string(i) + "]";
+        if (!f.is_object()) throw InputError({file, 0, where}, "expected an object");
+        Finish finish;
+        finish.id = text_field(f, "id", file, where, true);
+        finish.name = text_field(f, "name", file, where, true);
+        finish.aliases = text_list(f, "aliases", file, where);
+        finish.metal = text_field(f, "metal", file, where, true);
+        finish.film = text_field(f, "film", file, where, false);
+        finish.coat = text_field(f, "coat", file, where, false);
+        finish.note = text_field(f, "note", file, where, false);
+        finish.sources = text_list(f, "sources", file, where);
+        if (finish.film.empty() && finish.coat.empty())
+            throw InputError({file, 0, where}, "a finish needs a film or a coat (else it is the bare metal)");
+        catalog.entries_.push_back(std::move(finish));
+    }
+    return catalog;
+}
+
+const Finish* FinishCatalog::find(std::string_view name) const {
+    for (const Finish& f : entries_) {
+        if (iequal(name, f.id) || iequal(name, f.name)) return &f;
+        for (const std::string& alias : f.aliases)
+            if (iequal(name, alias)) return &f;
+    }
+    return nullptr;
+}
+
+Material load_finish(const Finish& finish, const FinishCatalog& finishes, const Catalog& metals,
+                     const FilmCatalog& films, std::string_view source) {
+    std::size_t index = 0;
+    while (index < finishes.entries().size() && &finishes.entries()[index] != &finish) ++index;
+    const std::string where = "finishes[" + std::to_string(index) + "]";
+    if (metals.find(finish.metal) == nullptr)
+        throw InputError({finishes.file(), 0, where + ".metal"}, "unknown catalog material '" + finish.metal + "'");
+    Material m = load_material(metals, finish.metal, source);
+    auto stack = std::make_shared<LayerStack>();
+    // The layers exactly as --film and --coat would load them; their errors name the finish's field.
+    const auto layer = [&](const char* field, const auto& load) {
+        try {
+            load();
+        } catch (const InputError& e) {
+            throw InputError({finishes.file(), 0, where + "." + field}, e.what());
+        } catch (const UsageError& e) {
+            throw InputError({finishes.file(), 0, where + "." + field}, e.what());
+        }
+    };
+    if (!finish.film.empty()) layer("film", [&] { stack->film = load_film(films, finish.film); });
+    if (!finish.coat.empty()) layer("coat", [&] { stack->coat = load_coat(films, finish.coat); });
+    stack->finish = FinishName{finish.id, finish.name};
+    m.id = finish.id;
+    m.layers = std::move(stack);
+    return m;
+}
+
+}  // namespace metalfit
