@@ -28,7 +28,9 @@ using metalfit::test::TempDir;
 using metalfit::test::names_in;
 using metalfit::test::tree;
 
-pid_t start_export(const std::vector<std::string>& args) { return metalfit::test::spawn_quietly(METALFIT_EXE, args); }
+pid_t start_export(const std::vector<std::string>& args) {
+    return metalfit::test::spawn_quietly(metalfit::test::kMetalfitExe, args);
+}
 
 int wait_for(pid_t pid) {
     int status = 0;
