@@ -16,7 +16,6 @@
 #include <functional>
 #include <map>
 #include <random>
-#include <thread>
 
 #include "interrupted_runs.hpp"
 #include "test_support.hpp"
@@ -97,11 +96,8 @@ void kill_at_random_points(const Writer& w, int trials, std::uint32_t seed) {
         const int signal = trial % 2 == 0 ? SIGKILL : kDeferred[(trial / 2) % 3];
         w.restore_old();
         const auto before = names_in(work);
-        const pid_t pid = start(w.exe, w.args);
         const double at = when(random) * seconds;
-        std::this_thread::sleep_for(std::chrono::duration<double>(at));
-        ::kill(pid, signal);
-        const int status = wait_for(pid);
+        const int status = metalfit::test::kill_at(start(w.exe, w.args), at, signal);
         const Tree now = target_state(w);
         const bool is_old = w.is_old(now), is_new = w.is_new(now);
         EXPECT_TRUE(is_old || is_new) << name << " trial " << trial << " (signal " << signal << " at " << at << " s of "
