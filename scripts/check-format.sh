@@ -21,13 +21,23 @@ for folder in "${folders[@]}"; do
   [ -d "$folder" ] || { echo "check-format: no folder $folder" >&2; exit 2; }
   while IFS= read -r -d '' f; do files+=("$f"); done < <(find "$folder" -type f \( -name '*.cpp' -o -name '*.hpp' -o -name '*.h' \) -print0 | sort -z)
 done
+# One clang-format process for every file (a process per file spent most of the check starting clang-format): it
+# goes on after a file that differs and names each one in a "FILE:LINE:COL: error: code should be clang-formatted"
+# line; any other failure (an unreadable file, a bad .clang-format) is printed as it is.
+log="$(mktemp)"
+trap 'rm -f "$log"' EXIT
 bad=0
-for f in "${files[@]}"; do
-  if ! "$formatter" --style=file --dry-run -Werror "$f" >/dev/null 2>&1; then
-    echo "check-format: $f is not formatted ($formatter -i $f)"
-    bad=$((bad + 1))
+if ! "$formatter" --style=file --dry-run -Werror "${files[@]}" >/dev/null 2>"$log"; then
+  unformatted=()
+  while IFS= read -r f; do unformatted+=("$f"); done < <(sed -n 's/^\(.*\):[0-9]*:[0-9]*: error: code should be clang-formatted.*/\1/p' "$log" | sort -u)
+  if [ ${#unformatted[@]} -eq 0 ]; then
+    cat "$log" >&2
+    echo "check-format: $formatter failed" >&2
+    exit 2
   fi
-done
+  for f in "${unformatted[@]}"; do echo "check-format: $f is not formatted ($formatter -i $f)"; done
+  bad=${#unformatted[@]}
+fi
 if [ "$bad" -gt 0 ]; then
   echo "check-format: $bad of ${#files[@]} files not formatted (${folders[*]})"
   exit 1

@@ -1,17 +1,23 @@
 // What the kill tests of the writers share (test_export_interrupted.cpp, test_writers_interrupted.cpp): a real
-// executable started so that it can be signalled, and a folder read back as its files and as its names.
+// executable started so that it can be signalled, signalled at a point of its run (or reaped if it ended first), and a
+// folder read back as its files and as its names.
 #pragma once
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/types.h>
+#include <sys/wait.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "test_support.hpp"
@@ -44,6 +50,28 @@ inline pid_t spawn_quietly(const std::string& exe, const std::vector<std::string
     posix_spawn_file_actions_destroy(&actions);
     if (rc != 0) throw std::runtime_error("posix_spawn failed");
     return pid;
+}
+
+// Sends `signal` to the child `pid` `seconds` from now unless it has ended by then, and reaps it; returns its wait
+// status. The child is polled every millisecond instead of slept on for the whole `seconds`: a kill aimed past the end
+// of a run (the kill tests aim up to 10 % past the length of a first run, and a run can be faster than that) costs no
+// more than the run itself.
+inline int kill_at(pid_t pid, double seconds, int signal) {
+    using clock = std::chrono::steady_clock;
+    const auto deadline =
+        clock::now() + std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(seconds));
+    int status = 0;
+    for (;;) {
+        const pid_t ended = ::waitpid(pid, &status, WNOHANG);
+        if (ended == pid) return status;  // it finished before the signal
+        if (ended < 0 && errno != EINTR) throw std::runtime_error("waitpid failed");
+        const auto now = clock::now();
+        if (now >= deadline) break;
+        std::this_thread::sleep_for(std::min<clock::duration>(deadline - now, std::chrono::milliseconds(1)));
+    }
+    ::kill(pid, signal);
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+    return status;
 }
 
 // The regular files below `dir` (relative path → contents); empty when there is no such folder.

@@ -24,7 +24,10 @@ const context = new mx.GenContext(generator);
 const stdlib = mx.loadStandardLibraries(context);
 
 let failed = 0, documents = 0, materials = 0, stages = 0;
-const compiled = new Map();  // the generated source's SHA-256 → glslang's verdict (documents differ in values only)
+// The generated sources by SHA-256 (documents differ in values only): each distinct one is written once and compiled
+// after the loop by one glslang process for all of them (a process per source spent most of its time starting glslang).
+const sources = new Map();  // hash → the file written
+const uses = [];            // [document, stage, hash]
 const fail = (file, what) => { failed++; console.log(`FAIL ${file}: ${what}`); };
 for (const file of files) {
   const text = fs.readFileSync(file, "utf8");
@@ -59,22 +62,47 @@ for (const file of files) {
       const source = shader.getSourceCode(stage);
       const hash = createHash("sha256").update(source).digest("hex");
       stages++;
-      if (!compiled.has(hash)) {
+      if (!sources.has(hash)) {
         const out = path.join(scratch, `${hash.slice(0, 16)}.${ext}`);
         fs.writeFileSync(out, source);
-        try {
-          execFileSync(validator, [out], { stdio: "pipe" });
-          compiled.set(hash, "");
-        } catch (e) {
-          compiled.set(hash, `${e.stdout}`.split("\n").slice(0, 6).join(" | "));
-        }
+        sources.set(hash, out);
       }
-      if (compiled.get(hash)) fail(file, `generated GLSL ${stage} stage does not compile: ${compiled.get(hash)}`);
+      uses.push([file, stage, hash]);
     }
   }
   documents++;
 }
+// glslangValidator without -l compiles each file on its own (no link between them) and prints each file's name on a
+// line of its own before that file's messages: a file's verdict is what follows its name, up to the next name.
+const outs = [...sources.values()];
+let output = "", status = 0;
+if (outs.length > 0) {
+  try {
+    output = execFileSync(validator, outs, { stdio: "pipe", maxBuffer: 64 << 20 }).toString();
+  } catch (e) {
+    output = `${e.stdout}`;
+    status = e.status ?? 1;
+  }
+}
+const messages = new Map();  // file written → glslang's lines about it
+let current = null;
+for (const line of output.split("\n")) {
+  if (outs.includes(line)) messages.set((current = line), []);
+  else if (current !== null && line.trim() !== "") messages.get(current).push(line);
+}
+const compiled = new Map();  // hash → glslang's verdict ("" when it compiles)
+for (const [hash, out] of sources) {
+  const lines = messages.get(out);
+  if (lines === undefined) compiled.set(hash, `glslang (exit ${status}) did not report on it: ${output.split("\n").slice(0, 6).join(" | ")}`);
+  else if (lines.some((l) => l.includes("ERROR"))) compiled.set(hash, lines.slice(0, 6).join(" | "));
+  else compiled.set(hash, "");
+}
+// An exit status that no file's messages explain is a failure too.
+if (status !== 0 && [...compiled.values()].every((v) => v === ""))
+  fail("glslang", `exit ${status} with no error in any file: ${output.split("\n").slice(0, 6).join(" | ")}`);
+for (const [file, stage, hash] of uses)
+  if (compiled.get(hash)) fail(file, `generated GLSL ${stage} stage does not compile: ${compiled.get(hash)}`);
 console.log(`materialx consumer (MaterialX ${version}): ${documents} of ${files.length} documents loaded and valid, ` +
-            `${materials} materials generated as GLSL, ${stages} stages (${compiled.size} distinct) compiled by glslang; ` +
+            `${materials} materials generated as GLSL, ${stages} stages (${sources.size} distinct) compiled by glslang; ` +
             `${failed} failed`);
 process.exit(failed || documents !== files.length || documents === 0 ? 1 : 0);

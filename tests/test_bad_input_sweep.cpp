@@ -21,6 +21,8 @@ namespace {
 namespace fs = std::filesystem;
 using metalfit::sanitised_message;
 using metalfit::test::CommandResult;
+using metalfit::test::kData;
+using metalfit::test::kMetalfitExe;
 using metalfit::test::read_file;
 using metalfit::test::TempDir;
 
@@ -61,7 +63,7 @@ protected:
         for (const Template& t : templates)
             for (const std::string& value : t.values) {
                 const fs::path file = tmp_.write(t.file_name, fill(t.text, value));
-                expect_refused(METALFIT_EXE, command + " '" + file.string() + "'", file.string(),
+                expect_refused(kMetalfitExe, command + " '" + file.string() + "'", file.string(),
                                t.label + " [" + sanitised_message(value) + "]");
             }
     }
@@ -130,22 +132,21 @@ TEST_F(BadInputSweep, CommandLineValues) {
     const fs::path good = tmp_.write("good.csv", "wavelength_nm,n,k\n350,0.2,3\n900,0.2,6\n");
     for (const std::string& bad : kBadUtf8) {
         const std::string label = "[" + sanitised_message(bad) + "]";
-        expect_refused(METALFIT_EXE, "show '" + good.string() + "' --name 'a" + bad + "'", "--name", "--name " + label);
-        expect_refused(METALFIT_EXE, "fit '" + good.string() + "' --model schlick --reference 'r" + bad + "'",
+        expect_refused(kMetalfitExe, "show '" + good.string() + "' --name 'a" + bad + "'", "--name", "--name " + label);
+        expect_refused(kMetalfitExe, "fit '" + good.string() + "' --model schlick --reference 'r" + bad + "'",
                        "--reference", "--reference " + label);
         const fs::path named = tmp_.write("m" + bad + ".csv", read_file(good));
-        expect_refused(METALFIT_EXE, "show '" + named.string() + "'", named.string(), "file name " + label);
-        expect_refused(METALFIT_EXE, "show 'gold" + bad + "'", "gold", "material " + label);
-        expect_refused(METALFIT_EXE, "show gold --space 'ACES" + bad + "'", "--space", "--space " + label);
+        expect_refused(kMetalfitExe, "show '" + named.string() + "'", named.string(), "file name " + label);
+        expect_refused(kMetalfitExe, "show 'gold" + bad + "'", "gold", "material " + label);
+        expect_refused(kMetalfitExe, "show gold --space 'ACES" + bad + "'", "--space", "--space " + label);
         fs::remove(named);
     }
 }
 
 // --data-dir with a catalog.json of one material (the data file given by its absolute path).
 TEST_F(BadInputSweep, Catalog) {
-    const fs::path nk = fs::path(METALFIT_TEST_DATA) / "nk" / "Au" / "Johnson.yml";
-    const std::string ocio =
-        "--ocio-config '" + (fs::path(METALFIT_TEST_DATA) / "ocio" / "config.ocio").string() + "' ";
+    const fs::path nk = kData / "nk" / "Au" / "Johnson.yml";
+    const std::string ocio = "--ocio-config '" + (kData / "ocio" / "config.ocio").string() + "' ";
     const auto catalog = [&](const std::string& key, const std::string& name, const std::string& range_min) {
         return "{\"materials\": [{\"id\": \"gold\", \"" + key + "\": \"" + name +
                "\", \"primary\": {\"source\": \"Johnson\", \"file\": \"" + nk.string() +
@@ -158,23 +159,23 @@ TEST_F(BadInputSweep, Catalog) {
     for (const std::string& value : kNumbers) {
         if (value == "4.9e-324") continue;  // a valid range_nm start
         tmp_.write("d/catalog.json", catalog("name", "Gold", value));
-        expect_refused(METALFIT_EXE, args + "list --json", file.string(), "range_nm [" + value + "]");
+        expect_refused(kMetalfitExe, args + "list --json", file.string(), "range_nm [" + value + "]");
     }
     for (const std::string& bad : kBadUtf8) {
         const std::string label = "[" + sanitised_message(bad) + "]";
         tmp_.write("d/catalog.json", catalog("name", "Go" + bad + "ld", "360"));
-        expect_refused(METALFIT_EXE, args + "list --json", file.string(), "utf-8 in a value " + label);
+        expect_refused(kMetalfitExe, args + "list --json", file.string(), "utf-8 in a value " + label);
         tmp_.write("d/catalog.json", catalog("na" + bad + "me", "Gold", "360"));
-        expect_refused(METALFIT_EXE, args + "show gold --json", file.string(), "utf-8 in a key " + label);
+        expect_refused(kMetalfitExe, args + "show gold --json", file.string(), "utf-8 in a key " + label);
         tmp_.write("d/catalog.json", catalog("name", "Gold", "360") + bad);
-        expect_refused(METALFIT_EXE, args + "list --json", file.string(), "utf-8 at the end " + label);
+        expect_refused(kMetalfitExe, args + "list --json", file.string(), "utf-8 at the end " + label);
     }
 }
 
 // An OCIO config given with --ocio-config: numbers in a matrix of a target space, ill-formed UTF-8 in a family, a
 // name, a key and at the end (`spaces` reads every name and family).
 TEST_F(BadInputSweep, OcioConfig) {
-    const std::string config = read_file(fs::path(METALFIT_TEST_DATA) / "ocio" / "config.ocio");
+    const std::string config = read_file(kData / "ocio" / "config.ocio");
     const std::string matrix =
         "[0.486570948648216, 0.265667693169093, 0.198217285234362, 0.0, 0.228974564069749, "
         "0.691738521836506, 0.079286914093745, 0.0, -0.0, 0.045113381858903, 1.043944368900976, 0.0, "
@@ -190,26 +191,26 @@ TEST_F(BadInputSweep, OcioConfig) {
     const std::string args = "--ocio-config '" + file.string() + "' ";
     for (const std::string& value : kNumbers) {
         tmp_.write("c.ocio", with(matrix, fill("[@, 0, 0, 0, 0, @, 0, 0, 0, 0, @, 0, 0, 0, 0, 1]", value)));
-        expect_refused(METALFIT_EXE, args + "show gold --json --space 'Linear P3-D65'", file.string(),
+        expect_refused(kMetalfitExe, args + "show gold --json --space 'Linear P3-D65'", file.string(),
                        "matrix [" + value + "]");
     }
     for (const std::string& bad : kBadUtf8) {
         const std::string label = "[" + sanitised_message(bad) + "]";
         tmp_.write("c.ocio", with("    family: Utility\n", "    family: Util" + bad + "ity\n"));
-        expect_refused(METALFIT_EXE, args + "spaces --json", file.string(), "family " + label);
+        expect_refused(kMetalfitExe, args + "spaces --json", file.string(), "family " + label);
         tmp_.write("c.ocio", with("    name: ACEScg\n", "    name: ACES" + bad + "cg\n"));
-        expect_refused(METALFIT_EXE, args + "spaces --json", file.string(), "name " + label);
+        expect_refused(kMetalfitExe, args + "spaces --json", file.string(), "name " + label);
         tmp_.write("c.ocio", with("    family: Utility\n", "    fam" + bad + "ily: Utility\n"));
-        expect_refused(METALFIT_EXE, args + "spaces --json", file.string(), "key " + label);
+        expect_refused(kMetalfitExe, args + "spaces --json", file.string(), "key " + label);
         tmp_.write("c.ocio", config + "# " + bad);
-        expect_refused(METALFIT_EXE, args + "spaces --json", file.string(), "end " + label);
+        expect_refused(kMetalfitExe, args + "spaces --json", file.string(), "end " + label);
     }
 }
 
 // Issue 30 (F4): a colour space whose transforms refer back to it (directly, or through another space) sent OCIO's
 // getProcessor into endless recursion: SIGSEGV in `spaces`, and in `show --space` of it or of the XYZ space.
 TEST_F(BadInputSweep, OcioColourSpaceThatConvertsToItselfIsAColourConfigurationError) {
-    const std::string config = read_file(fs::path(METALFIT_TEST_DATA) / "ocio" / "config.ocio");
+    const std::string config = read_file(kData / "ocio" / "config.ocio");
     const std::string p3 = "        - !<MatrixTransform> {matrix: [0.486570948648216";
     ASSERT_NE(config.find(p3), std::string::npos);
     const fs::path file = tmp_.path() / "c.ocio";
@@ -219,8 +220,8 @@ TEST_F(BadInputSweep, OcioColourSpaceThatConvertsToItselfIsAColourConfigurationE
                 "        - !<ColorSpaceTransform> {src: lin_p3d65, dst: ACES2065-1}\n");  // through its alias
     tmp_.write("c.ocio", self);
     for (const char* command : {"spaces --json", "show gold --json --space 'Linear P3-D65'", "show gold --json"}) {
-        expect_refused(METALFIT_EXE, args + command, file.string(), command);
-        const CommandResult r = metalfit::test::run_command(METALFIT_EXE, args + command, tmp_.path());
+        expect_refused(kMetalfitExe, args + command, file.string(), command);
+        const CommandResult r = metalfit::test::run_command(kMetalfitExe, args + command, tmp_.path());
         EXPECT_NE(
             r.err.find("colour space 'Linear P3-D65' converts to itself (Linear P3-D65 \xe2\x86\x92 Linear P3-D65)"),
             std::string::npos)
@@ -233,14 +234,14 @@ TEST_F(BadInputSweep, OcioColourSpaceThatConvertsToItselfIsAColourConfigurationE
     pair.insert(pair.find(rec2020), "        - !<ColorSpaceTransform> {src: Linear P3-D65, dst: ACES2065-1}\n");
     pair.insert(pair.find(p3), "        - !<ColorSpaceTransform> {src: lin_rec2020, dst: ACES2065-1}\n");
     tmp_.write("c.ocio", pair);
-    expect_refused(METALFIT_EXE, args + "show gold --json --space 'Linear P3-D65'", file.string(), "two spaces");
-    EXPECT_NE(metalfit::test::run_command(METALFIT_EXE, args + "spaces", tmp_.path()).err.find("converts to itself"),
+    expect_refused(kMetalfitExe, args + "show gold --json --space 'Linear P3-D65'", file.string(), "two spaces");
+    EXPECT_NE(metalfit::test::run_command(kMetalfitExe, args + "spaces", tmp_.path()).err.find("converts to itself"),
               std::string::npos);
 }
 
 // glpreview's scene JSON (--explain: parsed and planned, nothing rendered) and its command line.
 TEST_F(BadInputSweep, GlpreviewScene) {
-    const fs::path glpreview = fs::path(METALFIT_EXE).parent_path() / "glpreview";
+    const fs::path glpreview = fs::path(kMetalfitExe).parent_path() / "glpreview";
     if (!fs::exists(glpreview)) GTEST_SKIP() << "glpreview not built";
     const std::string scene =
         "{\"image\": {\"width\": @W, \"height\": 64}, \"camera\": {\"position\": [0, 0.3, 3], \"look_at\": [0, 0.2, 0], "

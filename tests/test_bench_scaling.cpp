@@ -15,6 +15,7 @@ namespace {
 
 using metalfit::Catalog;
 using metalfit::Material;
+using metalfit::test::kMetalfitExe;
 using nlohmann::json;
 
 TEST(BenchScaling, SyntheticMaterialsArePerturbedCatalogTablesAndTheSameOnEveryRun) {
@@ -49,7 +50,7 @@ TEST(BenchScaling, SyntheticMaterialsArePerturbedCatalogTablesAndTheSameOnEveryR
 TEST(BenchScaling, TheTableHasACellPerSizeAndThreadCountInOrder) {
     metalfit::test::TempDir dir;
     const auto r = metalfit::test::run_command(
-        METALFIT_EXE,
+        kMetalfitExe,
         "bench --scaling --scaling-sizes 1,3 --scaling-threads 1,2 --scaling-models schlick,f82-tint --json",
         dir.path());
     ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -74,7 +75,7 @@ TEST(BenchScaling, TheTableHasACellPerSizeAndThreadCountInOrder) {
     EXPECT_GT(j.at("fits_per_cpu_second").get<double>(), 0.0);
 
     const auto text = metalfit::test::run_command(
-        METALFIT_EXE, "bench --scaling --scaling-sizes 2 --scaling-threads 1 --scaling-models schlick", dir.path());
+        kMetalfitExe, "bench --scaling --scaling-sizes 2 --scaling-threads 1 --scaling-models schlick", dir.path());
     ASSERT_EQ(text.exit_code, 0) << text.err;
     EXPECT_NE(text.out.find("| materials | threads |"), std::string::npos) << text.out;
     EXPECT_NE(text.out.find("fit throughput:"), std::string::npos) << text.out;
@@ -82,8 +83,8 @@ TEST(BenchScaling, TheTableHasACellPerSizeAndThreadCountInOrder) {
 
 TEST(BenchScaling, BadSizesAndModelsAreUsageErrors) {
     metalfit::test::TempDir dir;
-    EXPECT_EQ(metalfit::test::run_command(METALFIT_EXE, "bench --scaling --scaling-sizes 0", dir.path()).exit_code, 2);
-    EXPECT_EQ(metalfit::test::run_command(METALFIT_EXE, "bench --scaling --scaling-models nonesuch --scaling-sizes 1",
+    EXPECT_EQ(metalfit::test::run_command(kMetalfitExe, "bench --scaling --scaling-sizes 0", dir.path()).exit_code, 2);
+    EXPECT_EQ(metalfit::test::run_command(kMetalfitExe, "bench --scaling --scaling-models nonesuch --scaling-sizes 1",
                                           dir.path())
                   .exit_code,
               2);

@@ -15,6 +15,7 @@
 
 namespace {
 
+using metalfit::test::kMetalfitExe;
 using metalfit::test::read_file;
 
 namespace fs = std::filesystem;
@@ -33,7 +34,7 @@ protected:
 
     // Runs metalfit with `args` (already shell-quoted) and an optional environment prefix.
     Result run(const std::string& args, const std::string& env = "OCIO=") const {
-        return metalfit::test::run_command(METALFIT_EXE, args, dir_, env);
+        return metalfit::test::run_command(kMetalfitExe, args, dir_, env);
     }
 
     static void expect_one_line_error(const Result& r, const std::string& must_contain) {
@@ -131,7 +132,7 @@ TEST_F(Cli, ColourConfigurationErrorsExitWithCode4) {
 }
 
 TEST_F(Cli, OcioEnvironmentVariableTakesPrecedence) {
-    const std::string config = std::string(METALFIT_TEST_DATA) + "/ocio/config.ocio";
+    const std::string config = (metalfit::test::kData / "ocio" / "config.ocio").string();
     const Result r = run("show gold --json --ocio-config /nonexistent.ocio", "OCIO='" + config + "'");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(nlohmann::json::parse(r.out)["provenance"]["ocio_config_origin"], "$OCIO");
@@ -223,7 +224,8 @@ TEST_F(Cli, ExportIntoANewFolderGivenWithATrailingSlash) {
 }
 
 TEST_F(Cli, UnknownCommandAndMissingMaterialSayWhatIsWrong) {
-    for (const char* args : {"shwo gold", "--data-dir '" METALFIT_TEST_DATA "' shwo"}) {
+    for (const std::string& args :
+         {std::string("shwo gold"), "--data-dir '" + metalfit::test::kData.string() + "' shwo"}) {
         const Result r = run(args);
         EXPECT_EQ(r.exit_code, 2) << args;
         expect_one_line_error(r, "unknown command 'shwo'");
@@ -506,7 +508,7 @@ TEST_F(Cli, SpacesListsTheConfigsSpacesAndRoles) {
 
 TEST_F(Cli, XyzSpaceStandsInForAMissingInterchangeRole) {
     // An OCIO v1 / ACES 1.2-style config: the same spaces, no cie_xyz_d65_interchange role.
-    std::string config = read_file(std::string(METALFIT_TEST_DATA) + "/ocio/config.ocio");
+    std::string config = read_file(metalfit::test::kData / "ocio" / "config.ocio");
     const std::size_t role = config.find("  cie_xyz_d65_interchange:");
     ASSERT_NE(role, std::string::npos);
     config.erase(role, config.find('\n', role) + 1 - role);
@@ -614,7 +616,7 @@ class CliColour : public ::testing::Test {
 protected:
     // Each test its own scratch folder: ctest runs tests in parallel processes.
     Result run(const std::string& args) const {
-        return metalfit::test::run_command(METALFIT_EXE, args, scratch_.path(), "OCIO=");
+        return metalfit::test::run_command(kMetalfitExe, args, scratch_.path(), "OCIO=");
     }
     metalfit::test::TempDir scratch_;
 };
@@ -955,13 +957,13 @@ TEST_F(Cli, TablePhysicallyBasedHoldsBothSpacesAndNkThatGiveBackF0AndF82) {
 
 TEST(CliStdout, AFullStdoutIsAnErrorNotASilentSuccess) {
     for (const char* args : {"list", "show gold", "models", "show gold --json"}) {
-        const std::string command = "env OCIO= '" METALFIT_EXE "' " + std::string(args) + " >/dev/full 2>/dev/null";
+        const std::string command = "env OCIO= '" + std::string(kMetalfitExe) + "' " + args + " >/dev/full 2>/dev/null";
         const int status = std::system(command.c_str());
         ASSERT_TRUE(WIFEXITED(status)) << args;
         EXPECT_EQ(WEXITSTATUS(status), 3) << args;
     }
     const std::string err_file = ::testing::TempDir() + "metalfit-stdout-err.txt";
-    const std::string command = "env OCIO= '" METALFIT_EXE "' list >/dev/full 2>'" + err_file + "'";
+    const std::string command = "env OCIO= '" + std::string(kMetalfitExe) + "' list >/dev/full 2>'" + err_file + "'";
     std::system(command.c_str());
     const std::string err = metalfit::test::read_file(err_file);
     EXPECT_TRUE(err.starts_with("metalfit: cannot write to standard output")) << err;

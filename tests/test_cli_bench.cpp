@@ -20,7 +20,7 @@ using nlohmann::json;
 using Result = metalfit::test::CommandResult;
 
 Result run(const TempDir& dir, const std::string& args) {
-    return metalfit::test::run_command(METALFIT_EXE, args, dir.path());
+    return metalfit::test::run_command(metalfit::test::kMetalfitExe, args, dir.path());
 }
 
 void expect_number(const json& j, const char* key) { EXPECT_TRUE(j.at(key).is_number()) << key << " in " << j.dump(); }

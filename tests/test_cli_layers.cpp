@@ -24,7 +24,7 @@ using metalfit::test::Contains;
 class CliLayers : public ::testing::Test {
 protected:
     Result run(const std::string& args) const {
-        return metalfit::test::run_command(METALFIT_EXE, args, scratch_.path(), "OCIO=");
+        return metalfit::test::run_command(metalfit::test::kMetalfitExe, args, scratch_.path(), "OCIO=");
     }
     fs::path path(const std::string& name) const { return scratch_.path() / name; }
 

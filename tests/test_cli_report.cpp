@@ -20,7 +20,7 @@ using Json = nlohmann::json;
 class Report : public ::testing::Test {
 protected:
     metalfit::test::CommandResult run(const std::string& args) const {
-        return metalfit::test::run_command(METALFIT_EXE, args, tmp_.path());
+        return metalfit::test::run_command(metalfit::test::kMetalfitExe, args, tmp_.path());
     }
     Json report_json(const fs::path& dir) const { return Json::parse(read_file(dir / "report.json")); }
     std::size_t entries() const { return std::distance(fs::directory_iterator(tmp_.path()), fs::directory_iterator()); }
@@ -231,7 +231,7 @@ std::pair<int, int> png_size(const std::string& png) {
 // Issue 16: the renders per model, reference | model | |difference| x 10, from glpreview's sheet with the report's
 // models (one column group each).
 TEST_F(Report, RendersOneColumnGroupPerModelOfTheReport) {
-    const fs::path glpreview = fs::path(METALFIT_EXE).parent_path() / "glpreview";
+    const fs::path glpreview = fs::path(metalfit::test::kMetalfitExe).parent_path() / "glpreview";
     if (!fs::exists(glpreview)) GTEST_SKIP() << "glpreview not built";
     const fs::path dir = tmp_.path() / "r";
     const auto r = run("report Au,Zn --model f82-tint,schlick,conductor-rgb --renders on -o '" + dir.string() + "'");
@@ -277,7 +277,7 @@ TEST_F(Report, RendersOneColumnGroupPerModelOfTheReport) {
 TEST_F(Report, WithoutGlpreviewTheRendersAreSkippedWithTheReason) {
     const fs::path bin = tmp_.path() / "bin";
     fs::create_directories(bin);
-    fs::copy_file(METALFIT_EXE, bin / "metalfit");
+    fs::copy_file(metalfit::test::kMetalfitExe, bin / "metalfit");
     const fs::path dir = tmp_.path() / "r";
     const auto r = metalfit::test::run_command(bin / "metalfit", "report Au --model schlick -o '" + dir.string() + "'",
                                                tmp_.path());

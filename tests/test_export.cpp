@@ -33,7 +33,7 @@ using Result = metalfit::test::CommandResult;
 
 // Runs the real metalfit with `args` (shell-quoted), OCIO unset.
 Result run(const std::string& args, const fs::path& scratch) {
-    return metalfit::test::run_command(METALFIT_EXE, args, scratch);
+    return metalfit::test::run_command(metalfit::test::kMetalfitExe, args, scratch);
 }
 
 std::vector<fs::path> files_with_extension(const fs::path& dir, const std::string& ext) {
@@ -49,7 +49,7 @@ class CatalogExport : public ::testing::Test {
 protected:
     // `metalfit export --all --model all --format all` with $OCIO unset, made once by the build (tests/CMakeLists.txt)
     // for every test that reads the catalog export; read only.
-    static fs::path out() { return METALFIT_CATALOG_EXPORT; }
+    static fs::path out() { return metalfit::test::kCatalogExportDir; }
 };
 
 // ---- MaterialX: node categories, input names and types, outputs, connections --------------------------------------

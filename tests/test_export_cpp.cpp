@@ -58,7 +58,7 @@ TEST(ExportCpp, MuOutsideTheUnitIntervalGivesTheEndValue) {
 }
 
 TEST(ExportCpp, ConstantsAreTheRecordsWrittenParameters) {
-    std::ifstream in(METALFIT_EXPORT_JSON);
+    std::ifstream in(metalfit::test::kCatalogExportJson);
     const auto record = nlohmann::json::parse(in);
     for (const metalfit_materials::Entry& e : metalfit_materials::all) {
         const auto& written = record["materials"][e.material]["models"][e.model]["export"]["params"];

@@ -23,10 +23,11 @@ using metalfit::test::read_file;
 using metalfit::test::TempDir;
 using Json = nlohmann::json;
 
-const fs::path kCatalogExport{METALFIT_CATALOG_EXPORT};  // `export --all --model all --format all`, made by the build
+const fs::path kCatalogExport{
+    metalfit::test::kCatalogExportDir};  // `export --all --model all --format all`, made by the build
 
 metalfit::test::CommandResult run(const std::string& args, const fs::path& scratch) {
-    return metalfit::test::run_command(METALFIT_EXE, args, scratch);
+    return metalfit::test::run_command(metalfit::test::kMetalfitExe, args, scratch);
 }
 
 // F0 = F(mu = 1) of a model from its written parameters, in the forms the models define it (docs/fitting.md, "Models") rather than

@@ -48,8 +48,8 @@ std::string compute_source(const metalfit::Model& model) {
 
 TEST(ExportGlsl, ModelFunctionsOnTheGpuEqualTheCppModels) {
     GlContext context = GlContext::create();
-    std::ifstream in(METALFIT_EXPORT_JSON);
-    ASSERT_TRUE(in) << METALFIT_EXPORT_JSON;
+    std::ifstream in(metalfit::test::kCatalogExportJson);
+    ASSERT_TRUE(in) << metalfit::test::kCatalogExportJson;
     const auto record = nlohmann::json::parse(in);
     for (const metalfit::Model* model : metalfit::all_models()) {
         SCOPED_TRACE(std::string(model->id()) + " on " + context.renderer());

@@ -12,7 +12,6 @@
 #include <chrono>
 #include <map>
 #include <random>
-#include <thread>
 
 #include "interrupted_runs.hpp"
 #include "test_support.hpp"
@@ -28,7 +27,9 @@ using metalfit::test::TempDir;
 using metalfit::test::names_in;
 using metalfit::test::tree;
 
-pid_t start_export(const std::vector<std::string>& args) { return metalfit::test::spawn_quietly(METALFIT_EXE, args); }
+pid_t start_export(const std::vector<std::string>& args) {
+    return metalfit::test::spawn_quietly(metalfit::test::kMetalfitExe, args);
+}
 
 int wait_for(pid_t pid) {
     int status = 0;
@@ -69,11 +70,8 @@ TEST(ExportInterrupted, AKilledExportLeavesTheOldFolderOrTheNewOne) {
         const int signal = trial % 3 == 2 ? SIGINT : SIGKILL;
         copy_tree(old_dir, dir);
         const auto before = names_in(work);  // "out", and a staging folder an earlier SIGKILL may have left
-        const pid_t pid = start_export(new_args);
         const double at = trial == 0 ? 0.3 * seconds : late(random) * seconds;
-        std::this_thread::sleep_for(std::chrono::duration<double>(at));
-        ::kill(pid, signal);
-        const int status = wait_for(pid);
+        const int status = metalfit::test::kill_at(start_export(new_args), at, signal);
         const auto now = tree(dir);
         const bool is_old = now == old_tree, is_new = now == new_tree;
         EXPECT_TRUE(is_old || is_new) << "trial " << trial << " at " << at << " s: " << now.size() << " files, old "

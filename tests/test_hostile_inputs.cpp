@@ -89,10 +89,10 @@ void expect_refused(const ChildRun& r, int exit_code, const std::string& named) 
 }
 
 ChildRun metalfit_show(const TempDir& dir, const fs::path& yml) {
-    return run_child(METALFIT_EXE, {"show", yml.string(), "--json"}, dir.path());
+    return run_child(kMetalfitExe, {"show", yml.string(), "--json"}, dir.path());
 }
 ChildRun metalfit_with_config(const TempDir& dir, const fs::path& config) {
-    return run_child(METALFIT_EXE, {"--ocio-config", config.string(), "show", "Au", "--json"}, dir.path());
+    return run_child(kMetalfitExe, {"--ocio-config", config.string(), "show", "Au", "--json"}, dir.path());
 }
 
 std::string repeat(const std::string& s, std::size_t bytes) {
@@ -192,7 +192,7 @@ TEST(HostileInputs, AnOcioFileTransformOfDevZero) {
     TempDir dir;
     const fs::path f = config_with_lut(dir, "/dev/zero");
     expect_refused(metalfit_with_config(dir, f), 4, f.string());
-    EXPECT_TRUE(Contains(run_child(METALFIT_EXE, {"--ocio-config", f.string(), "spaces"}, dir.path()).err,
+    EXPECT_TRUE(Contains(run_child(kMetalfitExe, {"--ocio-config", f.string(), "spaces"}, dir.path()).err,
                          "/dev/zero: not a regular file"));
 }
 
@@ -219,15 +219,12 @@ fs::path scene_with(const TempDir& dir, const std::string& image) {
         "spheres": [{"center": [0, 0, 0], "radius": 0.5, "reflection": "classic"}]})");
 }
 
-#ifndef GLPREVIEW_EXE
-#define GLPREVIEW_EXE ""  // built without glpreview: its tests skip
-#endif
 #define SKIP_WITHOUT_GLPREVIEW()                                                                                       \
-    if (std::string(GLPREVIEW_EXE).empty()) GTEST_SKIP() << "glpreview is not built"
+    if (std::string(kGlpreviewExe).empty()) GTEST_SKIP() << "glpreview is not built"
 
 ChildRun glpreview_on(const TempDir& dir, const std::string& image_name, const std::string& bytes) {
     dir.write(image_name, bytes);
-    return run_child(GLPREVIEW_EXE, {scene_with(dir, image_name).string(), "-o", (dir.path() / "out").string()},
+    return run_child(kGlpreviewExe, {scene_with(dir, image_name).string(), "-o", (dir.path() / "out").string()},
                      dir.path());
 }
 

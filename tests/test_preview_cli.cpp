@@ -21,7 +21,7 @@ namespace {
 using CommandRun = CommandResult;
 
 CommandRun glpreview(const std::string& arguments, const TempDir& dir) {
-    return run_command(GLPREVIEW_EXE, arguments, dir.path());
+    return run_command(kGlpreviewExe, arguments, dir.path());
 }
 
 TEST(PreviewCli, MalformedSceneIsOneLineErrorExit3AndWritesNothing) {
@@ -437,8 +437,8 @@ TEST(PreviewCli, AFullStdoutIsAnError) {
     // issue 13, item 5: what glpreview prints must reach stdout, or it says so and fails
     TempDir dir;
     const fs::path scene = dir.write("s.json", R"({"spheres": [{"center": [0, 1, 0], "reflection": "classic"}]})");
-    const std::string command = "env OCIO= '" GLPREVIEW_EXE "' '" + scene.string() + "' --explain >/dev/full 2>'" +
-                                (dir.path() / "err").string() + "'";
+    const std::string command = "env OCIO= '" + std::string(kGlpreviewExe) + "' '" + scene.string() +
+                                "' --explain >/dev/full 2>'" + (dir.path() / "err").string() + "'";
     const int status = std::system(command.c_str());
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_EQ(WEXITSTATUS(status), 3);

@@ -103,7 +103,7 @@ TEST(PreviewImageIo, OpenImageIoIsLoadedOnlyByARunThatNeedsIt) {
     TempDir dir;
     // The dynamic linker names every library it loads (LD_DEBUG=libs, on stderr).
     const fs::path plain = write_scene(dir, "");
-    const CommandResult exr_png = run_command(GLPREVIEW_EXE, plain.string() + " -o " + (dir.path() / "a").string(),
+    const CommandResult exr_png = run_command(kGlpreviewExe, plain.string() + " -o " + (dir.path() / "a").string(),
                                               dir.path(), "OCIO= LD_DEBUG=libs");
     ASSERT_EQ(exr_png.exit_code, 0) << exr_png.err;
     EXPECT_TRUE(fs::exists(dir.path() / "a" / "beauty.exr") && fs::exists(dir.path() / "a" / "beauty.png"));
@@ -111,7 +111,7 @@ TEST(PreviewImageIo, OpenImageIoIsLoadedOnlyByARunThatNeedsIt) {
     EXPECT_FALSE(Contains(exr_png.err, "libOpenImageIO"));
     const fs::path sky = write_scene(dir, R"("environment": {"type": "equirect", "file": ")" +
                                               (kData / "scenes" / "sky.hdr").string() + R"("}, )");
-    const CommandResult hdr = run_command(GLPREVIEW_EXE, sky.string() + " -o " + (dir.path() / "b").string(),
+    const CommandResult hdr = run_command(kGlpreviewExe, sky.string() + " -o " + (dir.path() / "b").string(),
                                           dir.path(), "OCIO= LD_DEBUG=libs");
     ASSERT_EQ(hdr.exit_code, 0) << hdr.err;
     EXPECT_TRUE(Contains(hdr.err, "libmetalfit_glpreview_oiio.so"));
@@ -122,7 +122,7 @@ TEST(PreviewImageIo, AMissingOpenImageIoModuleIsOneLineNamingIt) {
     TempDir dir;
     // A glpreview without the module beside it (and none installed): EXR and PNG still work, a .hdr does not.
     const fs::path lone = dir.path() / "glpreview";
-    fs::copy_file(GLPREVIEW_EXE, lone);
+    fs::copy_file(kGlpreviewExe, lone);
     const CommandResult exr_png =
         run_command(lone, write_scene(dir, "").string() + " -o " + (dir.path() / "a").string(), dir.path());
     ASSERT_EQ(exr_png.exit_code, 0) << exr_png.err;

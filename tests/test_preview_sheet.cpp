@@ -16,7 +16,7 @@ namespace {
 using namespace metalfit::glpreview;
 
 CommandResult glpreview(const std::string& arguments, const TempDir& dir) {
-    return run_command(GLPREVIEW_EXE, arguments, dir.path());
+    return run_command(kGlpreviewExe, arguments, dir.path());
 }
 
 // The shipped sheet room, small.

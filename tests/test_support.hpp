@@ -15,13 +15,14 @@
 #include <nlohmann/json.hpp>
 
 #include "libfit/spectral/complex_index.hpp"
+#include "test_paths.hpp"
 
 namespace metalfit::test {
 
 namespace fs = std::filesystem;
 
-inline const fs::path kFixtures{METALFIT_TEST_FIXTURES};
-inline const fs::path kData{METALFIT_TEST_DATA};
+inline const fs::path kFixtures{kFixturesDir};
+inline const fs::path kData{kDataDir};
 
 inline ::testing::AssertionResult Contains(const std::string& haystack, const std::string& needle) {
     if (haystack.find(needle) != std::string::npos) return ::testing::AssertionSuccess();

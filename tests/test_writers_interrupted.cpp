@@ -16,7 +16,6 @@
 #include <functional>
 #include <map>
 #include <random>
-#include <thread>
 
 #include "interrupted_runs.hpp"
 #include "test_support.hpp"
@@ -27,6 +26,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using metalfit::test::Contains;
+using metalfit::test::kGlpreviewExe;
+using metalfit::test::kMetalfitExe;
 using metalfit::test::read_file;
 using metalfit::test::TempDir;
 
@@ -95,11 +96,8 @@ void kill_at_random_points(const Writer& w, int trials, std::uint32_t seed) {
         const int signal = trial % 2 == 0 ? SIGKILL : kDeferred[(trial / 2) % 3];
         w.restore_old();
         const auto before = names_in(work);
-        const pid_t pid = start(w.exe, w.args);
         const double at = when(random) * seconds;
-        std::this_thread::sleep_for(std::chrono::duration<double>(at));
-        ::kill(pid, signal);
-        const int status = wait_for(pid);
+        const int status = metalfit::test::kill_at(start(w.exe, w.args), at, signal);
         const Tree now = target_state(w);
         const bool is_old = w.is_old(now), is_new = w.is_new(now);
         EXPECT_TRUE(is_old || is_new) << name << " trial " << trial << " (signal " << signal << " at " << at << " s of "
@@ -155,7 +153,7 @@ Writer folder_writer(const std::string& exe, std::vector<std::string> args, cons
 
 // A file target: the old one holds "old", the new one what a full run wrote.
 Writer file_writer(std::vector<std::string> args, const fs::path& target) {
-    Writer w{METALFIT_EXE, std::move(args), target, false, {}, {}, {}};
+    Writer w{kMetalfitExe, std::move(args), target, false, {}, {}, {}};
     w.restore_old = [target] { std::ofstream(target, std::ios::binary) << "old"; };
     w.is_old = [](const Tree& t) { return t.size() == 1 && t.begin()->second == "old"; };
     auto expected = std::make_shared<std::string>();
@@ -170,7 +168,7 @@ Writer file_writer(std::vector<std::string> args, const fs::path& target) {
 // metalfit report needs the chart libraries compiled in (node_modules/ at configure time, scripts/install-deps.sh).
 bool report_is_built(const fs::path& scratch) {
     const auto r = metalfit::test::run_command(
-        METALFIT_EXE, "report Au --model schlick --renders off -o '" + (scratch / "probe-report").string() + "'",
+        kMetalfitExe, "report Au --model schlick --renders off -o '" + (scratch / "probe-report").string() + "'",
         scratch);
     fs::remove_all(scratch / "probe-report");
     return !Contains(r.err, "built without the chart libraries");
@@ -183,11 +181,11 @@ TEST(WritersInterrupted, ReportIsTheOldFolderOrTheNewOne) {
     fs::create_directories(work);
     const std::vector<std::string> args{"report",    "Au,Cu", "--model", "schlick,f82-tint",
                                         "--renders", "off",   "-o",      dir.string()};
-    ASSERT_TRUE(exited_ok(wait_for(start(METALFIT_EXE, args))));
+    ASSERT_TRUE(exited_ok(wait_for(start(kMetalfitExe, args))));
     const Tree full_run = tree(dir);
     ASSERT_GT(full_run.size(), 3u);
     const Tree old_files{{"index.html", "old"}, {"only-in-the-old.txt", "old"}};  // replaced: the old files go
-    kill_at_random_points(folder_writer(METALFIT_EXE, args, dir, old_files, full_run, false), 6, 3001u);
+    kill_at_random_points(folder_writer(kMetalfitExe, args, dir, old_files, full_run, false), 6, 3001u);
 }
 
 TEST(WritersInterrupted, FitToAFileIsTheOldFileOrTheNewOne) {
@@ -211,27 +209,30 @@ TEST(WritersInterrupted, TableAndShowToAFileAreTheOldFileOrTheNewOne) {
     kill_at_random_points(file_writer({"show", "gold", "--json", "-o", show.string()}, show), 4, 3004u);
 }
 
-#ifdef GLPREVIEW_EXE
 const char* kSmallScene = R"({"image": {"width": 48, "height": 32},
     "camera": {"position": [0, 1.2, 2.5], "look_at": [0, 1, 0]},
     "spheres": [{"center": [0, 1, 0], "radius": 0.5, "material": "Cu", "fresnel": "schlick"}]})";
 
+bool glpreview_is_built() { return *kGlpreviewExe != '\0'; }
+
 TEST(WritersInterrupted, GlpreviewIsTheOldFolderOrTheNewOne) {
+    if (!glpreview_is_built()) GTEST_SKIP() << "glpreview is not built";
     TempDir tmp;
     const fs::path scene = tmp.write("s.json", kSmallScene);
     const fs::path work = tmp.path() / "work", dir = work / "out";
     fs::create_directories(work);
     const std::vector<std::string> args{scene.string(), "-o", dir.string()};
-    ASSERT_TRUE(exited_ok(wait_for(start(GLPREVIEW_EXE, args))));
+    ASSERT_TRUE(exited_ok(wait_for(start(kGlpreviewExe, args))));
     const Tree full_run = tree(dir);
     ASSERT_GE(full_run.size(), 3u);
     Tree old_files{{"kept.txt", "old"}};  // glpreview keeps the other files of its folder
     for (const auto& [name, contents] : full_run) old_files[name] = "old";
-    kill_at_random_points(folder_writer(GLPREVIEW_EXE, args, dir, old_files, full_run, true), 6, 3005u);
+    kill_at_random_points(folder_writer(kGlpreviewExe, args, dir, old_files, full_run, true), 6, 3005u);
 }
 
 // F12: a scene named "...json" has the stem "..": --batch must not write (and replace) the parent of -o.
 TEST(WritersInterrupted, BatchSceneNamesCannotNameTheParentOfTheOutput) {
+    if (!glpreview_is_built()) GTEST_SKIP() << "glpreview is not built";
     TempDir tmp;
     const fs::path parent = tmp.path() / "parent";
     fs::create_directories(parent / "out");
@@ -239,7 +240,7 @@ TEST(WritersInterrupted, BatchSceneNamesCannotNameTheParentOfTheOutput) {
     for (const char* name : {"...json", "..json"}) {  // stems ".." and "."
         const fs::path scene = tmp.write(name, kSmallScene);
         const auto r = metalfit::test::run_command(
-            GLPREVIEW_EXE, "--batch '" + scene.string() + "' -o '" + (parent / "out").string() + "'", tmp.path());
+            kGlpreviewExe, "--batch '" + scene.string() + "' -o '" + (parent / "out").string() + "'", tmp.path());
         EXPECT_EQ(r.exit_code, 2) << name << ": " << r.err;
         EXPECT_TRUE(Contains(r.err, "cannot name its output folder")) << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -247,7 +248,6 @@ TEST(WritersInterrupted, BatchSceneNamesCannotNameTheParentOfTheOutput) {
         EXPECT_TRUE(fs::is_empty(parent / "out")) << name;
     }
 }
-#endif
 
 // F17: a stdout that fails (/dev/full) is exit 3 with one line, and nothing is written.
 TEST(WritersInterrupted, AFullStdoutWritesNothing) {
@@ -265,17 +265,16 @@ TEST(WritersInterrupted, AFullStdoutWritesNothing) {
         EXPECT_TRUE(Contains(text, "standard output: cannot write")) << text;
         EXPECT_EQ(text.find("standard output"), text.rfind("standard output")) << text;
     };
-    full(METALFIT_EXE, "report Au --model schlick --renders off -o '" + (tmp.path() / "report").string() + "'");
+    full(kMetalfitExe, "report Au --model schlick --renders off -o '" + (tmp.path() / "report").string() + "'");
     EXPECT_EQ(names_in(tmp.path()), std::vector<std::string>{});
-#ifdef GLPREVIEW_EXE
+    if (!glpreview_is_built()) return;
     const fs::path scene = tmp.write("s.json", kSmallScene);
-    full(GLPREVIEW_EXE, "'" + scene.string() + "' -o '" + (tmp.path() / "out").string() + "'");
-    full(GLPREVIEW_EXE, "--batch '" + scene.string() + "' -o '" + (tmp.path() / "batch").string() + "'");
-    full(GLPREVIEW_EXE, "'" + (metalfit::test::kData / "scenes" / "sheet.json").string() +
+    full(kGlpreviewExe, "'" + scene.string() + "' -o '" + (tmp.path() / "out").string() + "'");
+    full(kGlpreviewExe, "--batch '" + scene.string() + "' -o '" + (tmp.path() / "batch").string() + "'");
+    full(kGlpreviewExe, "'" + (metalfit::test::kData / "scenes" / "sheet.json").string() +
                             "' --sheet Au --sheet-models schlick --size 24x24 -o '" + (tmp.path() / "sheet").string() +
                             "'");
     EXPECT_EQ(names_in(tmp.path()), std::vector<std::string>{"s.json"});
-#endif
 }
 
 // F9: a subfolder of -o that is a link is never descended into: exit 3, one line naming it, nothing written there
@@ -288,7 +287,7 @@ TEST(WritersInterrupted, ASymlinkedSubfolderOfTheOutputIsRefused) {
     std::ofstream(dir / "mine.txt") << "mine";
     fs::create_directory_symlink(outside, dir / "glsl");
     const auto r = metalfit::test::run_command(
-        METALFIT_EXE, "export gold --model schlick --format json,glsl -o '" + dir.string() + "'", tmp.path());
+        kMetalfitExe, "export gold --model schlick --format json,glsl -o '" + dir.string() + "'", tmp.path());
     EXPECT_EQ(r.exit_code, 3) << r.err;
     EXPECT_TRUE(Contains(r.err, (dir / "glsl").string() + ": is a link")) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
