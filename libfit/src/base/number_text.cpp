@@ -1,8 +1,11 @@
 #include "libfit/base/number_text.hpp"
 
 #include <charconv>
+#include <cstdlib>
 #include <stdexcept>
 #include <system_error>
+
+#include "libfit/base/text.hpp"
 
 namespace metalfit {
 
@@ -32,5 +35,15 @@ std::string significant_text(double v, int digits) { return to_text(v, std::char
 std::string fixed_text(double v, int decimals) { return to_text(v, std::chars_format::fixed, decimals); }
 
 std::string scientific_text(double v, int decimals) { return to_text(v, std::chars_format::scientific, decimals); }
+
+std::optional<double> whole_number(std::string_view text) {
+    text = trim(text);
+    if (text.empty()) return std::nullopt;
+    const std::string s(text);
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (end != s.c_str() + s.size()) return std::nullopt;
+    return v;
+}
 
 }  // namespace metalfit

@@ -26,16 +26,6 @@ RGB f82_tint(const RGB& f0, const RGB& f82) {
     return tint;
 }
 
-std::vector<Display8> to_display(const std::vector<RGB>& linear, const DisplayTransform& display) {
-    std::vector<float> pixels;
-    for (const RGB& v : linear)
-        for (int c = 0; c < 3; ++c) pixels.push_back(static_cast<float>(v[c]));
-    const std::vector<unsigned char> bytes = display.apply(pixels, static_cast<int>(linear.size()), 1);
-    std::vector<Display8> out(linear.size());
-    for (std::size_t i = 0; i < linear.size(); ++i) out[i] = {bytes[3 * i], bytes[3 * i + 1], bytes[3 * i + 2]};
-    return out;
-}
-
 std::string fixed4(double v) { return fixed_text(v, 4); }
 
 bool in_gamut(const RGB& v) { return v.min() >= 0.0 && v.max() <= 1.0; }
@@ -107,7 +97,7 @@ MetalTable metal_table(const std::vector<std::function<Material()>>& loaders, co
         scene_values.push_back(f82_tint(scene_f0, scene(kMuF82)));
         table.rows.push_back(std::move(row));
     }
-    const std::vector<Display8> display = to_display(scene_values, colour.display);
+    const std::vector<Display8> display = display_colours(scene_values, colour.display);
     for (std::size_t i = 0; i < table.rows.size(); ++i) {
         table.rows[i].f0_display = display[2 * i];
         table.rows[i].tint_display = display[2 * i + 1];
@@ -180,6 +170,16 @@ nlohmann::ordered_json metal_table_json(const MetalTable& table) {
             {"display", table.display},
             {"mu_f82", kMuF82},
             {"materials", rows}};
+}
+
+std::vector<Display8> display_colours(const std::vector<RGB>& linear, const DisplayTransform& display) {
+    std::vector<float> pixels;
+    for (const RGB& v : linear)
+        for (int c = 0; c < 3; ++c) pixels.push_back(static_cast<float>(v[c]));
+    const std::vector<unsigned char> bytes = display.apply(pixels, static_cast<int>(linear.size()), 1);
+    std::vector<Display8> out(linear.size());
+    for (std::size_t i = 0; i < linear.size(); ++i) out[i] = {bytes[3 * i], bytes[3 * i + 1], bytes[3 * i + 2]};
+    return out;
 }
 
 }  // namespace metalfit

@@ -8,6 +8,7 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/number_text.hpp"
+#include "libfit/base/text.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/color/color_difference.hpp"
 #include "libfit/reference/reference_curve.hpp"
@@ -18,29 +19,8 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-    return s;
-}
-
-// The whole text as a number ("nan" and "inf" included, to be refused as not finite); else nullopt.
-std::optional<double> whole_number(std::string_view text) {
-    text = trim(text);
-    if (text.empty()) return std::nullopt;
-    const std::string s(text);
-    char* end = nullptr;
-    const double v = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size()) return std::nullopt;
-    return v;
-}
-
-std::string number(double v) {
-    std::ostringstream s;
-    s.precision(6);
-    s << v;
-    return s.str();
-}
+// "%.6g", as the chart's thicknesses and indices are written.
+std::string number(double v) { return significant_text(v, 6); }
 
 Material constant_film(double n) {
     Material m;
@@ -62,29 +42,7 @@ Material with_film(const Material& metal, const LayerMaterial& film, double d, c
     return m;
 }
 
-std::vector<Display8> to_display(const std::vector<RGB>& linear, const DisplayTransform& display) {
-    std::vector<float> pixels;
-    for (const RGB& v : linear)
-        for (int c = 0; c < 3; ++c) pixels.push_back(static_cast<float>(v[c]));
-    const std::vector<unsigned char> bytes = display.apply(pixels, static_cast<int>(linear.size()), 1);
-    std::vector<Display8> out(linear.size());
-    for (std::size_t i = 0; i < linear.size(); ++i) out[i] = {bytes[3 * i], bytes[3 * i + 1], bytes[3 * i + 2]};
-    return out;
-}
-
 std::string fixed4(double v) { return fixed_text(v, 4); }
-
-std::string html(std::string_view s) {
-    std::string out;
-    for (char c : s) switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    return out;
-}
 
 ChartDifference difference(const OxideChart& chart, double OxideChartRow::*member) {
     ChartDifference d;
@@ -206,7 +164,7 @@ OxideChart oxide_chart(const OxideChartInputs& in, const MetalTableColour& colou
         }
         chart.rows.push_back(row);
     }
-    const std::vector<Display8> display = to_display(scene, colour.display);
+    const std::vector<Display8> display = display_colours(scene, colour.display);
     const std::size_t per_row = in.versus_index ? 4 : 2;
     for (std::size_t i = 0; i < chart.rows.size(); ++i) {
         OxideChartRow& r = chart.rows[i];
@@ -317,12 +275,13 @@ nlohmann::ordered_json oxide_chart_json(const OxideChart& chart) {
 
 std::string oxide_chart_html(const OxideChart& chart) {
     std::ostringstream s;
-    s << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html(chart.description)
+    s << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html_escaped(chart.description)
       << "</title>\n<style>body{font:14px sans-serif;margin:2em}table{border-collapse:collapse}"
          "td,th{padding:2px 8px;text-align:left}.sw{width:4em;height:1.6em}</style></head><body>\n<h1>"
-      << html(chart.description) << "</h1>\n<p>F0 = R(1) and F82 = R(1/7) (the reflectance at 82°), swatches through "
-      << html(chart.display) << "; linear values in " << html(chart.space) << ". metalfit " << METALFIT_VERSION
-      << ".</p>\n";
+      << html_escaped(chart.description)
+      << "</h1>\n<p>F0 = R(1) and F82 = R(1/7) (the reflectance at 82°), swatches through "
+      << html_escaped(chart.display) << "; linear values in " << html_escaped(chart.space) << ". metalfit "
+      << METALFIT_VERSION << ".</p>\n";
     if (chart.versus_index) {
         const ChartDifference f0 = chart_difference_f0(chart), f82 = chart_difference_f82(chart);
         s << "<p>Beside them a film of constant index " << number(*chart.versus_index)

@@ -7,40 +7,26 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/input_file.hpp"
+#include "libfit/base/text.hpp"
 #include "libfit/base/utf8.hpp"
 #include "libfit/io/csv.hpp"
 
+#include "io/json_fields.hpp"
+
 namespace metalfit {
 namespace {
-
-bool iequals(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-           });
-}
-
-std::string get_string(const nlohmann::json& j, const char* key, const std::filesystem::path& file,
-                       const std::string& where, bool required = true) {
-    const auto it = j.find(key);
-    if (it == j.end() || it->is_null()) {
-        if (required) throw InputError({file, 0, where + "." + key}, "missing");
-        return {};
-    }
-    if (!it->is_string()) throw InputError({file, 0, where + "." + key}, "expected a string");
-    return it->get<std::string>();
-}
 
 CatalogSource read_source(const nlohmann::json& j, const std::filesystem::path& file,
                           const std::filesystem::path& data_dir, const std::string& where) {
     if (!j.is_object()) throw InputError({file, 0, where}, "expected an object");
     CatalogSource s;
-    s.source = get_string(j, "source", file, where);
-    s.file = data_dir / get_string(j, "file", file, where);
-    s.reference = get_string(j, "reference", file, where);
-    s.doi = get_string(j, "doi", file, where, false);
-    s.licence = get_string(j, "licence", file, where);
-    s.database_path = get_string(j, "database_path", file, where, false);
-    s.note = get_string(j, "note", file, where, false);
+    s.source = io_detail::string_field(j, "source", file, where);
+    s.file = data_dir / io_detail::string_field(j, "file", file, where);
+    s.reference = io_detail::string_field(j, "reference", file, where);
+    s.doi = io_detail::string_field(j, "doi", file, where, false);
+    s.licence = io_detail::string_field(j, "licence", file, where);
+    s.database_path = io_detail::string_field(j, "database_path", file, where, false);
+    s.note = io_detail::string_field(j, "note", file, where, false);
     const auto range = j.find("range_nm"), points = j.find("points_360_830");
     if ((range == j.end()) != (points == j.end()))
         throw InputError({file, 0, where + (range == j.end() ? ".range_nm" : ".points_360_830")},
@@ -60,9 +46,9 @@ CatalogSource read_source(const nlohmann::json& j, const std::filesystem::path& 
 }  // namespace
 
 const CatalogSource& CatalogEntry::find_source(std::string_view source) const {
-    if (source.empty() || iequals(source, primary.source)) return primary;
+    if (source.empty() || equal_ignoring_case(source, primary.source)) return primary;
     for (const auto& a : alternates)
-        if (iequals(source, a.source)) return a;
+        if (equal_ignoring_case(source, a.source)) return a;
     std::string available = primary.source;
     for (const auto& a : alternates) available += ", " + a.source;
     throw UsageError("material " + id + " has no source '" + std::string(source) + "' (available: " + available + ")");
@@ -92,9 +78,9 @@ Catalog Catalog::load(const std::filesystem::path& data_dir, std::string_view fi
         const std::string where = "materials[" + std::to_string(i) + "]";
         if (!m.is_object()) throw InputError({file, 0, where}, "expected an object");
         CatalogEntry e;
-        e.id = get_string(m, "id", file, where);
-        e.name = get_string(m, "name", file, where);
-        e.kind = get_string(m, "kind", file, where, false);
+        e.id = io_detail::string_field(m, "id", file, where);
+        e.name = io_detail::string_field(m, "name", file, where);
+        e.kind = io_detail::string_field(m, "kind", file, where, false);
         if (auto a = m.find("aliases"); a != m.end()) {
             if (!a->is_array()) throw InputError({file, 0, where + ".aliases"}, "expected a list of strings");
             for (const auto& alias : *a) {
@@ -117,9 +103,9 @@ Catalog Catalog::load(const std::filesystem::path& data_dir, std::string_view fi
 
 const CatalogEntry* Catalog::find(std::string_view name) const {
     for (const auto& e : entries_) {
-        if (iequals(name, e.id) || iequals(name, e.name)) return &e;
+        if (equal_ignoring_case(name, e.id) || equal_ignoring_case(name, e.name)) return &e;
         for (const auto& alias : e.aliases)
-            if (iequals(name, alias)) return &e;
+            if (equal_ignoring_case(name, alias)) return &e;
     }
     return nullptr;
 }

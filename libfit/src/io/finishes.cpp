@@ -8,27 +8,13 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/input_file.hpp"
+#include "libfit/base/text.hpp"
 #include "libfit/io/layer_stack.hpp"
+
+#include "io/json_fields.hpp"
 
 namespace metalfit {
 namespace {
-
-bool iequal(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](unsigned char x, unsigned char y) {
-               return std::tolower(x) == std::tolower(y);
-           });
-}
-
-std::string text_field(const nlohmann::json& j, const char* key, const std::filesystem::path& file,
-                       const std::string& where, bool required) {
-    const auto it = j.find(key);
-    if (it == j.end() || it->is_null()) {
-        if (required) throw InputError({file, 0, where + "." + key}, "missing");
-        return {};
-    }
-    if (!it->is_string()) throw InputError({file, 0, where + "." + key}, "expected a string");
-    return it->get<std::string>();
-}
 
 std::vector<std::string> text_list(const nlohmann::json& j, const char* key, const std::filesystem::path& file,
                                    const std::string& where) {
@@ -64,13 +50,13 @@ FinishCatalog FinishCatalog::load(const std::filesystem::path& data_dir) {
         const std::string where = "finishes[" + std::to_string(i) + "]";
         if (!f.is_object()) throw InputError({file, 0, where}, "expected an object");
         Finish finish;
-        finish.id = text_field(f, "id", file, where, true);
-        finish.name = text_field(f, "name", file, where, true);
+        finish.id = io_detail::string_field(f, "id", file, where, true);
+        finish.name = io_detail::string_field(f, "name", file, where, true);
         finish.aliases = text_list(f, "aliases", file, where);
-        finish.metal = text_field(f, "metal", file, where, true);
-        finish.film = text_field(f, "film", file, where, false);
-        finish.coat = text_field(f, "coat", file, where, false);
-        finish.note = text_field(f, "note", file, where, false);
+        finish.metal = io_detail::string_field(f, "metal", file, where, true);
+        finish.film = io_detail::string_field(f, "film", file, where, false);
+        finish.coat = io_detail::string_field(f, "coat", file, where, false);
+        finish.note = io_detail::string_field(f, "note", file, where, false);
         finish.sources = text_list(f, "sources", file, where);
         if (finish.film.empty() && finish.coat.empty())
             throw InputError({file, 0, where}, "a finish needs a film or a coat (else it is the bare metal)");
@@ -81,9 +67,9 @@ FinishCatalog FinishCatalog::load(const std::filesystem::path& data_dir) {
 
 const Finish* FinishCatalog::find(std::string_view name) const {
     for (const Finish& f : entries_) {
-        if (iequal(name, f.id) || iequal(name, f.name)) return &f;
+        if (equal_ignoring_case(name, f.id) || equal_ignoring_case(name, f.name)) return &f;
         for (const std::string& alias : f.aliases)
-            if (iequal(name, alias)) return &f;
+            if (equal_ignoring_case(name, alias)) return &f;
     }
     return nullptr;
 }

@@ -8,27 +8,12 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/input_file.hpp"
+#include "libfit/base/number_text.hpp"
+#include "libfit/base/text.hpp"
 #include "libfit/io/csv.hpp"
 
 namespace metalfit {
 namespace {
-
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-    return s;
-}
-
-// The whole text as a number, "nan" and "inf" included (so that they can be refused as not finite); else nullopt.
-std::optional<double> whole_number(std::string_view text) {
-    text = trim(text);
-    if (text.empty()) return std::nullopt;
-    const std::string s(text);
-    char* end = nullptr;
-    const double v = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size()) return std::nullopt;
-    return v;
-}
 
 // "80nm" → 80, "0.12 um" / "0.12µm" → 120; nullopt when the text does not end in a unit.
 std::optional<std::pair<std::string_view, double>> split_unit(std::string_view text) {

@@ -1,30 +1,17 @@
 #include "report/report_pages.hpp"
 
 #include "libfit/base/names.hpp"
+#include "libfit/base/text.hpp"
 
 namespace metalfit::report_detail {
 namespace {
-
-std::string escaped(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
 // `root`: the path from the page to the report folder ("." or "..").
 std::string page(const std::string& title, const std::string& body_attributes, const std::string& root) {
     std::string scripts;
     for (const char* script : {"vega.min.js", "vega-lite.min.js", "vega-embed.min.js", "report.js", "report-data.js"})
         scripts += "<script src=\"" + root + "/assets/" + script + "\"></script>\n";
-    return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + escaped(title) +
+    return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + html_escaped(title) +
            "</title>\n<link rel=\"stylesheet\" href=\"" + root + "/assets/report.css\">\n</head>\n<body " +
            body_attributes + ">\n<main id=\"content\"></main>\n<noscript>This report is drawn by JavaScript from " +
            root + "/report.json (no network needed): enable scripts, or read report.json.</noscript>\n" + scripts +
@@ -37,7 +24,7 @@ std::string catalog_page() { return page("metalfit report", "data-page=\"catalog
 
 std::string material_page(const Material& material) {
     return page("metalfit report: " + material.name + " (" + material.id + ")",
-                "data-page=\"material\" data-material=\"" + escaped(material.id) + "\"", "..");
+                "data-page=\"material\" data-material=\"" + html_escaped(material.id) + "\"", "..");
 }
 
 std::string material_page_file(const Material& material) {

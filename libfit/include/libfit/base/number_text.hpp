@@ -3,7 +3,9 @@
 // for one (tables, messages: the printf conversions %.*g and %.*f, which std::to_chars reproduces exactly).
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace metalfit {
 
@@ -17,5 +19,9 @@ std::string significant_text(double v, int digits);
 std::string fixed_text(double v, int decimals);
 // v with `decimals` digits after the point of its mantissa, as printf's "%.<decimals>e" writes it ("1.5e-05").
 std::string scientific_text(double v, int decimals);
+
+// The reading side: the whole text (spaces and tabs around it allowed) as a number, strtod's forms, "nan" and "inf"
+// included so that a caller can refuse them as not finite; nullopt when anything else is left.
+std::optional<double> whole_number(std::string_view text);
 
 }  // namespace metalfit

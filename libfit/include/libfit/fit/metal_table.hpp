@@ -53,6 +53,9 @@ MetalTable metal_table(const Catalog& catalog, const MetalTableColour& colour);
 MetalTable metal_table(const std::vector<std::function<Material()>>& loaders, const Catalog& catalog,
                        const MetalTableColour& colour);
 
+// Linear colours of the display transform's input as 8-bit display values (one OCIO apply for all of them).
+std::vector<Display8> display_colours(const std::vector<RGB>& linear, const DisplayTransform& display);
+
 // "#rrggbb" (lower case).
 std::string hex(const Display8& rgb);
 
