@@ -6,6 +6,7 @@
 
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/io/image_text.hpp"
+#include "glpreview/render/preview_passes.hpp"
 #include "glpreview/render/sheet_layout.hpp"
 #include "libfit/base/errors.hpp"
 #include "test_support.hpp"
@@ -360,6 +361,29 @@ TEST(PreviewSheet, ExposureChangesThePngsOnlyAndANonFiniteOneIsRefused) {
         EXPECT_TRUE(Contains(run.err, "--exposure")) << run.err;
         EXPECT_FALSE(fs::exists(out)) << bad;
     }
+}
+
+// A scene's PNGs say what they show in a top band (outputs.labels); nothing else of them changes, nor the EXRs.
+TEST(PreviewSheet, AScenesPngsCarryTheirCaptionInTheTopBandOnly) {
+    TempDir dir;
+    const std::string scene_text = R"({"image": {"width": 96, "height": 64},
+        "spheres": [{"center": [0, 1, 0], "radius": 0.5, "material": "Cu", "fresnel": "schlick"}], "outputs": )";
+    const fs::path on = dir.write("on.json", scene_text + R"({"labels": true}})");
+    const fs::path off = dir.write("off.json", scene_text + "{}}");  // the default: no captions
+    ASSERT_EQ(glpreview(on.string() + " -o " + (dir.path() / "on").string(), dir).exit_code, 0);
+    ASSERT_EQ(glpreview(off.string() + " -o " + (dir.path() / "off").string(), dir).exit_code, 0);
+    const int band = caption_band_height(64);
+    for (const char* file : {"beauty.png", "reference.png", "difference.png"}) {
+        const Png8 a = read_png8(dir.path() / "on" / file), b = read_png8(dir.path() / "off" / file);
+        ASSERT_EQ(a.rgb.size(), b.rgb.size());
+        long in_band = 0, outside = 0;
+        for (std::size_t i = 0; i < a.rgb.size(); ++i)
+            if (a.rgb[i] != b.rgb[i]) (static_cast<int>(i / 3 / a.width) < band ? in_band : outside) += 1;
+        EXPECT_EQ(outside, 0) << file;
+        EXPECT_GT(in_band, 30) << file << ": the caption is drawn";
+    }
+    for (const char* file : {"beauty.exr", "reference.exr", "difference.exr"})
+        EXPECT_TRUE(read_image(dir.path() / "on" / file).rgb == read_image(dir.path() / "off" / file).rgb) << file;
 }
 
 TEST(PreviewSheet, ExplainShowsTheRoughPassesAndTheLabels) {

@@ -1,6 +1,11 @@
 #include "glpreview/render/preview_passes.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
 #include "glpreview/effects/registry.hpp"
+#include "glpreview/io/image_text.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/exr_metadata.hpp"
 #include "glpreview/render/frame_inputs.hpp"
@@ -28,9 +33,19 @@ struct Empty {};
 const Image& image_of(const Image& image) { return image; }
 const Image& image_of(const ReferenceRender& render) { return render.image; }
 
+// The caption's text: what the image shows, then the display transform (ASCII: OpenImageIO draws a glyph per byte)
+// and the exposure.
+std::string caption_text(const std::string& caption, const PreviewRun& run) {
+    std::string display = run.display ? run.display->description() : std::string();
+    for (std::size_t at; (at = display.find("\u2192")) != std::string::npos;) display.replace(at, 3, "->");
+    char exposure[32];
+    std::snprintf(exposure, sizeof exposure, "%+g EV", std::log2(run.exposure));
+    return caption + "; " + display + ", exposure " + exposure;
+}
+
 template <typename T>
 void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, PreviewRun* run,
-                    PngExposure exposure = PngExposure::apply) {
+                    PngExposure exposure = PngExposure::apply, const std::string& caption = {}) {
     const bool png = std::filesystem::path(file).extension() == ".png";
     graph.add_pass<Empty>(
         {"write " + file, png ? "through the OCIO display transform" : "linear half-float EXR", Processor::cpu},
@@ -38,16 +53,23 @@ void add_image_file(PassGraph& graph, const std::string& file, Handle<T> image, 
             b.read(image);
             b.write_file(file);
         },
-        [run, file, image, png, exposure](const Empty&, Resources& r) {
+        [run, file, image, png, exposure, caption](const Empty&, Resources& r) {
             if (run->output_dir.empty()) return;
             const std::filesystem::path path = run->output_file(file);
-            if (png && (exposure == PngExposure::already_applied || run->exposure == 1.0))
+            if (png && caption.empty() && (exposure == PngExposure::already_applied || run->exposure == 1.0)) {
                 write_png(path, image_of(r.get(image)), *run->display);
-            else if (png)
-                write_png(path, exposed(image_of(r.get(image)), run->exposure), *run->display);
-            else
+            } else if (png) {
+                Image shown = exposure == PngExposure::apply ? exposed(image_of(r.get(image)), run->exposure)
+                                                             : image_of(r.get(image));
+                if (!caption.empty()) {
+                    const int band = caption_band_height(shown.height);
+                    draw_text(shown, {{0, 0, shown.width, band, caption_text(caption, *run), band - 2}});
+                }
+                write_png(path, shown, *run->display);
+            } else {
                 write_exr(path, image_of(r.get(image)), run->exr_colour ? &*run->exr_colour : nullptr,
                           image_metadata(run->exr_metadata, file));
+            }
         });
 }
 
@@ -98,17 +120,20 @@ SceneInputs import_scene(PassGraph& graph, const Scene& scene) {
 }
 
 void add_image_file_pass(PassGraph& graph, const std::string& file, Handle<Image> image, PreviewRun* run,
-                         PngExposure exposure) {
-    add_image_file(graph, file, image, run, exposure);
+                         PngExposure exposure, const std::string& caption) {
+    add_image_file(graph, file, image, run, exposure, caption);
 }
+
+int caption_band_height(int height) { return std::clamp(height / 16, 8, 24); }
 
 Image exposed(const Image& image, double exposure) {
     Image out = image;
     for (float& v : out.rgb) v = static_cast<float>(v * exposure);
     return out;
 }
-void add_image_file_pass(PassGraph& graph, const std::string& file, Handle<ReferenceRender> image, PreviewRun* run) {
-    add_image_file(graph, file, image, run);
+void add_image_file_pass(PassGraph& graph, const std::string& file, Handle<ReferenceRender> image, PreviewRun* run,
+                         const std::string& caption) {
+    add_image_file(graph, file, image, run, PngExposure::apply, caption);
 }
 
 namespace {
@@ -170,12 +195,22 @@ PreviewHandles add_preview_passes(PassGraph& graph, const Scene& scene, const Fe
     std::vector<std::string> formats;
     if (o.exr) formats.push_back("exr");
     if (o.png) formats.push_back("png");
+    // The PNGs' captions (outputs.labels): what each shows; the EXRs are the bare images.
+    const auto caption = [&o](const std::string& format, const char* text) {
+        return format == "png" && o.labels ? std::string(text) : std::string();
+    };
     for (const auto& format : formats)
-        if (o.beauty) add_image_file_pass(graph, "beauty." + format, h.beauty, run);
+        if (o.beauty)
+            add_image_file_pass(graph, "beauty." + format, h.beauty, run, PngExposure::apply,
+                                caption(format, "beauty: GPU preview"));
     for (const auto& format : formats)
-        if (o.reference) add_image_file_pass(graph, "reference." + format, h.reference, run);
+        if (o.reference)
+            add_image_file_pass(graph, "reference." + format, h.reference, run,
+                                caption(format, "reference: CPU ray trace"));
     for (const auto& format : formats)
-        if (o.difference) add_image_file_pass(graph, "difference." + format, h.difference, run);
+        if (o.difference)
+            add_image_file_pass(graph, "difference." + format, h.difference, run, PngExposure::apply,
+                                caption(format, "difference: |beauty - reference|"));
     if (o.reference && h.reference_standard_error)
         add_image_file_pass(graph, "reference-stderr.exr", *h.reference_standard_error, run);
     if (o.localization) add_image_file_pass(graph, "localization.exr", h.localization, run);

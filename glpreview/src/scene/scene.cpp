@@ -288,8 +288,8 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
     if (scene.spheres.empty()) top.fail("spheres", "at least one sphere");
     if (top.has("outputs")) {
         Reader r(top.at("outputs"), "outputs", file,
-                 {"beauty", "reference", "difference", "metrics", "exr", "png", "localization", "timing_frames",
-                  "reference_samples"});
+                 {"beauty", "reference", "difference", "metrics", "exr", "png", "localization", "labels",
+                  "timing_frames", "reference_samples"});
         Outputs& o = scene.outputs;
         r.read("beauty", o.beauty);
         r.read("reference", o.reference);
@@ -298,6 +298,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         r.read("exr", o.exr);
         r.read("png", o.png);
         r.read("localization", o.localization);
+        r.read("labels", o.labels);
         r.read("timing_frames", o.timing_frames, 5, 1000);
         r.read("reference_samples", o.reference_samples, 1, 65536);
         if (!o.exr && !o.png && (o.beauty || o.reference || o.difference))

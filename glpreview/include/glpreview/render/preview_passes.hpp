@@ -124,11 +124,16 @@ graph::Handle<FresnelSet> add_model_parameters_pass(graph::PassGraph&, const Fea
 // A PNG gets the run's exposure unless the pass that made the image applied it (a sheet whose labels and error
 // views are drawn after the exposure, so that they look the same at every exposure).
 enum class PngExposure { apply, already_applied };
+// `caption` (a PNG's, when not empty): what the image shows, drawn in its top band with the display transform and
+// the exposure after it ("beauty: GPU preview; sRGB - Display / Un-tone-mapped, exposure +0 EV").
 void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<Image> image, PreviewRun*,
-                         PngExposure = PngExposure::apply);
+                         PngExposure = PngExposure::apply, const std::string& caption = {});
 // The run's exposure on a copy of `image` (the PNG's radiance).
 Image exposed(const Image& image, double exposure);
-void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<ReferenceRender> image, PreviewRun*);
+void add_image_file_pass(graph::PassGraph&, const std::string& file, graph::Handle<ReferenceRender> image, PreviewRun*,
+                         const std::string& caption = {});
+// The height of the caption's band in an image of `height` rows.
+int caption_band_height(int height);
 void add_json_file_pass(graph::PassGraph&, const std::string& file, const std::string& why, graph::Handle<Json> json,
                         PreviewRun*);
 
