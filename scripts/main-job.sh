@@ -10,8 +10,9 @@
 #                                   OpenPBR and C++ constants of every catalog material and model (docs/export.md);
 #                                   export-summary.md: what the MaterialX documents cost where they differ from the fit
 #   preview/                        glpreview (docs/preview.md): the difficult room (beauty | CPU reference | difference,
-#                                   EXR + PNG, metrics.json) and the sphere sheet sheet.png: per metal, reference |
-#                                   best fitted model | |difference| x 10, labelled, distance impostor in the difficult room
+#                                   EXR + PNG, metrics.json; fit-error.png/.exr, the models' error alone, and error.png,
+#                                   the total error in false colour) and the sphere sheet sheet.png: per metal, reference |
+#                                   best fitted model | its signed error in false colour, labelled
 #   report/                         `metalfit report --all --model all`: open report/index.html in a browser (the catalog,
 #                                   a page per material, report.json; docs/report.md); renders through glpreview
 set -euo pipefail
