@@ -91,7 +91,7 @@ for (const m of report.materials) {
   if (report.renders.skipped === undefined && m.render_row != null) {
     const loaded = await page.evaluate(() => { const img = document.getElementById('render'); return img && img.complete && img.naturalWidth > 0; });
     check(loaded, `${m.page}: the render did not load`);
-    // One render per shown model (reference | model | |difference| x 10), each model named once, in the report's order.
+    // One render per shown model (reference | model | its signed error in false colour), each model named once, in the report's order.
     const shown = await page.evaluate(() => [...document.querySelectorAll('figure.render-model')].map((f) => f.dataset.model));
     check(JSON.stringify(shown) === JSON.stringify(report.renders.models), `${m.page}: renders of ${shown.join(',')}, models ${report.renders.models.join(',')}`);
     check(JSON.stringify(shown) === JSON.stringify(report.models.map((x) => x.id)), `${m.page}: the renders are not the report's models`);

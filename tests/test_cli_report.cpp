@@ -228,7 +228,7 @@ std::pair<int, int> png_size(const std::string& png) {
     return {be32(16), be32(20)};
 }
 
-// Issue 16: the renders per model, reference | model | |difference| x 10, from glpreview's sheet with the report's
+// Issue 16: the renders per model, reference | model | signed error view, from glpreview's sheet with the report's
 // models (one column group each).
 TEST_F(Report, RendersOneColumnGroupPerModelOfTheReport) {
     const fs::path glpreview = fs::path(metalfit::test::kMetalfitExe).parent_path() / "glpreview";

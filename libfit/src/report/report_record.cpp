@@ -328,7 +328,7 @@ Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in)
             {"by", "glpreview --sheet --sheet-models (data/scenes/sheet.json): distance impostor in a procedural room, "
                    "mirror spheres; labels drawn by glpreview"},
             {"cell", {s.cell_width, s.cell_height}},
-            {"columns", {"reference (exact Fresnel)", "model", "|difference| × 10"}},
+            {"columns", {"reference (exact Fresnel)", "model", "model / reference − 1 (false colour, log scale)"}},
             {"models", s.models},
             {"rows", Json::array()}};
         for (std::size_t r = 0; r < s.materials.size(); ++r) {

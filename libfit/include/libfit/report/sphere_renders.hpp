@@ -1,5 +1,5 @@
 // The sphere renders of a report: glpreview's sphere sheet (one row per material; per model of the report a column
-// group: reference | model | |difference| × 10), made by running the glpreview executable, so that libfit and the
+// group: reference | model | its signed error view), made by running the glpreview executable, so that libfit and the
 // metalfit CLI never link OpenGL (docs/decisions.md).
 #pragma once
 

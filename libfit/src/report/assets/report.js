@@ -264,7 +264,7 @@
     if (skipped) renders.append(skipped);
     else if (mat.render_row == null) renders.append(el('p', { class: 'renders-skipped', text: 'renders skipped: glpreview rendered no row for ' + mat.id }));
     else {
-      // Per model of the report one render: reference | model | |difference| × 10, one line per roughness, each cell
+      // Per model of the report one render: reference | model | its signed error (false colour), one line per roughness, each cell
       // cropped from the one sheet image (glpreview drew its labels in it).
       const r = report.renders, row = r.rows[mat.render_row];
       const [w, h] = r.cell;
@@ -277,7 +277,7 @@
         const lines = m.cells.map((c) => el('div', { class: 'sheet-line' },
           crop(c.reference, `${row.material}: reference, roughness ${c.roughness}`, first ? 'render' : null),
           crop(c.model, `${row.material}: ${m.model}, roughness ${c.roughness}`),
-          crop(c.difference, `${row.material}: |${m.model} - reference| x 10, roughness ${c.roughness}`),
+          crop(c.difference, `${row.material}: ${m.model} / reference - 1 in false colour (log scale), roughness ${c.roughness}`),
           el('span', { class: 'sheet-row-label', text: `roughness ${c.roughness}, image RMSE ${c.image_rmse.toPrecision(2)}` })));
         first = false;
         renders.append(el('figure', { class: 'sheet render-model', 'data-model': m.model },
