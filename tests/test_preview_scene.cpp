@@ -315,7 +315,7 @@ TEST(PreviewScene, RoughnessAndGlossyMethodAreParsedStrictly) {
         "spheres[1].roughness: expected a number"));
     EXPECT_TRUE(
         test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": "blurry"}]})"),
-                       "spheres[0].glossy: unknown value 'blurry' (known: prefiltered, localized)"));
+                       "spheres[0].glossy: unknown value 'blurry' (known: auto, prefiltered, localized)"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"spheres": [{"center": [0, 1, 0], "roughness": 0.2, "glossy": 3}]})"),
                                "spheres[0].glossy: expected a string"));
     EXPECT_TRUE(

@@ -50,6 +50,17 @@ int localized_subdivisions(double roughness, int m) {
     return static_cast<int>(std::clamp(std::round(6.0 / (alpha * m)), 1.0, static_cast<double>(most)));
 }
 
+void add_glossy_features(Features& f, const Sphere& s) {
+    if (!s.rough()) return;
+    if (s.glossy == GlossyMethod::localized) {
+        f.distance_channel = true;  // the area lights' positions
+        f.downsample_sizes.insert(s.localized_size);
+    } else {
+        f.prefiltered_map = true;
+        f.dfg_models.insert(fresnel_name(s.fresnel));
+    }
+}
+
 Features plan_features(const Scene& scene) {
     Features f;
     const auto type = scene.environment.type;
@@ -57,10 +68,7 @@ Features plan_features(const Scene& scene) {
     f.equirect_image = type == EnvironmentType::equirect;
     for (const Sphere& s : scene.spheres) {
         if (s.reflection == ReflectionMode::distance_impostor) f.distance_channel = true;
-        if (s.rough() && s.glossy == GlossyMethod::localized) {
-            f.distance_channel = true;  // the area lights' positions
-            f.downsample_sizes.insert(s.localized_size);
-        }
+        add_glossy_features(f, s);
         if (const auto* model = std::get_if<ModelFresnel>(&s.fresnel)) {
             f.model_fits = true;
             f.models.insert(model->model);
@@ -68,10 +76,6 @@ Features plan_features(const Scene& scene) {
             f.reference_lut = true;
         }
         f.shader_variants.insert(join(sphere_defines(scene, s), " "));
-        if (s.rough() && s.glossy == GlossyMethod::prefiltered) {
-            f.prefiltered_map = true;
-            f.dfg_models.insert(fresnel_name(s.fresnel));
-        }
     }
     const Outputs& o = scene.outputs;
     f.difference_image = o.difference;

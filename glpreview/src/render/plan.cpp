@@ -6,6 +6,8 @@
 #include <map>
 #include <sstream>
 
+#include "glpreview/scene/glossy_choice.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/text.hpp"
 
 namespace metalfit::glpreview {
@@ -36,6 +38,16 @@ std::string explain(const Plan& plan, const Scene& scene) {
     std::ostringstream out;
     out << "scene " << scene.file.string() << ": " << scene.width << "x" << scene.height << ", " << scene.spheres.size()
         << " sphere(s), environment " << to_string(scene.environment.type) << "\n";
+    bool rough = false;
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        if (!s.rough()) continue;
+        if (!rough) out << "glossy (the method of each rough sphere):\n";
+        rough = true;
+        out << "  sphere " << i << " (roughness " << significant_text(s.roughness, 3) << ", '"
+            << to_string(s.glossy_request) << "'): " << to_string(s.glossy) << ": "
+            << choose_glossy_method(s.roughness, s.glossy_request).reason << "\n";
+    }
     out << "passes:\n";
     int i = 1;
     for (const Pass& p : plan.passes) {

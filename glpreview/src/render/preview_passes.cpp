@@ -91,7 +91,7 @@ void PreviewRun::open_gl() {
     if (gpu) return;
     if (!context) context = &own_context.emplace(GlContext::create());
     renderer_name = context->renderer();
-    gpu.emplace(scene, plan_features(scene), fresnel, nullptr, &context->programs());
+    gpu.emplace(scene, features ? *features : plan_features(scene), fresnel, nullptr, &context->programs());
 }
 
 GpuRenderer& PreviewRun::renderer() {

@@ -14,6 +14,7 @@
 #include "glpreview/render/preview_passes.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
+#include "glpreview/scene/glossy_choice.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/text.hpp"
 
@@ -49,6 +50,12 @@ std::vector<double> column_roughness(const Scene& base, const SheetRequest& requ
         request.roughness.empty() ? std::vector<double>{base.spheres[0].roughness} : request.roughness;
     if (request.light) roughness.push_back(kSheetLightRoughness);
     return roughness;
+}
+
+// A cell's roughness, and the glossy method the sphere's request gives at it.
+void set_cell_roughness(Sphere& sphere, double roughness) {
+    sphere.roughness = roughness;
+    sphere.glossy = choose_glossy_method(roughness, sphere.glossy_request).method;
 }
 
 // The light of the lit column: a point light behind and beside the sphere, placed so that the mirror direction at
@@ -117,8 +124,14 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                                      const SheetRequest& request, FresnelLibrary* library, PreviewRun* run) {
     using namespace graph;
     const std::vector<double> roughness = column_roughness(base, request);
-    scene.spheres[0].roughness = *std::max_element(roughness.begin(), roughness.end());
-    const Features features = plan_features(scene);
+    set_cell_roughness(scene.spheres[0], *std::max_element(roughness.begin(), roughness.end()));
+    Features features = plan_features(scene);
+    for (double r : roughness) {  // each column's glossy method (auto chooses by roughness)
+        Sphere column = scene.spheres[0];
+        set_cell_roughness(column, r);
+        add_glossy_features(features, column);
+    }
+    if (run) run->features = features;
     const SceneInputs in = import_scene(graph, scene);
     const std::vector<std::string> model_groups = sheet_model_groups(request);
     const std::string models = "models " + join(model_groups) + " (best: each material's best fitted libfit model)";
@@ -209,7 +222,7 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                 const std::string& material = all[row].reference->material;
                 std::vector<Image> references;
                 for (int k = 0; k < n_roughness; ++k) {
-                    scene.spheres[0].roughness = roughness[k];
+                    set_cell_roughness(scene.spheres[0], roughness[k]);
                     scene.spheres[0].fresnel = ReferenceFresnel{};
                     const bool lit = light_column(k);
                     gpu.set_fresnel(0, all[row].reference);
@@ -222,7 +235,7 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                     const SphereFresnel& model = *all[row].models[g - 1];
                     const bool best = all[row].best[g - 1];
                     for (int k = 0; k < n_roughness; ++k) {
-                        scene.spheres[0].roughness = roughness[k];
+                        set_cell_roughness(scene.spheres[0], roughness[k]);
                         scene.spheres[0].fresnel = ModelFresnel{model.fresnel, ParameterSource::fit};
                         const bool lit = light_column(k);
                         gpu.set_fresnel(0, &model);

@@ -215,6 +215,14 @@ const char* to_string(EnvironmentType type) {
 }
 
 const char* to_string(GlossyMethod method) { return method == GlossyMethod::localized ? "localized" : "prefiltered"; }
+const char* to_string(GlossyRequest request) {
+    switch (request) {
+        case GlossyRequest::automatic: return "auto";
+        case GlossyRequest::prefiltered: return "prefiltered";
+        case GlossyRequest::localized: return "localized";
+    }
+    return "";
+}
 
 std::string fresnel_name(const FresnelChoice& fresnel) {
     if (const auto* model = std::get_if<ModelFresnel>(&fresnel)) return model->model;

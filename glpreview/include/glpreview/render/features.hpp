@@ -35,6 +35,9 @@ struct Features {
 };
 
 Features plan_features(const Scene& scene);
+// What a rough sphere's glossy method needs (the prefiltered mip chain and its DFG table, or the downsampled cube of
+// its M and the distance channel); nothing for a mirror. Part of plan_features; the sheet adds each column's.
+void add_glossy_features(Features& features, const Sphere& sphere);
 
 // The shader #define of an environment: "ENV_ROOM", "ENV_SPHERE_ROOM", "ENV_EQUIRECT" (at infinity), or
 // "ENV_EQUIRECT_BOX" / "ENV_EQUIRECT_SPHERE" (an equirect on its proxy).

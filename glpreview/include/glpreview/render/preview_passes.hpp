@@ -56,6 +56,8 @@ struct PreviewRun {
     // of the scene's space (the error views).
     std::vector<const SphereFresnel*> reference_fresnel = {};
     RGB luminance{0, 0, 0};
+    // What the renderer is made for; unset: plan_features(scene) (the sheet's columns add their glossy methods).
+    std::optional<Features> features = {};
 
     void open_gl();  // the context (if none) and the renderer; called before the first GPU pass
     GpuRenderer& renderer();

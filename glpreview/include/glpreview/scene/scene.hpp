@@ -115,6 +115,9 @@ using FresnelChoice = std::variant<ReferenceFresnel, ModelFresnel>;
 // How a rough sphere (roughness > 0) reflects on the GPU (docs/scene.md): a GGX-prefiltered cube mip chain times the
 // sphere's own DFG table (split sum), or the thesis's ch. 5 sum over the downsampled cube's texels as area lights.
 enum class GlossyMethod { prefiltered, localized };
+// What the scene asks for (`"glossy"`): `auto` (the default) lets the planner choose from the roughness and the measured
+// table (glossy_choice.hpp); `localized` falls back to prefiltered where it fails.
+enum class GlossyRequest { automatic, prefiltered, localized };
 
 inline constexpr Strategy kDefaultStrategy = Strategy::illinois;
 inline constexpr int kDefaultIterations = 8;
@@ -141,7 +144,8 @@ struct Sphere {
     double tolerance = kDefaultTolerance;    // a pixel stops once |ρ − 1| < tolerance (0: always `iterations` steps)
     int search_steps = kDefaultSearchSteps;  // illinois / safe-secant: linear-search reads before the refinement
     double roughness = 0;                    // GGX, α = roughness²; 0: the perfect mirror
-    GlossyMethod glossy = GlossyMethod::prefiltered;  // the GPU method when roughness > 0
+    GlossyMethod glossy = GlossyMethod::prefiltered;  // the GPU method when roughness > 0 (as chosen from the request)
+    GlossyRequest glossy_request = GlossyRequest::automatic;  // what the scene asked for
     int localized_size = 8;  // `localized`: M, the downsampled cube's texels per face edge (2–16), each an area light
 
     bool rough() const { return roughness > 0; }
@@ -225,6 +229,7 @@ const char* to_string(ReflectionMode mode);   // "classic", "distance-impostor",
 const char* to_string(Strategy strategy);     // "secant", "false-position", "mixed", "illinois", "safe-secant"
 const char* to_string(EnvironmentType type);  // "room", "sphere-room", "equirect"
 const char* to_string(GlossyMethod method);   // "prefiltered", "localized"
+const char* to_string(GlossyRequest request);  // "auto", "prefiltered", "localized"
 std::string fresnel_name(const FresnelChoice& fresnel);  // "reference" or the model id, as in the scene JSON
 inline bool shows_reference(const Sphere& sphere) { return std::holds_alternative<ReferenceFresnel>(sphere.fresnel); }
 

@@ -8,6 +8,7 @@
 #include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/preview_passes.hpp"
+#include "glpreview/scene/glossy_choice.hpp"
 #include "libfit/base/text.hpp"
 #include "render/embedded_shaders.hpp"
 
@@ -89,8 +90,14 @@ public:
 
     void read_sphere(const SceneReader& r, Sphere& s, Scene& scene) const override {
         r.read("roughness", s.roughness, 0, 1);
-        r.read_enum("glossy", s.glossy,
-                    {{"prefiltered", GlossyMethod::prefiltered}, {"localized", GlossyMethod::localized}});
+        r.read_enum("glossy", s.glossy_request,
+                    {{"auto", GlossyRequest::automatic},
+                     {"prefiltered", GlossyRequest::prefiltered},
+                     {"localized", GlossyRequest::localized}});
+        const GlossyChoice choice = choose_glossy_method(s.roughness, s.glossy_request);
+        s.glossy = choice.method;
+        if (choice.fell_back && s.rough())
+            scene.warnings.push_back(r.file().string() + ": " + r.field("glossy") + ": " + choice.reason);
         if (s.rough() && !scene.environment.captured())
             r.fail(
                 r.field("roughness"),

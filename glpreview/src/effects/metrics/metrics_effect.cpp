@@ -59,6 +59,7 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
         e["mean_rho_error"] = impostor ? Json(effort[i].mean_rho_error) : Json(nullptr);
         e["roughness"] = s.roughness;
         e["glossy"] = s.rough() ? Json(to_string(s.glossy)) : Json(nullptr);
+        e["glossy_asked"] = s.rough() ? Json(to_string(s.glossy_request)) : Json(nullptr);
         e["localized_size"] = s.rough() && s.glossy == GlossyMethod::localized ? Json(s.localized_size) : Json(nullptr);
         e["reference_noise"] = s.rough() ? noise[i] : 0.0;  // NaN (null) when no pixel shows the sphere
         j["spheres"].push_back(e);
