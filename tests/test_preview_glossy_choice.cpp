@@ -40,7 +40,7 @@ std::string table_text(const std::vector<Row>& rows) {
 
 // Localized wins three spheres in four at 0.3 (an isolated row the rule must not take), only a majority at 0.5, three
 // in four from 0.7 on; its worst ratio is above kLocalizedWorstRatio (4) at 0.4 and below, except at 0.3.
-const std::vector<Row> kRows{{0.1, 10, 0, 4.0, 50.0}, {0.3, 8, 6, 0.9, 2.5},  {0.4, 10, 3, 1.3, 4.5},
+const std::vector<Row> kRows{{0.1, 10, 0, 4.0, 50.0}, {0.3, 8, 6, 0.9, 2.5},   {0.4, 10, 3, 1.3, 4.5},
                              {0.5, 10, 6, 0.9, 3.5},  {0.7, 10, 8, 0.95, 1.2}, {0.9, 10, 9, 0.8, 1.1}};
 
 TEST(PreviewGlossyChoice, TheRuleTakesTheRangeAtTheTopWhereLocalizedWinsAndWorks) {
@@ -144,7 +144,8 @@ TEST(PreviewGlossyChoice, TheSceneAndTheExplanationFollowTheBuiltInTable) {
     const double below = works - 0.05;
     const std::string json = R"({"spheres": [{"center": [0, 1, 0], "roughness": )" + std::to_string(below) +
                              R"(, "glossy": "localized"}, {"center": [1, 1, 0], "roughness": )" +
-                             std::to_string(works) + R"(, "glossy": "localized"}, {"center": [-1, 1, 0], "roughness": 0.1},
+                             std::to_string(works) +
+                             R"(, "glossy": "localized"}, {"center": [-1, 1, 0], "roughness": 0.1},
                              {"center": [2, 1, 0], "roughness": 1.0, "glossy": "auto"}]})";
     const Scene scene = parse_scene(json, "s.json");
     EXPECT_EQ(scene.spheres[0].glossy, GlossyMethod::prefiltered);
@@ -152,9 +153,9 @@ TEST(PreviewGlossyChoice, TheSceneAndTheExplanationFollowTheBuiltInTable) {
     EXPECT_EQ(scene.spheres[1].glossy, GlossyMethod::localized);
     EXPECT_EQ(scene.spheres[2].glossy_request, GlossyRequest::automatic);  // the default
     EXPECT_EQ(scene.spheres[2].glossy, choose_glossy_method(0.1, GlossyRequest::automatic).method);
-    EXPECT_EQ(scene.spheres[3].glossy,
-              table.localized_from && *table.localized_from <= 1.0 ? GlossyMethod::localized
-                                                                   : GlossyMethod::prefiltered);
+    EXPECT_EQ(scene.spheres[3].glossy, table.localized_from && *table.localized_from <= 1.0
+                                           ? GlossyMethod::localized
+                                           : GlossyMethod::prefiltered);
     int fallbacks = 0;
     for (const std::string& w : scene.warnings)
         if (test::Contains(w, "s.json: spheres[0].glossy: 'localized' fails at roughness")) ++fallbacks;
@@ -162,8 +163,8 @@ TEST(PreviewGlossyChoice, TheSceneAndTheExplanationFollowTheBuiltInTable) {
     const std::string explained = explain(build_plan(scene), scene);
     EXPECT_TRUE(test::Contains(explained, "sphere 0 (roughness " + significant_text(below, 3) +
                                               ", 'localized'): prefiltered: 'localized' fails"));
-    EXPECT_TRUE(test::Contains(explained, "sphere 2 (roughness 0.1, 'auto'): " +
-                                              std::string(to_string(scene.spheres[2].glossy)) + ": auto:"));
+    EXPECT_TRUE(test::Contains(
+        explained, "sphere 2 (roughness 0.1, 'auto'): " + std::string(to_string(scene.spheres[2].glossy)) + ": auto:"));
     // The plan runs what the chosen methods need, and nothing for a method not chosen.
     const Plan plan = build_plan(scene);
     EXPECT_TRUE(plan.runs("prefilter-environment"));

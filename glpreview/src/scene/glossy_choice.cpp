@@ -101,14 +101,15 @@ GlossyChoice choose_glossy_method(double roughness, GlossyRequest request, const
         return {GlossyMethod::localized, false,
                 "auto: " + at + " ≥ " + roughness_text(*table.localized_from) +
                     ", from where localized had the lower error on at least " +
-                    significant_text(100 * kLocalizedMajority, 3) + " % of the measured spheres (data/glossy-choice.json)"};
+                    significant_text(100 * kLocalizedMajority, 3) +
+                    " % of the measured spheres (data/glossy-choice.json)"};
     return {GlossyMethod::prefiltered, false,
             "auto: " + at +
-                (table.localized_from ? " < " + roughness_text(*table.localized_from) +
-                                            ", below which localized did not win on " + significant_text(100 * kLocalizedMajority, 3) +
-                                            " % of the measured spheres"
-                                      : ": localized never won on " + significant_text(100 * kLocalizedMajority, 3) +
-                                            " % of the measured spheres") +
+                (table.localized_from
+                     ? " < " + roughness_text(*table.localized_from) + ", below which localized did not win on " +
+                           significant_text(100 * kLocalizedMajority, 3) + " % of the measured spheres"
+                     : ": localized never won on " + significant_text(100 * kLocalizedMajority, 3) +
+                           " % of the measured spheres") +
                 " (data/glossy-choice.json)"};
 }
 

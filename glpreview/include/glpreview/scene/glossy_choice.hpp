@@ -28,8 +28,8 @@ inline constexpr double kLocalizedWorstRatio = 4.0;
 // One measured roughness of the table.
 struct GlossyChoiceRow {
     double roughness = 0;
-    int spheres = 0;         // spheres measured (every room's) at this roughness
-    int localized_wins = 0;  // of them, where localized's RMSE was below prefiltered's
+    int spheres = 0;                           // spheres measured (every room's) at this roughness
+    int localized_wins = 0;                    // of them, where localized's RMSE was below prefiltered's
     double median_ratio = 0, worst_ratio = 0;  // localized RMSE / prefiltered RMSE over those spheres
 };
 

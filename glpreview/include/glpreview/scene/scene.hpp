@@ -225,10 +225,10 @@ Scene load_scene(const std::filesystem::path& file);
 // a wall); parse_scene adds them to Scene::warnings.
 std::vector<std::string> placement_warnings(const Scene& scene);
 
-const char* to_string(ReflectionMode mode);   // "classic", "distance-impostor", "box-parallax"
-const char* to_string(Strategy strategy);     // "secant", "false-position", "mixed", "illinois", "safe-secant"
-const char* to_string(EnvironmentType type);  // "room", "sphere-room", "equirect"
-const char* to_string(GlossyMethod method);   // "prefiltered", "localized"
+const char* to_string(ReflectionMode mode);    // "classic", "distance-impostor", "box-parallax"
+const char* to_string(Strategy strategy);      // "secant", "false-position", "mixed", "illinois", "safe-secant"
+const char* to_string(EnvironmentType type);   // "room", "sphere-room", "equirect"
+const char* to_string(GlossyMethod method);    // "prefiltered", "localized"
 const char* to_string(GlossyRequest request);  // "auto", "prefiltered", "localized"
 std::string fresnel_name(const FresnelChoice& fresnel);  // "reference" or the model id, as in the scene JSON
 inline bool shows_reference(const Sphere& sphere) { return std::holds_alternative<ReferenceFresnel>(sphere.fresnel); }
