@@ -165,6 +165,12 @@ TEST(PreviewGlossyChoice, TheSceneAndTheExplanationFollowTheBuiltInTable) {
                                               ", 'localized'): prefiltered: 'localized' fails"));
     EXPECT_TRUE(test::Contains(
         explained, "sphere 2 (roughness 0.1, 'auto'): " + std::string(to_string(scene.spheres[2].glossy)) + ": auto:"));
+    // --glossy-as-asked (measuring the table): localized wherever asked, and the fallback's warning gone.
+    Scene as_asked = scene;
+    honour_glossy_requests(as_asked);
+    EXPECT_EQ(as_asked.spheres[0].glossy, GlossyMethod::localized);
+    EXPECT_EQ(as_asked.spheres[2].glossy, scene.spheres[2].glossy);
+    EXPECT_EQ(as_asked.warnings.size() + 1, scene.warnings.size());
     // The plan runs what the chosen methods need, and nothing for a method not chosen.
     const Plan plan = build_plan(scene);
     EXPECT_TRUE(plan.runs("prefilter-environment"));

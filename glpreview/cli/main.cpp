@@ -19,6 +19,7 @@
 #include "glpreview/render/preview.hpp"
 #include "glpreview/render/reflection_probe.hpp"
 #include "glpreview/render/sphere_sheet.hpp"
+#include "glpreview/scene/glossy_choice.hpp"
 #include "glpreview/scene/scene.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
@@ -155,6 +156,10 @@ int run_glpreview(int argc, char** argv) {
     bool allow_paths_outside = false;
     app.add_flag("--allow-paths-outside", allow_paths_outside,
                  "Let the scene read files outside its own folder and the database (absolute paths, ../)");
+    bool glossy_as_asked = false;
+    app.add_flag("--glossy-as-asked", glossy_as_asked,
+                 "Render glossy 'localized' wherever a scene asks for it, also below the roughness where the measured "
+                 "table says it fails (for measuring that table: scripts/measure-glossy-choice.py)");
     std::string sheet;
     app.add_option(
         "--sheet", sheet,
@@ -290,6 +295,7 @@ int run_glpreview(int argc, char** argv) {
             throw UsageError("--capture-probe renders nothing else: not with --sheet, --explain or --size");
         const auto load = [&](const std::filesystem::path& scene_file) {
             Scene scene = load_scene(scene_file);
+            if (glossy_as_asked) honour_glossy_requests(scene);
             confine_scene_paths(scene, {data_dir, allow_paths_outside});
             scene.paths = PathPolicy{data_dir, allow_paths_outside};  // checked again on each file's descriptor
             apply_size(scene, size);

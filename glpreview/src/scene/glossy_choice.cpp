@@ -113,4 +113,14 @@ GlossyChoice choose_glossy_method(double roughness, GlossyRequest request, const
                 " (data/glossy-choice.json)"};
 }
 
+void honour_glossy_requests(Scene& scene) {
+    for (Sphere& sphere : scene.spheres) {
+        if (!sphere.rough() || sphere.glossy_request != GlossyRequest::localized) continue;
+        const GlossyChoice choice = choose_glossy_method(sphere.roughness, sphere.glossy_request);
+        sphere.glossy = GlossyMethod::localized;
+        if (!choice.fell_back) continue;
+        std::erase_if(scene.warnings, [&](const std::string& w) { return w.ends_with(": " + choice.reason); });
+    }
+}
+
 }  // namespace metalfit::glpreview

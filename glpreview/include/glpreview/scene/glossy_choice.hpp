@@ -55,4 +55,8 @@ struct GlossyChoice {
 GlossyChoice choose_glossy_method(double roughness, GlossyRequest request,
                                   const GlossyChoiceTable& table = glossy_choice_table());
 
+// `glpreview --glossy-as-asked` (for measuring the table: scripts/measure-glossy-choice.py): every rough sphere that
+// asked for `localized` is rendered localized, also where the table says it fails; its fallback warning goes.
+void honour_glossy_requests(Scene& scene);
+
 }  // namespace metalfit::glpreview
