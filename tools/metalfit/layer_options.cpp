@@ -22,18 +22,9 @@ std::vector<std::function<Material()>> LayerOptions::over(std::vector<std::funct
                                                           const std::filesystem::path& data_dir,
                                                           const SpectralOptions& spectral) const {
     if (film.empty() && coat.empty()) return loaders;
-    const FilmCatalog films = FilmCatalog::load(data_dir);
-    auto stack = std::make_shared<LayerStack>();
-    if (!film.empty()) stack->film = load_film(films, film);
-    if (!coat.empty()) stack->coat = load_coat(films, coat);
+    auto stack = std::make_shared<LayerStack>(load_layers(FilmCatalog::load(data_dir), film, coat));
     require_layer_coverage(*stack, kVisibleRange, spectral);
-    std::vector<std::string> warnings;
-    if (stack->film)
-        for (const std::string& w : stack->film->material.warnings)
-            warnings.push_back("film " + stack->film->material.id + ": " + w);
-    if (stack->coat)
-        for (const std::string& w : stack->coat->material.warnings)
-            warnings.push_back("coat " + stack->coat->material.id + ": " + w);
+    const std::vector<std::string> warnings = layer_warnings(*stack);
     std::shared_ptr<const LayerStack> layers = std::move(stack);
     for (auto& load : loaders)
         load = [load = std::move(load), layers, warnings] {

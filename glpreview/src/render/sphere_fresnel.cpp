@@ -11,7 +11,12 @@
 #include "libfit/base/errors.hpp"
 #include "libfit/fit/fit.hpp"
 #include "libfit/fit/parameter_source.hpp"
+#include "libfit/io/finishes.hpp"
+#include "libfit/io/layer_materials.hpp"
+#include "libfit/io/layer_stack.hpp"
 #include "libfit/reference/reference_curve.hpp"
+#include "libfit/reference/stack_grid.hpp"
+#include "libfit/spectral/spectrum.hpp"
 
 namespace metalfit::glpreview {
 
@@ -56,9 +61,11 @@ FresnelLibrary::FresnelLibrary(const std::filesystem::path& data_dir, const Ocio
 
 namespace {
 
-std::string cache_key(const std::string& material, const std::string& source, const FresnelChoice& fresnel) {
+std::string cache_key(const std::string& material, const std::string& source, const FresnelChoice& fresnel,
+                      const std::string& film = "", const std::string& coat = "") {
     const auto* model = std::get_if<ModelFresnel>(&fresnel);
-    return material + "|" + source + "|" + fresnel_name(fresnel) + "|" + (model ? to_string(model->parameters) : "");
+    return material + "|" + source + "|" + film + "|" + coat + "|" + fresnel_name(fresnel) + "|" +
+           (model ? to_string(model->parameters) : "");
 }
 
 }  // namespace
@@ -83,7 +90,7 @@ std::unique_ptr<SphereFresnel> FresnelLibrary::model_fresnel(const Material& mat
 }
 
 const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string& field) {
-    const std::string key = cache_key(sphere.material, sphere.source, sphere.fresnel);
+    const std::string key = cache_key(sphere.material, sphere.source, sphere.fresnel, sphere.film, sphere.coat);
     if (auto it = cache_.find(key); it != cache_.end()) return *it->second;
 
     // A file is opened once, checked on its descriptor and read through it (ConfinedFile); its errors name the scene,
@@ -97,7 +104,10 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
     };
     Material material;
     try {
-        material = load_material(catalog_, file ? file->path().string() : sphere.material, sphere.source);
+        std::optional<Material> finish;
+        if (!file) finish = load_finish_named(catalog_, sphere.material, sphere.source);
+        material = finish ? std::move(*finish)
+                          : load_material(catalog_, file ? file->path().string() : sphere.material, sphere.source);
     } catch (const UsageError& e) {
         throw at_material(e);
     } catch (const InputError& e) {
@@ -108,6 +118,7 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
         for (std::string& warning : material.warnings) warning = file->in_original_terms(warning);
     }
     const SpectralOptions spectral{};
+    put_layers(material, sphere, field, spectral);
     std::unique_ptr<SphereFresnel> result;
     if (shows_reference(sphere)) {
         result = std::make_unique<SphereFresnel>();
@@ -129,7 +140,38 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
         result = model_fresnel(material, fit_material(material, colorimetry_, converter_, request).models.front(),
                                chosen.parameters, field);
     }
+    if (material.layers && !material.layers->empty()) result->stack = describe_stack(material);
     return *cache_.emplace(key, std::move(result)).first->second;
+}
+
+void FresnelLibrary::put_layers(Material& material, const Sphere& sphere, const std::string& field,
+                                const SpectralOptions& spectral) {
+    if (sphere.film.empty() && sphere.coat.empty()) return;
+    const std::string first = field + (sphere.film.empty() ? ".coat" : ".film");
+    if (material.layers && !material.layers->empty())
+        throw InputError(InputLocation(scene_file_, 0, first),
+                         material.id + " is a named finish with layers of its own: give its metal with film and coat, "
+                                       "or the finish alone");
+    if (!films_) films_ = FilmCatalog::load(catalog_.data_dir());
+    LayerStack stack;
+    // Each layer loaded and checked on its own, so that an error names its key.
+    for (auto [key, text] : {std::pair{".film", &sphere.film}, std::pair{".coat", &sphere.coat}}) {
+        if (text->empty()) continue;
+        try {
+            LayerStack one =
+                key == std::string(".film") ? load_layers(*films_, *text, "") : load_layers(*films_, "", *text);
+            require_layer_coverage(one, kVisibleRange, spectral);
+            if (one.film) stack.film = std::move(one.film);
+            if (one.coat) stack.coat = std::move(one.coat);
+        } catch (const UsageError& e) {
+            throw InputError(InputLocation(scene_file_, 0, field + key), e.what());
+        } catch (const InputError& e) {
+            throw InputError(InputLocation(scene_file_, 0, field + key), e.what());
+        }
+    }
+    const std::vector<std::string> warnings = layer_warnings(stack);
+    material.warnings.insert(material.warnings.end(), warnings.begin(), warnings.end());
+    material.layers = std::make_shared<const LayerStack>(std::move(stack));
 }
 
 std::string FresnelLibrary::best_model(const std::string& material_name) {

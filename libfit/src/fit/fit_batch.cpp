@@ -24,18 +24,11 @@ std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, 
     } else {
         if (!labels.empty() && materials.size() > 1)
             throw UsageError("--name and --reference label one file of your own, not several materials");
-        std::optional<FinishCatalog> finishes;  // read when a name is no catalog material
         for (const std::string& material : materials) {
-            if (!looks_like_path(material) && catalog.find(material) == nullptr) {
-                if (!finishes) finishes = FinishCatalog::load(catalog.data_dir());
-                if (const Finish* finish = finishes->find(material)) {
-                    if (!labels.empty())
-                        throw UsageError("--name and --reference label a file of your own, not a finish");
-                    const Material loaded =
-                        load_finish(*finish, *finishes, catalog, FilmCatalog::load(catalog.data_dir()), source);
-                    loaders.push_back([loaded] { return loaded; });
-                    continue;
-                }
+            if (std::optional<Material> finish = load_finish_named(catalog, material, source)) {
+                if (!labels.empty()) throw UsageError("--name and --reference label a file of your own, not a finish");
+                loaders.push_back([loaded = std::move(*finish)] { return loaded; });
+                continue;
             }
             const Material loaded = load_material(catalog, material, source, labels);  // errors before any work
             loaders.push_back([loaded] { return loaded; });

@@ -101,4 +101,12 @@ Material load_finish(const Finish& finish, const FinishCatalog& finishes, const 
     return m;
 }
 
+std::optional<Material> load_finish_named(const Catalog& metals, std::string_view name, std::string_view source) {
+    if (looks_like_path(name) || metals.find(std::string(name)) != nullptr) return std::nullopt;
+    const FinishCatalog finishes = FinishCatalog::load(metals.data_dir());
+    const Finish* finish = finishes.find(name);
+    if (!finish) return std::nullopt;
+    return load_finish(*finish, finishes, metals, FilmCatalog::load(metals.data_dir()), source);
+}
+
 }  // namespace metalfit

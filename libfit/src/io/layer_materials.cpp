@@ -146,4 +146,22 @@ ClearCoat load_coat(const FilmCatalog& films, std::string_view text) {
     return {std::move(m), a.thickness_nm};
 }
 
+LayerStack load_layers(const FilmCatalog& films, std::string_view film, std::string_view coat) {
+    LayerStack stack;
+    if (!film.empty()) stack.film = load_film(films, film);
+    if (!coat.empty()) stack.coat = load_coat(films, coat);
+    return stack;
+}
+
+std::vector<std::string> layer_warnings(const LayerStack& layers) {
+    std::vector<std::string> warnings;
+    if (layers.film)
+        for (const std::string& w : layers.film->material.warnings)
+            warnings.push_back("film " + layers.film->material.id + ": " + w);
+    if (layers.coat)
+        for (const std::string& w : layers.coat->material.warnings)
+            warnings.push_back("coat " + layers.coat->material.id + ": " + w);
+    return warnings;
+}
+
 }  // namespace metalfit

@@ -15,6 +15,7 @@
 #include "libfit/color/colorimetry.hpp"
 #include "libfit/fit/fit.hpp"
 #include "libfit/io/catalog.hpp"
+#include "libfit/io/layer_materials.hpp"
 #include "libfit/models/model.hpp"
 
 namespace metalfit::glpreview {
@@ -23,8 +24,10 @@ namespace metalfit::glpreview {
 inline constexpr int kReferenceLutSize = 256;
 
 struct SphereFresnel {
-    std::string material;                   // "gold"
-    std::string source;                     // "Johnson"
+    std::string material;  // "gold"
+    std::string source;    // "Johnson"
+    std::string
+        stack;  // the layers over the metal, described ("titanium under a TiO2 (Siefke) film of 60 nm"); "" when bare
     std::string fresnel;                    // "reference" or a model id
     std::optional<ParameterSource> params;  // models: fitted or closed-form parameters
     std::vector<RGB> lut;                   // reference: R_c(μ_i)
@@ -65,7 +68,13 @@ private:
     std::unique_ptr<SphereFresnel> model_fresnel(const Material& material, const ModelResult& result,
                                                  ParameterSource params, const std::string& field) const;
 
+    // The sphere's film and coat (scene keys, as metalfit's --film and --coat) over `material`; InputError naming
+    // `field`.film or .coat.
+    void put_layers(Material& material, const Sphere& sphere, const std::string& field,
+                    const SpectralOptions& spectral);
+
     Catalog catalog_;
+    std::optional<FilmCatalog> films_;  // data/films.json, read for the first sphere with layers
     Colorimetry colorimetry_;
     ColorSpaceConverter converter_;
     std::filesystem::path scene_file_;

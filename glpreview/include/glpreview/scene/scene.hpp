@@ -136,6 +136,8 @@ struct Sphere {
     double radius = 0.5;
     std::string material = "Au";  // catalog name or a file (resolved against the scene file's folder)
     std::string source;           // catalog source ("" = primary)
+    std::string film;  // a thin film over the metal, as `metalfit --film` ("TiO2:80nm", "2.2:120nm"); "" = none
+    std::string coat;  // a clear coat over it (and the film), as `metalfit --coat` ("1.5", "PMMA"); "" = none
     FresnelChoice fresnel =
         ReferenceFresnel{};  // JSON: "fresnel": "reference" or a model id, "params": "fit" | "closed"
     ReflectionMode reflection = ReflectionMode::distance_impostor;

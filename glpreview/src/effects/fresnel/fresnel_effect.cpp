@@ -8,7 +8,10 @@
 #include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/preview_passes.hpp"
+#include "libfit/base/errors.hpp"
 #include "libfit/base/text.hpp"
+#include "libfit/io/catalog.hpp"
+#include "libfit/io/layer_materials.hpp"
 #include "render/embedded_shaders.hpp"
 
 namespace metalfit::glpreview {
@@ -37,11 +40,28 @@ class FresnelEffect final : public Effect {
 public:
     std::string_view name() const override { return "fresnel"; }
 
-    std::vector<const char*> sphere_keys() const override { return {"material", "source", "fresnel", "params"}; }
+    std::vector<const char*> sphere_keys() const override {
+        return {"material", "source", "film", "coat", "fresnel", "params"};
+    }
 
     void read_sphere(const SceneReader& r, Sphere& s, Scene& /*scene*/) const override {
         r.read("material", s.material);
         r.read("source", s.source);
+        // The layers over the metal: an index or a film/coat of the database with its thickness, as the command
+        // line's --film and --coat (the reference curve and every fit are then the stack's). Their tables are
+        // loaded with the sphere's Fresnel (FresnelLibrary): here the argument's form only.
+        for (auto [key, out] : {std::pair{"film", &s.film}, std::pair{"coat", &s.coat}}) {
+            r.read(key, *out);
+            if (out->empty()) continue;
+            try {
+                if (looks_like_path(parse_layer_argument(std::string("--") + key, *out).material))
+                    r.fail(r.field(key), "a file is not read from a scene: give an index or a film or coat of the "
+                                         "database (data/films.json), as `metalfit --" +
+                                             std::string(key) + "` takes them");
+            } catch (const UsageError& e) {
+                r.fail(r.field(key), e.what());
+            }
+        }
         std::string fresnel = "reference", params = "fit";
         r.read("fresnel", fresnel);
         r.read("params", params);

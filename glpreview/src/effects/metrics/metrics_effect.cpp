@@ -41,6 +41,7 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
         e["sphere"] = i;
         e["material"] = run.fresnel[i]->material;
         e["source"] = run.fresnel[i]->source;
+        e["stack"] = run.fresnel[i]->stack.empty() ? Json(nullptr) : Json(run.fresnel[i]->stack);
         e["fresnel"] = fresnel_name(s.fresnel);
         const auto* model = std::get_if<ModelFresnel>(&s.fresnel);
         e["params"] = model ? Json(to_string(model->parameters)) : Json(nullptr);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -46,5 +47,9 @@ private:
 // InputError naming finishes.json and the field.
 Material load_finish(const Finish& finish, const FinishCatalog& finishes, const Catalog& metals,
                      const FilmCatalog& films, std::string_view source = {});
+
+// `name` as a finish where it is one: not a file, not a catalog material, and a finish of <data_dir>/finishes.json
+// (load_finish with that source); nullopt otherwise (the caller loads it as a material, with that call's errors).
+std::optional<Material> load_finish_named(const Catalog& metals, std::string_view name, std::string_view source = {});
 
 }  // namespace metalfit

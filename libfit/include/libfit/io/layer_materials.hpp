@@ -45,4 +45,10 @@ LayerMaterial load_film_material(const FilmCatalog& films, std::string_view text
 // checked on the colour grid by the reference curve).
 ClearCoat load_coat(const FilmCatalog& films, std::string_view text);
 
+// `--film` and `--coat` together, either empty for none: the stack as load_film and load_coat load it (their errors).
+// The CLI's layer options and glpreview's sphere keys `film` and `coat`.
+LayerStack load_layers(const FilmCatalog& films, std::string_view film, std::string_view coat);
+// The layers' own warnings (a table held constant at its ends, ...), each prefixed with its layer ("film TiO2: ...").
+std::vector<std::string> layer_warnings(const LayerStack& layers);
+
 }  // namespace metalfit
