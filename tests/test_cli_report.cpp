@@ -273,6 +273,33 @@ TEST_F(Report, RendersOneColumnGroupPerModelOfTheReport) {
     for (const fs::path& f : files_below(dir)) EXPECT_EQ(read_file(dir / f), read_file(again / f)) << f;
 }
 
+// Issue 29 item 6: the user's own file and a named finish get renders like catalog materials, and --film/--coat
+// reach them: each row is the material the report fitted (a filmed titanium's reference differs from the bare one's).
+TEST_F(Report, UserFilesFinishesAndLayersAreRendered) {
+    const fs::path file = tmp_.path() / "mygold.yml";
+    fs::copy_file(metalfit::test::kData / "nk" / "Au" / "Johnson.yml", file);
+    const fs::path dir = tmp_.path() / "r";
+    auto r =
+        run("report '" + file.string() + "' anodized-ti-80nm --model schlick --renders on -o '" + dir.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    Json report = report_json(dir);
+    ASSERT_FALSE(report["renders"].contains("skipped")) << report["renders"];
+    ASSERT_EQ(report["renders"]["rows"].size(), 2u);
+    for (const Json& m : report["materials"]) {
+        ASSERT_TRUE(m["render_row"].is_number()) << m["id"];
+        EXPECT_EQ(report["renders"]["rows"][m["render_row"].get<int>()]["material"], m["id"]);
+    }
+    const std::string bare_sheet = read_file(dir / "assets" / "renders" / "sheet.png");
+    const fs::path bare = tmp_.path() / "bare", filmed = tmp_.path() / "filmed";
+    ASSERT_EQ(run("report Ti --model schlick --renders on -o '" + bare.string() + "'").exit_code, 0);
+    r = run("report Ti --film TiO2:50nm --model schlick --renders on -o '" + filmed.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    ASSERT_EQ(report_json(filmed)["renders"]["rows"].size(), 1u);
+    EXPECT_NE(read_file(bare / "assets" / "renders" / "sheet.png"),
+              read_file(filmed / "assets" / "renders" / "sheet.png"));
+    EXPECT_FALSE(bare_sheet.empty());
+}
+
 // Without glpreview beside metalfit, --renders auto still writes the report and says why there are no renders.
 TEST_F(Report, WithoutGlpreviewTheRendersAreSkippedWithTheReason) {
     const fs::path bin = tmp_.path() / "bin";

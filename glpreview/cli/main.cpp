@@ -30,6 +30,7 @@
 #include "libfit/base/version.hpp"
 #include "libfit/export/roughness.hpp"
 #include "libfit/io/catalog.hpp"
+#include "libfit/io/layer_materials.hpp"
 
 namespace {
 
@@ -181,6 +182,12 @@ int run_glpreview(int argc, char** argv) {
         "--sheet-light", sheet_light,
         "Sheet: one more column at roughness 0.35 under a point light beside and behind the sphere, each model's highlight next "
         "to the reference's (on|off; a room environment)");
+    std::string sheet_film, sheet_coat;
+    app.add_option("--sheet-film", sheet_film,
+                   "Sheet: a thin film over every row's metal, as metalfit --film (TiO2:80nm, 2.2:120nm, a file)");
+    app.add_option(
+        "--sheet-coat", sheet_coat,
+        "Sheet: a clear coat over every row's metal (and film), as metalfit --coat (1.5, PMMA:20um, a file)");
     std::string exposure = "0";
     app.add_option("--exposure", exposure,
                    "Exposure in stops applied to the PNGs' radiance before the display transform (never to EXRs; the "
@@ -348,12 +355,24 @@ int run_glpreview(int argc, char** argv) {
         if (sheet_light != "on" && sheet_light != "off")
             throw UsageError("--sheet-light: on or off (got '" + sheet_light.substr(0, 40) + "')");
         sheet_request.light = sheet_light == "on";
+        // Layer files, like the materials, are the user's paths: relative to the current folder.
+        const auto layer = [](const std::string& text, const char* option) {
+            if (text.empty()) return text;
+            LayerArgument a = parse_layer_argument(option, text);
+            if (!looks_like_path(a.material)) return text;
+            return std::filesystem::absolute(a.material).string() +
+                   (a.thickness_nm ? text.substr(text.rfind(':')) : std::string());
+        };
+        sheet_request.film = layer(sheet_film, "--sheet-film");
+        sheet_request.coat = layer(sheet_coat, "--sheet-coat");
         if (sheet_request.light && scene.environment.type != EnvironmentType::room)
             throw UsageError(
                 "--sheet-light: the light column needs a room environment (its surfaces receive the light)");
-        if (sheet.empty() &&
-            (sheet_models != "best" || !sheet_roughness.empty() || sheet_labels != "on" || sheet_light != "off"))
-            throw UsageError("--sheet-models, --sheet-roughness, --sheet-labels and --sheet-light need --sheet");
+        if (sheet.empty() && (sheet_models != "best" || !sheet_roughness.empty() || sheet_labels != "on" ||
+                              sheet_light != "off" || !sheet_film.empty() || !sheet_coat.empty()))
+            throw UsageError(
+                "--sheet-models, --sheet-roughness, --sheet-labels, --sheet-light, --sheet-film and --sheet-coat need "
+                "--sheet");
         if (!sheet.empty()) check_sheet_request(sheet_request);
         if (explain_only) {
             std::cout << explain(sheet.empty() ? build_plan(scene) : build_sheet_plan(scene, sheet_request), scene);

@@ -63,19 +63,32 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
 
-    // glpreview renders bare catalog materials from their primary source, a column group per model of the report (a
-    // layered material is left out: the renderer's reference LUT is the bare metal's).
+    // glpreview renders every material as the report fitted it — a catalog material from its primary source, a named
+    // finish, a file of the user's (as they named it, relative to the current folder, where glpreview runs too),
+    // with --film/--coat over each — a column group per model of the report. A catalog material fitted from another
+    // source (--source) is left out: the sheet renders primary sources.
     SphereRenderRequest render_request{glpreview_beside_this_program(),
                                        global.data_dir / "scenes" / "sheet.json",
                                        {},
                                        {},
+                                       o.layers.film,
+                                       o.layers.coat,
+                                       {},
                                        global.data_dir,
                                        setup.config};
     for (const Model* m : request.models) render_request.models.emplace_back(m->id());
-    for (const MaterialFit& f : fits)
-        if (const CatalogEntry* e = catalog.find(f.material.id);
-            !f.material.layers && e && e->id == f.material.id && e->primary.file == f.material.provenance.file)
-            render_request.materials.push_back(f.material.id);
+    std::vector<std::string> names;
+    if (o.selection.all)
+        for (const CatalogEntry& e : catalog.entries()) names.push_back(e.id);
+    else
+        names = o.selection.materials();
+    for (std::size_t i = 0; i < fits.size() && i < names.size(); ++i) {
+        const CatalogEntry* e = catalog.find(names[i]);
+        if (!e || e->primary.file == fits[i].material.provenance.file) {
+            render_request.materials.push_back(names[i]);
+            render_request.ids.push_back(fits[i].material.id);
+        }
+    }
     const SphereRenders renders = render_spheres(render_request, render_mode);
     if (!renders.sheet && render_mode == RenderMode::auto_)
         std::cerr << "metalfit: renders skipped: " << renders.skipped << "\n";

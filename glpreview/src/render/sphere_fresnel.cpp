@@ -89,10 +89,7 @@ std::unique_ptr<SphereFresnel> FresnelLibrary::model_fresnel(const Material& mat
     return result;
 }
 
-const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string& field) {
-    const std::string key = cache_key(sphere.material, sphere.source, sphere.fresnel, sphere.film, sphere.coat);
-    if (auto it = cache_.find(key); it != cache_.end()) return *it->second;
-
+Material FresnelLibrary::sphere_material(const Sphere& sphere, const std::string& field) {
     // A file is opened once, checked on its descriptor and read through it (ConfinedFile); its errors name the scene,
     // the field and the file as the scene gave it.
     std::optional<ConfinedFile> file;
@@ -117,8 +114,16 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
         material.provenance.file = file->original();
         for (std::string& warning : material.warnings) warning = file->in_original_terms(warning);
     }
+    put_layers(material, sphere, field, SpectralOptions{});
+    return material;
+}
+
+const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string& field) {
+    const std::string key = cache_key(sphere.material, sphere.source, sphere.fresnel, sphere.film, sphere.coat);
+    if (auto it = cache_.find(key); it != cache_.end()) return *it->second;
+
+    const Material material = sphere_material(sphere, field);
     const SpectralOptions spectral{};
-    put_layers(material, sphere, field, spectral);
     std::unique_ptr<SphereFresnel> result;
     if (shows_reference(sphere)) {
         result = std::make_unique<SphereFresnel>();
@@ -174,8 +179,8 @@ void FresnelLibrary::put_layers(Material& material, const Sphere& sphere, const 
     material.layers = std::make_shared<const LayerStack>(std::move(stack));
 }
 
-std::string FresnelLibrary::best_model(const std::string& material_name) {
-    const Material material = load_material(catalog_, material_name);
+std::string FresnelLibrary::best_model(const Sphere& sphere, const std::string& field) {
+    const Material material = sphere_material(sphere, field);
     std::vector<const Model*> models(all_models().begin(), all_models().end());
     const MaterialFit fit =
         fit_material(material, colorimetry_, converter_, {SpectralOptions{}, ErrorSettings{}, models});
@@ -183,8 +188,12 @@ std::string FresnelLibrary::best_model(const std::string& material_name) {
     double best_error = std::numeric_limits<double>::infinity();
     for (const ModelResult& r : fit.models) {
         // Every model's fit is kept, so that get() of the winner does not fit it again.
-        cache_.try_emplace(cache_key(material_name, "", ModelFresnel{std::string(r.model->id()), ParameterSource::fit}),
-                           model_fresnel(material, r, ParameterSource::fit, "sheet material " + material_name));
+        std::unique_ptr<SphereFresnel> fitted = model_fresnel(material, r, ParameterSource::fit, field);
+        if (material.layers && !material.layers->empty()) fitted->stack = describe_stack(material);
+        cache_.try_emplace(cache_key(sphere.material, sphere.source,
+                                     ModelFresnel{std::string(r.model->id()), ParameterSource::fit}, sphere.film,
+                                     sphere.coat),
+                           std::move(fitted));
         const double e = worst_channel(r.fit.value.metrics.rel_rms);
         if (e < best_error) {
             best_error = e;

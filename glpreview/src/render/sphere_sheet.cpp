@@ -149,12 +149,15 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                     for (const std::string& name : request.materials) {
                         Sphere sphere = base.spheres[0];
                         sphere.material = name;
+                        sphere.film = request.film;
+                        sphere.coat = request.coat;
                         sphere.fresnel = ReferenceFresnel{};
                         SheetRow row{&library->get(sphere, "sheet material " + name), {}, {}};
                         for (const std::string& group : model_groups) {
                             const bool best = group == kBestModel;
                             sphere.fresnel =
-                                ModelFresnel{best ? library->best_model(name) : group, ParameterSource::fit};
+                                ModelFresnel{best ? library->best_model(sphere, "sheet material " + name) : group,
+                                             ParameterSource::fit};
                             row.models.push_back(&library->get(sphere, "sheet material " + name));
                             row.best.push_back(best);
                         }

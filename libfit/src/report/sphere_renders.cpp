@@ -65,7 +65,7 @@ struct TemporaryFolder {
 SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
     if (r.glpreview.empty() || !fs::exists(r.glpreview))
         throw std::runtime_error("glpreview was not built beside metalfit");
-    if (r.materials.empty()) throw std::runtime_error("no catalog material to render");
+    if (r.materials.empty()) throw std::runtime_error("no material to render");
     if (r.models.empty()) throw std::runtime_error("no model to render");
     const TemporaryFolder folder;
     const std::string size = std::to_string(r.cell_size) + "x" + std::to_string(r.cell_size);
@@ -74,6 +74,8 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
                                   // a folder inside the scratch folder: glpreview's own staging then lives there too
                                   "-o", (folder.path / "sheet").string(), "--data-dir", r.data_dir.string(),
                                   "--ocio-config", r.ocio.path.string()};
+    if (!r.film.empty()) args.insert(args.end(), {"--sheet-film", r.film});
+    if (!r.coat.empty()) args.insert(args.end(), {"--sheet-coat", r.coat});
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -99,7 +101,7 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
     const auto record = nlohmann::json::parse(read_bytes(folder.path / "sheet" / "sheet.json"));
     // Row r is the r-th material asked for (glpreview names it by its catalog name); its entries go by model, then
     // roughness.
-    sheet.materials = r.materials;
+    sheet.materials = r.ids.empty() ? r.materials : r.ids;
     sheet.models = r.models;
     sheet.cells.assign(r.materials.size(), std::vector<std::vector<SphereSheetCells>>(r.models.size()));
     for (const auto& entry : record) {

@@ -58,8 +58,9 @@ public:
     // Throws InputError naming the field (`field`, e.g. "spheres[2].material") for unknown materials/models.
     const SphereFresnel& get(const Sphere& sphere, const std::string& field);
 
-    // The model with the lowest worst-channel fitted rel_rms, for the sphere sheet (its fit is cached for get()).
-    std::string best_model(const std::string& material);
+    // The model with the lowest worst-channel fitted rel_rms of the sphere's material (and layers), for the sphere
+    // sheet (every model's fit is cached for get()).
+    std::string best_model(const Sphere& sphere, const std::string& field);
 
     const ColorSpaceConverter& converter() const { return converter_; }
 
@@ -68,6 +69,9 @@ private:
     std::unique_ptr<SphereFresnel> model_fresnel(const Material& material, const ModelResult& result,
                                                  ParameterSource params, const std::string& field) const;
 
+    // The sphere's material as get() uses it: a file (opened once, under the scene's path policy), a named finish or
+    // a catalog material, with its film and coat; InputError naming `field`.
+    Material sphere_material(const Sphere& sphere, const std::string& field);
     // The sphere's film and coat (scene keys, as metalfit's --film and --coat) over `material`; InputError naming
     // `field`.film or .coat.
     void put_layers(Material& material, const Sphere& sphere, const std::string& field,

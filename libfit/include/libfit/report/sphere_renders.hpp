@@ -44,7 +44,9 @@ struct SphereRenders {
 struct SphereRenderRequest {
     std::filesystem::path glpreview;     // the executable (glpreview_beside_this_program() by default)
     std::filesystem::path scene;         // a scene with one sphere (data/scenes/sheet.json)
-    std::vector<std::string> materials;  // catalog ids
+    std::vector<std::string> materials;  // catalog ids, named finishes or files (as the user gave them)
+    std::vector<std::string> ids;        // the id of each row's material in the records (empty: `materials`)
+    std::string film, coat;              // layers over every material, as --film/--coat ("" = none)
     std::vector<std::string> models;     // libfit model ids (the report's), one column group each
     std::filesystem::path data_dir;
     OcioConfigChoice ocio;
