@@ -10,8 +10,9 @@
 //
 // --broken: instead, every file must be valid and every deliberately broken copy of it must be refused: the `schema`
 // member changed, each required top-level member removed in turn, an unknown top-level member added, and numbers at up
-// to 40 places spread over the document (all depths) replaced by a string. A broken copy that still validates fails
-// the test: the schemas constrain every part of the records.
+// to 40 places spread over the document (all depths) replaced by a string, and every input file it names (members
+// `file`, `ocio_config`, `cost_table`, up to 10) replaced by an absolute path (records never name one: docs/fit-record.md,
+// Paths in records). A broken copy that still validates fails the test: the schemas constrain every part of the records.
 //
 // Usage: node json_schemas.mjs NODE_MODULES SCHEMAS_DIR [--broken] FILE…
 import { readFile, readdir } from "node:fs/promises";
@@ -61,6 +62,17 @@ function numberPaths(value, at = [], out = []) {
   else if (value && typeof value === "object") for (const [k, v] of Object.entries(value)) numberPaths(v, [...at, k], out);
   return out;
 }
+// JSON pointers of the strings naming input files (docs/fit-record.md, Paths in records), in document order.
+const pathMembers = new Set(["file", "ocio_config", "cost_table"]);
+function filePaths(value, at = [], out = []) {
+  if (Array.isArray(value)) value.forEach((v, i) => filePaths(v, [...at, i], out));
+  else if (value && typeof value === "object")
+    for (const [k, v] of Object.entries(value)) {
+      if (pathMembers.has(k) && typeof v === "string") out.push([...at, k]);
+      else filePaths(v, [...at, k], out);
+    }
+  return out;
+}
 function setAt(document, at, value) {
   let o = document;
   for (const k of at.slice(0, -1)) o = o[k];
@@ -92,6 +104,11 @@ function brokenCopies(document, id) {
     const c = copy();
     setAt(c, numbers[i], "0.5");
     copies.push([`number at /${numbers[i].join("/")} replaced by a string`, c]);
+  }
+  for (const at of filePaths(document).slice(0, 10)) {
+    const c = copy();
+    setAt(c, at, "/home/someone/data/nk/Au/Johnson.yml");
+    copies.push([`file at /${at.join("/")} replaced by an absolute path`, c]);
   }
   return copies;
 }

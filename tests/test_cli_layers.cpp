@@ -105,7 +105,8 @@ TEST_F(CliLayers, FitRecordsTheStackAndAUserFileFilm) {
     const auto j = nlohmann::json::parse(r.out);
     const auto& data = j["materials"]["Ti"]["data"];
     EXPECT_EQ(data["stack"]["film"]["material"], "my-oxide");
-    EXPECT_EQ(data["stack"]["film"]["file"], oxide.string());
+    // A file outside the database and the working folder: its name alone (docs/fit-record.md, Paths in records).
+    EXPECT_EQ(data["stack"]["film"]["file"], "outside:my-oxide.csv");
     EXPECT_EQ(data["stack"]["film"]["thickness_nm"], 120.0);
     EXPECT_EQ(data["stack"]["coat"]["material"], "PMMA");
     EXPECT_EQ(data["stack"]["coat"]["thickness_nm"], 20000.0);

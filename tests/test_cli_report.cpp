@@ -137,7 +137,7 @@ TEST_F(Report, AUserFileNamedLikeACatalogMaterialIsNotTheCatalogs) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const Json m = report_json(dir)["materials"][0];
     EXPECT_EQ(m["id"], "Au");
-    EXPECT_EQ(m["provenance"]["file"], "Au.yml");
+    EXPECT_EQ(m["provenance"]["file"], "outside:Au.yml");  // outside the database and the working folder
     EXPECT_TRUE(m["provenance"]["licence"].is_null());
     EXPECT_TRUE(m["provenance"]["kind"].is_null());
     EXPECT_TRUE(m["data_sources"].is_null());

@@ -57,7 +57,8 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
                           parse_gamut_policy(o.gamut),
                           o.roughness.empty() ? kDefaultRoughness : parse_roughness(o.roughness),
                           parse_id_prefix(o.id_prefix)};
-    const CostTable costs = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
+    const CostTable costs =
+        o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs, global.data_dir);
     const Catalog catalog = Catalog::load(global.data_dir);
     const auto selected = o.selection.loaders(catalog, "export");
     const ColourSetup setup = resolve_colour_options(o.colour, global);

@@ -161,7 +161,8 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
         budget = parse_budget(o.budget, parse_budget_metric(o.budget_metric));
     else if (!o.costs.empty())
         throw UsageError("--costs needs --budget");
-    const CostTable costs = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
+    const CostTable costs =
+        o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs, global.data_dir);
     const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models), constraints};
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     FitRecordContext context = setup.record_context(error);

@@ -47,7 +47,8 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
         o.fail_above.empty() ? 0.0 : parse_relative_limit(o.fail_above, "--fail-above");  // 0: no gate
     std::optional<Budget> budget;
     if (!o.budget.empty()) budget = parse_budget(o.budget, parse_budget_metric(o.budget_metric));
-    const CostTable cost_table = o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs);
+    const CostTable cost_table =
+        o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs, global.data_dir);
     check_report_folder(o.output);  // before the fits, which take a while for --all
     const Catalog catalog = Catalog::load(global.data_dir);
     const auto selected = o.selection.loaders(catalog, "report");

@@ -89,7 +89,7 @@ void run_show(const ShowOptions& o, const GlobalOptions& global) {
         const ReflectanceSummary summary = summarize_reflectance(curve);
         if (o.json)
             records.push_back(reflectance_record(material, curve, summary, setup.colorimetry, setup.config,
-                                                 setup.spectral, setup.convention));
+                                                 setup.spectral, global.data_dir, setup.convention));
         else
             text += (text.empty() ? "" : "\n") + show_text(material, curve, summary, setup, o);
     }

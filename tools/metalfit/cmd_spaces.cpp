@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/record_path.hpp"
 #include "libfit/base/text.hpp"
 #include "libfit/color/color_space.hpp"
 #include "libfit/color/ocio_config_contents.hpp"
@@ -35,7 +36,7 @@ void run_spaces(const SpacesOptions& o, const GlobalOptions& global) {
     const OcioConfigChoice config = choose_ocio_config(global.ocio_config, global.data_dir, "--ocio-config");
     const OcioConfigContents contents = read_ocio_config_contents(config);
     nlohmann::ordered_json j;
-    j["config"] = config.path.string();
+    j["config"] = record_path(config.path, global.data_dir);
     j["origin"] = config.origin;
     j["spaces"] = nlohmann::ordered_json::array();
     for (const OcioColorSpaceEntry& s : contents.spaces) {

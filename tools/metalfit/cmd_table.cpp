@@ -45,8 +45,9 @@ void run_chart(const TableOptions& o, const GlobalOptions& global, const Catalog
     for (const std::string& w : layers.film.warnings) warn("film " + layers.film.id + ": " + w);
     const ColorSpaceConverter scene_linear = ColorSpaceConverter::create(setup.config);
     const DisplayTransform display = DisplayTransform::create(setup.config);
-    const OxideChart chart = oxide_chart({std::move(metal), layers.film, layers.coat, thicknesses, versus},
-                                         {setup.colorimetry, setup.converter, scene_linear, display, setup.spectral});
+    const OxideChart chart =
+        oxide_chart({std::move(metal), layers.film, layers.coat, thicknesses, versus, global.data_dir},
+                    {setup.colorimetry, setup.converter, scene_linear, display, setup.spectral});
     if (o.format == "csv")
         emit(oxide_chart_csv(chart), o.output);
     else if (o.format == "json")

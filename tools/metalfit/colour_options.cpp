@@ -42,7 +42,7 @@ ColourSetup resolve_colour_options(const ColourOptions& o, const GlobalOptions& 
     auto colorimetry = Colorimetry::load(global.data_dir, o.cmf ? parse_observer(*o.cmf) : preset.observer,
                                          illuminant.value_or(preset.illuminant),
                                          o.adaptation ? parse_adaptation(*o.adaptation) : preset.adaptation);
-    return {std::move(config), std::move(colorimetry), std::move(converter), spectral, convention};
+    return {std::move(config), std::move(colorimetry), std::move(converter), spectral, convention, global.data_dir};
 }
 
 }  // namespace metalfit::cli

@@ -37,6 +37,7 @@ struct ColourSetup {
     ColorSpaceConverter converter;
     SpectralOptions spectral;
     Convention convention;
+    std::filesystem::path data_dir;  // the database: records name its files relative to it (base/record_path.hpp)
 
     // The colour pipeline of a batch fit (fit_materials), referring to this setup.
     BatchColour batch() const { return {config, colorimetry, converter}; }
@@ -50,7 +51,9 @@ struct ColourSetup {
                 error,
                 colorimetry.adaptation(),
                 colorimetry.adapted(),
-                convention};
+                convention,
+                {},
+                data_dir};
     }
 };
 

@@ -1,5 +1,6 @@
 #include "export/header_provenance.hpp"
 
+#include "libfit/base/record_path.hpp"
 #include "libfit/base/text.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/io/layer_stack.hpp"
@@ -9,7 +10,7 @@ namespace metalfit::detail {
 std::vector<std::string> header_provenance_lines(const Material& m, const FitRecordContext& r) {
     std::vector<std::string> lines;
     lines.push_back("data source: " + m.source + " (" + m.provenance.format + ", " +
-                    m.provenance.file.filename().string() + ", sha256 " + m.provenance.sha256 + ")");
+                    record_path(m.provenance.file, r.data_dir) + ", sha256 " + m.provenance.sha256 + ")");
     const std::string reference = one_line(m.provenance.references);
     lines.push_back("reference: " + (reference.empty() ? std::string("none given") : reference));
     if (!m.provenance.note.empty()) lines.push_back("caveat: " + one_line(m.provenance.note));
@@ -17,10 +18,10 @@ std::vector<std::string> header_provenance_lines(const Material& m, const FitRec
         // The whole stack: the constants reproduce the layered curve, not the bare metal's.
         lines.push_back("stack: " + one_line(describe_stack(m)) +
                         "; the parameters fit the stack's reflectance (docs/colour.md, Layered metals)");
-        const auto layer = [&lines](const char* what, const LayerMaterial& l) {
+        const auto layer = [&lines, &r](const char* what, const LayerMaterial& l) {
             if (l.source == "constant") return;
             lines.push_back(std::string(what) + " data: " + l.id + " (" + l.source + ", " +
-                            l.provenance.file.filename().string() + ", sha256 " + l.provenance.sha256 + ")");
+                            record_path(l.provenance.file, r.data_dir) + ", sha256 " + l.provenance.sha256 + ")");
         };
         if (m.layers->coat) layer("coat", m.layers->coat->material);
         if (m.layers->film) layer("film", m.layers->film->material);

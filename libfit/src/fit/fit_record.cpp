@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "libfit/base/file_digest.hpp"
+#include "libfit/base/record_path.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/io/layer_stack.hpp"
 
@@ -50,12 +51,16 @@ Json solver_json(const FitResult& fit) {
             {"fallback_to_closed", fallback}};
 }
 
-Json data_provenance(const Material& material) {
+Json data_provenance(const Material& material, const std::filesystem::path& data_dir) {
     const Provenance& p = material.provenance;
-    Json data = {{"file", p.file.string()},  {"sha256", p.sha256},        {"format", p.format},
-                 {"data_type", p.data_type}, {"reference", p.references}, {"note", p.note}};
+    Json data = {{"file", record_path(p.file, data_dir)},
+                 {"sha256", p.sha256},
+                 {"format", p.format},
+                 {"data_type", p.data_type},
+                 {"reference", p.references},
+                 {"note", p.note}};
     // Only for a layered material (a film, a coat), so that bare records keep their keys.
-    if (material.layers && !material.layers->empty()) data["stack"] = stack_record(material);
+    if (material.layers && !material.layers->empty()) data["stack"] = stack_record(material, data_dir);
     return data;
 }
 
@@ -136,7 +141,7 @@ Json budget_record(const BudgetChoice& choice) {
             {"candidates", candidates}};
 }
 
-Json material_record(const MaterialFit& m, const BudgetChoice* budget) {
+Json material_record(const MaterialFit& m, const std::filesystem::path& data_dir, const BudgetChoice* budget) {
     Json out_of_gamut = Json::array();
     for (int c = 0; c < 3; ++c)
         if (m.F0[c] > 1.0 || m.F0[c] < 0.0) out_of_gamut.push_back(kChannelNames[c]);
@@ -144,7 +149,7 @@ Json material_record(const MaterialFit& m, const BudgetChoice* budget) {
     for (const ModelResult& r : m.models) models[std::string(r.model->id())] = model_record(r);
     Json record = {{"name", m.material.name},
                    {"source", m.material.source},
-                   {"data", data_provenance(m.material)},
+                   {"data", data_provenance(m.material, data_dir)},
                    {"F0", rgb_json(m.F0)},
                    {"out_of_gamut_F0", out_of_gamut},
                    {"white_raw_rgb", rgb_json(m.raw_white)},
@@ -165,7 +170,7 @@ Json fit_record_without_materials(const FitRecordContext& context, const BudgetC
                      {"adapted", context.adapted},
                      {"convention", to_string(context.convention)},
                      {"ocio_config",
-                      {{"file", context.config.path.string()},
+                      {{"file", record_path(context.config.path, context.data_dir)},
                        {"origin", context.config.origin},
                        {"sha256", sha256_file(context.config.path)}}},
                      {"color_space", context.space},
@@ -196,7 +201,7 @@ Json fit_record(const std::vector<MaterialFit>& materials, const FitRecordContex
     Json& materials_json = record["materials"];
     for (std::size_t index = 0; index < materials.size(); ++index)
         materials_json[materials[index].material.id] =
-            material_record(materials[index], budgets ? &(*budgets)[index] : nullptr);
+            material_record(materials[index], context.data_dir, budgets ? &(*budgets)[index] : nullptr);
     return record;
 }
 

@@ -45,7 +45,7 @@ void FitRecordStream::add(const MaterialFit& fit, const BudgetChoice* budget) {
     const nlohmann::ordered_json key = fit.material.id;
     const std::string margin(2 * kIndent, ' ');
     write_((ids_.size() == 1 ? "\n" : ",\n") + margin + key.dump() + ": " +
-           indented(material_record(fit, budget).dump(kIndent), 2));
+           indented(material_record(fit, context_.data_dir, budget).dump(kIndent), 2));
 }
 
 void FitRecordStream::finish() {

@@ -90,7 +90,7 @@ MetalTable metal_table(const std::vector<std::function<Material()>>& loaders, co
         row.tint = f82_tint(row.f0, working(kMuF82));
         if (material.layers && !material.layers->empty()) {
             row.stack = describe_stack(material);
-            row.stack_record = stack_record(material);
+            row.stack_record = stack_record(material, catalog.data_dir());
         }
         const RGB scene_f0 = scene(1.0);
         scene_values.push_back(scene_f0);

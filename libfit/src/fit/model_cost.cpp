@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/record_path.hpp"
 
 namespace metalfit {
 
@@ -42,7 +43,7 @@ CostTable builtin_cost_table() {
     return table;
 }
 
-CostTable cost_table_from_bench_json(const std::filesystem::path& file) {
+CostTable cost_table_from_bench_json(const std::filesystem::path& file, const std::filesystem::path& data_dir) {
     std::ifstream in(file);
     if (!in) throw InputError({file}, "cannot open the bench report");
     nlohmann::json j;
@@ -83,9 +84,9 @@ CostTable cost_table_from_bench_json(const std::filesystem::path& file) {
     if (models.empty()) throw InputError({file, 0, "rows"}, "no model rows");
     const bool gpu = std::all_of(models.begin(), models.end(), [](const Row& r) { return r.gpu.has_value(); });
     CostTable table;
-    table.source =
-        file.string() + (gpu ? ": GPU shader ratio to conductor-rgb (metalfit bench)"
-                             : ": CPU scalar ratio to conductor-rgb (metalfit bench; no GPU figures for every model)");
+    table.source = record_path(file, data_dir) +
+                   (gpu ? ": GPU shader ratio to conductor-rgb (metalfit bench)"
+                        : ": CPU scalar ratio to conductor-rgb (metalfit bench; no GPU figures for every model)");
     table.unit = gpu ? "x conductor-rgb (GPU)" : "x conductor-rgb (CPU)";
     for (const Row& r : models) {
         const std::optional<double> cost = gpu ? r.gpu : r.cpu;

@@ -8,6 +8,7 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/number_text.hpp"
+#include "libfit/base/record_path.hpp"
 #include "libfit/base/text.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/color/color_difference.hpp"
@@ -128,13 +129,13 @@ OxideChart oxide_chart(const OxideChartInputs& in, const MetalTableColour& colou
             if (const std::size_t at = text.rfind(one); at != std::string::npos)
                 text.replace(at, one.size(), " film of " + number(first) + "–" + number(last) + " nm");
         chart.description = text;
-        chart.stack = stack_record(described);
+        chart.stack = stack_record(described, in.data_dir);
         chart.stack["description"] = text;
         chart.stack["film"].erase("thickness_nm");
         chart.stack["metal"] = {{"material", in.metal.id},
                                 {"name", in.metal.name},
                                 {"source", in.metal.source},
-                                {"file", in.metal.provenance.file.string()},
+                                {"file", record_path(in.metal.provenance.file, in.data_dir)},
                                 {"sha256", in.metal.provenance.sha256},
                                 {"reference", in.metal.provenance.references}};
     }

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "libfit/base/record_path.hpp"
+
 namespace metalfit {
 namespace {
 
@@ -42,11 +44,11 @@ std::string describe_stack(const Material& metal) {
 
 namespace {
 
-nlohmann::ordered_json layer_material_record(const LayerMaterial& m) {
+nlohmann::ordered_json layer_material_record(const LayerMaterial& m, const std::filesystem::path& data_dir) {
     return {{"material", m.id},
             {"name", m.name},
             {"source", m.source},
-            {"file", m.provenance.file.string()},
+            {"file", record_path(m.provenance.file, data_dir)},
             {"sha256", m.provenance.sha256},
             {"reference", m.provenance.references},
             {"data_type", m.provenance.data_type}};
@@ -54,18 +56,18 @@ nlohmann::ordered_json layer_material_record(const LayerMaterial& m) {
 
 }  // namespace
 
-nlohmann::ordered_json stack_record(const Material& metal) {
+nlohmann::ordered_json stack_record(const Material& metal, const std::filesystem::path& data_dir) {
     if (!metal.layers || metal.layers->empty()) return nullptr;
     const LayerStack& s = *metal.layers;
     nlohmann::ordered_json j = {{"description", describe_stack(metal)}};
     if (s.coat) {
-        nlohmann::ordered_json coat = layer_material_record(s.coat->material);
+        nlohmann::ordered_json coat = layer_material_record(s.coat->material, data_dir);
         coat["thickness_nm"] =
             s.coat->thickness_nm ? nlohmann::ordered_json(*s.coat->thickness_nm) : nlohmann::ordered_json(nullptr);
         j["coat"] = std::move(coat);
     }
     if (s.film) {
-        nlohmann::ordered_json film = layer_material_record(s.film->material);
+        nlohmann::ordered_json film = layer_material_record(s.film->material, data_dir);
         film["thickness_nm"] = s.film->thickness_nm;
         j["film"] = std::move(film);
     }

@@ -2,6 +2,7 @@
 
 #include "libfit/io/layer_stack.hpp"
 
+#include "libfit/base/record_path.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/io/material.hpp"
 
@@ -30,7 +31,7 @@ ReflectanceSummary summarize_reflectance(const ReferenceCurve& curve) {
 nlohmann::json reflectance_record(const Material& material, const ReferenceCurve& curve,
                                   const ReflectanceSummary& summary, const Colorimetry& colorimetry,
                                   const OcioConfigChoice& config, const SpectralOptions& spectral,
-                                  Convention convention) {
+                                  const std::filesystem::path& data_dir, Convention convention) {
     const std::vector<ReflectanceSample>& samples = summary.samples;
     nlohmann::json out_of_gamut = nlohmann::json::array();
     for (const OutOfGamutValue& g : summary.out_of_gamut)
@@ -47,7 +48,7 @@ nlohmann::json reflectance_record(const Material& material, const ReferenceCurve
     j["R"] = {
         {"0.5", rgb_json(samples[2].value)}, {"0.25", rgb_json(samples[3].value)}, {"0.1", rgb_json(samples[4].value)}};
     j["out_of_gamut"] = out_of_gamut;
-    j["provenance"] = {{"file", material.provenance.file.string()},
+    j["provenance"] = {{"file", record_path(material.provenance.file, data_dir)},
                        {"sha256", material.provenance.sha256},
                        {"format", material.provenance.format},
                        {"data_type", material.provenance.data_type},
@@ -63,11 +64,11 @@ nlohmann::json reflectance_record(const Material& material, const ReferenceCurve
                        {"convention", to_string(convention)},
                        {"interpolation", to_string(spectral.interpolation)},
                        {"extrapolate", spectral.out_of_range == OutOfRange::clamp},
-                       {"ocio_config", config.path.string()},
+                       {"ocio_config", record_path(config.path, data_dir)},
                        {"ocio_config_origin", config.origin},
                        {"white_raw_rgb", rgb_json(curve.raw_white())},
                        {"metalfit_version", METALFIT_VERSION}};
-    if (material.layers && !material.layers->empty()) j["provenance"]["stack"] = stack_record(material);
+    if (material.layers && !material.layers->empty()) j["provenance"]["stack"] = stack_record(material, data_dir);
     std::vector<std::string> warnings = material.warnings;
     warnings.insert(warnings.end(), curve.held_constant().begin(), curve.held_constant().end());
     j["warnings"] = warnings;

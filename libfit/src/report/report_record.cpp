@@ -9,6 +9,7 @@
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
 #include "libfit/base/number_text.hpp"
+#include "libfit/base/record_path.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/fit/catalog_summary.hpp"
 #include "libfit/io/layer_stack.hpp"
@@ -181,7 +182,7 @@ Json sources_json(const MaterialFit& fit, const ReportInputs& in) {
 
 Json provenance_json(const MaterialFit& fit, const ReportInputs& in) {
     const Provenance& p = fit.material.provenance;
-    Json j = {{"file", p.file.filename().string()},
+    Json j = {{"file", record_path(p.file, in.fit.data_dir)},
               {"sha256", p.sha256},
               {"format", p.format},
               {"data_type", p.data_type},
@@ -196,7 +197,7 @@ Json provenance_json(const MaterialFit& fit, const ReportInputs& in) {
         j["database_path"] = source->database_path;
         j["kind"] = entry->kind;
     }
-    if (fit.material.layers && !fit.material.layers->empty()) j["stack"] = stack_record(fit.material);
+    if (fit.material.layers && !fit.material.layers->empty()) j["stack"] = stack_record(fit.material, in.fit.data_dir);
     return j;
 }
 
@@ -359,7 +360,7 @@ Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in)
               {"cmf", to_string(c.observer)},
               {"illuminant", to_string(c.illuminant)},
               {"ocio_config",
-               {{"file", c.config.path.filename().string()},
+               {{"file", record_path(c.config.path, c.data_dir)},
                 {"origin", c.config.origin},
                 {"sha256", sha256_file(c.config.path)}}},
               {"display", in.display.description()},

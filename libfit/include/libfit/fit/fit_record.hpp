@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,8 @@ struct FitRecordContext {
     bool adapted = false;                          // whether it changed anything (false for D65)
     Convention convention = Convention::metalfit;
     FitConstraints constraints = {};
+    // The database the inputs came from: records name files relative to it (base/record_path.hpp), never absolutely.
+    std::filesystem::path data_dir = {};
 };
 
 // `budgets`, when given, holds one choice per material (in the order of `materials`): each material's record then has
@@ -43,7 +46,9 @@ nlohmann::ordered_json fit_record_without_materials(const FitRecordContext& cont
 
 // One material's record (the value under materials.<id>): name, source, data, F0, ..., models, and its "budget"
 // when `budget` is given.
-nlohmann::ordered_json material_record(const MaterialFit& fit, const BudgetChoice* budget = nullptr);
+// Its files are named by record_path against `data_dir` (the context's).
+nlohmann::ordered_json material_record(const MaterialFit& fit, const std::filesystem::path& data_dir,
+                                       const BudgetChoice* budget = nullptr);
 
 // {"metric", "limit", "cost_table", "cost_unit", "chosen": id or null, "summary", "candidates": [{"model", "cost",
 // "value", "qualifies", "reason"}]} (docs/fit-record.md).

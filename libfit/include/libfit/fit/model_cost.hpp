@@ -35,7 +35,7 @@ CostTable builtin_cost_table();
 
 // The table of a `metalfit bench --json` report (schema metalfit.bench/1): each model row's `shader_ratio` when every
 // model row has one (GPU), else its `ratio_scalar` (CPU). Throws InputError naming the file and the field for a file
-// that is not such a report.
-CostTable cost_table_from_bench_json(const std::filesystem::path& file);
+// that is not such a report. Its `source` names the file by record_path against `data_dir` (never absolutely).
+CostTable cost_table_from_bench_json(const std::filesystem::path& file, const std::filesystem::path& data_dir = {});
 
 }  // namespace metalfit

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -56,6 +57,7 @@ struct OxideChartInputs {
     std::optional<ClearCoat> coat;
     std::vector<double> thicknesses_nm;
     std::optional<double> versus_index;
+    std::filesystem::path data_dir;  // the database: the record names files relative to it (base/record_path.hpp)
 };
 
 // The chart; the ΔE2000 in CIELAB of the XYZ before the colour space, white = the perfect reflector (as the fit's

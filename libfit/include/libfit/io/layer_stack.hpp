@@ -54,8 +54,8 @@ std::string describe_stack(const Material& metal);
 
 // The provenance of the layers over `metal` (schemas/common.schema.json, "stack"): the description, and per layer its
 // material (id, name, source, file, sha256, reference, data_type) and thickness, and the finish's id and name when
-// it is a named finish; null for a bare material.
-nlohmann::ordered_json stack_record(const Material& metal);
+// it is a named finish; null for a bare material. The files are named by record_path against `data_dir`.
+nlohmann::ordered_json stack_record(const Material& metal, const std::filesystem::path& data_dir);
 
 // The one rule for thicknesses: "" when valid, else why not ("thickness -5 nm is negative", "thickness 2500 nm is
 // beyond 2 µm: …").

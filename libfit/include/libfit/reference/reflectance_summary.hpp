@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -37,10 +38,10 @@ struct ReflectanceSummary {
 ReflectanceSummary summarize_reflectance(const ReferenceCurve& curve);
 
 // The record: material, space, the samples, out-of-gamut values, provenance (file, digest, coverage, colour
-// pipeline, the raw white), the material's warnings.
+// pipeline, the raw white), the material's warnings. Files are named by record_path against `data_dir`.
 nlohmann::json reflectance_record(const Material& material, const ReferenceCurve& curve,
                                   const ReflectanceSummary& summary, const Colorimetry& colorimetry,
                                   const OcioConfigChoice& config, const SpectralOptions& spectral,
-                                  Convention convention = Convention::metalfit);
+                                  const std::filesystem::path& data_dir, Convention convention = Convention::metalfit);
 
 }  // namespace metalfit
