@@ -183,7 +183,7 @@ TEST(PreviewGlossyChoice, TheSheetPlansEachColumnsMethod) {
     const GlossyChoiceTable& table = glossy_choice_table();
     ASSERT_TRUE(table.localized_from) << "the measured table: localized wins at high roughness";
     const Scene scene = load_scene(kData / "scenes" / "sheet.json");
-    SheetRequest request{{"Au"}, {"schlick"}, {0.0, 0.2}, false, false};
+    SheetRequest request{{"Au"}, {"schlick"}, {0.0, 0.2}, false, false, "", ""};
     Plan plan = build_sheet_plan(scene, request);
     EXPECT_TRUE(plan.runs("prefilter-environment"));
     EXPECT_FALSE(plan.runs("downsample-environment 8"));

@@ -18,8 +18,8 @@ struct SheetRequest {
     std::vector<std::string> models;     // libfit model ids or kBestModel, in the order shown
     std::vector<double> roughness;       // GGX roughness of the columns, each in [0, 1]
     bool labels = true;                  // drawn on sheet.png (sheet.exr stays the bare renders)
-    bool light = false;      // one more column: roughness kSheetLightRoughness under a point light grazing the sphere
-    std::string film, coat;  // layers over every row's metal, as metalfit's --film/--coat ("" = none)
+    bool light = false;  // one more column: roughness kSheetLightRoughness under a point light grazing the sphere
+    std::string film = {}, coat = {};  // layers over every row's metal, as metalfit's --film/--coat ("" = none)
 };
 
 inline constexpr const char* kBestModel = "best";
