@@ -28,6 +28,7 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
         }
         run.luminance = luminance_weights(library.converter());
     }
+    run.delta_e = delta_e_basis(library.converter());
     run.exr_metadata = sphere_metadata(scene, run.fresnel);
 
     graph::PassGraph graph;

@@ -16,6 +16,7 @@
 #include "glpreview/io/image.hpp"
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/render/cpu_reference.hpp"
+#include "glpreview/render/delta_e_view.hpp"
 #include "glpreview/render/dfg_table.hpp"
 #include "glpreview/render/features.hpp"
 #include "glpreview/render/frame_inputs.hpp"
@@ -56,6 +57,8 @@ struct PreviewRun {
     // of the scene's space (the error views).
     std::vector<const SphereFresnel*> reference_fresnel = {};
     RGB luminance{0, 0, 0};
+    // The scene's space for ΔE2000 (metrics.json, delta-e.png): its RGB → XYZ and the white Y_w = 1.
+    DeltaEBasis delta_e = {};
 
     void open_gl();  // the context (if none) and the renderer; called before the first GPU pass
     GpuRenderer& renderer();
