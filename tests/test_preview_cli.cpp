@@ -111,9 +111,10 @@ TEST(PreviewCli, WritesTheRequestedFilesAndMetrics) {
     for (const auto& entry : fs::directory_iterator(dir.path() / "out"))
         files.push_back(entry.path().filename().string());
     std::sort(files.begin(), files.end());
-    // fit-error.exr: a sphere uses a model (its error apart from the localization's, signed, linear).
-    EXPECT_EQ(files, (std::vector<std::string>{"beauty.exr", "difference.exr", "fit-error.exr", "metrics.json",
-                                               "reference.exr", "timings.json"}));
+    // fit-error.exr: a sphere uses a model (its error apart from the localization's, signed, linear); delta-e.exr:
+    // ΔE2000 per pixel beside it.
+    EXPECT_EQ(files, (std::vector<std::string>{"beauty.exr", "delta-e.exr", "difference.exr", "fit-error.exr",
+                                               "metrics.json", "reference.exr", "timings.json"}));
     const auto metrics = nlohmann::json::parse(read_file(dir.path() / "out" / "metrics.json"));
     const auto timings = nlohmann::json::parse(read_file(dir.path() / "out" / "timings.json"));
     ASSERT_EQ(metrics["spheres"].size(), 2u);

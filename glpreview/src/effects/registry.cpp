@@ -15,11 +15,12 @@
 #include "metrics/metrics_effect.hpp"
 #include "reference/reference_effect.hpp"
 #include "reflection/reflection_effect.hpp"
+#include "rim/rim_effect.hpp"
 
 namespace metalfit::glpreview {
 
 std::span<const Effect* const> all_effects() {
-    static const std::array<const Effect*, 10> effects{
+    static const std::array<const Effect*, 11> effects{
         &lights_effect(),  // first: the capture of the environment reads its shadow maps
         &environment_effect(),
         &reflection_effect(),
@@ -30,6 +31,7 @@ std::span<const Effect* const> all_effects() {
         &localization_diagnostics_effect(),  // after the lobes: the localization frame replaces every lobe
         &fit_error_effect(),                 // after the reference: its error view reads it
         &metrics_effect(),                   // after the reference and the localization frame it reads
+        &rim_effect(),                       // after fit-error: it reads the frame with the exact curves
     };
     return effects;
 }

@@ -224,13 +224,15 @@ Image read_exr(const std::filesystem::path& file) {
     });
 }
 
-void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour,
-               const ExrMetadata& metadata) {
-    // The attributes OpenImageIO 2.4 wrote (the header's defaults, ZIP compression, half R G B, capDate,
-    // chromaticities and colorSpace, then the metadata as string, float or int).
-    Imf::Header header(image.width, image.height);
+namespace {
+
+// The header every EXR of glpreview gets: the attributes OpenImageIO 2.4 wrote (the header's defaults, ZIP
+// compression, the channels, capDate, chromaticities and colorSpace, then the metadata as string, float or int).
+Imf::Header exr_header(int width, int height, const std::vector<std::pair<std::string, Imf::PixelType>>& channels,
+                       const ExrColour* colour, const ExrMetadata& metadata) {
+    Imf::Header header(width, height);
     header.compression() = Imf::ZIP_COMPRESSION;
-    for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::HALF));
+    for (const auto& [name, type] : channels) header.channels().insert(name, Imf::Channel(type));
     add_capture_date(header);
     if (colour) {
         const Chromaticities& c = colour->chromaticities;
@@ -246,6 +248,15 @@ void write_exr(const std::filesystem::path& file, const Image& image, const ExrC
         else
             header.insert(a.name, Imf::IntAttribute(std::get<int>(a.value)));
     }
+    return header;
+}
+
+}  // namespace
+
+void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour,
+               const ExrMetadata& metadata) {
+    const Imf::Header header =
+        exr_header(image.width, image.height, {{"R", Imf::HALF}, {"G", Imf::HALF}, {"B", Imf::HALF}}, colour, metadata);
     write_staged(file, [&](const std::filesystem::path& temporary) {
         Imf::OutputFile out(temporary.c_str(), header);
         // Each float rounded to the nearest half (Imath's conversion, as OpenImageIO's): OpenEXR writes what it is given.
@@ -258,6 +269,19 @@ void write_exr(const std::filesystem::path& file, const Image& image, const ExrC
                                     static_cast<std::size_t>(image.width) * 3 * sizeof(Imath::half)));
         out.setFrameBuffer(frame);
         out.writePixels(image.height);
+    });
+}
+
+void write_exr_channel(const std::filesystem::path& file, int width, int height, const std::vector<float>& values,
+                       const std::string& channel, const ExrMetadata& metadata) {
+    const Imf::Header header = exr_header(width, height, {{channel, Imf::FLOAT}}, nullptr, metadata);
+    write_staged(file, [&](const std::filesystem::path& temporary) {
+        Imf::OutputFile out(temporary.c_str(), header);
+        Imf::FrameBuffer frame;
+        frame.insert(channel, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(values.data())),
+                                         sizeof(float), static_cast<std::size_t>(width) * sizeof(float)));
+        out.setFrameBuffer(frame);
+        out.writePixels(height);
     });
 }
 

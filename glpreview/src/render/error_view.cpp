@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "glpreview/io/image_text.hpp"
 #include "libfit/base/number_text.hpp"
 #include "libfit/base/sample_statistics.hpp"
 
@@ -61,11 +62,15 @@ RGB error_colour(double e, const ErrorScale& scale) {
     return t < 0.5 ? mix(kBlack, middle, 2 * t) : mix(middle, end, 2 * t - 1);
 }
 
+void paint_view(Image& image, int x0, int y0, int w, int h, const std::vector<double>& values,
+                const std::function<RGB(double)>& colour) {
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) image.set(x0 + x, y0 + y, colour(values[static_cast<std::size_t>(y) * w + x]));
+}
+
 void paint_error_view(Image& image, int x0, int y0, int w, int h, const std::vector<double>& errors,
                       const ErrorScale& scale) {
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            image.set(x0 + x, y0 + y, error_colour(errors[static_cast<std::size_t>(y) * w + x], scale));
+    paint_view(image, x0, y0, w, h, errors, [&scale](double e) { return error_colour(e, scale); });
 }
 
 void paint_colour_bar(Image& image, int x0, int y0, int w, int h, const ErrorScale& scale) {
@@ -83,11 +88,21 @@ Image error_view_image(const Image& model, const Image& reference, const Luminan
     scale = error_scale_from(errors);
     Image view(reference.width, reference.height);
     paint_error_view(view, 0, 0, view.width, view.height, errors, scale);
+    paint_colour_bar_at_right_edge(
+        view, [&scale](Image& image, int x0, int y0, int w, int h) { paint_colour_bar(image, x0, y0, w, h, scale); });
+    return view;
+}
+
+void paint_colour_bar_at_right_edge(Image& view, const std::function<void(Image&, int, int, int, int)>& paint) {
     const int width = std::max(3, view.width / 48), margin = std::max(1, view.width / 96);
     const int top = std::max(margin, view.height / 10);
     if (view.width > width + 2 * margin && view.height > 2 * top)
-        paint_colour_bar(view, view.width - width - margin, top, width, view.height - 2 * top, scale);
-    return view;
+        paint(view, view.width - width - margin, top, width, view.height - 2 * top);
+}
+
+void draw_view_label(Image& view, const std::string& text) {
+    const int band = std::clamp(view.height / 12, 8, 28);
+    draw_text(view, {{0, 0, view.width, band, text, band - 2}});
 }
 
 std::string scale_label(const ErrorScale& scale) {

@@ -20,14 +20,15 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     run.exr_colour = ExrColour{chromaticities_of(library.converter()), library.converter().space()};
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
         run.fresnel.push_back(&library.get(scene.spheres[i], "spheres[" + std::to_string(i) + "]"));
-    if (plan_features(scene).fit_error) {
+    if (plan_features(scene).fit_error || scene.outputs.rim) {
         for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
             Sphere exact = scene.spheres[i];
             exact.fresnel = ReferenceFresnel{};
             run.reference_fresnel.push_back(&library.get(exact, "spheres[" + std::to_string(i) + "]"));
         }
-        run.luminance = luminance_weights(library.converter());
     }
+    run.luminance = luminance_weights(library.converter());
+    run.delta_e = delta_e_basis(library.converter());
     run.exr_metadata = sphere_metadata(scene, run.fresnel);
 
     graph::PassGraph graph;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "libfit/base/sample_statistics.hpp"
+
 namespace metalfit::glpreview {
 
 std::vector<SphereError> sphere_errors(const Image& beauty, const ReferenceRender& reference, std::size_t spheres) {
@@ -28,6 +30,23 @@ std::vector<SphereError> sphere_errors(const Image& beauty, const ReferenceRende
         errors[s].mean_abs = n > 0 ? absolute[s] / n : std::nan("");
     }
     return errors;
+}
+
+std::vector<SphereDeltaE> sphere_delta_e(const std::vector<double>& delta_e, const ReferenceRender& reference,
+                                         std::size_t spheres) {
+    if (delta_e.size() != reference.sphere_id.size())
+        throw std::invalid_argument("sphere_delta_e: images of different sizes");
+    std::vector<std::vector<double>> values(spheres);
+    for (std::size_t p = 0; p < delta_e.size(); ++p)
+        if (const int id = reference.sphere_id[p]; id >= 0) values[static_cast<std::size_t>(id)].push_back(delta_e[p]);
+    std::vector<SphereDeltaE> out(spheres);
+    for (std::size_t s = 0; s < spheres; ++s) {
+        double sum = 0;
+        for (double d : values[s]) sum += d;
+        out[s].mean = values[s].empty() ? std::nan("") : sum / static_cast<double>(values[s].size());
+        out[s].p95 = quantile(std::move(values[s]), 0.95);  // NaN when empty
+    }
+    return out;
 }
 
 std::vector<double> sphere_reference_noise(const Image& standard_error, const ReferenceRender& reference,

@@ -296,7 +296,7 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
     if (scene.spheres.empty()) top.fail("spheres", "at least one sphere");
     if (top.has("outputs")) {
         Reader r(top.at("outputs"), "outputs", file,
-                 {"beauty", "reference", "difference", "metrics", "exr", "png", "localization", "labels",
+                 {"beauty", "reference", "difference", "metrics", "exr", "png", "localization", "labels", "rim",
                   "timing_frames", "reference_samples"});
         Outputs& o = scene.outputs;
         r.read("beauty", o.beauty);
@@ -307,10 +307,12 @@ Scene parse_scene(const std::string& json_text, const std::filesystem::path& fil
         r.read("png", o.png);
         r.read("localization", o.localization);
         r.read("labels", o.labels);
+        r.read("rim", o.rim);
         r.read("timing_frames", o.timing_frames, 5, 1000);
         r.read("reference_samples", o.reference_samples, 1, 65536);
         if (!o.exr && !o.png && (o.beauty || o.reference || o.difference))
             r.fail("outputs.exr", "images asked for but neither exr nor png");
+        if (o.rim && !o.png) r.fail("outputs.rim", "rim.png is a PNG: needs outputs.png");
     }
     for (const SceneKeys* effect : scene_key_readers()) effect->check_scene(top, scene);
     for (std::string& w : placement_warnings(scene)) scene.warnings.push_back(std::move(w));

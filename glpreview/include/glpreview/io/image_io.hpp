@@ -46,6 +46,10 @@ using ExrMetadata = std::vector<ExrAttribute>;
 // file carries no chromaticities (readers then assume Rec.709); `metadata` goes into the header as it is.
 void write_exr(const std::filesystem::path& file, const Image& image, const ExrColour* colour = nullptr,
                const ExrMetadata& metadata = {});
+// One float channel named `channel` (width × height values, top row first; a measure, not a colour: no
+// chromaticities), with the same header attributes otherwise. Staged as write_exr.
+void write_exr_channel(const std::filesystem::path& file, int width, int height, const std::vector<float>& values,
+                       const std::string& channel, const ExrMetadata& metadata = {});
 // Every string, float and int header attribute of an EXR whose name starts with `prefix`.
 ExrMetadata read_image_metadata(const std::filesystem::path& file, const std::string& prefix);
 // The chromaticities and colour space an EXR says it holds (nothing when it carries no `chromaticities`).

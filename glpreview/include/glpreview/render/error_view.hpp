@@ -4,6 +4,7 @@
 // where it is darker. No GL: the sheet's PNG and the tests use it on images already rendered.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,12 +45,24 @@ ErrorScale error_scale_from(const std::vector<double>& errors);
 // is applied to the view and its colour bar alike).
 RGB error_colour(double e, const ErrorScale& scale);
 
+// `values` (one per pixel of a w × h cell) as `colour` paints them, written into `image` at (x0, y0): the painting
+// of every false-colour view (this signed one, the ΔE2000 view of render/delta_e_view).
+void paint_view(Image& image, int x0, int y0, int w, int h, const std::vector<double>& values,
+                const std::function<RGB(double)>& colour);
+
 // `errors` (one per pixel of a w × h cell) as colours, written into `image` at (x0, y0).
 void paint_error_view(Image& image, int x0, int y0, int w, int h, const std::vector<double>& errors,
                       const ErrorScale& scale);
 
 // A vertical colour bar in the rectangle: +largest at the top, 0 (black) in the middle, −largest at the bottom.
 void paint_colour_bar(Image& image, int x0, int y0, int w, int h, const ErrorScale& scale);
+
+// A colour bar at the right edge of a whole image's view, between bands of a tenth of its height: `paint` is called
+// with the bar's rectangle (x0, y0, w, h); nothing when the image is too small to hold it.
+void paint_colour_bar_at_right_edge(Image& view, const std::function<void(Image&, int, int, int, int)>& paint);
+
+// The label of a whole image's view, in a band at its top (white text, render_text: needs the OpenImageIO module).
+void draw_view_label(Image& view, const std::string& text);
 
 // A whole image's error view (a scene's fit-error.png and error.png): the errors of `model` against `reference` on
 // the scale chosen from them, with a colour bar at the right edge; `scale` receives the scale.

@@ -16,6 +16,7 @@
 #include "glpreview/io/image.hpp"
 #include "glpreview/io/image_io.hpp"
 #include "glpreview/render/cpu_reference.hpp"
+#include "glpreview/render/delta_e_view.hpp"
 #include "glpreview/render/dfg_table.hpp"
 #include "glpreview/render/features.hpp"
 #include "glpreview/render/frame_inputs.hpp"
@@ -58,6 +59,8 @@ struct PreviewRun {
     RGB luminance{0, 0, 0};
     // What the renderer is made for; unset: plan_features(scene) (the sheet's columns add their glossy methods).
     std::optional<Features> features = {};
+    // The scene's space for ΔE2000 (metrics.json, delta-e.png): its RGB → XYZ and the white Y_w = 1.
+    DeltaEBasis delta_e = {};
 
     void open_gl();  // the context (if none) and the renderer; called before the first GPU pass
     GpuRenderer& renderer();

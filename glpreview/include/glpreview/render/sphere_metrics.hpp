@@ -33,6 +33,15 @@ std::vector<SphereLocalization> sphere_localization(const Image& diagnostics, co
 std::vector<double> sphere_reference_noise(const Image& standard_error, const ReferenceRender& reference,
                                            std::size_t spheres);
 
+// The ΔE2000 of each sphere's mask (per pixel, from render/delta_e_view's delta_e_2000): the mean and the 95th
+// percentile (linear interpolation between order statistics), NaN where the mask is empty.
+struct SphereDeltaE {
+    double mean = 0;
+    double p95 = 0;
+};
+std::vector<SphereDeltaE> sphere_delta_e(const std::vector<double>& delta_e, const ReferenceRender& reference,
+                                         std::size_t spheres);
+
 // |a − b| per pixel and channel, times `scale`.
 Image absolute_difference(const Image& a, const Image& b, double scale = 1.0);
 

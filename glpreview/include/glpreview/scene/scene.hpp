@@ -162,6 +162,7 @@ struct Outputs {
     bool png = true;              // through the OCIO display transform
     bool localization = false;    // localization.exr: per pixel the refinement steps taken and the final |ρ − 1|
     bool labels = false;          // the PNGs say what they show, the display transform and the exposure (top band)
+    bool rim = false;             // rim.png: each sphere's grazing rim unwrapped beside its Fresnel curves
     int timing_frames = 5;        // frames for ms_per_frame (median)
     int reference_samples = 256;  // Monte-Carlo samples per pixel of the reference on rough spheres
 };

@@ -1,5 +1,6 @@
 #include "metrics_effect.hpp"
 
+#include "glpreview/render/delta_e_view.hpp"
 #include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/preview_passes.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
@@ -28,6 +29,9 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
     const auto fit_errors = fit_reference ? sphere_errors(beauty, ReferenceRender{*fit_reference, reference.sphere_id},
                                                           scene.spheres.size())
                                           : std::vector<SphereError>{};
+    // ΔE2000 of the beauty frame against the reference, per pixel, over the same masks (white Y_w = 1).
+    const auto delta_e =
+        sphere_delta_e(delta_e_2000(beauty, reference.image, run.delta_e), reference, scene.spheres.size());
     const auto effort = sphere_localization(localization, reference, scene.spheres.size());
     const auto noise = standard_error ? sphere_reference_noise(*standard_error, reference, scene.spheres.size())
                                       : std::vector<double>(scene.spheres.size(), 0.0);
@@ -54,6 +58,8 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
         e["rmse"] = errors[i].rmse;  // NaN (null) when no pixel shows the sphere
         // null: no frame with the exact curves was made (no sphere of the scene uses a model)
         e["fit_rmse"] = fit_reference ? Json(fit_errors[i].rmse) : Json(nullptr);
+        e["de2000_mean"] = delta_e[i].mean;  // NaN (null) when no pixel shows the sphere
+        e["de2000_p95"] = delta_e[i].p95;
         e["mean_abs"] = errors[i].mean_abs;
         e["pixels"] = errors[i].pixels;
         e["mean_iterations"] = impostor ? Json(effort[i].mean_iterations) : Json(nullptr);
