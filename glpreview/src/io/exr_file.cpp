@@ -211,15 +211,24 @@ Image read_exr(const std::filesystem::path& file) {
         else
             for (std::size_t c = 0; c < 3; ++c) rgb[c] = names[std::min(c, names.size() - 1)];
         Image image(static_cast<int>(width), static_cast<int>(height));
-        // The slices address the image's own pixels, offset so that the data window's corner lands on index 0.
+        // The slices address the image's own pixels, offset so that the data window's corner lands on index 0. A
+        // frame buffer holds one slice per channel name: a file with fewer than three channels (delta-e.exr's one) is
+        // read into the first slots its channels take, then copied into the others.
         char* base = reinterpret_cast<char*>(image.rgb.data()) -
                      (static_cast<std::ptrdiff_t>(window.min.y) * width + window.min.x) * 3 * sizeof(float);
         Imf::FrameBuffer frame;
-        for (std::size_t c = 0; c < 3; ++c)
-            frame.insert(rgb[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), 3 * sizeof(float),
-                                            static_cast<std::size_t>(width) * 3 * sizeof(float)));
+        std::array<std::size_t, 3> source{0, 1, 2};
+        for (std::size_t c = 0; c < 3; ++c) {
+            source[c] = static_cast<std::size_t>(std::find(rgb.begin(), rgb.begin() + c, rgb[c]) - rgb.begin());
+            if (source[c] == c)
+                frame.insert(rgb[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), 3 * sizeof(float),
+                                                static_cast<std::size_t>(width) * 3 * sizeof(float)));
+        }
         in.setFrameBuffer(frame);
         in.readPixels(window.min.y, window.max.y);
+        for (std::size_t p = 0; p < image.rgb.size(); p += 3)
+            for (std::size_t c = 0; c < 3; ++c)
+                if (source[c] != c) image.rgb[p + c] = image.rgb[p + source[c]];
         return image;
     });
 }
