@@ -62,9 +62,11 @@ installed = json.load(open(os.path.join(work, "installed-show.json")))
 data = values["data_dir"][0][0]
 if os.path.realpath(data) != os.path.realpath(expected_data):
     sys.exit(f"package_consumer: the consumer used the database {data}, not the installed {expected_data}")
+# Records name the database's files relative to the database the run used ("data:nk/Au/Johnson.yml", docs/fit-record.md
+# "Paths in records"): they must be files of the installed one.
 for key in ("file", "ocio_config"):
     used = installed["provenance"][key]
-    if not os.path.realpath(used).startswith(os.path.realpath(expected_data) + os.sep):
+    if not used.startswith("data:") or not os.path.isfile(os.path.join(expected_data, used[len("data:"):])):
         sys.exit(f"package_consumer: the installed metalfit read {used}, not a file of {expected_data}")
 def channels(key):
     got = {int(c): float(v) for c, v in values[key]}
