@@ -300,6 +300,25 @@ TEST_F(Report, UserFilesFinishesAndLayersAreRendered) {
     EXPECT_FALSE(bare_sheet.empty());
 }
 
+// Issue 29 item 6: on a terminal the report shows its fits' and renders' progress per material on stderr (the line
+// cleared at the end); piped, stderr stays empty. util-linux's script(1) gives the run a terminal.
+TEST_F(Report, ProgressShowsOnATerminalAndNotWhenPiped) {
+    if (!fs::exists("/usr/bin/script")) GTEST_SKIP() << "util-linux script(1) is not installed";
+    const fs::path terminal = tmp_.path() / "terminal", piped = tmp_.path() / "piped";
+    const std::string report =
+        "'" + std::string(metalfit::test::kMetalfitExe) + "' report Au,Cu --model schlick --renders on -o ";
+    const auto tty = metalfit::test::run_command(
+        "/usr/bin/script", "-qfec \"" + report + "'" + terminal.string() + "'\" /dev/null", tmp_.path());
+    ASSERT_EQ(tty.exit_code, 0) << tty.out << tty.err;
+    EXPECT_TRUE(metalfit::test::Contains(tty.out, "metalfit report: fits: 2/2 materials")) << tty.out;
+    EXPECT_TRUE(metalfit::test::Contains(tty.out, "metalfit report: renders: 1/2 materials")) << tty.out;
+    EXPECT_TRUE(metalfit::test::Contains(tty.out, "metalfit report: renders: 2/2 materials")) << tty.out;
+    const auto quiet = run("report Au,Cu --model schlick --renders on -o '" + piped.string() + "'");
+    ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+    EXPECT_EQ(quiet.err, "");
+    EXPECT_EQ(read_file(terminal / "report.json"), read_file(piped / "report.json"));
+}
+
 // Without glpreview beside metalfit, --renders auto still writes the report and says why there are no renders.
 TEST_F(Report, WithoutGlpreviewTheRendersAreSkippedWithTheReason) {
     const fs::path bin = tmp_.path() / "bin";

@@ -399,5 +399,28 @@ TEST(PreviewSheet, ExplainShowsTheRoughPassesAndTheLabels) {
     EXPECT_TRUE(Contains(rough.out, "at roughness 0, 0.5")) << rough.out;
 }
 
+// --sheet-progress: a line per row, in order, before the sheet's own output; without it and off a terminal, none
+// (issue 29 item 6: metalfit report relays these as its progress).
+TEST(PreviewSheet, SheetProgressIsALinePerRowInOrder) {
+    TempDir dir;
+    const std::string common = sheet_scene() + " --sheet Au,Cu,Ag --sheet-models schlick --sheet-labels off" + kSize;
+    const CommandResult with = glpreview(common + " --sheet-progress -o " + (dir.path() / "with").string(), dir);
+    ASSERT_EQ(with.exit_code, 0) << with.err;
+    const std::size_t one = with.out.find("sheet-progress 1 3\n"), two = with.out.find("sheet-progress 2 3\n"),
+                      three = with.out.find("sheet-progress 3 3\n"), png = with.out.find("sheet.png");
+    ASSERT_NE(one, std::string::npos) << with.out;
+    ASSERT_NE(two, std::string::npos) << with.out;
+    ASSERT_NE(three, std::string::npos) << with.out;
+    EXPECT_LT(one, two);
+    EXPECT_LT(two, three);
+    EXPECT_LT(three, png);
+    const CommandResult without = glpreview(common + " -o " + (dir.path() / "without").string(), dir);
+    ASSERT_EQ(without.exit_code, 0) << without.err;
+    EXPECT_FALSE(Contains(without.out, "sheet-progress"));
+    EXPECT_FALSE(Contains(without.err, "rows"));
+    EXPECT_EQ(read_file(dir.path() / "with" / "sheet.png"), read_file(dir.path() / "without" / "sheet.png"));
+    EXPECT_EQ(glpreview(sheet_scene() + " --sheet-progress -o " + (dir.path() / "x").string(), dir).exit_code, 2);
+}
+
 }  // namespace
 }  // namespace metalfit::test

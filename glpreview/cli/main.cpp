@@ -2,6 +2,7 @@
 // environment maps; CPU ray-traced reference, difference images and metrics. A thin layer over the glpreview library.
 // Exit codes: 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 colour configuration, 5 OpenGL/EGL failure.
 #include <CLI/CLI.hpp>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -182,6 +183,10 @@ int run_glpreview(int argc, char** argv) {
         "--sheet-light", sheet_light,
         "Sheet: one more column at roughness 0.35 under a point light beside and behind the sphere, each model's highlight next "
         "to the reference's (on|off; a room environment)");
+    bool sheet_progress = false;
+    app.add_flag("--sheet-progress", sheet_progress,
+                 "Sheet: a line `sheet-progress DONE TOTAL` on stdout after each row (for programs that run the "
+                 "sheet: metalfit report); on a terminal stderr shows the rows done without it");
     std::string sheet_film, sheet_coat;
     app.add_option("--sheet-film", sheet_film,
                    "Sheet: a thin film over every row's metal, as metalfit --film (TiO2:80nm, 2.2:120nm, a file)");
@@ -363,16 +368,29 @@ int run_glpreview(int argc, char** argv) {
             return std::filesystem::absolute(a.material).string() +
                    (a.thickness_nm ? text.substr(text.rfind(':')) : std::string());
         };
+        const bool terminal = isatty(STDERR_FILENO) != 0;
+        if (sheet_progress)
+            sheet_request.on_row = [](std::size_t done, std::size_t total) {
+                std::printf("sheet-progress %zu %zu\n", done, total);
+                std::fflush(stdout);
+            };
+        else if (terminal)
+            sheet_request.on_row = [](std::size_t done, std::size_t total) {
+                if (done < total)
+                    std::fprintf(stderr, "\rglpreview: sheet %zu/%zu rows", done, total);
+                else
+                    std::fprintf(stderr, "\r%40s\r", "");  // the line cleared once the last row is done
+            };
         sheet_request.film = layer(sheet_film, "--sheet-film");
         sheet_request.coat = layer(sheet_coat, "--sheet-coat");
         if (sheet_request.light && scene.environment.type != EnvironmentType::room)
             throw UsageError(
                 "--sheet-light: the light column needs a room environment (its surfaces receive the light)");
         if (sheet.empty() && (sheet_models != "best" || !sheet_roughness.empty() || sheet_labels != "on" ||
-                              sheet_light != "off" || !sheet_film.empty() || !sheet_coat.empty()))
+                              sheet_light != "off" || !sheet_film.empty() || !sheet_coat.empty() || sheet_progress))
             throw UsageError(
-                "--sheet-models, --sheet-roughness, --sheet-labels, --sheet-light, --sheet-film and --sheet-coat need "
-                "--sheet");
+                "--sheet-models, --sheet-roughness, --sheet-labels, --sheet-light, --sheet-film, --sheet-coat and "
+                "--sheet-progress need --sheet");
         if (!sheet.empty()) check_sheet_request(sheet_request);
         if (explain_only) {
             std::cout << explain(sheet.empty() ? build_plan(scene) : build_sheet_plan(scene, sheet_request), scene);

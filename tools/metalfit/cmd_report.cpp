@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <optional>
 #include <thread>
 
 #include "colour_options.hpp"
@@ -59,7 +60,7 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     const ErrorSettings error = o.error.settings();
     const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models)};
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    TerminalProgress progress;
+    TerminalProgress progress("metalfit report: fits");
     const std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), request, jobs, progress.callback());
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
@@ -90,7 +91,11 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
             render_request.ids.push_back(fits[i].material.id);
         }
     }
+    std::optional<TerminalProgress> render_progress;
+    if (render_mode != RenderMode::off)
+        render_request.progress = render_progress.emplace("metalfit report: renders").callback();
     const SphereRenders renders = render_spheres(render_request, render_mode);
+    render_progress.reset();  // the line cleared before anything else is printed
     if (!renders.sheet && render_mode == RenderMode::auto_)
         std::cerr << "metalfit: renders skipped: " << renders.skipped << "\n";
 

@@ -6,10 +6,10 @@
 
 namespace metalfit::cli {
 
-TerminalProgress::TerminalProgress() : terminal_(isatty(STDERR_FILENO) != 0) {}
+TerminalProgress::TerminalProgress(const char* label) : label_(label), terminal_(isatty(STDERR_FILENO) != 0) {}
 
 TerminalProgress::~TerminalProgress() {
-    if (shown_) std::fprintf(stderr, "\r%*s\r", 40, "");
+    if (shown_) std::fprintf(stderr, "\r%*s\r", 60, "");
 }
 
 BatchProgress TerminalProgress::callback() {
@@ -17,7 +17,7 @@ BatchProgress TerminalProgress::callback() {
     return [this](std::size_t finished, std::size_t total) {
         if (total < 2) return;
         shown_ = true;
-        std::fprintf(stderr, "\rmetalfit fit: %zu/%zu materials", finished, total);
+        std::fprintf(stderr, "\r%s: %zu/%zu materials", label_, finished, total);
         std::fflush(stderr);
     };
 }

@@ -198,8 +198,8 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
             d.record = b.produce<Json>("sheet-record");
             d.cells = b.produce<SheetCells>("sheet-cell-labels");
         },
-        [&scene, rows, environment, prefiltered, downsampled, roughness, groups, run,
-         request_light = request.light](const Cells& d, Resources& r) {
+        [&scene, rows, environment, prefiltered, downsampled, roughness, groups, run, request_light = request.light,
+         on_row = request.on_row](const Cells& d, Resources& r) {
             GpuRenderer& gpu = run->renderer();
             environment.bind(gpu, r);
             if (prefiltered) gpu.frame().put(r.get(*prefiltered));
@@ -271,6 +271,7 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                                 "a point light beside and behind the sphere (the highlight where the normal is 60 degrees from the view)";
                     }
                 }
+                if (on_row) on_row(row + 1, all.size());
             }
         });
     add_image_file_pass(graph, "sheet.exr", cells.image, run);

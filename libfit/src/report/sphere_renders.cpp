@@ -9,6 +9,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -61,6 +63,24 @@ struct TemporaryFolder {
     TemporaryFolder& operator=(const TemporaryFolder&) = delete;
 };
 
+// Reads glpreview's stdout until it ends, passing each "sheet-progress DONE TOTAL" line on; closes `fd`.
+void relay_progress(int fd, const std::function<void(std::size_t, std::size_t)>& progress) {
+    std::string pending;
+    char buffer[512];
+    for (;;) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        pending.append(buffer, static_cast<std::size_t>(n));
+        for (std::size_t end; (end = pending.find('\n')) != std::string::npos; pending.erase(0, end + 1)) {
+            std::size_t done = 0, total = 0;
+            if (std::sscanf(pending.substr(0, end).c_str(), "sheet-progress %zu %zu", &done, &total) == 2)
+                progress(done, total);
+        }
+    }
+    ::close(fd);
+}
+
 // The sheet, or throws std::runtime_error with the reason.
 SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
     if (r.glpreview.empty() || !fs::exists(r.glpreview))
@@ -76,19 +96,31 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
                                   "--ocio-config", r.ocio.path.string()};
     if (!r.film.empty()) args.insert(args.end(), {"--sheet-film", r.film});
     if (!r.coat.empty()) args.insert(args.end(), {"--sheet-coat", r.coat});
+    if (r.progress) args.emplace_back("--sheet-progress");
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
     const std::string log = (folder.path / "glpreview.log").string();
+    // Its stdout: a pipe read for the progress lines when progress is asked for, else nowhere.
+    int progress_pipe[2] = {-1, -1};
+    if (r.progress && pipe2(progress_pipe, O_CLOEXEC) != 0) throw std::runtime_error("glpreview: no pipe for progress");
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    if (r.progress)
+        posix_spawn_file_actions_adddup2(&actions, progress_pipe[1], STDOUT_FILENO);
+    else
+        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
     posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
     pid_t pid = 0;
     const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) throw std::runtime_error("glpreview could not be started");
+    if (r.progress) ::close(progress_pipe[1]);
+    if (spawned != 0) {
+        if (r.progress) ::close(progress_pipe[0]);
+        throw std::runtime_error("glpreview could not be started");
+    }
+    if (r.progress) relay_progress(progress_pipe[0], r.progress);  // until glpreview closes its stdout
     int status = 0;
     while (waitpid(pid, &status, 0) < 0)
         if (errno != EINTR) throw std::runtime_error("glpreview: lost its process");

@@ -2,6 +2,7 @@
 // of every cell (material, model, roughness, error) with the bands it is drawn in (docs/preview.md, "The sheet").
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,8 @@ struct SheetRequest {
     bool labels = true;                  // drawn on sheet.png (sheet.exr stays the bare renders)
     bool light = false;  // one more column: roughness kSheetLightRoughness under a point light grazing the sphere
     std::string film = {}, coat = {};  // layers over every row's metal, as metalfit's --film/--coat ("" = none)
+    // Called after each row is rendered (rows done, rows in all): `--sheet-progress`, metalfit report's progress.
+    std::function<void(std::size_t, std::size_t)> on_row = {};
 };
 
 inline constexpr const char* kBestModel = "best";

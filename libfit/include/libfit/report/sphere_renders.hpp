@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,10 +48,12 @@ struct SphereRenderRequest {
     std::vector<std::string> materials;  // catalog ids, named finishes or files (as the user gave them)
     std::vector<std::string> ids;        // the id of each row's material in the records (empty: `materials`)
     std::string film, coat;              // layers over every material, as --film/--coat ("" = none)
-    std::vector<std::string> models;     // libfit model ids (the report's), one column group each
+    std::vector<std::string> models;  // libfit model ids (the report's), one column group each
     std::filesystem::path data_dir;
     OcioConfigChoice ocio;
     int cell_size = 160;  // pixels, square cells
+    // Called as glpreview finishes each row (rows done, rows in all; glpreview --sheet-progress); none: no progress.
+    std::function<void(std::size_t, std::size_t)> progress = {};
 };
 
 // glpreview in the directory of the running executable (empty when it is not there).
