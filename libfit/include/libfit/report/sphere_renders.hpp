@@ -48,7 +48,7 @@ struct SphereRenderRequest {
     std::vector<std::string> materials;  // catalog ids, named finishes or files (as the user gave them)
     std::vector<std::string> ids;        // the id of each row's material in the records (empty: `materials`)
     std::string film, coat;              // layers over every material, as --film/--coat ("" = none)
-    std::vector<std::string> models;  // libfit model ids (the report's), one column group each
+    std::vector<std::string> models;     // libfit model ids (the report's), one column group each
     std::filesystem::path data_dir;
     OcioConfigChoice ocio;
     int cell_size = 160;  // pixels, square cells
