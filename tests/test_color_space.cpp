@@ -1,5 +1,6 @@
 // OCIO colour spaces: the shipped config's transforms against matrices derived from primaries.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "test_support.hpp"
 
@@ -118,8 +119,14 @@ TEST(ColorSpace, ManyColoursAtOnceAreTheValuesOfOneAtATime) {
     }
 }
 
+// This process's own folder: ctest runs each test as a process of its own, in parallel, and two of them remove the
+// folder when they are done.
+std::filesystem::path temp_config_dir() {
+    return std::filesystem::temp_directory_path() / ("metalfit-test-ocio-" + std::to_string(::getpid()));
+}
+
 std::filesystem::path write_temp_config(const std::string& name, const std::string& text) {
-    const auto dir = std::filesystem::temp_directory_path() / "metalfit-test-ocio";
+    const auto dir = temp_config_dir();
     std::filesystem::create_directories(dir);
     const auto path = dir / name;
     std::ofstream(path) << text;
@@ -156,7 +163,7 @@ TEST(ColorSpace, ConfigurationProblemsNameTheConfig) {
     const std::string scene = "  scene_linear: Linear Rec.709 (sRGB)\n";
     no_scene_linear.erase(no_scene_linear.find(scene), scene.size());
     expect_config_error({write_temp_config("no-scene-linear.ocio", no_scene_linear), "test"}, "", "scene_linear");
-    std::filesystem::remove_all(std::filesystem::temp_directory_path() / "metalfit-test-ocio");
+    std::filesystem::remove_all(temp_config_dir());
 }
 
 TEST(ColorSpace, EnvironmentVariableWinsOverCommandLineOverDefault) {
@@ -207,7 +214,7 @@ TEST(DisplayTransform, TheDisplaysEncodingIsMeasuredThroughOcio) {
         DisplayTransform::create({write_temp_config("no-role.ocio", no_role), "test"}).encoding();
     EXPECT_EQ(unmeasured.kind, DisplayEncoding::Kind::other);
     EXPECT_NE(unmeasured.why.find("cie_xyz_d65_interchange"), std::string::npos) << unmeasured.why;
-    std::filesystem::remove_all(std::filesystem::temp_directory_path() / "metalfit-test-ocio");
+    std::filesystem::remove_all(temp_config_dir());
 }
 
 }  // namespace
