@@ -50,6 +50,10 @@ TEST(PreviewLayers, TheStacksLimitsAreTheBareMetal) {
     const SphereFresnel& filmed = library().get(titanium("TiO2:60nm"), "spheres[0]");
     EXPECT_GT(largest_difference(filmed, bare), 0.05) << "a 60 nm oxide colours titanium";
     EXPECT_EQ(filmed.stack, "titanium under a TiO2 (Siefke) film of 60 nm");
+    EXPECT_EQ(filmed.material, "titanium + TiO2 60 nm");  // what the sheet's labels and metrics.json call it
+    EXPECT_EQ(bare.material, "titanium");
+    EXPECT_EQ(library().get(titanium("2.2:120nm", "1.5"), "spheres[0]").material,
+              "titanium + n = 2.2 120 nm + coat n = 1.5");
     // Blue at normal incidence: the first-order interference of ~60 nm TiO2 removes the red and green.
     EXPECT_GT(filmed(1.0).b, filmed(1.0).r);
     const SphereFresnel& coated = library().get(titanium("", "1.5"), "spheres[0]");
@@ -62,6 +66,7 @@ TEST(PreviewLayers, AFinishIsItsMetalWithItsLayers) {
     const SphereFresnel& named = library().get(finish, "spheres[0]");
     EXPECT_LT(largest_difference(named, library().get(titanium("TiO2:80nm"), "spheres[0]")), 1e-12);
     EXPECT_TRUE(test::Contains(named.stack, "anodized titanium, 80 nm"));
+    EXPECT_EQ(named.material, "anodized titanium, 80 nm");
     // A finish already has layers: more are refused, naming the key.
     finish.film = "TiO2:20nm";
     try {

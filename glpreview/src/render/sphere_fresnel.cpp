@@ -73,7 +73,7 @@ std::string cache_key(const std::string& material, const std::string& source, co
 std::unique_ptr<SphereFresnel> FresnelLibrary::model_fresnel(const Material& material, const ModelResult& r,
                                                              ParameterSource params, const std::string& field) const {
     auto result = std::make_unique<SphereFresnel>();
-    result->material = material.name;
+    result->material = short_stack_name(material);  // the metal's name when bare
     result->source = material.source;
     result->fresnel = std::string(r.model->id());
     result->model = r.model;
@@ -127,7 +127,7 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
     std::unique_ptr<SphereFresnel> result;
     if (shows_reference(sphere)) {
         result = std::make_unique<SphereFresnel>();
-        result->material = material.name;
+        result->material = short_stack_name(material);  // the metal's name when bare
         result->source = material.source;
         result->fresnel = "reference";
         const ReferenceCurve curve(material, colorimetry_, converter_, spectral);

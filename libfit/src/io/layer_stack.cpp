@@ -42,6 +42,17 @@ std::string describe_stack(const Material& metal) {
     return text;
 }
 
+std::string short_stack_name(const Material& metal) {
+    if (!metal.layers || metal.layers->empty()) return metal.name;
+    const LayerStack& s = *metal.layers;
+    if (s.finish) return s.finish->name;
+    const auto short_name = [](const LayerMaterial& m) { return m.source == "constant" ? m.name : m.id; };
+    std::string text = metal.name;
+    if (s.film) text += " + " + short_name(s.film->material) + " " + number(s.film->thickness_nm) + " nm";
+    if (s.coat) text += " + coat " + short_name(s.coat->material);
+    return text;
+}
+
 namespace {
 
 nlohmann::ordered_json layer_material_record(const LayerMaterial& m, const std::filesystem::path& data_dir) {

@@ -24,7 +24,7 @@ namespace metalfit::glpreview {
 inline constexpr int kReferenceLutSize = 256;
 
 struct SphereFresnel {
-    std::string material;  // "gold"
+    std::string material;  // "gold"; a layered one's short_stack_name ("titanium + TiO2 60 nm")
     std::string source;    // "Johnson"
     std::string
         stack;  // the layers over the metal, described ("titanium under a TiO2 (Siefke) film of 60 nm"); "" when bare

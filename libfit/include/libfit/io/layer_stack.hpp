@@ -51,6 +51,9 @@ std::string describe(const ClearCoat& coat);
 // "gold under a coat n = 1.5 over a TiO2 (Siefke) film of 80 nm": the whole stack, top down, or the name alone; a
 // named finish's name first ("anodized titanium, 80 nm: titanium under a TiO2 (Siefke) film of 80 nm").
 std::string describe_stack(const Material& metal);
+// The stack's name for a label ("anodized titanium, 80 nm" for a named finish; "titanium + TiO2 60 nm + coat n = 1.5"
+// for layers given; the metal's name when bare): short enough for an image's caption.
+std::string short_stack_name(const Material& metal);
 
 // The provenance of the layers over `metal` (schemas/common.schema.json, "stack"): the description, and per layer its
 // material (id, name, source, file, sha256, reference, data_type) and thickness, and the finish's id and name when
