@@ -61,6 +61,16 @@ FresnelLibrary::FresnelLibrary(const std::filesystem::path& data_dir, const Ocio
 
 namespace {
 
+// A sphere's Fresnel data named after its material: the metal's name (a layered one's short stack name), its source,
+// and the whole stack described when it has layers.
+std::unique_ptr<SphereFresnel> named_after(const Material& material) {
+    auto result = std::make_unique<SphereFresnel>();
+    result->material = short_stack_name(material);
+    result->source = material.source;
+    if (material.layers && !material.layers->empty()) result->stack = describe_stack(material);
+    return result;
+}
+
 std::string cache_key(const std::string& material, const std::string& source, const FresnelChoice& fresnel,
                       const std::string& film = "", const std::string& coat = "") {
     const auto* model = std::get_if<ModelFresnel>(&fresnel);
@@ -72,9 +82,7 @@ std::string cache_key(const std::string& material, const std::string& source, co
 
 std::unique_ptr<SphereFresnel> FresnelLibrary::model_fresnel(const Material& material, const ModelResult& r,
                                                              ParameterSource params, const std::string& field) const {
-    auto result = std::make_unique<SphereFresnel>();
-    result->material = short_stack_name(material);  // the metal's name when bare
-    result->source = material.source;
+    std::unique_ptr<SphereFresnel> result = named_after(material);
     result->fresnel = std::string(r.model->id());
     result->model = r.model;
     result->params = params;
@@ -126,9 +134,7 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
     const SpectralOptions spectral{};
     std::unique_ptr<SphereFresnel> result;
     if (shows_reference(sphere)) {
-        result = std::make_unique<SphereFresnel>();
-        result->material = short_stack_name(material);  // the metal's name when bare
-        result->source = material.source;
+        result = named_after(material);
         result->fresnel = "reference";
         const ReferenceCurve curve(material, colorimetry_, converter_, spectral);
         for (int i = 0; i < kReferenceLutSize; ++i) result->lut.push_back(curve(i / double(kReferenceLutSize - 1)));
@@ -145,7 +151,6 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
         result = model_fresnel(material, fit_material(material, colorimetry_, converter_, request).models.front(),
                                chosen.parameters, field);
     }
-    if (material.layers && !material.layers->empty()) result->stack = describe_stack(material);
     return *cache_.emplace(key, std::move(result)).first->second;
 }
 
@@ -158,22 +163,21 @@ void FresnelLibrary::put_layers(Material& material, const Sphere& sphere, const 
                          material.id + " is a named finish with layers of its own: give its metal with film and coat, "
                                        "or the finish alone");
     if (!films_) films_ = FilmCatalog::load(catalog_.data_dir());
-    LayerStack stack;
     // Each layer loaded and checked on its own, so that an error names its key.
-    for (auto [key, text] : {std::pair{".film", &sphere.film}, std::pair{".coat", &sphere.coat}}) {
-        if (text->empty()) continue;
+    const auto checked = [&](const std::string& key, const auto& load) {
         try {
-            LayerStack one =
-                key == std::string(".film") ? load_layers(*films_, *text, "") : load_layers(*films_, "", *text);
+            LayerStack one = load();
             require_layer_coverage(one, kVisibleRange, spectral);
-            if (one.film) stack.film = std::move(one.film);
-            if (one.coat) stack.coat = std::move(one.coat);
+            return one;
         } catch (const UsageError& e) {
             throw InputError(InputLocation(scene_file_, 0, field + key), e.what());
         } catch (const InputError& e) {
             throw InputError(InputLocation(scene_file_, 0, field + key), e.what());
         }
-    }
+    };
+    LayerStack stack;
+    if (!sphere.film.empty()) stack.film = checked(".film", [&] { return load_layers(*films_, sphere.film, ""); }).film;
+    if (!sphere.coat.empty()) stack.coat = checked(".coat", [&] { return load_layers(*films_, "", sphere.coat); }).coat;
     const std::vector<std::string> warnings = layer_warnings(stack);
     material.warnings.insert(material.warnings.end(), warnings.begin(), warnings.end());
     material.layers = std::make_shared<const LayerStack>(std::move(stack));
@@ -188,12 +192,10 @@ std::string FresnelLibrary::best_model(const Sphere& sphere, const std::string& 
     double best_error = std::numeric_limits<double>::infinity();
     for (const ModelResult& r : fit.models) {
         // Every model's fit is kept, so that get() of the winner does not fit it again.
-        std::unique_ptr<SphereFresnel> fitted = model_fresnel(material, r, ParameterSource::fit, field);
-        if (material.layers && !material.layers->empty()) fitted->stack = describe_stack(material);
         cache_.try_emplace(cache_key(sphere.material, sphere.source,
                                      ModelFresnel{std::string(r.model->id()), ParameterSource::fit}, sphere.film,
                                      sphere.coat),
-                           std::move(fitted));
+                           model_fresnel(material, r, ParameterSource::fit, field));
         const double e = worst_channel(r.fit.value.metrics.rel_rms);
         if (e < best_error) {
             best_error = e;
