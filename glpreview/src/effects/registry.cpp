@@ -10,6 +10,7 @@
 #include "fresnel/fresnel_effect.hpp"
 #include "glossy_localized/glossy_localized_effect.hpp"
 #include "glossy_prefiltered/glossy_prefiltered_effect.hpp"
+#include "interreflections/interreflections_effect.hpp"
 #include "lights/lights_effect.hpp"
 #include "localization_diagnostics/localization_diagnostics_effect.hpp"
 #include "metrics/metrics_effect.hpp"
@@ -20,13 +21,14 @@
 namespace metalfit::glpreview {
 
 std::span<const Effect* const> all_effects() {
-    static const std::array<const Effect*, 11> effects{
+    static const std::array<const Effect*, 12> effects{
         &lights_effect(),  // first: the capture of the environment reads its shadow maps
         &environment_effect(),
         &reflection_effect(),
         &fresnel_effect(),
         &glossy_prefiltered_effect(),
         &glossy_localized_effect(),
+        &interreflections_effect(),  // after every frame input its maps' sphere draws read
         &reference_effect(),
         &localization_diagnostics_effect(),  // after the lobes: the localization frame replaces every lobe
         &fit_error_effect(),                 // after the reference: its error view reads it

@@ -1,0 +1,19 @@
+// How many times light may bounce between the scene's reflective spheres before it reaches the camera (the scene
+// key `max_bounces`, docs/scene.md): 1 (the default) is a sphere reflecting the environment alone, as before; k > 1
+// lets a reflected ray hit another sphere and reflect again, up to k reflections along the path.
+#pragma once
+
+#include "glpreview/scene/scene.hpp"
+
+namespace metalfit::glpreview {
+
+inline constexpr int kMaxBounces = 8;
+
+struct Interreflections {
+    int max_bounces = 1;
+};
+
+// The scene's max_bounces (1 when the scene does not give it).
+int max_bounces(const Scene& scene);
+
+}  // namespace metalfit::glpreview
