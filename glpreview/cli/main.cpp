@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "glpreview/effects/interreflections_bench.hpp"
 #include "glpreview/effects/lights_bench.hpp"
 #include "glpreview/gl/gl_context.hpp"
 #include "glpreview/io/image_io.hpp"
@@ -135,7 +136,7 @@ int run_glpreview(int argc, char** argv) {
     app.add_flag("--batch", batch,
                  "Render every scene given, each into OUTPUT/<scene file's stem>/, in one process and one GL context");
     bool bench_shader_cost = false, bench_localization_cost = false, bench_glossy_cost = false,
-         bench_lights_cost = false, quick = false, json = false;
+         bench_lights_cost = false, bench_interreflections_cost = false, quick = false, json = false;
     app.add_flag(
         "--bench-shaders", bench_shader_cost,
         "Benchmark: full-screen 1024² pass per libfit model, ratio to the exact conductor-rgb pass (JSON with --json)");
@@ -150,6 +151,10 @@ int run_glpreview(int argc, char** argv) {
         "--bench-lights", bench_lights_cost,
         "Benchmark: a rough sphere's frame with 0, 1 and 4 point lights and one light's shadow pass, as ratios to the "
         "mirror frame (a Markdown table; JSON with --json)");
+    app.add_flag(
+        "--bench-interreflections", bench_interreflections_cost,
+        "Benchmark: four mirror spheres' frame at max_bounces 1-4 and the making of one sphere's distance map, as "
+        "ratios to the one-bounce frame (a Markdown table; JSON with --json)");
     app.add_flag("--quick", quick, "Benchmarks: fewer frames, smaller images");
     app.add_flag("--json", json, "Benchmarks: print JSON");
     app.add_option("-o,--output", output_dir, "Output folder (default: preview/)");
@@ -240,6 +245,28 @@ int run_glpreview(int argc, char** argv) {
                         result["light_pass_per_light"]["ratio_noise"].get<double>(),
                         result["shadow_pass_per_light"]["ratio_to_mirror_frame"].get<double>(),
                         result["shadow_pass_per_light"]["ratio_noise"].get<double>());
+            return ok;
+        }
+        if (bench_interreflections_cost) {
+            GlContext context = GlContext::create();
+            const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
+            const auto result = bench_interreflections(context, options, quick);
+            if (json) {
+                std::cout << result.dump(2) << "\n";
+                return ok;
+            }
+            std::printf(
+                "renderer %s; %dx%d, maps %d², %d interleaved rounds\n\n| variant | ms | ratio to the one-bounce "
+                "frame |\n|---|---:|---:|\n",
+                result["renderer"].get<std::string>().c_str(), result["size"][0].get<int>(),
+                result["size"][1].get<int>(), result["map_size"].get<int>(), result["rounds"].get<int>());
+            for (const auto& r : result["rows"])
+                std::printf("| %s | %.3f | %.2f ± %.2f |\n", r["variant"].get<std::string>().c_str(),
+                            r["ms"].get<double>(), r["ratio_to_one_bounce_frame"].get<double>(),
+                            r["ratio_noise"].get<double>());
+            const auto& update = result["map_update_per_sphere"];
+            std::printf("| making one sphere's map (6 faces) | %.3f | %.2f ± %.2f |\n", update["ms"].get<double>(),
+                        update["ratio_to_one_bounce_frame"].get<double>(), update["ratio_noise"].get<double>());
             return ok;
         }
         if (bench_glossy_cost) {

@@ -14,6 +14,8 @@ vec3 mirror_radiance(vec3 p, vec3 R, float mu) {
 #endif
 #if defined(ENV_EQUIRECT)
     vec3 L = environment_trace(p, R).rgb;  // at infinity: the direction alone
+#elif defined(MIRROR_REFLECTED)
+    vec3 L = MIRROR_REFLECTED(p, R);  // an effect follows the reflected ray further (inter-reflections)
 #else
     vec3 L = textureLod(u_env, reflection_lookup(p - u_reference, R), 0.0).rgb;
 #endif
@@ -36,6 +38,6 @@ void main() {
 #if defined(SPHERE_ADDED_RADIANCE)
     radiance += SPHERE_ADDED_RADIANCE;
 #endif
-    out_color = vec4(radiance, 1.0);
+    out_color = vec4(radiance, t);  // a: the distance along the ray (a sphere drawn into another one's distance map)
     gl_FragDepth = t / (t + 1.0);
 }

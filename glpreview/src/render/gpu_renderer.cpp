@@ -56,13 +56,20 @@ std::vector<std::string> GpuRenderer::compiled_variants() const {
     return keys;
 }
 
-void GpuRenderer::set_camera_uniforms(GLuint p) const {
-    const CameraBasis basis = camera_basis(scene_.camera, scene_.width, scene_.height);
+namespace {
+
+void set_view_uniforms(GLuint p, const CameraBasis& basis, int width, int height) {
     set_uniform(p, "u_camera_position", basis.position);
     set_uniform(p, "u_camera_forward", basis.forward);
     set_uniform(p, "u_camera_right", basis.right);
     set_uniform(p, "u_camera_up", basis.up);
-    glProgramUniform2f(p, glGetUniformLocation(p, "u_viewport"), float(scene_.width), float(scene_.height));
+    glProgramUniform2f(p, glGetUniformLocation(p, "u_viewport"), float(width), float(height));
+}
+
+}  // namespace
+
+void GpuRenderer::set_camera_uniforms(GLuint p) const {
+    set_view_uniforms(p, camera_basis(scene_.camera, scene_.width, scene_.height), scene_.width, scene_.height);
 }
 
 void GpuRenderer::bind_environment(const BuiltProgram& program) {
@@ -99,19 +106,36 @@ void GpuRenderer::draw_frame(bool diagnostics) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    for (std::size_t i = 0; i < scene_.spheres.size(); ++i) {
-        const Sphere& sphere = scene_.spheres[i];
-        const SphereFresnel& fresnel = *fresnel_[i];
-        const BuiltProgram& p = program(sphere_shader(scene_, sphere, &fresnel, diagnostics));
-        set_uniform(p.id(), "u_sphere_center", sphere.center);
-        set_uniform(p.id(), "u_sphere_radius", static_cast<float>(sphere.radius));
-        bind_environment(p);
-        const SphereDraw draw{scene_, sphere, fresnel, p, *this};
-        for (const Effect* effect : all_effects()) effect->bind_sphere(draw);
-        glUseProgram(p.id());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-    }
+    for (std::size_t i = 0; i < scene_.spheres.size(); ++i) draw_sphere(i, diagnostics);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+const BuiltProgram& GpuRenderer::draw_sphere(std::size_t i, bool diagnostics) {
+    const Sphere& sphere = scene_.spheres[i];
+    const SphereFresnel& fresnel = *fresnel_[i];
+    const BuiltProgram& p = program(sphere_shader(scene_, sphere, &fresnel, diagnostics));
+    set_uniform(p.id(), "u_sphere_center", sphere.center);
+    set_uniform(p.id(), "u_sphere_radius", static_cast<float>(sphere.radius));
+    bind_environment(p);
+    const SphereDraw draw{scene_, sphere, fresnel, p, *this};
+    for (const Effect* effect : all_effects()) effect->bind_sphere(draw);
+    glUseProgram(p.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return p;
+}
+
+void GpuRenderer::draw_spheres(const CameraBasis& view, int width, int height, std::span<const std::size_t> which) {
+    glBindVertexArray(vao_.id());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    for (const std::size_t i : which) {
+        const Sphere& sphere = scene_.spheres.at(i);
+        const GLuint id = program(sphere_shader(scene_, sphere, fresnel_[i], false)).id();
+        set_view_uniforms(id, view, width, height);
+        draw_sphere(i, false);
+        set_camera_uniforms(id);
+    }
 }
 
 Image GpuRenderer::render() {

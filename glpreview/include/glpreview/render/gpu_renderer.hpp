@@ -22,6 +22,7 @@
 #include "glpreview/render/shader_builder.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
 #include "glpreview/render/sphere_shader.hpp"
+#include "glpreview/scene/camera.hpp"
 #include "glpreview/scene/scene.hpp"
 
 namespace metalfit::glpreview {
@@ -75,15 +76,24 @@ public:
     GLuint vertex_array() const { return vao_.id(); }
     const Scene& scene() const { return scene_; }
     const Features& features() const { return features_; }
+    // The environment's textures and what every effect binds for a program that reads the environment (the
+    // capture, the background, the spheres; an effect's own capture of the room).
+    void bind_environment(const BuiltProgram& program);
+    // The spheres `which`, as seen from `view` on a width × height viewport, into the bound framebuffer with the
+    // depth test on (each sphere writes its ray distance into alpha and t/(t+1) into depth): what an effect's
+    // per-object map holds. The programs get the scene's camera back afterwards.
+    void draw_spheres(const CameraBasis& view, int width, int height, std::span<const std::size_t> which);
+    // Sphere i's Fresnel in the frames drawn now.
+    const SphereFresnel& fresnel(std::size_t sphere) const { return *fresnel_.at(sphere); }
     // The programs linked so far, by their builder's key, for --explain and tests.
     std::vector<std::string> compiled_variants() const;
 
 private:
     EnvironmentCube::Descriptor cube_descriptor() const;
     void set_camera_uniforms(GLuint program) const;
-    // The environment's textures and what every effect binds for a program that reads the environment.
-    void bind_environment(const BuiltProgram& program);
     void draw_frame(bool diagnostics = false);
+    // Sphere i's draw with its program (the caller sets the camera uniforms when not the scene's).
+    const BuiltProgram& draw_sphere(std::size_t i, bool diagnostics);
     Image read_frame() const;
 
     const Scene& scene_;

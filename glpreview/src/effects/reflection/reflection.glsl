@@ -26,8 +26,17 @@ vec3 reflection_lookup(vec3 x, vec3 R) {
 // g_distance_lookups: every distance read of this pixel's search (read by the probe: the same work per strategy).
 int g_iterations_taken = 0;
 int g_distance_lookups = 0;
+#if defined(IMPOSTOR_LAYERS)
+// IMPOSTOR_LAYERS: the search may run in a layer of a cube-map array instead (an effect's per-object distance maps,
+// e.g. the inter-reflections'): g_impostor_layer ≥ 0 selects it, −1 (the default) reads u_env.
+uniform samplerCubeArray u_impostor_layers;
+int g_impostor_layer = -1;
+#endif
 float env_distance(vec3 direction) {
     ++g_distance_lookups;
+#if defined(IMPOSTOR_LAYERS)
+    if (g_impostor_layer >= 0) return textureLod(u_impostor_layers, vec4(direction, float(g_impostor_layer)), 0.0).a;
+#endif
     return textureLod(u_env, direction, 0.0).a;
 }
 // ρ(p) = |p| / D(p/|p|): < 1 undershoot (in front of the environment), > 1 overshoot.

@@ -1,0 +1,42 @@
+// The per-sphere distance maps of inter-reflections (Umenhoffer, Patow and Szirmay-Kalos, "Robust Multiple Specular
+// Reflections and Refractions", GPU Gems 3 ch. 17, 2007: distance maps holding colour, distance and normal, searched
+// with the root finders of Szirmay-Kalos et al., "Approximate Ray-Tracing on the GPU with Distance Impostors",
+// 2005): one layer per mapped sphere, taken from its centre, holding what the sphere sees: the room and rough
+// spheres as the radiance they send to the centre, mirror spheres as their distance, normal and index, so that a
+// reflected ray reaching one reflects again there (bounce.glsl). A static scene makes them once.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "bounce_plan.hpp"
+#include "glpreview/gl/objects.hpp"
+#include "glpreview/render/gpu_renderer.hpp"
+#include "glpreview/scene/camera.hpp"
+
+namespace metalfit::glpreview {
+
+struct BounceMaps {
+    gl::Texture radiance;  // cube-map array, RGBA32F: rgb the radiance seen from the centre, a: the distance to it
+    gl::Texture hits;  // cube-map array, RGBA32F: xyz the normal of the mirror sphere seen, w: its index + 1 (0: none)
+    gl::Texture spheres;        // 2D, one texel per sphere, RGBA32F: its centre, w: its layer (−1: no map)
+    int size = 0;               // texels per face edge
+    std::vector<int> layer_of;  // by sphere: its layer, −1 for none
+};
+
+// The maps' edge: the environment's cube size, at most 256 (a layer of both arrays is 6 · size² · 32 bytes).
+int bounce_map_size(const Scene& scene);
+
+// The plan's maps. Needs the environment and what the rough spheres' programs read bound on the renderer.
+BounceMaps render_bounce_maps(GpuRenderer& renderer, const BouncePlan& plan);
+
+// Every sphere's Fresnel in the renderer's frames now (its reference LUT or its model, as GpuRenderer::fresnel),
+// one row each over μ ∈ [0, 1] in kBounceFresnelTexels columns, RGB32F, linear: what a bounce multiplies.
+inline constexpr int kBounceFresnelTexels = 256;
+gl::Texture bounce_fresnel_table(const GpuRenderer& renderer);
+
+// The camera of cube face `face` (0..5: +X, −X, +Y, −Y, +Z, −Z) seen from `center`: a sphere draw with it fills the
+// face's texels as the capture's cube_direction() orders them.
+CameraBasis cube_face_view(Vec3 center, int face);
+
+}  // namespace metalfit::glpreview
