@@ -274,6 +274,18 @@ TEST(PreviewCli, TheLightsBenchmarkPrintsItsRatiosToTheMirrorFrame) {
     EXPECT_GT(lights["shadow_pass_per_light"]["ratio_to_mirror_frame"].get<double>(), 0.0);
 }
 
+TEST(PreviewCli, TheBouncesBenchmarkPrintsTheCompoundingTableOnTheCpu) {
+    TempDir dir;
+    const CommandRun run = glpreview("--bench-bounces --quick", dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_TRUE(Contains(run.out, "| bounce order | RMSE, all |"));
+    for (const Model* model : all_models())
+        EXPECT_TRUE(Contains(run.out, "| " + std::string(model->id()) + " | fit | 4 |")) << model->id();
+    const CommandRun json = glpreview("--bench-bounces --quick --json", dir);
+    ASSERT_EQ(json.exit_code, 0) << json.err;
+    EXPECT_EQ(nlohmann::json::parse(json.out)["orders"], 4);
+}
+
 // A one-sphere scene under the shipped equirect sky (a user's HDRI): the sheet renders under it.
 fs::path write_equirect_sheet_scene(const TempDir& dir) {
     return dir.write("sky-sheet.json", R"({"image": {"width": 48, "height": 48},

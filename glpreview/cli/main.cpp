@@ -16,6 +16,7 @@
 #include "glpreview/effects/lights_bench.hpp"
 #include "glpreview/gl/gl_context.hpp"
 #include "glpreview/io/image_io.hpp"
+#include "glpreview/render/bounces_bench.hpp"
 #include "glpreview/render/gpu_bench.hpp"
 #include "glpreview/render/plan.hpp"
 #include "glpreview/render/preview.hpp"
@@ -119,6 +120,35 @@ void print_before_commit(const metalfit::glpreview::PreviewResult& result) {
     metalfit::flush_standard_output();  // cout and the printf lines (stdio) both
 }
 
+// The compounding table of --bench-bounces as Markdown.
+void print_bounces_table(const nlohmann::ordered_json& result) {
+    std::printf("%s; %dx%d, CPU. All: every sphere pixel; k-bounce paths: the pixels whose mirror path reaches "
+                "bounce k\n\n",
+                result["scene"].get<std::string>().c_str(), result["size"][0].get<int>(), result["size"][1].get<int>());
+    std::printf("RGB reference vs spectral reference (the RGB rendering's own error):\n\n"
+                "| bounce order | RMSE, all | dE2000 mean, all | dE2000 p95, all | k-bounce pixels | dE2000 mean, "
+                "k-bounce | dE2000 p95, k-bounce |\n|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const auto& r : result["rgb_vs_spectral"])
+        std::printf("| %d | %.2e | %.3f | %.3f | %zu | %.3f | %.3f |\n", r["order"].get<int>(), r["rmse"].get<double>(),
+                    r["de2000_mean"].get<double>(), r["de2000_p95"].get<double>(),
+                    r["reaching"]["pixels"].get<std::size_t>(), r["reaching"]["de2000_mean"].get<double>(),
+                    r["reaching"]["de2000_p95"].get<double>());
+    std::printf("\nEach model against the RGB reference (reference LUTs along the same paths), and against the "
+                "spectral one:\n\n| model | params | k | RMSE, all | dE2000 mean, all | dE2000 p95, all | "
+                "dE2000 mean, k-bounce | dE2000 p95, k-bounce | dE2000 p95 vs spectral, k-bounce |\n"
+                "|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const auto& r : result["rows"])
+        std::printf("| %s | %s | %d | %.2e | %.3f | %.3f | %.3f | %.3f | %.3f |\n",
+                    r["model"].get<std::string>().c_str(), r["params"].get<std::string>().c_str(),
+                    r["order"].get<int>(), r["rmse"].get<double>(), r["de2000_mean"].get<double>(),
+                    r["de2000_p95"].get<double>(), r["reaching"]["de2000_mean"].get<double>(),
+                    r["reaching"]["de2000_p95"].get<double>(), r["reaching_vs_spectral"]["de2000_p95"].get<double>());
+    for (const auto& s : result["skipped"])
+        std::printf("\nskipped %s (%s): %s", s["model"].get<std::string>().c_str(),
+                    s["params"].get<std::string>().c_str(), s["why"].get<std::string>().c_str());
+    if (!result["skipped"].empty()) std::printf("\n");
+}
+
 int run_glpreview(int argc, char** argv) {
     using namespace metalfit;
     using namespace metalfit::glpreview;
@@ -136,7 +166,8 @@ int run_glpreview(int argc, char** argv) {
     app.add_flag("--batch", batch,
                  "Render every scene given, each into OUTPUT/<scene file's stem>/, in one process and one GL context");
     bool bench_shader_cost = false, bench_localization_cost = false, bench_glossy_cost = false,
-         bench_lights_cost = false, bench_interreflections_cost = false, quick = false, json = false;
+         bench_lights_cost = false, bench_interreflections_cost = false, bench_bounces_cost = false, quick = false,
+         json = false;
     app.add_flag(
         "--bench-shaders", bench_shader_cost,
         "Benchmark: full-screen 1024² pass per libfit model, ratio to the exact conductor-rgb pass (JSON with --json)");
@@ -155,6 +186,11 @@ int run_glpreview(int argc, char** argv) {
         "--bench-interreflections", bench_interreflections_cost,
         "Benchmark: four mirror spheres' frame at max_bounces 1-4 and the making of one sphere's distance map, as "
         "ratios to the one-bounce frame (a Markdown table; JSON with --json)");
+    app.add_flag(
+        "--bench-bounces", bench_bounces_cost,
+        "Benchmark (CPU only): gold, copper, silver and aluminium mirrors reflecting each other, bounce orders 1-4, "
+        "every model's image RMSE and dE2000 against the RGB reference and the RGB-vs-spectral error (a Markdown "
+        "table; JSON with --json)");
     app.add_flag("--quick", quick, "Benchmarks: fewer frames, smaller images");
     app.add_flag("--json", json, "Benchmarks: print JSON");
     app.add_option("-o,--output", output_dir, "Output folder (default: preview/)");
@@ -224,6 +260,16 @@ int run_glpreview(int argc, char** argv) {
         return code == 0 ? ok : usage;
     }
     try {
+        if (bench_bounces_cost) {
+            const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
+            const auto result = bench_bounces(options, quick);
+            if (json) {
+                std::cout << result.dump(2) << "\n";
+                return ok;
+            }
+            print_bounces_table(result);
+            return ok;
+        }
         if (bench_lights_cost) {
             GlContext context = GlContext::create();
             const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
@@ -326,7 +372,8 @@ int run_glpreview(int argc, char** argv) {
         }
         if (scene_files.empty())
             throw UsageError(
-                "a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy / --bench-lights)");
+                "a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy / --bench-lights / "
+                "--bench-bounces)");
         if (scene_files.size() > 1 && !batch) throw UsageError("several scene files need --batch");
         if (batch && (!sheet.empty() || explain_only || !capture_probe_size.empty()))
             throw UsageError("--batch renders scenes: --sheet, --explain and --capture-probe take one scene");

@@ -2,34 +2,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
+#include "glpreview/render/mirror_path.hpp"
+#include "glpreview/render/sphere_intersection.hpp"
 #include "glpreview/render/worker_threads.hpp"
 #include "glpreview/scene/camera.hpp"
 
 namespace metalfit::glpreview {
 
 ReferenceRender render_reference(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel,
-                                 const EnvironmentTracer& environment, int threads, const CpuLighting* lighting) {
+                                 const EnvironmentTracer& environment, int threads, const CpuLighting* lighting,
+                                 int max_bounces) {
     const int w = scene.width, h = scene.height;
     ReferenceRender out{Image(w, h), std::vector<int>(static_cast<std::size_t>(w) * h, -1)};
     const CameraBasis basis = camera_basis(scene.camera, w, h);
+    if (max_bounces < 1 || max_bounces > kMaxPathBounces)
+        throw std::invalid_argument("render_reference: max_bounces " + std::to_string(max_bounces) + " outside 1-" +
+                                    std::to_string(kMaxPathBounces));
     for_each_pixel(w, h, threads, [&](int px, int py, int row) {
         const Vec3 d = camera_ray(basis, px, py, w, h);
-        int nearest = -1;
-        double t_nearest = std::numeric_limits<double>::infinity();
-        for (std::size_t s = 0; s < scene.spheres.size(); ++s) {
-            const Sphere& sphere = scene.spheres[s];
-            const Vec3 oc = basis.position - sphere.center;
-            const double b = dot(oc, d);
-            const double disc = b * b - (dot(oc, oc) - sphere.radius * sphere.radius);
-            if (disc < 0) continue;
-            const double t = -b - std::sqrt(disc);
-            if (t > 0 && t < t_nearest) {
-                t_nearest = t;
-                nearest = static_cast<int>(s);
-            }
-        }
+        const SphereHit hit = nearest_sphere(scene.spheres, basis.position, d);
         // An emitter an effect puts in the room (a sphere light) is seen before the environment.
         const auto seen = [&](Vec3 origin, Vec3 direction) {
             if (lighting && lighting->emitter)
@@ -37,19 +32,19 @@ ReferenceRender render_reference(const Scene& scene, const std::vector<const Sph
             return environment.trace(origin, direction).radiance;
         };
         RGB radiance;
-        if (nearest < 0) {
+        if (hit.sphere < 0) {
             radiance = seen(basis.position, d);
         } else {
-            const Sphere& sphere = scene.spheres[static_cast<std::size_t>(nearest)];
-            const Vec3 p = basis.position + t_nearest * d;
-            const Vec3 n = (1.0 / sphere.radius) * (p - sphere.center);
-            const double mu = std::clamp(-dot(d, n), 0.0, 1.0);
-            const Vec3 r = normalize(reflect(d, n));
-            const RGB f = (*fresnel[static_cast<std::size_t>(nearest)])(mu);
-            radiance = f * seen(p, r);
+            const MirrorPath path = mirror_path(scene.spheres, basis.position, d, hit, max_bounces);
+            RGB throughput = (*fresnel[static_cast<std::size_t>(path.bounces[0].sphere)])(path.bounces[0].mu);
+            for (int k = 1; k < path.count; ++k) {
+                const MirrorBounce& b = path.bounces[static_cast<std::size_t>(k)];
+                throughput = throughput * (*fresnel[static_cast<std::size_t>(b.sphere)])(b.mu);
+            }
+            radiance = throughput * seen(path.origin, path.direction);
         }
         out.image.set(px, row, radiance);
-        out.sphere_id[static_cast<std::size_t>(row) * w + px] = nearest;
+        out.sphere_id[static_cast<std::size_t>(row) * w + px] = hit.sphere;
     });
     return out;
 }

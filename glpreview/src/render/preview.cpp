@@ -1,7 +1,9 @@
 #include "glpreview/render/preview.hpp"
 
 #include <cmath>
+#include <memory>
 
+#include "effects/interreflections/bounces.hpp"
 #include "glpreview/render/error_view.hpp"
 #include "glpreview/render/exr_metadata.hpp"
 #include "glpreview/render/preview_passes.hpp"
@@ -20,12 +22,19 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     run.exr_colour = ExrColour{chromaticities_of(library.converter()), library.converter().space()};
     for (std::size_t i = 0; i < scene.spheres.size(); ++i)
         run.fresnel.push_back(&library.get(scene.spheres[i], "spheres[" + std::to_string(i) + "]"));
-    if (plan_features(scene).fit_error || scene.outputs.rim) {
+    const bool bounces = max_bounces(scene) > 1;
+    if (plan_features(scene).fit_error || scene.outputs.rim || bounces) {
         for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
             Sphere exact = scene.spheres[i];
             exact.fresnel = ReferenceFresnel{};
             run.reference_fresnel.push_back(&library.get(exact, "spheres[" + std::to_string(i) + "]"));
         }
+    }
+    if (bounces) {  // the spectral reference of the bounce orders (render/bounce_orders.hpp)
+        for (std::size_t i = 0; i < scene.spheres.size(); ++i)
+            run.spectral.push_back(std::make_shared<const SpectralFresnel>(
+                library.material(scene.spheres[i], "spheres[" + std::to_string(i) + "]"), library.colorimetry()));
+        run.uplift = std::make_shared<const RgbUplift>(library.colorimetry(), library.converter());
     }
     run.luminance = luminance_weights(library.converter());
     run.delta_e = delta_e_basis(library.converter());

@@ -1,6 +1,8 @@
 // The CPU reference: analytic ray tracing of the same scene (same camera, same Fresnel), with exact mirror
-// reflections of the environment. Spheres reflect the environment only (not each other), as in the GPU render,
-// whose cube map is captured without them.
+// reflections. With max_bounces = 1 (the default) spheres reflect the environment only (not each other), as in the
+// one-bounce GPU render, whose cube map is captured without them; with max_bounces = k a reflected ray that meets
+// another sphere reflects there again (render/mirror_path.hpp), multiplying that sphere's Fresnel at that bounce's μ,
+// up to k reflections, and the last reflected ray takes the environment's radiance.
 #pragma once
 
 #include <vector>
@@ -19,9 +21,10 @@ struct ReferenceRender {
 };
 
 // fresnel[i] belongs to scene.spheres[i]. Runs on `threads` threads (0: all cores). `lighting`: what effects add
-// (emitters seen by camera and mirror rays; the room's light is the tracer's).
+// (emitters seen by camera and mirror rays; the room's light is the tracer's). `max_bounces`: 1 … 8 (the scene's
+// max_bounces; std::invalid_argument otherwise); a reflected ray meets the spheres before any emitter.
 ReferenceRender render_reference(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel,
                                  const EnvironmentTracer& environment, int threads = 0,
-                                 const CpuLighting* lighting = nullptr);
+                                 const CpuLighting* lighting = nullptr, int max_bounces = 1);
 
 }  // namespace metalfit::glpreview

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +24,8 @@
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/gpu_resources.hpp"
 #include "glpreview/render/output_staging.hpp"
+#include "glpreview/render/rgb_uplift.hpp"
+#include "glpreview/render/spectral_fresnel.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
 #include "libfit/color/color_space.hpp"
 
@@ -61,6 +64,10 @@ struct PreviewRun {
     std::optional<Features> features = {};
     // The scene's space for ΔE2000 (metrics.json, delta-e.png): its RGB → XYZ and the white Y_w = 1.
     DeltaEBasis delta_e = {};
+    // max_bounces > 1: each sphere's exact spectral Fresnel and the RGB → spectrum uplift of the spectral reference
+    // (render/bounce_orders.hpp); reference_fresnel is then set too.
+    std::vector<std::shared_ptr<const SpectralFresnel>> spectral = {};
+    std::shared_ptr<const RgbUplift> uplift = {};
 
     void open_gl();  // the context (if none) and the renderer; called before the first GPU pass
     GpuRenderer& renderer();
@@ -107,6 +114,9 @@ struct PreviewHandles {
     graph::Handle<Image> localization;  // r: steps taken, g: |ρ − 1|, b: 1 on impostor spheres
     graph::Handle<FrameTimes> frame_times;
     graph::Handle<Json> metrics;
+    // max_bounces > 1: per sphere, the errors of each bounce order (render/bounce_orders.hpp), metrics.json's
+    // "bounce_orders" of each sphere.
+    std::optional<graph::Handle<Json>> bounce_orders = {};
 };
 
 // Every pass of a preview and the skips --explain lists. `run` may be null (compile and explain only).

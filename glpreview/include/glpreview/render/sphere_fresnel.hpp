@@ -63,6 +63,11 @@ public:
     std::string best_model(const Sphere& sphere, const std::string& field);
 
     const ColorSpaceConverter& converter() const { return converter_; }
+    // The CMF and illuminant the reference curves integrate with (the spectral reference integrates with them too).
+    const Colorimetry& colorimetry() const { return colorimetry_; }
+    // The sphere's material with its layers, as get() resolves it (the spectral reference's n, k); InputError
+    // naming `field`.
+    Material material(const Sphere& sphere, const std::string& field) { return sphere_material(sphere, field); }
 
 private:
     // The model's fitted or best closed-form parameters; InputError naming `field`.params when none is defined.

@@ -16,7 +16,8 @@ using graph::Processor;
 using graph::Resources;
 
 Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRender& reference,
-                  const Image& localization, const Image* standard_error, const Image* fit_reference) {
+                  const Image& localization, const Image* standard_error, const Image* fit_reference,
+                  const Json* bounce_orders) {
     const Scene& scene = run.scene;
     Json j;
     j["schema"] = "metalfit.preview-metrics/1";
@@ -69,6 +70,8 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
         e["glossy_asked"] = s.rough() ? Json(to_string(s.glossy_request)) : Json(nullptr);
         e["localized_size"] = s.rough() && s.glossy == GlossyMethod::localized ? Json(s.localized_size) : Json(nullptr);
         e["reference_noise"] = s.rough() ? noise[i] : 0.0;  // NaN (null) when no pixel shows the sphere
+        // max_bounces > 1 only (a one-bounce scene's metrics.json is as before, byte for byte)
+        if (bounce_orders) e["bounce_orders"] = bounce_orders->at(i);
         j["spheres"].push_back(e);
     }
     return j;
@@ -122,13 +125,15 @@ public:
                         b.read(h.localization);
                         if (h.reference_standard_error) b.read(*h.reference_standard_error);
                         if (h.fit_reference) b.read(*h.fit_reference);
+                        if (h.bounce_orders) b.read(*h.bounce_orders);
                         d.out = b.produce<Json>("metrics");
                     },
                     [run, h](const Out<Json>& d, Resources& r) {
                         r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.localization),
                                                       h.reference_standard_error ? &r.get(*h.reference_standard_error)
                                                                                  : nullptr,
-                                                      h.fit_reference ? &r.get(*h.fit_reference) : nullptr));
+                                                      h.fit_reference ? &r.get(*h.fit_reference) : nullptr,
+                                                      h.bounce_orders ? &r.get(*h.bounce_orders) : nullptr));
                     })
                 .out;
     }

@@ -2,7 +2,9 @@
 
 #include <optional>
 
+#include "effects/interreflections/bounces.hpp"
 #include "glpreview/effects/registry.hpp"
+#include "glpreview/render/bounce_orders.hpp"
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/frame_inputs.hpp"
@@ -65,7 +67,10 @@ public:
             graph
                 .add_pass<Out<ReferenceRender>>(
                     {"cpu-reference",
-                     "analytic ray tracing of the same scene: exact mirror reflections, same Fresnel, same camera",
+                     max_bounces(scene) > 1
+                         ? "analytic ray tracing of the same scene: exact mirror reflections between the spheres, up to " +
+                               std::to_string(max_bounces(scene)) + " bounces, same Fresnel, same camera"
+                         : "analytic ray tracing of the same scene: exact mirror reflections, same Fresnel, same camera",
                      Processor::cpu},
                     [&](Builder& b, Out<ReferenceRender>& d) {
                         b.read(in.camera);
@@ -79,7 +84,7 @@ public:
                         const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr,
                                                        lighting ? lighting->surface : SurfaceLight{});
                         r.emplace(d.out, render_reference(run->scene, run->fresnel, tracer, run->threads,
-                                                          lighting ? &*lighting : nullptr));
+                                                          lighting ? &*lighting : nullptr, max_bounces(run->scene)));
                     })
                 .out;
         // monte-carlo-reference: the rough spheres' lobes by Monte Carlo, over the analytic reference's pixels.
@@ -110,7 +115,7 @@ public:
                                                    lighting ? lighting->surface : SurfaceLight{});
                     MonteCarloReference result = render_monte_carlo_reference(
                         run->scene, run->fresnel, tracer, r.get(d.analytic), run->scene.outputs.reference_samples,
-                        run->threads, lighting ? &*lighting : nullptr);
+                        run->threads, lighting ? &*lighting : nullptr, max_bounces(run->scene));
                     r.emplace(d.out, std::move(result.render));
                     r.emplace(d.standard_error, std::move(result.standard_error));
                 });
@@ -121,6 +126,49 @@ public:
                                                     ? "every sphere is a mirror: the analytic reference is exact"
                                                     : "no reference, difference or metrics asked for");
         }
+        if (max_bounces(scene) > 1) add_bounce_orders_pass(g);
+    }
+
+private:
+    // bounce-orders: per order k = 1 … max_bounces the CPU references cut at k bounces with the spheres' own
+    // Fresnel, the reference LUTs and the spectral Fresnel, and their errors per sphere (render/bounce_orders.hpp).
+    static void add_bounce_orders_pass(PreviewGraph& g) {
+        const SceneInputs& in = g.in;
+        PreviewRun* run = g.run;
+        PreviewHandles& h = g.handles;
+        const int orders = max_bounces(g.scene);
+        g.handles.bounce_orders =
+            g.graph
+                .add_pass<Out<Json>>(
+                    {"bounce-orders",
+                     "max_bounces " + std::to_string(orders) + ": per bounce order 1-" + std::to_string(orders) +
+                         " the mirror paths cut there, with each sphere's own Fresnel, the reference LUTs (RGB) and "
+                         "the exact spectral Fresnel (spectral); per sphere the model, RGB-vs-spectral and total error",
+                     Processor::cpu},
+                    [&](Builder& b, Out<Json>& d) {
+                        b.read(in.camera);
+                        if (h.environment.equirect_image) b.read(*h.environment.equirect_image);
+                        if (h.luts) b.read(*h.luts);
+                        if (h.parameters) b.read(*h.parameters);
+                        d.out = b.produce<Json>("bounce-order-errors");
+                    },
+                    [run, orders, equirect = h.environment.equirect_image](const Out<Json>& d, Resources& r) {
+                        const std::optional<CpuLighting> lighting = cpu_lighting(run->scene);
+                        const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr,
+                                                       lighting ? lighting->surface : SurfaceLight{});
+                        BounceFresnel fresnel{run->fresnel, run->reference_fresnel, {}, run->uplift.get()};
+                        for (const auto& s : run->spectral) fresnel.spectral.push_back(s.get());
+                        const std::size_t spheres = run->scene.spheres.size();
+                        std::vector<std::vector<SphereOrderError>> errors;
+                        for (int k = 1; k <= orders; ++k)
+                            errors.push_back(
+                                bounce_order_errors(render_bounce_order(run->scene, fresnel, tracer, k, run->threads,
+                                                                        lighting ? &*lighting : nullptr),
+                                                    spheres, run->delta_e));
+                        Json& out = r.emplace(d.out, Json::array());
+                        for (std::size_t i = 0; i < spheres; ++i) out.push_back(bounce_orders_json(errors, i));
+                    })
+                .out;
     }
 };
 
