@@ -1,7 +1,10 @@
 #include "glpreview/render/bounce_orders.hpp"
 
+#include "glpreview/render/mirror_path.hpp"
 #include "glpreview/render/spectral_reference.hpp"
+#include "glpreview/render/sphere_intersection.hpp"
 #include "glpreview/render/sphere_metrics.hpp"
+#include "glpreview/scene/camera.hpp"
 
 namespace metalfit::glpreview {
 
@@ -49,6 +52,29 @@ nlohmann::ordered_json bounce_orders_json(const std::vector<std::vector<SphereOr
                        {"model_vs_spectral", masked_error_json(e.model_vs_spectral)}});
     }
     return out;
+}
+
+// Every sphere pixel as one mask.
+ReferenceRender sphere_pixels_mask(const ReferenceRender& render) {
+    ReferenceRender mask{render.image, render.sphere_id};
+    for (int& id : mask.sphere_id) id = id >= 0 ? 0 : -1;
+    return mask;
+}
+
+// The pixels whose mirror path reaches bounce `order` (it meets another sphere at every bounce before), as one mask.
+ReferenceRender reaching_mask(const Scene& scene, const ReferenceRender& render, int order) {
+    ReferenceRender mask{render.image, render.sphere_id};
+    const CameraBasis basis = camera_basis(scene.camera, scene.width, scene.height);
+    for (int row = 0; row < scene.height; ++row)
+        for (int px = 0; px < scene.width; ++px) {
+            int& id = mask.sphere_id[static_cast<std::size_t>(row) * scene.width + px];
+            if (id < 0) continue;
+            const int py = scene.height - 1 - row;
+            const Vec3 d = camera_ray(basis, px, py, scene.width, scene.height);
+            const SphereHit hit = nearest_sphere(scene.spheres, basis.position, d);
+            id = mirror_path(scene.spheres, basis.position, d, hit, order).count == order ? 0 : -1;
+        }
+    return mask;
 }
 
 }  // namespace metalfit::glpreview

@@ -18,29 +18,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// Every sphere pixel as one mask.
-ReferenceRender all_spheres(const ReferenceRender& render) {
-    ReferenceRender mask{render.image, render.sphere_id};
-    for (int& id : mask.sphere_id) id = id >= 0 ? 0 : -1;
-    return mask;
-}
-
-// The pixels whose mirror path reaches bounce `order` (it meets another sphere at every bounce before), as one mask.
-ReferenceRender reaching(const Scene& scene, const ReferenceRender& render, int order) {
-    ReferenceRender mask{render.image, render.sphere_id};
-    const CameraBasis basis = camera_basis(scene.camera, scene.width, scene.height);
-    for (int row = 0; row < scene.height; ++row)
-        for (int px = 0; px < scene.width; ++px) {
-            int& id = mask.sphere_id[static_cast<std::size_t>(row) * scene.width + px];
-            if (id < 0) continue;
-            const int py = scene.height - 1 - row;
-            const Vec3 d = camera_ray(basis, px, py, scene.width, scene.height);
-            const SphereHit hit = nearest_sphere(scene.spheres, basis.position, d);
-            id = mirror_path(scene.spheres, basis.position, d, hit, order).count == order ? 0 : -1;
-        }
-    return mask;
-}
-
 Json error_json(const MaskedError& e) {
     return {{"rmse", e.rmse}, {"de2000_mean", e.de2000_mean}, {"de2000_p95", e.de2000_p95}};
 }
@@ -112,8 +89,8 @@ Json bench_bounces(const PreviewOptions& options, bool quick) {
     std::vector<ReferenceRender> rgb, spectral_images, reach;
     for (int k = 1; k <= kBenchBounceOrders; ++k) {
         const BounceOrderRenders r = render_bounce_order(scene, reference, tracer, k, options.threads);
-        reach.push_back(reaching(scene, r.rgb, k));
-        const MaskedError e = masked_errors(r.rgb.image, r.spectral.image, all_spheres(r.rgb), 1, basis).front();
+        reach.push_back(reaching_mask(scene, r.rgb, k));
+        const MaskedError e = masked_errors(r.rgb.image, r.spectral.image, sphere_pixels_mask(r.rgb), 1, basis).front();
         Json row = with_error({{"order", k}}, e);
         row["reaching"] = reaching_json(masked_errors(r.rgb.image, r.spectral.image, reach.back(), 1, basis).front());
         j["rgb_vs_spectral"].push_back(row);
@@ -138,7 +115,7 @@ Json bench_bounces(const PreviewOptions& options, bool quick) {
             for (int k = 1; k <= kBenchBounceOrders; ++k) {
                 const ReferenceRender image = render_reference(scene, own, tracer, options.threads, nullptr, k);
                 const ReferenceRender& against = rgb[static_cast<std::size_t>(k - 1)];
-                const ReferenceRender mask = all_spheres(against);
+                const ReferenceRender mask = sphere_pixels_mask(against);
                 const MaskedError e = masked_errors(image.image, against.image, mask, 1, basis).front();
                 const MaskedError s =
                     masked_errors(image.image, spectral_images[static_cast<std::size_t>(k - 1)].image, mask, 1, basis)

@@ -47,6 +47,11 @@ struct MaskedError {
 std::vector<MaskedError> masked_errors(const Image& image, const Image& reference, const ReferenceRender& mask,
                                        std::size_t spheres, const DeltaEBasis& basis);
 
+// Every sphere pixel of `render` as one mask (sphere 0), and the pixels whose mirror path reaches bounce `order` (it
+// meets another sphere at every bounce before) as one mask: where compounding shows.
+ReferenceRender sphere_pixels_mask(const ReferenceRender& render);
+ReferenceRender reaching_mask(const Scene& scene, const ReferenceRender& render, int order);
+
 struct SphereOrderError {
     MaskedError model;              // own Fresnel vs RGB reference
     MaskedError rgb_vs_spectral;    // RGB reference vs spectral reference

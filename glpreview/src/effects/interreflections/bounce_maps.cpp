@@ -30,19 +30,44 @@ gl::Texture cube_array(int size, int layers, GLint filter) {
 
 struct MapPrograms {
     const BuiltProgram& room;
-    const BuiltProgram& mirror;
+    const BuiltProgram& sphere;  // sphere_hit.frag: a sphere's distance, normal and index
 };
 
-// Sphere i's layer: per face the room from its centre, the rough spheres (their own programs, seen from the centre)
-// and the mirror spheres (distance, normal, index), nearest first by depth.
-void draw_layer(GpuRenderer& renderer, const MapPrograms& programs, std::size_t i, int layer, const BounceMaps& maps,
-                const gl::Framebuffer& fbo) {
+void draw_sphere_hits(const GpuRenderer& renderer, const BuiltProgram& program, int face,
+                      const std::vector<std::size_t>& which, float sign, float depth_bias) {
+    const Scene& scene = renderer.scene();
+    glUseProgram(program.id());
+    glBindVertexArray(renderer.vertex_array());
+    set_uniform(program.id(), "u_face", face);
+    set_uniform(program.id(), "u_depth_bias", depth_bias);
+    for (const std::size_t j : which) {
+        set_uniform(program.id(), "u_hit_center", scene.spheres[j].center);
+        set_uniform(program.id(), "u_hit_radius", static_cast<float>(scene.spheres[j].radius));
+        set_uniform(program.id(), "u_hit_index", sign * static_cast<float>(j + 1));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+}
+
+// Sphere i's layers, per face. The front layer: the room from its centre, the rough spheres (their own programs, as
+// seen from the centre; index −(j + 1)) and the mirror spheres (distance, normal, index j + 1), nearest first by
+// depth. The back layer (layer + layers): the room alone, where a ray behind a sphere of the front layer goes on.
+void draw_layer(GpuRenderer& renderer, const MapPrograms& programs, std::size_t i, int layer, int layers,
+                const BounceMaps& maps, const gl::Framebuffer& fbo) {
     const Scene& scene = renderer.scene();
     const Vec3 center = scene.spheres[i].center;
     std::vector<std::size_t> rough, mirrors;
     for (std::size_t j = 0; j < scene.spheres.size(); ++j)
         if (j != i) (scene.spheres[j].rough() ? rough : mirrors).push_back(j);
     const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    const GLenum hits_only[2] = {GL_NONE, GL_COLOR_ATTACHMENT1};
+    const auto draw_room = [&](int face) {
+        glDepthFunc(GL_ALWAYS);
+        renderer.bind_environment(programs.room);
+        glUseProgram(programs.room.id());
+        glBindVertexArray(renderer.vertex_array());
+        set_uniform(programs.room.id(), "u_face", face);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    };
     for (int face = 0; face < 6; ++face) {
         glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, maps.radiance.id(), 0, 6 * layer + face);
         glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT1, maps.hits.id(), 0, 6 * layer + face);
@@ -55,28 +80,29 @@ void draw_layer(GpuRenderer& renderer, const MapPrograms& programs, std::size_t 
         const float none[4] = {0, 0, 0, 0}, far = 1.0f;
         glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 1, none);
         glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &far);
-        glBindVertexArray(renderer.vertex_array());
         glEnable(GL_DEPTH_TEST);
         glDepthMask(GL_TRUE);
-        // The room (and below, rough spheres) into the radiance layer only: the hits layer keeps "none" there.
+        // The room and the rough spheres' radiance into the radiance layer only.
         glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
-        glDepthFunc(GL_ALWAYS);
-        renderer.bind_environment(programs.room);
-        glUseProgram(programs.room.id());
-        set_uniform(programs.room.id(), "u_face", face);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        draw_room(face);
         glDepthFunc(GL_LESS);
-        if (!rough.empty()) renderer.draw_spheres(cube_face_view(center, face), maps.size, maps.size, rough);
-        glNamedFramebufferDrawBuffers(fbo.id(), 2, both);
-        glUseProgram(programs.mirror.id());
-        glBindVertexArray(renderer.vertex_array());
-        set_uniform(programs.mirror.id(), "u_face", face);
-        for (const std::size_t j : mirrors) {
-            set_uniform(programs.mirror.id(), "u_hit_center", scene.spheres[j].center);
-            set_uniform(programs.mirror.id(), "u_hit_radius", static_cast<float>(scene.spheres[j].radius));
-            set_uniform(programs.mirror.id(), "u_hit_index", static_cast<float>(j + 1));
-            glDrawArrays(GL_TRIANGLES, 0, 3);
+        if (!rough.empty()) {
+            renderer.draw_spheres(cube_face_view(center, face), maps.size, maps.size, rough);
+            // Their indices where they are the nearest (the same depth, a hair nearer; depth kept).
+            glNamedFramebufferDrawBuffers(fbo.id(), 2, hits_only);
+            glDepthFunc(GL_LEQUAL);
+            glDepthMask(GL_FALSE);
+            draw_sphere_hits(renderer, programs.sphere, face, rough, -1.0f, 1e-6f);
+            glDepthMask(GL_TRUE);
+            glDepthFunc(GL_LESS);
         }
+        glNamedFramebufferDrawBuffers(fbo.id(), 2, both);
+        draw_sphere_hits(renderer, programs.sphere, face, mirrors, 1.0f, 0.0f);
+        // The back layer: the room alone.
+        glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, maps.radiance.id(), 0,
+                                       6 * (layer + layers) + face);
+        glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+        draw_room(face);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
@@ -97,33 +123,35 @@ BounceMaps render_bounce_maps(GpuRenderer& renderer, const BouncePlan& plan) {
     maps.layer_of.assign(scene.spheres.size(), -1);
     for (std::size_t k = 0; k < plan.mapped.size(); ++k) maps.layer_of[plan.mapped[k]] = static_cast<int>(k);
     const int layers = static_cast<int>(plan.mapped.size());
-    maps.radiance = cube_array(maps.size, layers, GL_LINEAR);
+    maps.layers = layers;
+    maps.radiance = cube_array(maps.size, 2 * layers, GL_LINEAR);
     maps.hits = cube_array(maps.size, layers, GL_NEAREST);  // an index is not interpolated
-    std::vector<float> texels;
+    std::vector<float> texels;  // row 0: centre and layer; row 1: radius
     for (std::size_t j = 0; j < scene.spheres.size(); ++j) {
         const Vec3 c = scene.spheres[j].center;
         texels.insert(texels.end(), {float(c.x), float(c.y), float(c.z), float(maps.layer_of[j])});
     }
+    for (const Sphere& sphere : scene.spheres) texels.insert(texels.end(), {float(sphere.radius), 0.f, 0.f, 0.f});
     maps.spheres = gl::create_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(maps.spheres.id(), 1, GL_RGBA32F, static_cast<GLsizei>(scene.spheres.size()), 1);
-    glTextureSubImage2D(maps.spheres.id(), 0, 0, 0, static_cast<GLsizei>(scene.spheres.size()), 1, GL_RGBA, GL_FLOAT,
+    glTextureStorage2D(maps.spheres.id(), 1, GL_RGBA32F, static_cast<GLsizei>(scene.spheres.size()), 2);
+    glTextureSubImage2D(maps.spheres.id(), 0, 0, 0, static_cast<GLsizei>(scene.spheres.size()), 2, GL_RGBA, GL_FLOAT,
                         texels.data());
 
     ShaderBuilder room("bounce-map-room");
     declare_environment(scene, room);
     room.source(shader_text("cube_face.glsl")).source(shader_text("sphere_map.frag"));
-    ShaderBuilder mirror("bounce-map-mirror", ShaderBuilder::Stage::fragment);
-    mirror.source(shader_text("cube_face.glsl")).source(shader_text("sphere_hit.frag"));
-    const MapPrograms programs{renderer.program(room), renderer.program(mirror)};
-    for (const BuiltProgram* p : {&programs.room, &programs.mirror}) set_uniform(p->id(), "u_size", maps.size);
+    ShaderBuilder sphere("bounce-map-sphere", ShaderBuilder::Stage::fragment);
+    sphere.source(shader_text("cube_face.glsl")).source(shader_text("sphere_hit.frag"));
+    const MapPrograms programs{renderer.program(room), renderer.program(sphere)};
+    for (const BuiltProgram* p : {&programs.room, &programs.sphere}) set_uniform(p->id(), "u_size", maps.size);
     const gl::Framebuffer fbo = gl::create_framebuffer();
     const gl::Renderbuffer depth = gl::create_renderbuffer();
     glNamedRenderbufferStorage(depth.id(), GL_DEPTH_COMPONENT32F, maps.size, maps.size);
     glNamedFramebufferRenderbuffer(fbo.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
     for (const std::size_t i : plan.mapped) {
-        for (const BuiltProgram* p : {&programs.room, &programs.mirror})
+        for (const BuiltProgram* p : {&programs.room, &programs.sphere})
             set_uniform(p->id(), "u_map_center", scene.spheres[i].center);
-        draw_layer(renderer, programs, i, maps.layer_of[i], maps, fbo);
+        draw_layer(renderer, programs, i, maps.layer_of[i], layers, maps, fbo);
     }
     check_gl("drawing the spheres' distance maps");
     return maps;

@@ -1,9 +1,10 @@
 // The per-sphere distance maps of inter-reflections (Umenhoffer, Patow and Szirmay-Kalos, "Robust Multiple Specular
 // Reflections and Refractions", GPU Gems 3 ch. 17, 2007: distance maps holding colour, distance and normal, searched
 // with the root finders of Szirmay-Kalos et al., "Approximate Ray-Tracing on the GPU with Distance Impostors",
-// 2005): one layer per mapped sphere, taken from its centre, holding what the sphere sees: the room and rough
+// 2005): per mapped sphere, taken from its centre, a front layer holding what the sphere sees (the room and rough
 // spheres as the radiance they send to the centre, mirror spheres as their distance, normal and index, so that a
-// reflected ray reaching one reflects again there (bounce.glsl). A static scene makes them once.
+// reflected ray reaching one reflects again there: bounce.glsl) and a back layer holding the room alone (where a
+// ray that passes behind a sphere of the front layer goes on). A static scene makes them once.
 #pragma once
 
 #include <span>
@@ -17,14 +18,19 @@
 namespace metalfit::glpreview {
 
 struct BounceMaps {
-    gl::Texture radiance;  // cube-map array, RGBA32F: rgb the radiance seen from the centre, a: the distance to it
-    gl::Texture hits;  // cube-map array, RGBA32F: xyz the normal of the mirror sphere seen, w: its index + 1 (0: none)
-    gl::Texture spheres;        // 2D, one texel per sphere, RGBA32F: its centre, w: its layer (−1: no map)
-    int size = 0;               // texels per face edge
+    // Cube-map array, RGBA32F: rgb the radiance seen from the centre, a: the distance to it; layer L is the front
+    // layer of a sphere, L + layers its back layer (the room alone).
+    gl::Texture radiance;
+    // Cube-map array, RGBA32F, the front layers: xyz the normal of the sphere seen, w: j + 1 for mirror sphere j,
+    // −(j + 1) for rough sphere j (its radiance is the front layer's), 0 for the room.
+    gl::Texture hits;
+    gl::Texture spheres;  // 2D, a column per sphere, RGBA32F: row 0 its centre, w its layer (−1: no map); row 1 radius
+    int size = 0;         // texels per face edge
+    int layers = 0;       // mapped spheres
     std::vector<int> layer_of;  // by sphere: its layer, −1 for none
 };
 
-// The maps' edge: the environment's cube size, at most 256 (a layer of both arrays is 6 · size² · 32 bytes).
+// The maps' edge: the environment's cube size, at most 256 (a mapped sphere's three layers: 6 · size² · 48 bytes).
 int bounce_map_size(const Scene& scene);
 
 // The plan's maps. Needs the environment and what the rough spheres' programs read bound on the renderer.

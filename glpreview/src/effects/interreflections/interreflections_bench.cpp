@@ -5,6 +5,11 @@
 
 #include "bounce_maps.hpp"
 #include "bounces.hpp"
+#include "glpreview/render/bounce_orders.hpp"
+#include "glpreview/render/bounces_bench.hpp"
+#include "glpreview/render/cpu_reference.hpp"
+#include "glpreview/render/delta_e_view.hpp"
+#include "glpreview/render/environment.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "libfit/base/sample_statistics.hpp"
 #include "render/frame_timing.hpp"
@@ -12,21 +17,9 @@
 namespace metalfit::glpreview {
 
 Scene interreflections_bench_scene(bool quick, int bounces) {
-    Scene scene;
-    scene.file = "interreflections-bench.json";
-    scene.width = scene.height = quick ? 96 : 256;
-    scene.camera.position = {0, 1.7, 2.4};
-    scene.camera.look_at = {0, 0.5, 0};
-    scene.environment.cube_size = quick ? 64 : 256;
-    const char* metals[] = {"Au", "Cu", "Ag", "Al"};
-    const Vec3 centres[] = {{-0.45, 0.4, -0.45}, {0.45, 0.4, -0.45}, {-0.45, 0.4, 0.45}, {0.45, 0.4, 0.45}};
-    for (int i = 0; i < 4; ++i) {
-        Sphere sphere;
-        sphere.center = centres[i];
-        sphere.radius = 0.4;
-        sphere.material = metals[i];
-        scene.spheres.push_back(sphere);
-    }
+    Scene scene = bounces_bench_scene(quick);  // the compounding table's scene: the cost and the error of one picture
+    if (quick) scene.environment.cube_size = 64;
+    for (Sphere& sphere : scene.spheres) sphere.reflection = ReflectionMode::distance_impostor;
     if (bounces > 1) scene.effects.set(Interreflections{bounces});
     return scene;
 }
@@ -41,10 +34,20 @@ nlohmann::ordered_json bench_interreflections(GlContext& context, const PreviewO
         fresnel.push_back(&library.get(scenes[0].spheres[i], "spheres[" + std::to_string(i) + "]"));
     std::vector<std::unique_ptr<GpuRenderer>> renderers;
     std::vector<std::function<void()>> variants;
+    // Each frame against the CPU reference of its bounce count: over every sphere pixel, and over the pixels whose
+    // path reaches the last bounce.
+    const EnvironmentTracer tracer(scenes[0].environment);
+    const DeltaEBasis basis = delta_e_basis(library.converter());
+    std::vector<MaskedError> all, reaching;
     for (const Scene& scene : scenes) {
         auto gpu = std::make_unique<GpuRenderer>(scene, plan_features(scene), fresnel, nullptr, &context.programs());
-        gpu->capture_environment();  // and, beyond one bounce, the spheres' maps (derived from the room's cube)
-        gpu->render();               // compiles its programs before the timing
+        gpu->capture_environment();         // and, beyond one bounce, the spheres' maps (derived from the room's cube)
+        const Image frame = gpu->render();  // compiles its programs before the timing
+        const int bounces = max_bounces(scene);
+        const ReferenceRender reference = render_reference(scene, fresnel, tracer, 0, nullptr, bounces);
+        all.push_back(masked_errors(frame, reference.image, sphere_pixels_mask(reference), 1, basis).front());
+        reaching.push_back(
+            masked_errors(frame, reference.image, reaching_mask(scene, reference, bounces), 1, basis).front());
         GpuRenderer* raw = gpu.get();
         variants.push_back([raw] { raw->draw_frame_for_timing(); });
         renderers.push_back(std::move(gpu));
@@ -68,7 +71,10 @@ nlohmann::ordered_json bench_interreflections(GlContext& context, const PreviewO
                                              (i == 0 ? " (the room's cube only)" : " (maps made beforehand)")},
                              {"ms", median(ms[i])},
                              {"ratio_to_one_bounce_frame", r.median},
-                             {"ratio_noise", r.noise}});
+                             {"ratio_noise", r.noise},
+                             {"vs_reference", masked_error_json(all[i])},
+                             {"vs_reference_reaching", masked_error_json(reaching[i])},
+                             {"reaching_pixels", reaching[i].pixels}});
     }
     std::vector<double> per_sphere;
     const double mapped = static_cast<double>(plan.mapped.size());

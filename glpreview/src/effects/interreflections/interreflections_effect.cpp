@@ -31,7 +31,7 @@ struct OwnBounceMaps {
 };
 
 // The bounces' Fresnel table, remade when the spheres' Fresnel changes (the frame with the exact curves).
-struct BounceFresnel {
+struct BounceFresnelTexture {
     std::vector<const SphereFresnel*> made_for;
     std::optional<gl::Texture> table;
 
@@ -113,8 +113,9 @@ public:
         draw.program.bind("u_impostor_layers", maps->radiance.id());
         draw.program.bind("u_bounce_hits", maps->hits.id());
         draw.program.bind("u_bounce_spheres", maps->spheres.id());
-        draw.program.bind("u_bounce_fresnel", frame.state<BounceFresnel>().texture(draw.renderer));
+        draw.program.bind("u_bounce_fresnel", frame.state<BounceFresnelTexture>().texture(draw.renderer));
         set_uniform(draw.program.id(), "u_bounce_sphere", static_cast<int>(sphere_index(draw.scene, draw.sphere)));
+        set_uniform(draw.program.id(), "u_bounce_back", maps->layers);
     }
 
     void add_frame_input_passes(PreviewGraph& g) const override {
