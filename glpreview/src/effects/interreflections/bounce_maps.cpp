@@ -126,7 +126,7 @@ BounceMaps render_bounce_maps(GpuRenderer& renderer, const BouncePlan& plan) {
     maps.layers = layers;
     maps.radiance = cube_array(maps.size, 2 * layers, GL_LINEAR);
     maps.hits = cube_array(maps.size, layers, GL_NEAREST);  // an index is not interpolated
-    std::vector<float> texels;  // row 0: centre and layer; row 1: radius
+    std::vector<float> texels;                              // row 0: centre and layer; row 1: radius
     for (std::size_t j = 0; j < scene.spheres.size(); ++j) {
         const Vec3 c = scene.spheres[j].center;
         texels.insert(texels.end(), {float(c.x), float(c.y), float(c.z), float(maps.layer_of[j])});
