@@ -67,6 +67,13 @@ TEST(InterreflectionsScene, BadInputNamesTheField) {
     const std::string at_infinity = R"({"environment": {"type": "equirect", "file": "sky.hdr"}, "max_bounces": 2,
         "spheres": [{"center": [0, 1, 0], "radius": 0.5, "reflection": "classic"}]})";
     EXPECT_TRUE(test::Contains(parse_error(at_infinity), "max_bounces: inter-reflections need a captured environment"));
+    std::string many = R"({"max_bounces": 2, "spheres": [)";
+    for (int i = 0; i < 17; ++i)
+        many += (i ? ", " : "") + std::string(R"({"center": [)") + std::to_string(-2.4 + 0.3 * i) +
+                R"(, 1, 0], "radius": 0.1})";
+    many += "]}";
+    EXPECT_TRUE(test::Contains(parse_error(many), "max_bounces: at most 16 mirror spheres reflect each other (17 here)"))
+        << parse_error(many);
 }
 
 TEST(InterreflectionsScene, AMirrorSearchesItsOwnMapWhateverLookupItAskedFor) {

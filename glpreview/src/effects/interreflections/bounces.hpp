@@ -8,6 +8,9 @@
 namespace metalfit::glpreview {
 
 inline constexpr int kMaxBounces = 8;
+// The most mirror spheres a scene with max_bounces > 1 may have: each gets a map of three 256² cube-map layers
+// (19 MB of RGBA32F), 16 of them 300 MB.
+inline constexpr long kMaxMappedSpheres = 16;
 
 struct Interreflections {
     int max_bounces = 1;
