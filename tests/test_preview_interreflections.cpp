@@ -72,7 +72,8 @@ TEST(InterreflectionsScene, BadInputNamesTheField) {
         many += (i ? ", " : "") + std::string(R"({"center": [)") + std::to_string(-2.4 + 0.3 * i) +
                 R"(, 1, 0], "radius": 0.1})";
     many += "]}";
-    EXPECT_TRUE(test::Contains(parse_error(many), "max_bounces: at most 16 mirror spheres reflect each other (17 here)"))
+    EXPECT_TRUE(
+        test::Contains(parse_error(many), "max_bounces: at most 16 mirror spheres reflect each other (17 here)"))
         << parse_error(many);
 }
 

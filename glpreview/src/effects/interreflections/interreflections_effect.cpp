@@ -83,9 +83,9 @@ public:
         const auto mirrors = std::count_if(scene.spheres.begin(), scene.spheres.end(),
                                            [](const Sphere& sphere) { return !sphere.rough(); });
         if (mirrors > kMaxMappedSpheres)
-            top.fail(top.field("max_bounces"),
-                     "at most " + std::to_string(kMaxMappedSpheres) + " mirror spheres reflect each other (" +
-                         std::to_string(mirrors) + " here): each takes three 256² cube-map layers");
+            top.fail(top.field("max_bounces"), "at most " + std::to_string(kMaxMappedSpheres) +
+                                                   " mirror spheres reflect each other (" + std::to_string(mirrors) +
+                                                   " here): each takes three 256² cube-map layers");
         for (std::size_t j = 0; j < scene.spheres.size(); ++j)
             for (std::size_t i = 0; i < j; ++i) {
                 const Sphere& a = scene.spheres[i];
