@@ -185,45 +185,6 @@ std::optional<BoxProxy> Environment::parallax_box() const {
     return std::nullopt;
 }
 
-const char* to_string(ReflectionMode mode) {
-    switch (mode) {
-        case ReflectionMode::classic: return "classic";
-        case ReflectionMode::distance_impostor: return "distance-impostor";
-        case ReflectionMode::box_parallax: return "box-parallax";
-    }
-    return "?";
-}
-
-const char* to_string(Strategy strategy) {
-    switch (strategy) {
-        case Strategy::secant: return "secant";
-        case Strategy::false_position: return "false-position";
-        case Strategy::mixed: return "mixed";
-        case Strategy::illinois: return "illinois";
-        case Strategy::safe_secant: return "safe-secant";
-    }
-    return "?";
-}
-
-const char* to_string(EnvironmentType type) {
-    switch (type) {
-        case EnvironmentType::room: return "room";
-        case EnvironmentType::sphere_room: return "sphere-room";
-        case EnvironmentType::equirect: return "equirect";
-    }
-    return "?";
-}
-
-const char* to_string(GlossyMethod method) { return method == GlossyMethod::localized ? "localized" : "prefiltered"; }
-const char* to_string(GlossyRequest request) {
-    switch (request) {
-        case GlossyRequest::automatic: return "auto";
-        case GlossyRequest::prefiltered: return "prefiltered";
-        case GlossyRequest::localized: return "localized";
-    }
-    return "";
-}
-
 std::string fresnel_name(const FresnelChoice& fresnel) {
     if (const auto* model = std::get_if<ModelFresnel>(&fresnel)) return model->model;
     return "reference";

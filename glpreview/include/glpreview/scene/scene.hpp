@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "glpreview/scene/vec3.hpp"
+#include "libfit/base/enum_names.hpp"
 #include "libfit/color/color.hpp"
 #include "libfit/fit/parameter_source.hpp"
 
@@ -79,6 +80,13 @@ struct Equirect {
 };
 
 enum class EnvironmentType { room, sphere_room, equirect };
+// The scene's names of the enums' values (libfit's EnumNames: one table parses and prints), in the order the messages
+// about an unknown value list them.
+inline constexpr EnumNames kEnvironmentTypeNames{
+    "environment type", KnownNamesWording::known,
+    std::array{EnumName<EnvironmentType>{EnvironmentType::room, "room"},
+               EnumName<EnvironmentType>{EnvironmentType::sphere_room, "sphere-room"},
+               EnumName<EnvironmentType>{EnvironmentType::equirect, "equirect"}}};
 
 struct Environment {
     EnvironmentType type = EnvironmentType::room;
@@ -97,10 +105,21 @@ struct Environment {
 };
 
 enum class ReflectionMode { classic, distance_impostor, box_parallax };
+inline constexpr EnumNames kReflectionModeNames{
+    "reflection", KnownNamesWording::known,
+    std::array{EnumName<ReflectionMode>{ReflectionMode::classic, "classic"},
+               EnumName<ReflectionMode>{ReflectionMode::distance_impostor, "distance-impostor"},
+               EnumName<ReflectionMode>{ReflectionMode::box_parallax, "box-parallax"}}};
 // The impostor's root finder: the thesis's three as described (secant, false position, mixed), and two that keep a
 // bracket and cannot stall or run away (illinois: false position with the Illinois modification; safe-secant:
 // secant falling back to the bracket).
 enum class Strategy { secant, false_position, mixed, illinois, safe_secant };
+inline constexpr EnumNames kStrategyNames{"strategy", KnownNamesWording::known,
+                                          std::array{EnumName<Strategy>{Strategy::secant, "secant"},
+                                                     EnumName<Strategy>{Strategy::false_position, "false-position"},
+                                                     EnumName<Strategy>{Strategy::mixed, "mixed"},
+                                                     EnumName<Strategy>{Strategy::illinois, "illinois"},
+                                                     EnumName<Strategy>{Strategy::safe_secant, "safe-secant"}}};
 
 // What a sphere's Fresnel is: the exact reference curve, or a libfit model (named by its id, resolved against the
 // model registry when the sphere's Fresnel data is made, where an unknown id is reported) with its parameters
@@ -115,9 +134,18 @@ using FresnelChoice = std::variant<ReferenceFresnel, ModelFresnel>;
 // How a rough sphere (roughness > 0) reflects on the GPU (docs/scene.md): a GGX-prefiltered cube mip chain times the
 // sphere's own DFG table (split sum), or the thesis's ch. 5 sum over the downsampled cube's texels as area lights.
 enum class GlossyMethod { prefiltered, localized };
+inline constexpr EnumNames kGlossyMethodNames{
+    "glossy method", KnownNamesWording::known,
+    std::array{EnumName<GlossyMethod>{GlossyMethod::prefiltered, "prefiltered"},
+               EnumName<GlossyMethod>{GlossyMethod::localized, "localized"}}};
 // What the scene asks for (`"glossy"`): `auto` (the default) lets the planner choose from the roughness and the measured
 // table (glossy_choice.hpp); `localized` falls back to prefiltered where it fails.
 enum class GlossyRequest { automatic, prefiltered, localized };
+inline constexpr EnumNames kGlossyRequestNames{
+    "glossy", KnownNamesWording::known,
+    std::array{EnumName<GlossyRequest>{GlossyRequest::automatic, "auto"},
+               EnumName<GlossyRequest>{GlossyRequest::prefiltered, "prefiltered"},
+               EnumName<GlossyRequest>{GlossyRequest::localized, "localized"}}};
 
 inline constexpr Strategy kDefaultStrategy = Strategy::illinois;
 inline constexpr int kDefaultIterations = 8;
@@ -228,11 +256,12 @@ Scene load_scene(const std::filesystem::path& file);
 // a wall); parse_scene adds them to Scene::warnings.
 std::vector<std::string> placement_warnings(const Scene& scene);
 
-const char* to_string(ReflectionMode mode);    // "classic", "distance-impostor", "box-parallax"
-const char* to_string(Strategy strategy);      // "secant", "false-position", "mixed", "illinois", "safe-secant"
-const char* to_string(EnvironmentType type);   // "room", "sphere-room", "equirect"
-const char* to_string(GlossyMethod method);    // "prefiltered", "localized"
-const char* to_string(GlossyRequest request);  // "auto", "prefiltered", "localized"
+// The names of the tables above.
+inline const char* to_string(ReflectionMode mode) { return kReflectionModeNames.name(mode).data(); }
+inline const char* to_string(Strategy strategy) { return kStrategyNames.name(strategy).data(); }
+inline const char* to_string(EnvironmentType type) { return kEnvironmentTypeNames.name(type).data(); }
+inline const char* to_string(GlossyMethod method) { return kGlossyMethodNames.name(method).data(); }
+inline const char* to_string(GlossyRequest request) { return kGlossyRequestNames.name(request).data(); }
 std::string fresnel_name(const FresnelChoice& fresnel);  // "reference" or the model id, as in the scene JSON
 inline bool shows_reference(const Sphere& sphere) { return std::holds_alternative<ReferenceFresnel>(sphere.fresnel); }
 

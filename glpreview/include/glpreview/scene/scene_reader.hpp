@@ -15,6 +15,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "libfit/base/enum_names.hpp"
+
 #include "glpreview/scene/vec3.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/color/color.hpp"
@@ -116,20 +118,17 @@ public:
         if (triple.x < 0 || triple.y < 0 || triple.z < 0) fail(field(key), "radiance must not be negative");
         out = {triple.x, triple.y, triple.z};
     }
-    template <typename Enum>
-    void read_enum(const char* key, Enum& out, std::initializer_list<std::pair<const char*, Enum>> names) const {
+    // A string key naming a value of `names` (a table of libfit's EnumNames); "unknown value 'x' (known: …)".
+    template <typename Enum, std::size_t N>
+    void read_enum(const char* key, Enum& out, const EnumNames<Enum, N>& names) const {
         std::string text;
         read(key, text);
         if (text.empty()) return;
-        std::string list;
-        for (const auto& [name, value] : names) {
-            if (text == name) {
-                out = value;
-                return;
-            }
-            list += (list.empty() ? "" : ", ") + std::string(name);
+        if (const std::optional<Enum> value = names.find(text)) {
+            out = *value;
+            return;
         }
-        fail(field(key), "unknown value '" + scene_excerpt(text) + "' (known: " + list + ")");
+        fail(field(key), "unknown value '" + scene_excerpt(text) + "' (" + names.known() + ")");
     }
     // Calls f(element, "key[i]") for each element of an array-valued key.
     template <typename F>

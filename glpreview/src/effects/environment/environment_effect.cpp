@@ -194,12 +194,16 @@ public:
                 nlohmann::json::object();  // the default room, with its default panels
             const nlohmann::json& env = top.has("environment") ? top.at("environment") : no_environment;
             Environment& e = scene.environment;
-            std::string type = "room";
+            std::string text = "room";
             if (env.is_object() && env.contains("type")) {
                 if (!env["type"].is_string()) top.fail("environment.type", "expected a string");
-                type = env["type"].get<std::string>();
+                text = env["type"].get<std::string>();
             }
-            if (type == "room") {
+            const std::optional<EnvironmentType> type = kEnvironmentTypeNames.find(text);
+            if (!type)
+                top.fail("environment.type",
+                         "unknown value '" + scene_excerpt(text) + "' (" + kEnvironmentTypeNames.known() + ")");
+            if (type == EnvironmentType::room) {
                 Reader r(env, "environment", file,
                          {"type", "reference_point", "cube_size", "min", "max", "wall_x_min", "wall_x_max",
                           "wall_z_min", "wall_z_max", "floor_light", "floor_dark", "ceiling", "checker", "panels",
@@ -215,7 +219,7 @@ public:
                         if (!(p[i] > e.room.min[i] && p[i] < e.room.max[i]))
                             r.fail("environment.reference_point", "must be inside the room");
                 }
-            } else if (type == "sphere-room") {
+            } else if (type == EnvironmentType::sphere_room) {
                 Reader r(env, "environment", file,
                          {"type", "reference_point", "cube_size", "radius", "checker_deg", "light", "dark"});
                 e.type = EnvironmentType::sphere_room;
@@ -229,7 +233,7 @@ public:
                     r.read("reference_point", p);
                     e.reference_point = p;
                 }
-            } else if (type == "equirect") {
+            } else {
                 Reader r(env, "environment", file,
                          {"type", "file", "intensity", "colorspace", "proxy", "reference_point", "cube_size"});
                 e.type = EnvironmentType::equirect;
@@ -261,9 +265,6 @@ public:
                             scene.warnings.push_back(
                                 file.string() + ": environment." + key +
                                 ": ignored: an equirect without a proxy is at infinity (nothing is captured)");
-            } else {
-                top.fail("environment.type",
-                         "unknown value '" + scene_excerpt(type) + "' (known: room, sphere-room, equirect)");
             }
         }
     }

@@ -90,10 +90,7 @@ public:
 
     void read_sphere(const SceneReader& r, Sphere& s, Scene& scene) const override {
         r.read("roughness", s.roughness, 0, 1);
-        r.read_enum("glossy", s.glossy_request,
-                    {{"auto", GlossyRequest::automatic},
-                     {"prefiltered", GlossyRequest::prefiltered},
-                     {"localized", GlossyRequest::localized}});
+        r.read_enum("glossy", s.glossy_request, kGlossyRequestNames);
         const GlossyChoice choice = choose_glossy_method(s.roughness, s.glossy_request);
         s.glossy = choice.method;
         if (choice.fell_back && s.rough())

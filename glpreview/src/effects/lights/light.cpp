@@ -6,16 +6,6 @@
 
 namespace metalfit::glpreview {
 
-const char* to_string(LightType type) {
-    switch (type) {
-        case LightType::point: return "point";
-        case LightType::spot: return "spot";
-        case LightType::directional: return "directional";
-        case LightType::sphere: return "sphere";
-    }
-    return "";
-}
-
 const char* intensity_unit(LightType type) {
     switch (type) {
         case LightType::point:
@@ -35,11 +25,7 @@ Lights read_lights(const SceneReader& top) {
                              "cone_outer_deg"});
         Light light;
         if (!r.has("type")) r.fail(r.field("type"), "missing (point, spot, directional or sphere)");
-        r.read_enum("type", light.type,
-                    {{"point", LightType::point},
-                     {"spot", LightType::spot},
-                     {"directional", LightType::directional},
-                     {"sphere", LightType::sphere}});
+        r.read_enum("type", light.type, kLightTypeNames);
         const auto require = [&](const char* key) {
             if (!r.has(key))
                 r.fail(r.field(key), std::string("missing (a ") + to_string(light.type) + " light needs it)");

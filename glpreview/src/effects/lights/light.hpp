@@ -14,6 +14,11 @@
 namespace metalfit::glpreview {
 
 enum class LightType { point, spot, directional, sphere };
+inline constexpr EnumNames kLightTypeNames{"light type", KnownNamesWording::known,
+                                           std::array{EnumName<LightType>{LightType::point, "point"},
+                                                      EnumName<LightType>{LightType::spot, "spot"},
+                                                      EnumName<LightType>{LightType::directional, "directional"},
+                                                      EnumName<LightType>{LightType::sphere, "sphere"}}};
 
 struct Light {
     LightType type = LightType::point;
@@ -36,7 +41,7 @@ struct Lights {
 inline constexpr std::size_t kMaxLights = 8;
 inline constexpr int kShadowMapSize = 256;
 
-const char* to_string(LightType type);       // "point", "spot", "directional", "sphere"
+inline const char* to_string(LightType type) { return kLightTypeNames.name(type).data(); }
 const char* intensity_unit(LightType type);  // "W/sr", "W/m2", "W/m2/sr"
 
 // The "lights" key (an array), read strictly: errors name the file and the field.

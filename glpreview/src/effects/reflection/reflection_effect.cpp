@@ -34,16 +34,8 @@ public:
     }
 
     void read_sphere(const SceneReader& r, Sphere& s, Scene& scene) const override {
-        r.read_enum("reflection", s.reflection,
-                    {{"classic", ReflectionMode::classic},
-                     {"distance-impostor", ReflectionMode::distance_impostor},
-                     {"box-parallax", ReflectionMode::box_parallax}});
-        r.read_enum("strategy", s.strategy,
-                    {{"secant", Strategy::secant},
-                     {"false-position", Strategy::false_position},
-                     {"mixed", Strategy::mixed},
-                     {"illinois", Strategy::illinois},
-                     {"safe-secant", Strategy::safe_secant}});
+        r.read_enum("reflection", s.reflection, kReflectionModeNames);
+        r.read_enum("strategy", s.strategy, kStrategyNames);
         r.read("iterations", s.iterations, 0, 64);
         r.read("tolerance", s.tolerance, 0, 1);
         r.read("search_steps", s.search_steps, 0, 64);
