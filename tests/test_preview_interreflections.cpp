@@ -104,14 +104,17 @@ TEST(InterreflectionsPlan, MapsComeFromTheGeometry) {
     EXPECT_TRUE(test::Contains(text, "sphere-maps [GPU]: max_bounces 3: mirror sphere 0 sees 1; 1 sees 0")) << text;
     EXPECT_TRUE(test::Contains(text, "up to 3 reflections")) << text;
 
-    // A lone sphere has nothing to reflect; a rough sphere gets no map but is seen in the mirror's.
+    // A lone sphere has nothing to reflect; a rough sphere gets a prefiltered map of its own (and is seen in the
+    // mirror's).
     const Scene lone =
         parse_scene(R"({"max_bounces": 3, "spheres": [{"center": [0, 1, 0], "radius": 0.5}]})", "b.json");
     EXPECT_FALSE(plan_bounces(lone).active());
-    EXPECT_TRUE(test::Contains(explain(build_plan(lone), lone), "no mirror sphere sees another sphere (one sphere)"));
+    EXPECT_TRUE(test::Contains(explain(build_plan(lone), lone), "no sphere sees another sphere (one sphere)"));
     std::string rough = facing_scene(R"("max_bounces": 2,)");
     rough.replace(rough.find(R"("material": "Cu")"), 16, R"("material": "Cu", "roughness": 0.3)");
-    EXPECT_EQ(plan_bounces(parse_scene(rough, "bounces.json")).mapped, (std::vector<std::size_t>{0}));
+    const BouncePlan with_rough = plan_bounces(parse_scene(rough, "bounces.json"));
+    EXPECT_EQ(with_rough.mapped, (std::vector<std::size_t>{0}));
+    EXPECT_EQ(with_rough.rough_mapped, (std::vector<std::size_t>{1}));
 
     // A column between two spheres hides each from the other: no map.
     const Scene walled = parse_scene(R"({"max_bounces": 2, "environment": {"type": "room",
@@ -267,6 +270,37 @@ TEST(InterreflectionsGpu, SpheresSeenInSpheresAgreeWithTracedPaths) {
     const Agreement third = agreement(three, 3, 3, 0.03);
     ASSERT_GT(third.pixels, 80);
     EXPECT_GT(third.share, 0.88) << third.pixels << " share " << third.share;
+}
+
+// A rough sphere beside a mirror: with its own prefiltered map it shows the mirror in its lobe, as the Monte-Carlo
+// reference (which traces the bounces) does; with one bounce it shows the room there.
+TEST(InterreflectionsGpu, ARoughSphereSeesTheMirrorBesideIt) {
+    std::string json = facing_scene(R"("max_bounces": 2,)");
+    json.replace(json.find(R"("material": "Au")"), 16,
+                 R"("material": "Au", "roughness": 0.3, "glossy": "prefiltered")");
+    json.replace(json.find(R"("reference": false)"), 18, R"("reference": true, "reference_samples": 64)");
+    const Scene scene = parse_scene(json, "bounces.json");
+    ASSERT_EQ(plan_bounces(scene).rough_mapped, (std::vector<std::size_t>{0}));
+    const PreviewResult two = run_preview(scene, options());
+    Scene one = scene;
+    one.effects = {};
+    const PreviewResult single = run_preview(one, options());
+    const ReferenceRender& reference = *two.reference;  // traced to two bounces
+    double error_two = 0, error_one = 0;
+    int pixels = 0;
+    // Over the rough sphere's pixels where the second bounce matters (the two references differ there).
+    for (int y = 0; y < scene.height; ++y)
+        for (int x = 0; x < scene.width; ++x) {
+            if (reference.sphere_id[static_cast<std::size_t>(y) * scene.width + x] != 0) continue;
+            const RGB r = reference.image.at(x, y), a = two.beauty->at(x, y), b = single.beauty->at(x, y);
+            const RGB r1 = single.reference->image.at(x, y);
+            if (std::abs(r.r - r1.r) + std::abs(r.g - r1.g) + std::abs(r.b - r1.b) < 0.1) continue;
+            error_two += std::abs(a.r - r.r) + std::abs(a.g - r.g) + std::abs(a.b - r.b);
+            error_one += std::abs(b.r - r.r) + std::abs(b.g - r.g) + std::abs(b.b - r.b);
+            ++pixels;
+        }
+    ASSERT_GT(pixels, 100);
+    EXPECT_LT(error_two, 0.75 * error_one) << error_two / pixels << " vs " << error_one / pixels;
 }
 
 TEST(InterreflectionsGpu, OneBounceIsTodaysFrame) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "../glossy_prefiltered/glossy_prefiltered_effect.hpp"
 #include "glpreview/gl/uniforms.hpp"
 #include "render/embedded_shaders.hpp"
 
@@ -107,6 +108,39 @@ void draw_layer(GpuRenderer& renderer, const MapPrograms& programs, std::size_t 
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+// Rough sphere i's map: per face the room from its centre, then every other sphere with its own program.
+void draw_rough_map(GpuRenderer& renderer, const BuiltProgram& room, std::size_t i, const EnvironmentCube& target,
+                    const gl::Framebuffer& fbo) {
+    const Scene& scene = renderer.scene();
+    std::vector<std::size_t> others;
+    for (std::size_t j = 0; j < scene.spheres.size(); ++j)
+        if (j != i) others.push_back(j);
+    for (int face = 0; face < 6; ++face) {
+        glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT1, 0, 0);
+        glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, target.texture.id(), 0, face);
+        glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+        if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw GlError("sphere " + std::to_string(i) + "'s radiance map face " + std::to_string(face) +
+                          " cannot be rendered to");
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+        glViewport(0, 0, target.size, target.size);
+        const float far = 1.0f;
+        glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &far);
+        glEnable(GL_DEPTH_TEST);
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GL_ALWAYS);
+        renderer.bind_environment(room);
+        glUseProgram(room.id());
+        glBindVertexArray(renderer.vertex_array());
+        set_uniform(room.id(), "u_face", face);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDepthFunc(GL_LESS);
+        renderer.draw_spheres(cube_face_view(scene.spheres[i].center, face), target.size, target.size, others);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glGenerateTextureMipmap(target.texture.id());
+}
+
 }  // namespace
 
 int bounce_map_size(const Scene& scene) { return std::min(scene.environment.cube_size, 256); }
@@ -116,17 +150,14 @@ CameraBasis cube_face_view(Vec3 center, int face) {
     return {center, forward, cube_direction(face, 1, 0) - forward, cube_direction(face, 0, 1) - forward};
 }
 
-BounceMaps render_bounce_maps(GpuRenderer& renderer, const BouncePlan& plan) {
+void render_bounce_maps(GpuRenderer& renderer, const BouncePlan& plan, BounceMaps& maps) {
     const Scene& scene = renderer.scene();
-    BounceMaps maps;
     maps.size = bounce_map_size(scene);
     maps.layer_of.assign(scene.spheres.size(), -1);
     for (std::size_t k = 0; k < plan.mapped.size(); ++k) maps.layer_of[plan.mapped[k]] = static_cast<int>(k);
     const int layers = static_cast<int>(plan.mapped.size());
     maps.layers = layers;
-    maps.radiance = cube_array(maps.size, 2 * layers, GL_LINEAR);
-    maps.hits = cube_array(maps.size, layers, GL_NEAREST);  // an index is not interpolated
-    std::vector<float> texels;                              // row 0: centre and layer; row 1: radius
+    std::vector<float> texels;  // row 0: centre and layer; row 1: radius
     for (std::size_t j = 0; j < scene.spheres.size(); ++j) {
         const Vec3 c = scene.spheres[j].center;
         texels.insert(texels.end(), {float(c.x), float(c.y), float(c.z), float(maps.layer_of[j])});
@@ -148,13 +179,34 @@ BounceMaps render_bounce_maps(GpuRenderer& renderer, const BouncePlan& plan) {
     const gl::Renderbuffer depth = gl::create_renderbuffer();
     glNamedRenderbufferStorage(depth.id(), GL_DEPTH_COMPONENT32F, maps.size, maps.size);
     glNamedFramebufferRenderbuffer(fbo.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
-    for (const std::size_t i : plan.mapped) {
-        for (const BuiltProgram* p : {&programs.room, &programs.sphere})
-            set_uniform(p->id(), "u_map_center", scene.spheres[i].center);
-        draw_layer(renderer, programs, i, maps.layer_of[i], layers, maps, fbo);
+    if (layers > 0) {
+        maps.radiance = cube_array(maps.size, 2 * layers, GL_LINEAR);
+        maps.hits = cube_array(maps.size, layers, GL_NEAREST);  // an index is not interpolated
+        for (const std::size_t i : plan.mapped) {
+            for (const BuiltProgram* p : {&programs.room, &programs.sphere})
+                set_uniform(p->id(), "u_map_center", scene.spheres[i].center);
+            draw_layer(renderer, programs, i, maps.layer_of[i], layers, maps, fbo);
+        }
+    }
+    maps.rough.clear();
+    maps.rough.resize(scene.spheres.size());
+    if (!plan.rough_mapped.empty()) {
+        // The rough spheres' maps show the mirrors with their bounces: their programs find these maps.
+        Blackboard& frame = renderer.frame();
+        frame.put(maps);
+        const PrefilteredCube* room_prefiltered = frame.find<PrefilteredCube>();
+        for (const std::size_t i : plan.rough_mapped) {
+            RoughMap& map = maps.rough[i].emplace(
+                RoughMap{EnvironmentCube::create({maps.size, true, true}),
+                         PrefilteredCube::create({PrefilteredCube::size_for(maps.size),
+                                                  PrefilteredCube::levels_for(PrefilteredCube::size_for(maps.size))})});
+            set_uniform(programs.room.id(), "u_map_center", scene.spheres[i].center);
+            draw_rough_map(renderer, programs.room, i, map.radiance, fbo);
+            prefilter_environment(renderer, map.radiance, map.prefiltered);
+        }
+        if (room_prefiltered) frame.put(*room_prefiltered);  // prefilter_environment put each rough map's there
     }
     check_gl("drawing the spheres' distance maps");
-    return maps;
 }
 
 gl::Texture bounce_fresnel_table(const GpuRenderer& renderer) {

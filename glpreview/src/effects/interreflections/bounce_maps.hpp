@@ -7,15 +7,24 @@
 // ray that passes behind a sphere of the front layer goes on). A static scene makes them once.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "bounce_plan.hpp"
 #include "glpreview/gl/objects.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
+#include "glpreview/render/gpu_resources.hpp"
 #include "glpreview/scene/camera.hpp"
 
 namespace metalfit::glpreview {
+
+// A rough sphere's own map: what it sees from its centre (the room and every other sphere with its own program,
+// mirrors with their bounces), and that prefiltered for its lobe as the room's cube is.
+struct RoughMap {
+    EnvironmentCube radiance;  // rgb the radiance, a the distance (read by the lobe's localized lookup); mip-mapped
+    PrefilteredCube prefiltered;
+};
 
 struct BounceMaps {
     // Cube-map array, RGBA32F: rgb the radiance seen from the centre, a: the distance to it; layer L is the front
@@ -27,14 +36,17 @@ struct BounceMaps {
     gl::Texture spheres;  // 2D, a column per sphere, RGBA32F: row 0 its centre, w its layer (−1: no map); row 1 radius
     int size = 0;         // texels per face edge
     int layers = 0;       // mapped spheres
-    std::vector<int> layer_of;  // by sphere: its layer, −1 for none
+    std::vector<int> layer_of;                   // by sphere: its layer, −1 for none
+    std::vector<std::optional<RoughMap>> rough;  // by sphere: a rough sphere's own map, when the plan gives one
 };
 
 // The maps' edge: the environment's cube size, at most 256 (a mapped sphere's three layers: 6 · size² · 48 bytes).
 int bounce_map_size(const Scene& scene);
 
-// The plan's maps. Needs the environment and what the rough spheres' programs read bound on the renderer.
-BounceMaps render_bounce_maps(GpuRenderer& renderer, const BouncePlan& plan);
+// The plan's maps into `maps` (which stays where it is: the mirrors' maps are put on the renderer's blackboard while
+// the rough spheres' maps are drawn, since those show the mirrors with their bounces). Needs the environment and
+// what the spheres' programs read bound on the renderer.
+void render_bounce_maps(GpuRenderer& renderer, const BouncePlan& plan, BounceMaps& maps);
 
 // Every sphere's Fresnel in the renderer's frames now (its reference LUT or its model, as GpuRenderer::fresnel),
 // one row each over μ ∈ [0, 1] in kBounceFresnelTexels columns, RGB32F, linear: what a bounce multiplies.

@@ -34,6 +34,9 @@ bool segment_meets_box(Vec3 p, Vec3 q, Vec3 lo, Vec3 hi) {
 bool BouncePlan::maps(std::size_t sphere) const {
     return std::find(mapped.begin(), mapped.end(), sphere) != mapped.end();
 }
+bool BouncePlan::maps_rough(std::size_t sphere) const {
+    return std::find(rough_mapped.begin(), rough_mapped.end(), sphere) != rough_mapped.end();
+}
 
 bool hidden_by_room(const Scene& scene, const Sphere& a, const Sphere& b) {
     if (scene.environment.type != EnvironmentType::room) return false;
@@ -51,29 +54,36 @@ BouncePlan plan_bounces(const Scene& scene) {
         plan.reason = "max_bounces 1 (the default): spheres reflect the environment alone";
         return plan;
     }
-    std::vector<std::string> seen;
+    std::vector<std::string> seen, rough_seen;
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
-        if (scene.spheres[i].rough()) continue;
+        const Sphere& sphere = scene.spheres[i];
+        if (sphere.rough() && sphere.glossy != GlossyMethod::prefiltered) continue;
         std::vector<std::string> others;
         for (std::size_t j = 0; j < scene.spheres.size(); ++j)
-            if (j != i && !hidden_by_room(scene, scene.spheres[i], scene.spheres[j]))
-                others.push_back(std::to_string(j));
+            if (j != i && !hidden_by_room(scene, sphere, scene.spheres[j])) others.push_back(std::to_string(j));
         if (others.empty()) continue;
-        plan.mapped.push_back(i);
-        seen.push_back(std::to_string(i) + " sees " + join(others));
+        (sphere.rough() ? plan.rough_mapped : plan.mapped).push_back(i);
+        (sphere.rough() ? rough_seen : seen).push_back(std::to_string(i) + " sees " + join(others));
     }
     const std::string bounces = "max_bounces " + std::to_string(plan.max_bounces);
-    if (plan.mapped.empty()) {
-        plan.reason = bounces + ", but no mirror sphere sees another sphere" +
+    if (!plan.active()) {
+        plan.reason = bounces + ", but no sphere sees another sphere" +
                       std::string(scene.spheres.size() < 2 ? " (one sphere)" : "") +
                       ": spheres reflect the environment alone";
         return plan;
     }
     const int size = std::min(scene.environment.cube_size, 256);
-    plan.reason = bounces + ": mirror sphere " + join(seen, "; ") + ": " + std::to_string(plan.mapped.size()) +
-                  " distance map(s) " + std::to_string(size) + "² from the spheres' centres (radiance, distance, " +
-                  "normal), made once; a reflected ray that meets a mirror in them reflects again, up to " +
-                  std::to_string(plan.max_bounces) + " reflections";
+    std::vector<std::string> parts;
+    if (!plan.mapped.empty())
+        parts.push_back("mirror sphere " + join(seen, "; ") + ": " + std::to_string(plan.mapped.size()) +
+                        " distance map(s) " + std::to_string(size) + "² from the spheres' centres (radiance, " +
+                        "distance, normal), made once; a reflected ray that meets a mirror in them reflects again, " +
+                        "up to " + std::to_string(plan.max_bounces) + " reflections");
+    if (!plan.rough_mapped.empty())
+        parts.push_back("rough sphere " + join(rough_seen, "; ") + ": " + std::to_string(plan.rough_mapped.size()) +
+                        " radiance map(s) " + std::to_string(size) +
+                        "² from their centres, prefiltered for their lobes");
+    plan.reason = bounces + ": " + join(parts, "; ");
     return plan;
 }
 

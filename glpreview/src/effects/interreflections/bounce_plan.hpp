@@ -1,6 +1,7 @@
 // Which spheres need a distance map of their own for inter-reflections, decided from the scene's geometry (not a
-// flag): a mirror sphere (roughness 0) gets one when max_bounces > 1 and it sees another sphere (no room box hides
-// the other sphere from it). The plan says why, for --explain.
+// flag): a mirror sphere (roughness 0) gets distance maps when max_bounces > 1 and it sees another sphere (no room box
+// hides the other sphere from it); a rough sphere with the prefiltered lobe that sees another sphere gets a radiance
+// map of its own, prefiltered (when some mirror is mapped). The plan says why, for --explain.
 #pragma once
 
 #include <cstddef>
@@ -13,11 +14,13 @@ namespace metalfit::glpreview {
 
 struct BouncePlan {
     int max_bounces = 1;
-    std::vector<std::size_t> mapped;  // the spheres given a map, in scene order
-    std::string reason;               // why maps are made, or why none are
+    std::vector<std::size_t> mapped;        // the mirror spheres given distance maps, in scene order
+    std::vector<std::size_t> rough_mapped;  // the rough (prefiltered) spheres given a prefiltered map of their own
+    std::string reason;                     // why maps are made, or why none are
 
-    bool active() const { return !mapped.empty(); }
-    bool maps(std::size_t sphere) const;
+    bool active() const { return !mapped.empty() || !rough_mapped.empty(); }
+    bool maps(std::size_t sphere) const;        // a mirror with distance maps
+    bool maps_rough(std::size_t sphere) const;  // a rough sphere with a prefiltered map of its own
 };
 
 BouncePlan plan_bounces(const Scene& scene);

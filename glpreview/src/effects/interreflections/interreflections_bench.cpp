@@ -55,7 +55,8 @@ nlohmann::ordered_json bench_interreflections(GlContext& context, const PreviewO
     // Every sphere's map made once (what a scene change costs), per sphere below.
     GpuRenderer& two = *renderers[1];
     const BouncePlan plan = plan_bounces(scenes[1]);
-    variants.push_back([&two, &plan] { render_bounce_maps(two, plan); });
+    BounceMaps remade;
+    variants.push_back([&two, &plan, &remade] { render_bounce_maps(two, plan, remade); });
     const RoundTimes ms = interleaved_rounds(variants, rounds);
     check_gl("the inter-reflections benchmark");
 

@@ -69,12 +69,13 @@ public:
     // A mirror sphere searches its own distance map: the distance impostor (with the sphere's strategy), whatever
     // lookup it asked for against the room (a direction alone cannot place a sphere a few radii away).
     void read_sphere(const SceneReader& r, Sphere& s, Scene& scene) const override {
-        if (max_bounces(scene) <= 1 || s.rough() || s.reflection == ReflectionMode::distance_impostor) return;
+        if (max_bounces(scene) <= 1 || s.reflection == ReflectionMode::distance_impostor) return;
+        if (s.rough() && s.glossy != GlossyMethod::prefiltered) return;  // the localized lobe keeps the room
         if (r.has("reflection"))
             scene.warnings.push_back(r.file().string() + ": " + r.field("reflection") + ": '" +
                                      to_string(s.reflection) +
-                                     "' becomes 'distance-impostor' with max_bounces > 1: a mirror searches its own "
-                                     "distance map");
+                                     "' becomes 'distance-impostor' with max_bounces > 1: a sphere searches its own "
+                                     "map");
         s.reflection = ReflectionMode::distance_impostor;
     }
     // Spheres that reflect each other must not overlap: a ray leaving one would start inside another.
@@ -100,7 +101,10 @@ public:
     void declare_sphere(const SphereShader& shader, ShaderBuilder& builder) const override {
         if (shader.diagnostics) return;
         const BouncePlan plan = plan_bounces(shader.scene);
-        if (!plan.maps(sphere_index(shader.scene, shader.sphere))) return;
+        const std::size_t i = sphere_index(shader.scene, shader.sphere);
+        // A rough sphere with a map of its own: its lobe's lookup from its centre in that map (bound below).
+        if (plan.maps_rough(i)) builder.define("GLOSSY_OWN_MAP");
+        if (!plan.maps(i)) return;
         builder.define("IMPOSTOR_LAYERS")
             .define("MIRROR_REFLECTED", "bounce_radiance")
             .define("MAX_BOUNCES", std::to_string(plan.max_bounces))
@@ -112,11 +116,26 @@ public:
     }
 
     void bind_sphere(const SphereDraw& draw) const override {
-        if (!draw.program.reads("u_bounce_hits")) return;  // one bounce, a rough sphere, or the diagnostics
+        const bool mirror = draw.program.reads("u_bounce_hits");
+        const bool rough = glGetUniformLocation(draw.program.id(), "u_glossy_origin") >= 0;
+        if (!mirror && !rough) return;  // one bounce, a sphere without maps, or the diagnostics
         Blackboard& frame = draw.renderer.frame();
         const BounceMaps* maps = frame.find<BounceMaps>();
         if (!maps && frame.state<OwnBounceMaps>().maps) maps = &*frame.state<OwnBounceMaps>().maps;
-        if (!maps) throw std::logic_error("a mirror sphere reflects the others, but their distance maps were not made");
+        if (rough) {
+            const std::size_t i = sphere_index(draw.scene, draw.sphere);
+            const RoughMap* own = maps && i < maps->rough.size() && maps->rough[i] ? &*maps->rough[i] : nullptr;
+            if (!own) {  // seen in a map being drawn before its own exists: its lobe reflects the room's cube
+                set_uniform(draw.program.id(), "u_glossy_origin", draw.scene.environment.reference());
+                return;
+            }
+            draw.program.bind("u_env", own->radiance.texture.id());
+            set_uniform(draw.program.id(), "u_glossy_origin", draw.sphere.center);
+            draw.program.bind("u_prefiltered", own->prefiltered.texture.id());
+            set_uniform(draw.program.id(), "u_prefiltered_levels", static_cast<float>(own->prefiltered.levels));
+            return;
+        }
+        if (!maps) throw std::logic_error("a mirror sphere reflects the others, but their maps were not made");
         draw.program.bind("u_impostor_layers", maps->radiance.id());
         draw.program.bind("u_bounce_hits", maps->hits.id());
         draw.program.bind("u_bounce_spheres", maps->spheres.id());
@@ -142,7 +161,7 @@ public:
                                   },
                                   [run, reads, plan](const Out<BounceMaps>& d, Resources& r) {
                                       reads.bind(run->renderer(), r);
-                                      r.emplace(d.out, render_bounce_maps(run->renderer(), plan));
+                                      render_bounce_maps(run->renderer(), plan, r.emplace(d.out));
                                   })
                               .out;
         g.frame.add(maps);
@@ -150,7 +169,9 @@ public:
 
     void derive_from_environment(GpuRenderer& renderer, const EnvironmentCube&) const override {
         const BouncePlan plan = plan_bounces(renderer.scene());
-        if (plan.active()) renderer.frame().state<OwnBounceMaps>().maps = render_bounce_maps(renderer, plan);
+        if (!plan.active()) return;
+        std::optional<BounceMaps>& own = renderer.frame().state<OwnBounceMaps>().maps;
+        render_bounce_maps(renderer, plan, own.emplace());
     }
 };
 
