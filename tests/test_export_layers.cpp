@@ -119,10 +119,12 @@ TEST(ExportLayers, AFilmIsTheFormatsThinFilmOverTheBareMetalsConstants) {
         EXPECT_EQ(input_value(doc, stem + "_bsdf", "thinfilm_ior"), "2.2");
         for (const std::string& input : inputs)
             EXPECT_EQ(input_value(doc, stem + "_bsdf", input), input_value(bare_doc, stem + "_bsdf", input)) << input;
-        if (model == "gulbrandsen")
-            for (const char* input : {"reflectivity", "edge_color"})
+        if (model == "gulbrandsen") {
+            for (const char* input : {"reflectivity", "edge_color"}) {
                 EXPECT_EQ(input_value(doc, stem + "_artistic_ior", input),
                           input_value(bare_doc, stem + "_artistic_ior", input));
+            }
+        }
         EXPECT_FALSE(doc.child("materialx").child("layer"));
         EXPECT_FALSE(bare_doc.child("materialx")
                          .child("conductor_bsdf")
@@ -213,9 +215,9 @@ TEST(ExportLayers, ACoatIsTheFormatsCoatOverTheBareMetalsConstants) {
 TEST(ExportLayers, ADispersiveFilmsIndexIsItsNAt550nmAndTheHeadersSaySo) {
     TempDir tmp;
     const fs::path dir = tmp.path() / "ti";
-    export_to("anodized-ti-80nm --coat 1.6 --model f82-tint --format json,openpbr,mtlx,gltf,glsl", dir);
+    export_to("Ti --film TiO2:80nm --coat 1.6 --model f82-tint --format json,openpbr,mtlx,gltf,glsl", dir);
     const double n550 = tabulated_n_at(fs::path(metalfit::test::kDataDir) / "films/TiO2/Siefke.yml", 550.0);
-    const std::string stem = "metalfit_anodized_ti_80nm_f82_tint";
+    const std::string stem = "metalfit_ti_f82_tint";
     const Json pbr = json_of(dir / "openpbr" / (stem + ".json"));
     EXPECT_NEAR(pbr["open_pbr_surface"]["thin_film_ior"].get<double>(), n550, 1e-12);
     EXPECT_DOUBLE_EQ(pbr["open_pbr_surface"]["thin_film_thickness"].get<double>(), 0.08);
@@ -233,7 +235,7 @@ TEST(ExportLayers, ADispersiveFilmsIndexIsItsNAt550nmAndTheHeadersSaySo) {
     EXPECT_NE(glsl.find("the parameters fit the stack's reflectance"), std::string::npos);
     EXPECT_NE(glsl.find("// film layer: TiO2 (Siefke) film of 80 nm (0.08 um); n(550 nm) = "), std::string::npos);
     EXPECT_NE(glsl.find("// coat layer: coat n = 1.6; n(550 nm) = 1.6"), std::string::npos);
-    const Json stack = json_of(dir / "metalfit_export.json")["materials"]["anodized-ti-80nm"]["data"]["stack"];
+    const Json stack = json_of(dir / "metalfit_export.json")["materials"]["Ti"]["data"]["stack"];
     EXPECT_NEAR(stack["film"]["n"].get<double>(), n550, 1e-12);
     EXPECT_EQ(stack["coat"]["n"], 1.6);
 }
