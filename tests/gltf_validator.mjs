@@ -26,6 +26,16 @@ for (const file of files) {
   for (const m of i.messages)
     if (m.severity < 3) console.log(`  [${["error", "warning", "info"][m.severity]}] ${m.code} ${m.pointer ?? ""}: ${m.message}`);
   if (i.numErrors > 0 || i.truncated) failed++;
+  // A layered asset (a folder layered-*): the validator must know its extensions (no warning, e.g.
+  // UNSUPPORTED_EXTENSION) and see KHR_materials_clearcoat and/or KHR_materials_iridescence used.
+  if (path.basename(path.dirname(path.dirname(file))).startsWith("layered")) {
+    const used = report.info?.extensionsUsed ?? [];
+    const known = used.filter((e) => e === "KHR_materials_clearcoat" || e === "KHR_materials_iridescence");
+    if (i.numWarnings > 0 || known.length === 0 || known.length !== used.length) {
+      console.log(`  layered asset: expected known layer extensions and no warning, got ${JSON.stringify(used)}`);
+      failed++;
+    }
+  }
   if (report.info?.materialCount !== 1 || report.info?.drawCallCount !== 1) {
     console.log(`  expected one material and one draw call, got ${JSON.stringify(report.info)}`);
     failed++;

@@ -78,7 +78,9 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     require_export_space(request, context.space, materialx_space);  // glTF: Linear Rec.709 only, refused before fitting
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     TerminalProgress progress;
-    const std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), fit_request, jobs, progress.callback());
+    std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), fit_request, jobs, progress.callback());
+    // OpenPBR, MaterialX and glTF write a layered material as their own coat / thin film over the bare metal.
+    if (needs_bare_metal_fits(request)) attach_bare_metal_fits(fits, setup.batch(), fit_request, jobs);
     for (const MaterialFit& f : fits)
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
     for (const std::string& w : export_warnings(context, request, materialx_space)) warn(w);

@@ -67,7 +67,8 @@ std::string half_precision_note(const WrittenParameters& written, std::string_vi
 }
 
 std::string comment_header(const MaterialExport& material, const WrittenParameters& written,
-                           const ExportContext& context, std::string_view prefix, std::string_view extra) {
+                           const ExportContext& context, std::string_view prefix, std::string_view extra,
+                           bool base_of_layers) {
     const Material& m = material.fit->material;
     const FitRecordContext& r = context.record;
     const Metrics& e = written.metrics;
@@ -76,7 +77,7 @@ std::string comment_header(const MaterialExport& material, const WrittenParamete
     // direction-changing character, no backslash that would continue a line comment (libfit/base/names.hpp).
     const auto line = [&](const std::string& text) { s << prefix << comment_text(text) << "\n"; };
     line("metalfit " METALFIT_VERSION " export: " + m.name + " (" + m.id + ")");
-    for (const std::string& provenance : header_provenance_lines(m, r)) line(provenance);
+    for (const std::string& provenance : header_provenance_lines(m, r, base_of_layers)) line(provenance);
     line("model: " + std::string(written.model->id()) + " - " + std::string(written.model->title()));
     if (!extra.empty()) {
         std::string_view rest = extra;
@@ -88,9 +89,9 @@ std::string comment_header(const MaterialExport& material, const WrittenParamete
     }
     line("parameters: " + written.origin + "; gamut policy: " + to_string(context.request.gamut));
     for (const std::string& note : written.gamut) line("OUT OF GAMUT: " + note);
-    line("error of these parameters against R_c (R, G, B; " + std::to_string(r.error.nodes) +
-         " Gauss-Legendre nodes on [0, 1], " + to_string(r.error.weight) +
-         " weight; maxima over mu = i/1024 and the nodes):");
+    line(std::string("error of these parameters against ") + (base_of_layers ? "the bare metal's " : "") +
+         "R_c (R, G, B; " + std::to_string(r.error.nodes) + " Gauss-Legendre nodes on [0, 1], " +
+         to_string(r.error.weight) + " weight; maxima over mu = i/1024 and the nodes):");
     line("  rel_rms     = " + figures(e.rel_rms));
     line("  abs_rms     = " + figures(e.abs_rms));
     line("  max_rel     = " + figures(e.max_rel));

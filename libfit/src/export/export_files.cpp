@@ -1,6 +1,8 @@
 // The export core: the fits of a request become the written parameters of each material and model, and each
 // requested format (format_registry) writes its files from them.
 #include <algorithm>
+#include <functional>
+#include <memory>
 #include <set>
 #include <stdexcept>
 
@@ -67,32 +69,71 @@ std::string leave_out_formats_the_space_cannot_carry(ExportRequest& request, con
            "' (export it with --space 'Linear Rec.709 (sRGB)')";
 }
 
+bool needs_bare_metal_fits(const ExportRequest& request) {
+    return std::any_of(request.formats.begin(), request.formats.end(),
+                       [](ExportFormat f) { return detail::format_entry(f).layers_over_bare_metal; });
+}
+
+void attach_bare_metal_fits(std::vector<MaterialFit>& fits, const BatchColour& colour,
+                            const MaterialFitRequest& request, int jobs) {
+    std::vector<std::size_t> layered;
+    std::vector<std::function<Material()>> loaders;
+    for (std::size_t i = 0; i < fits.size(); ++i)
+        if (fits[i].material.layers && !fits[i].material.layers->empty()) {
+            layered.push_back(i);
+            loaders.push_back([material = fits[i].material]() mutable {
+                material.layers = nullptr;
+                return material;
+            });
+        }
+    if (loaders.empty()) return;
+    std::vector<MaterialFit> bare = fit_materials(loaders, colour, request, jobs);
+    for (std::size_t j = 0; j < layered.size(); ++j)
+        fits[layered[j]].bare_metal = std::make_shared<const MaterialFit>(std::move(bare[j]));
+}
+
+namespace {
+
+// The written parameters of every requested model of one fit (and the stand-in's where a format needs it).
+detail::MaterialExport material_export(const MaterialFit& fit, const ExportRequest& request) {
+    using detail::ModelExport;
+    const Model& stand_in_model = expressible_stand_in();
+    if (!fit.reference) throw std::logic_error("export: fit of " + fit.material.id + " has no sampled reference");
+    detail::MaterialExport m{&fit, {}, nullptr};
+    const auto result_of = [&](const Model* model) -> const ModelResult& {
+        for (const ModelResult& r : fit.models)
+            if (r.model == model) return r;
+        throw std::logic_error("export: " + fit.material.id + " was not fitted with " + std::string(model->id()));
+    };
+    const auto needed = models_to_fit(request);
+    const bool has_stand_in = std::find(needed.begin(), needed.end(), &stand_in_model) != needed.end();
+    std::optional<WrittenParameters> stand_in;
+    if (has_stand_in)
+        stand_in = written_parameters(result_of(&stand_in_model), *fit.reference, request.source, request.gamut,
+                                      fit.material.id);
+    for (const Model* model : request.models) {
+        ModelExport e{
+            written_parameters(result_of(model), *fit.reference, request.source, request.gamut, fit.material.id),
+            std::nullopt};
+        if (!detail::as_f82_tint(e.written, *fit.reference)) e.stand_in = stand_in;
+        m.models.push_back(std::move(e));
+    }
+    return m;
+}
+
+}  // namespace
+
 std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
                                      const ExportRequest& request, const std::string& materialx_space) {
-    using detail::ModelExport;
     require_export_space(request, context.space, materialx_space);
-    const Model& stand_in_model = expressible_stand_in();
     std::vector<detail::MaterialExport> materials;
     for (const MaterialFit& fit : fits) {
-        if (!fit.reference) throw std::logic_error("export: fit of " + fit.material.id + " has no sampled reference");
-        detail::MaterialExport m{&fit, {}};
-        const auto result_of = [&](const Model* model) -> const ModelResult& {
-            for (const ModelResult& r : fit.models)
-                if (r.model == model) return r;
-            throw std::logic_error("export: " + fit.material.id + " was not fitted with " + std::string(model->id()));
-        };
-        const auto needed = models_to_fit(request);
-        const bool has_stand_in = std::find(needed.begin(), needed.end(), &stand_in_model) != needed.end();
-        std::optional<WrittenParameters> stand_in;
-        if (has_stand_in)
-            stand_in = written_parameters(result_of(&stand_in_model), *fit.reference, request.source, request.gamut,
-                                          fit.material.id);
-        for (const Model* model : request.models) {
-            ModelExport e{
-                written_parameters(result_of(model), *fit.reference, request.source, request.gamut, fit.material.id),
-                std::nullopt};
-            if (!detail::as_f82_tint(e.written, *fit.reference)) e.stand_in = stand_in;
-            m.models.push_back(std::move(e));
+        detail::MaterialExport m = material_export(fit, request);
+        if (fit.material.layers && !fit.material.layers->empty() && needs_bare_metal_fits(request)) {
+            if (!fit.bare_metal)
+                throw std::logic_error("export: layered " + fit.material.id +
+                                       " has no bare-metal fit (attach_bare_metal_fits)");
+            m.bare_metal = std::make_shared<const detail::MaterialExport>(material_export(*fit.bare_metal, request));
         }
         materials.push_back(std::move(m));
     }

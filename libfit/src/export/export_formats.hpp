@@ -2,6 +2,7 @@
 // comment header every text export starts with.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include <pugixml.hpp>
 
 #include "libfit/export/export.hpp"
+#include "libfit/io/layer_stack.hpp"
 
 namespace metalfit::detail {
 
@@ -22,7 +24,14 @@ struct ModelExport {
 struct MaterialExport {
     const MaterialFit* fit = nullptr;
     std::vector<ModelExport> models;
+    // A layered material in a format that layers a coat or film itself: the export of its bare metal (the same
+    // models, in the same order), whose constants are the base under the format's own layers; null otherwise.
+    std::shared_ptr<const MaterialExport> bare_metal = nullptr;
 };
+
+// What a layered format writes for one material: `bare_metal` when it has one, else the material itself (a bare
+// metal, or a layered one in a request without those formats).
+inline const MaterialExport& base_export(const MaterialExport& m) { return m.bare_metal ? *m.bare_metal : m; }
 
 struct ExportContext {
     FitRecordContext record;
@@ -50,8 +59,11 @@ std::string shader_channel_list(const ModelParameters& params, std::size_t index
 
 // The comment header of a text export, one line per entry, each prefixed with `prefix` ("// "): material, data
 // source, colour space, model, where the parameters come from, gamut notes, error figures, metalfit version.
+// `base_of_layers`: the written parameters are the bare metal's, under the format's own coat / thin film (the
+// stack line says so, and the error figures are against the bare metal's curve).
 std::string comment_header(const MaterialExport& material, const WrittenParameters& written,
-                           const ExportContext& context, std::string_view prefix, std::string_view extra = {});
+                           const ExportContext& context, std::string_view prefix, std::string_view extra = {},
+                           bool base_of_layers = false);
 
 // One line (and one per parameter at its fit bound) saying whether `written` survives half precision (|x| <= 65504):
 // its constants, and what a conductor (k², 4n²k²) or Gulbrandsen's r, g → n, k compute from them.
@@ -119,6 +131,26 @@ std::string xml_text(const pugi::xml_document& doc);
 
 // The header line of a MaterialX document whose space MaterialX cannot name (export_warnings says the same on stderr).
 std::string untagged_materialx_warning(const std::string& ocio_space);
+
+// A layered material as the formats with their own coat and thin film take it (layered.cpp; docs/export.md, Layered
+// exports): each layer's one index at kLayerIndexWavelengthNm and its thickness, and what the format cannot express.
+struct LayeredParameters {
+    bool coat = false;
+    double coat_ior = 1.0;           // the coat's n at 550 nm
+    bool coat_absorbs = false;       // a coat given a thickness whose table has k > 0 somewhere in the visible
+    bool film = false;               // a thin film (thickness and index below)
+    double film_thickness_nm = 0.0;  // MaterialX thinfilm_thickness (nanometres), glTF iridescenceThickness*
+    double film_thickness_um = 0.0;  // OpenPBR thin_film_thickness (micrometres)
+    double film_ior = 1.0;           // the film's n at 550 nm
+    LayerIndexSummary coat_index = {};
+    LayerIndexSummary film_index = {};
+};
+// Null when `material` has no layers.
+std::optional<LayeredParameters> layered_parameters(const Material& material);
+// One line per thing `format` (openpbr, mtlx or gltf) cannot carry of the stack or takes as an approximation: the
+// indices as one number at 550 nm of a dispersive layer, an absorbing film's k, an absorbing coat, glTF's clearcoat
+// IOR fixed at 1.5; and a first line saying how the stack is written. For the comment headers and the JSON `layers`.
+std::vector<std::string> layered_notes(const LayeredParameters& layers, ExportFormat format);
 
 // F0 and tint of the F82-tint form that evaluates the same curve as `written` (schlick: tint 1; lazanyi: F0 of n, k,
 // tint 1; f82-tint: itself), or nothing when the model has no F82-tint form (then the stand-in is used).

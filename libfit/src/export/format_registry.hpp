@@ -34,6 +34,9 @@ struct ExportFormatEntry {
     StandInNeed stand_in;
     bool materialx_document;  // a MaterialX document: tagged with MaterialX's name of the colour space, if it has one
     bool linear_rec709_only;  // its colours can only be linear Rec.709 (glTF 2.0 cannot name another space)
+    // A layered material is written as the format's own coat / thin film over the bare metal's constants (OpenPBR,
+    // MaterialX, glTF), so the bare metal is fitted too (attach_bare_metal_fits); otherwise the stack's curve is.
+    bool layers_over_bare_metal;
 };
 
 // Every format, in kExportFormatNames's order.

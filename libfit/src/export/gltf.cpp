@@ -136,9 +136,14 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
     const std::string uri = "data:application/octet-stream;base64," + base64(mesh.buffer);
     std::vector<ExportFile> files;
     for (const MaterialExport& m : materials)
-        for (const ModelExport& e : m.models) {
+        for (std::size_t i = 0; i < m.models.size(); ++i) {
+            const ModelExport& e = m.models[i];
             const std::string stem = file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id());
-            const WrittenParameters& w = e.written;
+            // A layered material: baseColorFactor is the bare metal's F0, under glTF's clearcoat and iridescence.
+            const MaterialExport& bare = base_export(m);
+            const std::optional<LayeredParameters> layers =
+                m.bare_metal ? layered_parameters(m.fit->material) : std::nullopt;
+            const WrittenParameters& w = bare.models[i].written;
             const GltfBaseColor base = gltf_base_color(w, context.request.gamut);
             const Metrics& mt = w.metrics;
             Json params = Json::object();
@@ -148,11 +153,12 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
                 params[std::string(parameters[i].name)] = Json::array({v.r, v.g, v.b});
             }
             Json tint = nullptr;
-            if (const auto f82 = as_f82_tint(w, *m.fit->reference)) {
+            if (const auto f82 = as_f82_tint(w, *bare.fit->reference)) {
                 const RGB t = f82->params.parameter(1);
                 tint = Json::array({t.r, t.g, t.b});
             }
-            Json provenance = material_identity_json("metalfit.gltf/1", m.fit->material, context.record, w.model->id());
+            Json provenance = material_identity_json("metalfit.gltf/1", m.fit->material, context.record, w.model->id(),
+                                                     layers.has_value());
             provenance["from"] = w.origin;
             provenance["params"] = params;
             provenance["gamut"] = to_string(context.request.gamut);
@@ -168,6 +174,27 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
                 "it is, so glTF metals have no F82 tint";
             provenance["roughness"] = context.request.roughness;
             provenance["metrics"] = metrics_record(mt);
+            Json extensions = Json::object();
+            Json used = Json::array();
+            if (layers) {
+                provenance["layers"] = {{"base", "the bare metal's fit (" + bare.fit->material.name +
+                                                     ", no layers): f0, params and metrics are its"},
+                                        {"index_at_nm", kLayerIndexWavelengthNm},
+                                        {"notes", layered_notes(*layers, ExportFormat::gltf)}};
+                if (layers->coat) {  // a smooth coat; glTF fixes its index at 1.5 (the notes say what that changes)
+                    extensions["KHR_materials_clearcoat"] = {{"clearcoatFactor", 1.0},
+                                                             {"clearcoatRoughnessFactor", 0.0}};
+                    used.push_back("KHR_materials_clearcoat");
+                }
+                if (layers->film) {  // one thickness: minimum = maximum (no thickness texture), in nanometres
+                    extensions["KHR_materials_iridescence"] = {
+                        {"iridescenceFactor", 1.0},
+                        {"iridescenceIor", layers->film_ior},
+                        {"iridescenceThicknessMinimum", layers->film_thickness_nm},
+                        {"iridescenceThicknessMaximum", layers->film_thickness_nm}};
+                    used.push_back("KHR_materials_iridescence");
+                }
+            }
             const std::size_t vertex_bytes = mesh.positions_bytes;
             Json j = {
                 {"asset", {{"version", "2.0"}, {"generator", "metalfit " METALFIT_VERSION}}},
@@ -208,6 +235,10 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
                        {"byteLength", mesh.indices_bytes},
                        {"target", 34963}}})},
                 {"buffers", Json::array({{{"byteLength", mesh.buffer.size()}, {"uri", uri}}})}};
+            if (!used.empty()) {
+                j["extensionsUsed"] = used;
+                j["materials"][0]["extensions"] = extensions;
+            }
             files.push_back({"gltf/" + stem + ".gltf", j.dump(2) + "\n"});
         }
     return files;

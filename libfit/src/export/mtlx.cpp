@@ -64,16 +64,24 @@ pugi::xml_node append_bsdf(pugi::xml_node root, const char* category, const std:
     return n;
 }
 
-std::string document(const MaterialExport& m, const ModelExport& e, const ExportContext& context) {
+std::string document(const MaterialExport& m, std::size_t model_index, const ExportContext& context) {
     const std::string& ocio_space = context.record.space;
+    const ModelExport& e = m.models[model_index];
     const std::string stem = file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id());
+    // A layered material: the metal's BSDF is the bare metal's fit, under MaterialX's own coat layer and thin film.
+    const MaterialExport& base = base_export(m);
+    const std::optional<LayeredParameters> layers = m.bare_metal ? layered_parameters(m.fit->material) : std::nullopt;
     std::string extra;
-    const WrittenParameters w = materialx_parameters(m, e, extra);
+    const WrittenParameters w = materialx_parameters(base, base.models[model_index], extra);
+    if (layers)
+        for (const std::string& line : layered_notes(*layers, ExportFormat::mtlx))
+            extra += std::string(extra.empty() ? "" : "\n") + line;
     if (context.materialx_colorspace.empty())
         extra += std::string(extra.empty() ? "" : "\n") + untagged_materialx_warning(ocio_space);
     pugi::xml_document doc;
-    pugi::xml_node root = begin_materialx(doc, comment_header(m, w, context, "  ", extra), context);
-    const std::string provenance = comment_header(m, w, context, "", extra);
+    const bool base_of_layers = layers.has_value();
+    pugi::xml_node root = begin_materialx(doc, comment_header(m, w, context, "  ", extra, base_of_layers), context);
+    const std::string provenance = comment_header(m, w, context, "", extra, base_of_layers);
     const std::string bsdf = stem + "_bsdf";
     // The perceptual roughness as OpenPBR takes it; roughness_anisotropy makes MaterialX's α = R² of it.
     const std::string roughness = stem + "_roughness";
@@ -86,6 +94,12 @@ std::string document(const MaterialExport& m, const ModelExport& e, const Export
         in.append_attribute("name") = "roughness";
         in.append_attribute("type") = "vector2";
         in.append_attribute("nodename") = roughness.c_str();
+        // A thin film over the metal: MaterialX 1.39's thinfilm inputs of the metal's BSDF (its 1.38 thin_film_bsdf
+        // node layered over the conductor became these inputs), the thickness in nanometres.
+        if (layers && layers->film) {
+            add_input(n, "thinfilm_thickness", "float", number(layers->film_thickness_nm));
+            add_input(n, "thinfilm_ior", "float", number(layers->film_ior));
+        }
     };
     switch (w.model->materialx_form()) {
         case MaterialxForm::generalized_schlick:
@@ -124,7 +138,29 @@ std::string document(const MaterialExport& m, const ModelExport& e, const Export
             break;
         }
     }
-    add_surface_material(root, stem, bsdf, true, provenance);
+    std::string top = bsdf;
+    if (layers && layers->coat) {
+        // A smooth clear coat: a dielectric_bsdf reflecting (scatter_mode R) layered over the metal, as MaterialX's
+        // PBR library (and its open_pbr_surface graph) layers a coat.
+        const std::string coat = stem + "_coat_bsdf";
+        pugi::xml_node c = append_bsdf(root, "dielectric_bsdf", coat);
+        add_input(c, "weight", "float", "1.0");
+        add_input(c, "tint", "color3", "1.0, 1.0, 1.0");
+        add_input(c, "ior", "float", number(layers->coat_ior));
+        add_input(c, "roughness", "vector2", "0.0, 0.0");
+        add_input(c, "scatter_mode", "string", "R");
+        top = stem + "_coated_bsdf";
+        pugi::xml_node l = append_bsdf(root, "layer", top);
+        const auto connect = [&l](const char* input, const std::string& node) {
+            pugi::xml_node in = l.append_child("input");
+            in.append_attribute("name") = input;
+            in.append_attribute("type") = "BSDF";
+            in.append_attribute("nodename") = node.c_str();
+        };
+        connect("top", coat);
+        connect("base", bsdf);
+    }
+    add_surface_material(root, stem, top, true, provenance);
     return xml_text(doc);
 }
 
@@ -182,10 +218,11 @@ std::string xml_text(const pugi::xml_document& doc) {
 std::vector<ExportFile> export_mtlx(const std::vector<MaterialExport>& materials, const ExportContext& context) {
     std::vector<ExportFile> files;
     for (const MaterialExport& m : materials)
-        for (const ModelExport& e : m.models)
+        for (std::size_t i = 0; i < m.models.size(); ++i)
             files.push_back(
-                {"mtlx/" + file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id()) + ".mtlx",
-                 document(m, e, context)});
+                {"mtlx/" + file_stem(context.request.id_prefix, m.fit->material.id, m.models[i].written.model->id()) +
+                     ".mtlx",
+                 document(m, i, context)});
     return files;
 }
 

@@ -5,6 +5,7 @@
 #include "export/header_provenance.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/fit/fit_record.hpp"
+#include "libfit/io/layer_stack.hpp"
 
 namespace metalfit::detail {
 
@@ -22,22 +23,32 @@ Json colour(const ModelParameters& p, std::size_t i) {
 std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materials, const ExportContext& context) {
     std::vector<ExportFile> files;
     for (const MaterialExport& m : materials)
-        for (const ModelExport& e : m.models) {
+        for (std::size_t i = 0; i < m.models.size(); ++i) {
+            const ModelExport& e = m.models[i];
             const std::string stem = file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id());
-            std::optional<WrittenParameters> f82 = as_f82_tint(e.written, *m.fit->reference);
+            // A layered material: the base is the bare metal's fit, under OpenPBR's own coat and thin film.
+            const MaterialExport& base = base_export(m);
+            const ModelExport& be = base.models[i];
+            const std::optional<LayeredParameters> layers =
+                m.bare_metal ? layered_parameters(m.fit->material) : std::nullopt;
+            std::optional<WrittenParameters> f82 = as_f82_tint(be.written, *base.fit->reference);
             std::string note;
             if (!f82) {
-                f82 = *e.stand_in;
+                f82 = *be.stand_in;
                 note = std::string(e.written.model->id()) +
                        " is not an F82-tint curve: written as the f82-tint parameters (" + f82->origin + "); " +
                        std::string(e.written.model->id()) + "'s own worst-channel rel_rms would be " +
-                       number(worst_channel(e.written.metrics.rel_rms)) + ", these parameters' is " +
+                       number(worst_channel(be.written.metrics.rel_rms)) + ", these parameters' is " +
                        number(worst_channel(f82->metrics.rel_rms));
             }
             const WrittenParameters& w = *f82;
             const Metrics& mt = w.metrics;
-            Json j =
-                material_identity_json("metalfit.openpbr/1", m.fit->material, context.record, e.written.model->id());
+            std::string header_note = note;
+            if (layers)
+                for (const std::string& line : layered_notes(*layers, ExportFormat::openpbr))
+                    header_note += (header_note.empty() ? "" : "\n") + line;
+            Json j = material_identity_json("metalfit.openpbr/1", m.fit->material, context.record,
+                                            e.written.model->id(), layers.has_value());
             j["written_as"] = "f82-tint";
             j["from"] = w.origin;
             j["note"] = note;
@@ -49,13 +60,33 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
                                      {"specular_weight", 1.0},
                                      {"specular_color", colour(w.params, 1)},
                                      {"specular_roughness", context.request.roughness}};
+            if (layers) {
+                Json& surface = j["open_pbr_surface"];
+                if (layers->coat) {
+                    surface["coat_weight"] = 1.0;
+                    surface["coat_color"] = Json::array({1.0, 1.0, 1.0});
+                    surface["coat_roughness"] = 0.0;
+                    surface["coat_ior"] = layers->coat_ior;
+                }
+                if (layers->film) {
+                    surface["thin_film_weight"] = 1.0;
+                    surface["thin_film_thickness"] = layers->film_thickness_um;
+                    surface["thin_film_ior"] = layers->film_ior;
+                }
+                j["layers"] = {{"base", "the bare metal's fit (" + base.fit->material.name +
+                                            ", no layers): the metrics are against its curve"},
+                               {"index_at_nm", kLayerIndexWavelengthNm},
+                               {"notes", layered_notes(*layers, ExportFormat::openpbr)}};
+            }
             j["metrics"] = metrics_record(mt);
             files.push_back({"openpbr/" + stem + ".json", j.dump(2) + "\n"});
 
             pugi::xml_document doc;
             if (context.materialx_colorspace.empty())
-                note += std::string(note.empty() ? "" : "\n") + untagged_materialx_warning(context.record.space);
-            pugi::xml_node root = begin_materialx(doc, comment_header(m, w, context, "  ", note), context);
+                header_note +=
+                    std::string(header_note.empty() ? "" : "\n") + untagged_materialx_warning(context.record.space);
+            pugi::xml_node root =
+                begin_materialx(doc, comment_header(m, w, context, "  ", header_note, layers.has_value()), context);
             const std::string shader = stem + "_open_pbr_surface";
             pugi::xml_node s = root.append_child("open_pbr_surface");
             s.append_attribute("name") = shader.c_str();
@@ -66,7 +97,19 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
             add_input(s, "specular_weight", "float", "1.0");
             add_input(s, "specular_color", "color3", channel_list(w.params, 1));
             add_input(s, "specular_roughness", "float", number(context.request.roughness));
-            add_surface_material(root, stem, shader, false, comment_header(m, w, context, "", note));
+            if (layers && layers->coat) {
+                add_input(s, "coat_weight", "float", "1.0");
+                add_input(s, "coat_color", "color3", "1.0, 1.0, 1.0");
+                add_input(s, "coat_roughness", "float", "0.0");
+                add_input(s, "coat_ior", "float", number(layers->coat_ior));
+            }
+            if (layers && layers->film) {
+                add_input(s, "thin_film_weight", "float", "1.0");
+                add_input(s, "thin_film_thickness", "float", number(layers->film_thickness_um));
+                add_input(s, "thin_film_ior", "float", number(layers->film_ior));
+            }
+            add_surface_material(root, stem, shader, false,
+                                 comment_header(m, w, context, "", header_note, layers.has_value()));
             files.push_back({"openpbr/" + stem + ".mtlx", xml_text(doc)});
         }
     return files;

@@ -1,5 +1,6 @@
 #include "libfit/io/layer_stack.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -53,16 +54,45 @@ std::string short_stack_name(const Material& metal) {
     return text;
 }
 
+LayerIndexSummary layer_index_summary(const LayerMaterial& material) {
+    const auto n = [&](double nm) { return material.index.n(nm, Interpolation::linear, OutOfRange::clamp); };
+    const auto k = [&](double nm) { return material.index.k(nm, Interpolation::linear, OutOfRange::clamp); };
+    LayerIndexSummary s;
+    s.n = n(kLayerIndexWavelengthNm);
+    s.k = k(kLayerIndexWavelengthNm);
+    s.n_min = s.n_max = s.n;
+    s.k_max = s.k;
+    for (int nm = kLayerVisibleFirstNm; nm <= kLayerVisibleLastNm; ++nm) {
+        const double nv = n(nm), kv = k(nm);
+        s.n_min = std::min(s.n_min, nv);
+        s.n_max = std::max(s.n_max, nv);
+        s.k_max = std::max(s.k_max, kv);
+    }
+    return s;
+}
+
+std::string describe_layer_index(const LayerIndexSummary& s) {
+    std::string text = "n(550 nm) = " + number(s.n) + ", k(550 nm) = " + number(s.k) + "; over 380-780 nm n " +
+                       number(s.n_min) + "-" + number(s.n_max) + ", k up to " + number(s.k_max);
+    return text;
+}
+
 namespace {
 
 nlohmann::ordered_json layer_material_record(const LayerMaterial& m, const std::filesystem::path& data_dir) {
+    const LayerIndexSummary index = layer_index_summary(m);
     return {{"material", m.id},
             {"name", m.name},
             {"source", m.source},
             {"file", record_path(m.provenance.file, data_dir)},
             {"sha256", m.provenance.sha256},
             {"reference", m.provenance.references},
-            {"data_type", m.provenance.data_type}};
+            {"data_type", m.provenance.data_type},
+            {"index_at_nm", kLayerIndexWavelengthNm},
+            {"n", index.n},
+            {"k", index.k},
+            {"n_visible", {index.n_min, index.n_max}},
+            {"k_visible_max", index.k_max}};
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "libfit/base/enum_names.hpp"
 #include "libfit/export/roughness.hpp"
 #include "libfit/fit/fit.hpp"
+#include "libfit/fit/fit_batch.hpp"
 #include "libfit/fit/fit_record.hpp"
 #include "libfit/fit/metrics.hpp"
 #include "libfit/fit/parameter_source.hpp"
@@ -76,6 +77,15 @@ const Model& expressible_stand_in();
 
 // The models to fit for a request: the requested ones, plus the stand-in when a format needs it.
 std::vector<const Model*> models_to_fit(const ExportRequest& request);
+
+// Whether the request writes a format that expresses a layered material's coat and thin film with its own
+// parameters over the bare metal's constants (OpenPBR coat_* / thin_film_*, MaterialX layer + dielectric_bsdf /
+// thinfilm_*, glTF KHR_materials_clearcoat / KHR_materials_iridescence): those need the bare metal's fit.
+bool needs_bare_metal_fits(const ExportRequest& request);
+// For every layered material of `fits` (material.layers not empty): fits its metal alone (the same material, data
+// and request, layers removed) and sets `bare_metal`. Bare materials are left as they are.
+void attach_bare_metal_fits(std::vector<MaterialFit>& fits, const BatchColour& colour,
+                            const MaterialFitRequest& request, int jobs);
 
 // One output file, its path relative to the output directory.
 struct ExportFile {

@@ -108,6 +108,10 @@ struct MaterialFit {
     FitTimings timings;
     // The sampled reference the metrics were computed on, so that exports can re-evaluate the parameters they write.
     std::shared_ptr<const SampledReference> reference;
+    // A layered material being exported: the fit of its metal alone (layers removed, the same request), which the
+    // formats that layer a coat or film themselves (OpenPBR, MaterialX, glTF) write as the base; null otherwise
+    // (export/export.hpp, attach_bare_metal_fits).
+    std::shared_ptr<const MaterialFit> bare_metal = nullptr;
 };
 
 // Everything for one material. Throws InputError naming the material's file when the data do not cover the

@@ -60,6 +60,31 @@ std::string short_stack_name(const Material& metal);
 // it is a named finish; null for a bare material. The files are named by record_path against `data_dir`.
 nlohmann::ordered_json stack_record(const Material& metal, const std::filesystem::path& data_dir);
 
+// The wavelength at which a layer's index is stated where a format takes one number (OpenPBR coat_ior /
+// thin_film_ior, MaterialX dielectric_bsdf ior / thinfilm_ior, glTF iridescenceIor, the export headers and
+// records): 550 nm, the middle of the visible range and the peak of the photopic V(λ). docs/export.md, Layered exports.
+inline constexpr double kLayerIndexWavelengthNm = 550.0;
+// The range over which a layer's dispersion and absorption are summarised (the visible: 380–780 nm, 1 nm steps).
+inline constexpr int kLayerVisibleFirstNm = 380;
+inline constexpr int kLayerVisibleLastNm = 780;
+
+// One layer material's index as a format that takes constants sees it: n and k at kLayerIndexWavelengthNm (linear
+// interpolation, the end values held outside the table, as --extrapolate does), and the extremes of n and k over the
+// visible range, which say how far one number misses a dispersive or absorbing layer.
+struct LayerIndexSummary {
+    double n = 1.0;      // n(550 nm)
+    double k = 0.0;      // k(550 nm)
+    double n_min = 1.0;  // over 380–780 nm
+    double n_max = 1.0;
+    double k_max = 0.0;
+    // n varies by more than 0.005 over the visible (a constant IOR does not): one number is an approximation.
+    bool dispersive() const { return n_max - n_min > 0.005; }
+    bool absorbing() const { return k_max > 0.0; }
+};
+LayerIndexSummary layer_index_summary(const LayerMaterial& material);
+// "n(550 nm) = 2.44, k(550 nm) = 0; over 380-780 nm n 2.38-2.91, k ≤ 0.01": one line for the headers.
+std::string describe_layer_index(const LayerIndexSummary& summary);
+
 // The one rule for thicknesses: "" when valid, else why not ("thickness -5 nm is negative", "thickness 2500 nm is
 // beyond 2 µm: …").
 std::string film_thickness_problem(double thickness_nm);
