@@ -1,51 +1,16 @@
 // metalfit: measured metal n,k → shader-ready Fresnel constants. A thin layer over libfit.
 // Exit codes (docs/cli.md): 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 colour configuration,
 // 6 `report --fail-above` found channels above the limit (the report is written).
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <initializer_list>
-#include <iostream>
-#include <string_view>
 
 #include "commands.hpp"
-#include "libfit/base/atomic_file.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/library_logging.hpp"
-#include "libfit/base/number_text.hpp"
 #include "libfit/base/utf8.hpp"
 #include "libfit/base/version.hpp"
-#include "libfit/models/model.hpp"
 
 namespace metalfit::cli {
-
-void emit(const std::string& text, const std::filesystem::path& output) {
-    if (output.empty() || output == "-")
-        std::cout << text << std::flush;
-    else
-        write_file_atomically(output, text);
-}
-
-std::string model_ids() {
-    std::string ids;
-    for (const Model* m : all_models()) ids += (ids.empty() ? "" : ", ") + std::string(m->id());
-    return ids;
-}
-
-void warn(const std::string& message) { std::cerr << "metalfit: warning: " << sanitised_message(message) << "\n"; }
-
-std::string fixed(double v, int digits) { return std::isnan(v) ? "-" : fixed_text(v, digits); }
-
-// The first word of the command line that is neither an option nor an option's value: the command a user typed.
-std::string first_command_word(int argc, char** argv, std::initializer_list<std::string_view> options_with_values) {
-    for (int i = 1; i < argc; ++i) {
-        const std::string_view arg = argv[i];
-        if (arg.empty() || arg[0] != '-') return std::string(arg);
-        if (std::find(options_with_values.begin(), options_with_values.end(), arg) != options_with_values.end()) ++i;
-    }
-    return {};
-}
 
 #if !METALFIT_HAVE_BENCH
 // Built without the bench library: `metalfit bench` stays a subcommand that says so (exit code 2), so scripts get a
