@@ -10,7 +10,7 @@
 
 #include "effects/interreflections/bounce_maps.hpp"
 #include "effects/interreflections/bounce_plan.hpp"
-#include "effects/interreflections/bounces.hpp"
+#include "glpreview/effects/bounces.hpp"
 #include "glpreview/render/environment.hpp"
 #include "glpreview/render/plan.hpp"
 #include "glpreview/render/preview.hpp"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <memory>
 
-#include "effects/interreflections/bounces.hpp"
+#include "glpreview/effects/bounces.hpp"
 #include "glpreview/render/error_view.hpp"
 #include "glpreview/render/exr_metadata.hpp"
 #include "glpreview/render/preview_passes.hpp"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 
-#include "bounces.hpp"
+#include "glpreview/effects/bounces.hpp"
 #include "libfit/base/text.hpp"
 
 namespace metalfit::glpreview {

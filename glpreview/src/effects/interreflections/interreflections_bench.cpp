@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "bounce_maps.hpp"
-#include "bounces.hpp"
+#include "glpreview/effects/bounces.hpp"
 #include "glpreview/render/bounce_orders.hpp"
 #include "glpreview/render/bounces_bench.hpp"
 #include "glpreview/render/cpu_reference.hpp"

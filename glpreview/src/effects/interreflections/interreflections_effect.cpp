@@ -7,7 +7,7 @@
 
 #include "bounce_maps.hpp"
 #include "bounce_plan.hpp"
-#include "bounces.hpp"
+#include "glpreview/effects/bounces.hpp"
 #include "glpreview/gl/uniforms.hpp"
 #include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/preview_passes.hpp"

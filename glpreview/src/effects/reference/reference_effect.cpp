@@ -2,7 +2,7 @@
 
 #include <optional>
 
-#include "effects/interreflections/bounces.hpp"
+#include "glpreview/effects/bounces.hpp"
 #include "glpreview/effects/registry.hpp"
 #include "glpreview/render/bounce_orders.hpp"
 #include "glpreview/render/cpu_reference.hpp"

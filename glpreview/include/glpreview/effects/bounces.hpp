@@ -1,6 +1,7 @@
-// How many times light may bounce between the scene's reflective spheres before it reaches the camera (the scene
-// key `max_bounces`, docs/scene.md): 1 (the default) is a sphere reflecting the environment alone, as before; k > 1
-// lets a reflected ray hit another sphere and reflect again, up to k reflections along the path.
+// The interreflections effect's setting (src/effects/interreflections/), read by the references too: how many times
+// light may bounce between the scene's reflective spheres before it reaches the camera (the scene key `max_bounces`,
+// docs/scene.md): 1 (the default) is a sphere reflecting the environment alone, as before; k > 1 lets a reflected
+// ray hit another sphere and reflect again, up to k reflections along the path.
 #pragma once
 
 #include "glpreview/scene/scene.hpp"
