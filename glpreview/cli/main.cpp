@@ -24,6 +24,7 @@
 #include "glpreview/render/sphere_sheet.hpp"
 #include "glpreview/scene/glossy_choice.hpp"
 #include "glpreview/scene/scene.hpp"
+#include "help_formatter.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/library_logging.hpp"
@@ -154,6 +155,7 @@ int run_glpreview(int argc, char** argv) {
     using namespace metalfit::glpreview;
 
     CLI::App app{"glpreview: metal spheres, exact vs fitted Fresnel, under localized environment maps (headless EGL)"};
+    app.formatter(std::make_shared<metalfit::cli_help::HelpFormatter>());  // within 100 columns
     app.set_version_flag("--version", std::string("glpreview (metalfit ") + METALFIT_VERSION + ")");
     std::vector<std::filesystem::path> scene_files;
     std::filesystem::path output_dir = "preview";

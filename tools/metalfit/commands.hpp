@@ -38,20 +38,25 @@ struct Command {
     std::string_view name;
     std::string_view description;
     std::function<void()> (*add)(CLI::App& app, const GlobalOptions& global);
+    std::string_view example;  // the arguments after `metalfit`, shown at the end of its --help (runs as written)
 };
 inline constexpr std::array<Command, 9> kCommands{{
-    {"list", "List the built-in materials", &add_list_command},
-    {"show", "Reference reflectance of one material (F0, F82, R at a few angles)", &add_show_command},
-    {"fit", "Fit cheap Fresnel models (closed forms and Ceres) to one material or --all", &add_fit_command},
-    {"models", "The Fresnel models: parameters, bounds and GLSL", &add_models_command},
-    {"bench", "What accuracy costs: model evaluation, fit, SPIR-V and GPU timings against accuracy",
-     &add_bench_command},
-    {"export", "Write shader-ready constants: JSON, GLSL, HLSL, MaterialX, OpenPBR, C++", &add_export_command},
-    {"spaces", "The OCIO config in use: its colour spaces (which can be --space) and roles", &add_spaces_command},
+    {"list", "List the built-in materials", &add_list_command, "list --json"},
+    {"show", "Reference reflectance of one material (F0, F82, R at a few angles)", &add_show_command,
+     "show Au --space ACEScg"},
+    {"fit", "Fit cheap Fresnel models (closed forms and Ceres) to one material or --all", &add_fit_command,
+     "fit Au,Cu --model f82-tint,schlick-comp"},
+    {"models", "The Fresnel models: parameters, bounds and GLSL", &add_models_command, "models --json"},
+    {"bench", "What accuracy costs: model evaluation, fit, SPIR-V and GPU timings against accuracy", &add_bench_command,
+     "bench --quick"},
+    {"export", "Write shader-ready constants: JSON, GLSL, HLSL, MaterialX, OpenPBR, C++", &add_export_command,
+     "export Au --model f82-tint --format glsl,mtlx -o out/export"},
+    {"spaces", "The OCIO config in use: its colour spaces (which can be --space) and roles", &add_spaces_command,
+     "spaces"},
     {"report", "HTML report (catalog and material pages, report.json, charts, renders) of the fits",
-     &add_report_command},
+     &add_report_command, "report Au,Cu --renders off -o report"},
     {"table", "F0 and F82 tint of every catalog metal: linear, 8-bit and hex, with source and caveat",
-     &add_table_command},
+     &add_table_command, "table Ti --film TiO2 --thickness 0:300:20nm"},
 }};
 
 // `metalfit report --fail-above`: the report was written, and `count` channels are above the limit (each already

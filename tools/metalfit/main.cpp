@@ -2,8 +2,10 @@
 // Exit codes (docs/cli.md): 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 colour configuration,
 // 6 `report --fail-above` found channels above the limit (the report is written).
 #include <cstdio>
+#include <memory>
 
 #include "commands.hpp"
+#include "help_formatter.hpp"
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/library_logging.hpp"
@@ -32,6 +34,8 @@ int run_metalfit(int argc, char** argv) {
     constexpr int ok = exit_ok, usage = exit_usage;
 
     CLI::App app{"metalfit: fit shader Fresnel models to measured spectral n,k of metals"};
+    app.formatter(
+        std::make_shared<metalfit::cli_help::HelpFormatter>());  // within 100 columns; the subcommands inherit it
     app.set_version_flag("--version", std::string("metalfit ") + METALFIT_VERSION);
     app.require_subcommand(1);
     app.option_defaults()->always_capture_default();  // --help shows every default (subcommands inherit this)
@@ -48,6 +52,7 @@ int run_metalfit(int argc, char** argv) {
     std::vector<std::pair<CLI::App*, std::function<void()>>> commands;
     for (const cli::Command& command : cli::kCommands) {
         CLI::App& sub = *app.add_subcommand(std::string(command.name), std::string(command.description));
+        sub.footer("Example: metalfit " + std::string(command.example));
         commands.emplace_back(&sub, command.add(sub, global));
     }
 
