@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -13,9 +14,9 @@
 
 namespace metalfit::glpreview {
 
-ReferenceRender render_reference(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel,
-                                 const EnvironmentTracer& environment, int threads, const CpuLighting* lighting,
-                                 int max_bounces) {
+ReferenceRender render_mirror_paths(const Scene& scene, const EnvironmentTracer& environment, int max_bounces,
+                                    int threads, const CpuLighting* lighting,
+                                    const std::function<RGB(const MirrorPath& path, const RGB& light)>& shade) {
     const int w = scene.width, h = scene.height;
     ReferenceRender out{Image(w, h), std::vector<int>(static_cast<std::size_t>(w) * h, -1)};
     const CameraBasis basis = camera_basis(scene.camera, w, h);
@@ -36,17 +37,26 @@ ReferenceRender render_reference(const Scene& scene, const std::vector<const Sph
             radiance = seen(basis.position, d);
         } else {
             const MirrorPath path = mirror_path(scene.spheres, basis.position, d, hit, max_bounces);
-            RGB throughput = (*fresnel[static_cast<std::size_t>(path.bounces[0].sphere)])(path.bounces[0].mu);
-            for (int k = 1; k < path.count; ++k) {
-                const MirrorBounce& b = path.bounces[static_cast<std::size_t>(k)];
-                throughput = throughput * (*fresnel[static_cast<std::size_t>(b.sphere)])(b.mu);
-            }
-            radiance = throughput * seen(path.origin, path.direction);
+            radiance = shade(path, seen(path.origin, path.direction));
         }
         out.image.set(px, row, radiance);
         out.sphere_id[static_cast<std::size_t>(row) * w + px] = hit.sphere;
     });
     return out;
+}
+
+ReferenceRender render_reference(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel,
+                                 const EnvironmentTracer& environment, int threads, const CpuLighting* lighting,
+                                 int max_bounces) {
+    return render_mirror_paths(
+        scene, environment, max_bounces, threads, lighting, [&fresnel](const MirrorPath& path, const RGB& light) {
+            RGB throughput = (*fresnel[static_cast<std::size_t>(path.bounces[0].sphere)])(path.bounces[0].mu);
+            for (int k = 1; k < path.count; ++k) {
+                const MirrorBounce& b = path.bounces[static_cast<std::size_t>(k)];
+                throughput = throughput * (*fresnel[static_cast<std::size_t>(b.sphere)])(b.mu);
+            }
+            return throughput * light;
+        });
 }
 
 }  // namespace metalfit::glpreview

@@ -110,10 +110,11 @@ void GpuRenderer::draw_frame(bool diagnostics) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-const BuiltProgram& GpuRenderer::draw_sphere(std::size_t i, bool diagnostics) {
+void GpuRenderer::draw_sphere(std::size_t i, bool diagnostics, const View* view) {
     const Sphere& sphere = scene_.spheres[i];
     const SphereFresnel& fresnel = *fresnel_[i];
     const BuiltProgram& p = program(sphere_shader(scene_, sphere, &fresnel, diagnostics));
+    if (view) set_view_uniforms(p.id(), view->basis, view->width, view->height);
     set_uniform(p.id(), "u_sphere_center", sphere.center);
     set_uniform(p.id(), "u_sphere_radius", static_cast<float>(sphere.radius));
     bind_environment(p);
@@ -121,7 +122,7 @@ const BuiltProgram& GpuRenderer::draw_sphere(std::size_t i, bool diagnostics) {
     for (const Effect* effect : all_effects()) effect->bind_sphere(draw);
     glUseProgram(p.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    return p;
+    if (view) set_camera_uniforms(p.id());
 }
 
 void GpuRenderer::draw_spheres(const CameraBasis& view, int width, int height, std::span<const std::size_t> which) {
@@ -129,12 +130,11 @@ void GpuRenderer::draw_spheres(const CameraBasis& view, int width, int height, s
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
+    const View seen_from{view, width, height};
     for (const std::size_t i : which) {
-        const Sphere& sphere = scene_.spheres.at(i);
-        const GLuint id = program(sphere_shader(scene_, sphere, fresnel_[i], false)).id();
-        set_view_uniforms(id, view, width, height);
-        draw_sphere(i, false);
-        set_camera_uniforms(id);
+        if (i >= scene_.spheres.size())
+            throw std::out_of_range("GpuRenderer::draw_spheres: no sphere " + std::to_string(i));
+        draw_sphere(i, false, &seen_from);
     }
 }
 

@@ -5,6 +5,7 @@
 // up to k reflections, and the last reflected ray takes the environment's radiance.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "glpreview/io/image.hpp"
@@ -26,5 +27,14 @@ struct ReferenceRender {
 ReferenceRender render_reference(const Scene& scene, const std::vector<const SphereFresnel*>& fresnel,
                                  const EnvironmentTracer& environment, int threads = 0,
                                  const CpuLighting* lighting = nullptr, int max_bounces = 1);
+
+// What the analytic references share: every pixel's camera ray and, where it meets a sphere, its mirror path
+// (render/mirror_path.hpp, up to max_bounces reflections); `shade(path, light)` turns a path and the light at its
+// end (an emitter's, else the environment's) into the pixel's radiance. Pixels of the environment take its radiance.
+// std::invalid_argument when max_bounces is outside 1 … kMaxPathBounces.
+struct MirrorPath;
+ReferenceRender render_mirror_paths(const Scene& scene, const EnvironmentTracer& environment, int max_bounces,
+                                    int threads, const CpuLighting* lighting,
+                                    const std::function<RGB(const MirrorPath& path, const RGB& light)>& shade);
 
 }  // namespace metalfit::glpreview

@@ -92,8 +92,14 @@ private:
     EnvironmentCube::Descriptor cube_descriptor() const;
     void set_camera_uniforms(GLuint program) const;
     void draw_frame(bool diagnostics = false);
-    // Sphere i's draw with its program (the caller sets the camera uniforms when not the scene's).
-    const BuiltProgram& draw_sphere(std::size_t i, bool diagnostics);
+    // A camera other than the scene's and its viewport (an effect's per-object map face).
+    struct View {
+        CameraBasis basis;
+        int width = 0, height = 0;
+    };
+    // Sphere i's draw with its program, seen by the scene's camera or by `view` (whose uniforms it sets for the
+    // draw and gives back to the scene's camera after it).
+    void draw_sphere(std::size_t i, bool diagnostics, const View* view = nullptr);
     Image read_frame() const;
 
     const Scene& scene_;
