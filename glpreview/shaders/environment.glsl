@@ -32,16 +32,23 @@ bool checker_even(float a, float b, float size) {
 }
 
 // A room surface of colour c (its radiance) at p with inward normal n: where an effect lights the room
-// (ENVIRONMENT_LIGHTING(albedo, p, n), its reflected radiance), that light added with the albedo c clamped to 1.
-#if defined(ENVIRONMENT_LIGHTING)
+// (ENVIRONMENT_LIGHTING(albedo, p, n): the lights; ENVIRONMENT_CAUSTICS(albedo, p, n): light that objects threw onto
+// it; each its reflected radiance), that light added with the albedo c clamped to 1.
+#if defined(ENVIRONMENT_LIGHTING) && defined(ENVIRONMENT_CAUSTICS)
+vec3 lit_surface(vec3 c, vec3 p, vec3 n) {
+    vec3 albedo = min(c, vec3(1.0));
+    return c + ENVIRONMENT_LIGHTING(albedo, p, n) + ENVIRONMENT_CAUSTICS(albedo, p, n);
+}
+#define ROOM_SURFACE(c, p, n) lit_surface(c, p, n)
+#elif defined(ENVIRONMENT_LIGHTING)
 vec3 lit_surface(vec3 c, vec3 p, vec3 n) { return c + ENVIRONMENT_LIGHTING(min(c, vec3(1.0)), p, n); }
 #define ROOM_SURFACE(c, p, n) lit_surface(c, p, n)
 #else
 #define ROOM_SURFACE(c, p, n) (c)
 #endif
 
-// rgb: radiance, a: ray parameter of the hit.
-vec4 environment_trace(vec3 o, vec3 d) {
+// rgb: radiance, a: ray parameter of the hit. The room's walls, floor, ceiling and boxes.
+vec4 room_trace(vec3 o, vec3 d) {
     vec3 inv = vec3(1.0 / env_safe(d.x), 1.0 / env_safe(d.y), 1.0 / env_safe(d.z));
     float t_best = 1e30;
     int axis = 0;
@@ -97,6 +104,18 @@ vec4 environment_trace(vec3 o, vec3 d) {
     float shade = checker_even(p.x, p.y, u_checker) ? 1.0 : 0.75;
     return vec4(ROOM_SURFACE(shade * (positive_side ? u_wall_z_max : u_wall_z_min), p, n), t_best);
 }
+
+// The room and the objects effects stand in it (ENVIRONMENT_OBJECT(o, d, t_max, out seen): whether the ray meets one
+// before t_max, and its radiance and ray parameter; ROOM_ONLY leaves them out).
+#if defined(ENVIRONMENT_OBJECT) && !defined(ROOM_ONLY)
+vec4 environment_trace(vec3 o, vec3 d) {
+    vec4 room = room_trace(o, d);
+    vec4 seen;
+    return ENVIRONMENT_OBJECT(o, d, room.a, seen) ? seen : room;
+}
+#else
+vec4 environment_trace(vec3 o, vec3 d) { return room_trace(o, d); }
+#endif
 
 #elif defined(ENV_SPHERE_ROOM)
 uniform float u_sphere_room_radius;

@@ -5,6 +5,7 @@
 #include <array>
 #include <vector>
 
+#include "caustics/caustics_effect.hpp"
 #include "environment/environment_effect.hpp"
 #include "fit_error/fit_error_effect.hpp"
 #include "fresnel/fresnel_effect.hpp"
@@ -17,12 +18,15 @@
 #include "reference/reference_effect.hpp"
 #include "reflection/reflection_effect.hpp"
 #include "rim/rim_effect.hpp"
+#include "rings/rings_effect.hpp"
 
 namespace metalfit::glpreview {
 
 std::span<const Effect* const> all_effects() {
-    static const std::array<const Effect*, 12> effects{
-        &lights_effect(),  // first: the capture of the environment reads its shadow maps
+    static const std::array<const Effect*, 14> effects{
+        &rings_effect(),     // first: the room's rings are in every program that reads the environment
+        &lights_effect(),    // before the capture of the environment: it reads its shadow maps
+        &caustics_effect(),  // after the lights, before the capture: it reads its light maps
         &environment_effect(),
         &reflection_effect(),
         &fresnel_effect(),
@@ -36,6 +40,10 @@ std::span<const Effect* const> all_effects() {
         &rim_effect(),                       // after fit-error: it reads the frame with the exact curves
     };
     return effects;
+}
+
+void resolve_effect_materials(Scene& scene, FresnelLibrary& library) {
+    for (const Effect* effect : all_effects()) effect->resolve_materials(scene, library);
 }
 
 std::span<const SceneKeys* const> scene_key_readers() {

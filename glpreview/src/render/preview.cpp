@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "glpreview/effects/bounces.hpp"
+#include "glpreview/effects/registry.hpp"
 #include "glpreview/render/error_view.hpp"
 #include "glpreview/render/exr_metadata.hpp"
 #include "glpreview/render/preview_passes.hpp"
@@ -11,12 +12,13 @@
 
 namespace metalfit::glpreview {
 
-PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlContext* context,
+PreviewResult run_preview(const Scene& given, const PreviewOptions& options, GlContext* context,
                           const std::function<void(const PreviewResult&)>& before_commit) {
     PreviewResult result;
     // The materials are the graph's import: resolved (and fitted) before any pass runs, in sphere order, so that a
-    // bad material is reported as before any file is touched.
-    FresnelLibrary library(options.data_dir, options.ocio, scene.space, scene.file, scene.paths);
+    // bad material is reported as before any file is touched; then those of the effects' own objects (rings).
+    FresnelLibrary library(options.data_dir, options.ocio, given.space, given.file, given.paths);
+    Scene scene = given;
     PreviewRun run{scene, options.output_dir, options.ocio, options.threads, {}, context, {}, {}, {}, {}, {}, {}, {}};
     run.exposure = std::exp2(options.exposure_ev);
     run.exr_colour = ExrColour{chromaticities_of(library.converter()), library.converter().space()};
@@ -39,6 +41,7 @@ PreviewResult run_preview(const Scene& scene, const PreviewOptions& options, GlC
     run.luminance = luminance_weights(library.converter());
     run.delta_e = delta_e_basis(library.converter());
     run.exr_metadata = sphere_metadata(scene, run.fresnel);
+    resolve_effect_materials(scene, library);
 
     graph::PassGraph graph;
     const Features features = plan_features(scene);

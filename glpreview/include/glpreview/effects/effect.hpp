@@ -22,6 +22,7 @@ namespace metalfit::glpreview {
 
 class GpuRenderer;
 class FrameInputs;
+class FresnelLibrary;
 struct EnvironmentCube;
 struct PreviewHandles;
 struct PreviewRun;
@@ -59,6 +60,12 @@ struct PreviewGraph {
     PreviewHandles& handles;
 };
 
+// A sphere that bounds an object (its centre and radius).
+struct BoundingSphere {
+    Vec3 centre;
+    double radius = 0;
+};
+
 // An effect reads its own scene keys (SceneKeys: scene_keys, read_scene, sphere_keys, read_sphere, check_scene).
 class Effect : public SceneKeys {
 public:
@@ -92,6 +99,12 @@ public:
     }
     // Whether this effect adds anything to the CPU references of `scene` (else its cpu_* are not called).
     virtual bool lights_cpu_reference(const Scene&) const { return false; }
+    // The objects this effect adds to the room that cast shadows (ENVIRONMENT_OCCLUDER on the GPU), by their bounds:
+    // the lights plan their shadow maps with them.
+    virtual std::vector<BoundingSphere> shadow_casters(const Scene&) const { return {}; }
+    // Resolves what this effect's own scene objects need from the materials (a ring's Fresnel) into the scene's
+    // settings (Scene::effects), before a preview plans its passes (resolve_effect_materials, render/preview.hpp).
+    virtual void resolve_materials(Scene& /*scene*/, FresnelLibrary& /*library*/) const {}
     // Without a graph: derives this effect's inputs from the renderer's own captured cube (GpuRenderer::capture_environment()).
     virtual void derive_from_environment(GpuRenderer&, const EnvironmentCube&) const {}
 };

@@ -10,5 +10,8 @@
 namespace metalfit::glpreview {
 
 std::span<const Effect* const> all_effects();
+// Every effect's resolve_materials on `scene` (a preview's own copy): its objects' Fresnel through `library`, which
+// must outlive the scene's use.
+void resolve_effect_materials(Scene& scene, FresnelLibrary& library);
 
 }  // namespace metalfit::glpreview

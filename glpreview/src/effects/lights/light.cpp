@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "glpreview/effects/registry.hpp"
+
 namespace metalfit::glpreview {
 
 const char* intensity_unit(LightType type) {
@@ -129,16 +131,21 @@ bool in_cone(const Light& spot, Vec3 centre, double radius) {
 ShadowLayout shadow_layout(const Scene& scene, const Lights& lights) {
     ShadowLayout layout;
     const Room& room = scene.environment.room;
-    const std::size_t occluders = scene.spheres.size() + room.boxes.size();
+    std::vector<BoundingSphere> casters;  // what the effects add to the room (rings)
+    for (const Effect* effect : all_effects())
+        for (const BoundingSphere& b : effect->shadow_casters(scene)) casters.push_back(b);
+    const std::size_t occluders = scene.spheres.size() + room.boxes.size() + casters.size();
     for (const Light& light : lights.lights) {
         bool casts = occluders > 0;
-        std::string why = casts ? "" : "no sphere or room box casts a shadow";
+        const std::string objects = casters.empty() ? "sphere or room box" : "sphere, ring or room box";
+        std::string why = casts ? "" : "no " + objects + " casts a shadow";
         if (casts && light.type == LightType::spot) {
             casts = false;
             for (const Sphere& s : scene.spheres) casts = casts || in_cone(light, s.center, s.radius);
             for (const RoomBox& b : room.boxes)
                 casts = casts || in_cone(light, 0.5 * (b.min + b.max), 0.5 * length(b.max - b.min));
-            if (!casts) why = "no sphere or room box lies in its cone";
+            for (const BoundingSphere& b : casters) casts = casts || in_cone(light, b.centre, b.radius);
+            if (!casts) why = "no " + objects + " lies in its cone";
         }
         if (!casts) {
             layout.layer.push_back(-1);

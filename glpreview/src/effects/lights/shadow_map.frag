@@ -1,6 +1,6 @@
 // One face of a light's distance cube map (u_face ≥ 0: rays from the light's position) or its distance plane
 // (u_face < 0: parallel rays from the plane across the room): the distance to the first occluder — a sphere of the
-// scene or a room box — along each texel's ray, 1e30 where none.
+// scene, a room box or an object an effect stands in the room — along each texel's ray, 1e30 where none.
 #define MAX_OCCLUDERS 256
 uniform int u_face;
 uniform int u_size;
@@ -33,6 +33,9 @@ float first_occluder(vec3 o, vec3 d) {
         }
         if (t_near <= t_far && t_near > 0.0 && t_near < best) best = t_near;
     }
+#if defined(ENVIRONMENT_OCCLUDER)
+    best = min(best, ENVIRONMENT_OCCLUDER(o, d));  // what effects stand in the room (rings)
+#endif
     return best;
 }
 

@@ -1,0 +1,124 @@
+#include "rings_effect.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "glpreview/gl/objects.hpp"
+#include "glpreview/gl/uniforms.hpp"
+#include "glpreview/render/gpu_renderer.hpp"
+#include "glpreview/render/sphere_fresnel.hpp"
+#include "render/embedded_shaders.hpp"
+#include "ring.hpp"
+
+namespace metalfit::glpreview {
+namespace {
+
+const Rings* rings_of(const Scene& scene) {
+    const Rings* rings = scene.effects.find<Rings>();
+    return rings && !rings->rings.empty() ? rings : nullptr;
+}
+
+// Entries of a ring's Fresnel table on the GPU (μ_k = k / (n − 1)): the reference's own table, a model tabulated.
+constexpr int kRingFresnelSize = kReferenceLutSize;
+
+// The rings' Fresnel tables, one row per ring (the renderer's, on its blackboard).
+struct RingFresnelTexture {
+    gl::Texture texture;
+};
+
+GLuint ring_fresnel_texture(GpuRenderer& renderer, const Rings& rings) {
+    auto& state = renderer.frame().state<RingFresnelTexture>();
+    if (state.texture.id() != 0) return state.texture.id();
+    if (rings.fresnel.size() != rings.rings.size())
+        throw std::logic_error("rings: their Fresnel is not resolved (resolve_effect_materials)");
+    std::vector<float> texels;
+    for (const SphereFresnel* fresnel : rings.fresnel)
+        for (int k = 0; k < kRingFresnelSize; ++k) {
+            const RGB f = (*fresnel)(static_cast<double>(k) / (kRingFresnelSize - 1));
+            texels.insert(texels.end(), {float(f.r), float(f.g), float(f.b)});
+        }
+    gl::Texture texture = gl::create_texture(GL_TEXTURE_2D);
+    const auto rows = static_cast<GLsizei>(rings.rings.size());
+    glTextureStorage2D(texture.id(), 1, GL_RGB32F, kRingFresnelSize, rows);
+    glTextureSubImage2D(texture.id(), 0, 0, 0, kRingFresnelSize, rows, GL_RGB, GL_FLOAT, texels.data());
+    glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    check_gl("uploading the rings' Fresnel");
+    state.texture = std::move(texture);
+    return state.texture.id();
+}
+
+class RingsEffect final : public Effect {
+public:
+    std::string_view name() const override { return "rings"; }
+
+    std::vector<const char*> scene_keys() const override { return {"rings"}; }
+    void read_scene(const SceneReader& top, Scene& scene) const override {
+        if (top.has("rings")) scene.effects.set(read_rings(top));
+    }
+    void check_scene(const SceneReader& top, const Scene& scene) const override {
+        if (const Rings* rings = rings_of(scene)) check_rings(top, scene, *rings);
+    }
+
+    std::vector<BoundingSphere> shadow_casters(const Scene& scene) const override {
+        std::vector<BoundingSphere> bounds;
+        if (const Rings* rings = rings_of(scene))
+            for (const Ring& ring : rings->rings)
+                bounds.push_back(
+                    {ring.base + Vec3{0, 0.5 * ring.height, 0}, std::hypot(ring.radius, 0.5 * ring.height)});
+        return bounds;
+    }
+
+    void resolve_materials(Scene& scene, FresnelLibrary& library) const override {
+        const Rings* rings = rings_of(scene);
+        if (!rings) return;
+        Rings resolved = *rings;
+        resolved.fresnel.clear();
+        for (std::size_t i = 0; i < resolved.rings.size(); ++i)
+            resolved.fresnel.push_back(&library.get(resolved.rings[i].surface(), "rings[" + std::to_string(i) + "]"));
+        scene.effects.set(std::move(resolved));
+    }
+
+    void declare_environment_program(const Scene& scene, ShaderBuilder& builder) const override {
+        if (!rings_of(scene)) return;
+        builder.define("ENVIRONMENT_OBJECT", "rings_seen")
+            .define("ENVIRONMENT_OCCLUDER", "rings_distance")
+            .source(shader_text("ring.glsl"))
+            .sampler("u_ring_fresnel");
+    }
+
+    void set_program_uniforms(const Scene& scene, GLuint p) const override {
+        const Rings* rings = rings_of(scene);
+        if (!rings) return;
+        set_uniform(p, "u_ring_count", static_cast<int>(rings->rings.size()));
+        const double to_radians = std::numbers::pi / 180;
+        for (std::size_t i = 0; i < rings->rings.size(); ++i) {
+            const Ring& ring = rings->rings[i];
+            const auto name = [i](const char* array) { return std::string(array) + "[" + std::to_string(i) + "]"; };
+            set_uniform(p, name("u_ring_base").c_str(), ring.base);
+            glProgramUniform4f(p, glGetUniformLocation(p, name("u_ring_shape").c_str()), float(ring.radius),
+                               float(ring.height), float(std::cos(ring.facing_deg * to_radians)),
+                               float(std::sin(ring.facing_deg * to_radians)));
+            set_uniform(p, name("u_ring_cos_half_arc").c_str(),
+                        ring.arc_deg >= 360 ? -2.0f : static_cast<float>(std::cos(0.5 * ring.arc_deg * to_radians)));
+        }
+    }
+
+    void bind_environment_program(GpuRenderer& renderer, const BuiltProgram& program) const override {
+        const Rings* rings = rings_of(renderer.scene());
+        if (!rings || !program.reads("u_ring_fresnel")) return;
+        program.bind("u_ring_fresnel", ring_fresnel_texture(renderer, *rings));
+    }
+};
+
+}  // namespace
+
+const Effect& rings_effect() {
+    static const RingsEffect effect;
+    return effect;
+}
+
+}  // namespace metalfit::glpreview
