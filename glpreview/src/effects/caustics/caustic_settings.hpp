@@ -4,6 +4,7 @@
 // tunes them.
 #pragma once
 
+#include "glpreview/scene/scene.hpp"
 #include "glpreview/scene/scene_reader.hpp"
 
 namespace metalfit::glpreview {
