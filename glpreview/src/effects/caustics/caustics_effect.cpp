@@ -1,9 +1,28 @@
 #include "caustics_effect.hpp"
 
+#include <optional>
+
+#include "../rings/ring.hpp"
+#include "caustic_maps.hpp"
 #include "caustic_settings.hpp"
+#include "glpreview/gl/uniforms.hpp"
+#include "glpreview/render/frame_inputs.hpp"
+#include "glpreview/render/gpu_renderer.hpp"
+#include "glpreview/render/preview_passes.hpp"
+#include "render/embedded_shaders.hpp"
 
 namespace metalfit::glpreview {
 namespace {
+
+using graph::Builder;
+using graph::Handle;
+using graph::Processor;
+using graph::Resources;
+
+// The light maps the renderer made itself (no graph: tests, benchmarks).
+struct OwnLightMaps {
+    std::optional<CausticLightMaps> maps;
+};
 
 class CausticsEffect final : public Effect {
 public:
@@ -12,6 +31,68 @@ public:
     std::vector<const char*> scene_keys() const override { return {"caustics"}; }
     void read_scene(const SceneReader& top, Scene& scene) const override {
         if (top.has("caustics")) scene.effects.set(read_caustic_settings(top));
+    }
+
+    void declare_environment_program(const Scene& scene, ShaderBuilder& builder) const override {
+        if (plan_caustics(scene).jobs.empty()) return;
+        builder.define("ENVIRONMENT_CAUSTICS", "caustics_on_surface")
+            .source(shader_text("caustics.glsl"))
+            .sampler("u_caustic_light");
+    }
+
+    void set_program_uniforms(const Scene& scene, GLuint p) const override {
+        if (plan_caustics(scene).jobs.empty()) return;
+        set_uniform(p, "u_caustic_room_min", scene.environment.room.min);
+        set_uniform(p, "u_caustic_room_max", scene.environment.room.max);
+    }
+
+    void bind_environment_program(GpuRenderer& renderer, const BuiltProgram& program) const override {
+        if (!program.reads("u_caustic_light") || making_caustics(renderer)) return;  // not while they are made
+        const CausticLightMaps* maps = renderer.frame().find<CausticLightMaps>();
+        if (!maps) {  // no graph handed them over: made here once
+            auto& own = renderer.frame().state<OwnLightMaps>();
+            if (!own.maps) {
+                const CausticSettings settings = caustic_settings(renderer.scene());
+                own.maps = CausticLightMaps::create({settings.light_map_size});
+                render_caustic_light_maps(renderer, plan_caustics(renderer.scene()), settings, *own.maps);
+            }
+            maps = &*own.maps;
+        }
+        program.bind("u_caustic_light", maps->texture.id());
+    }
+
+    void add_frame_input_passes(PreviewGraph& g) const override {
+        const CausticPlan plan = plan_caustics(g.scene);
+        if (plan.jobs.empty()) {
+            if (g.scene.effects.find<Rings>()) g.graph.skip("caustic-maps", plan.why);
+            return;  // a scene without rings plans exactly the passes it did before caustics existed
+        }
+        const CausticSettings settings = caustic_settings(g.scene);
+        struct Data {
+            Handle<CausticLightMaps> out;
+        };
+        PreviewRun* run = g.run;
+        const Handle<CausticLightMaps> maps =
+            g.graph
+                .add_pass<Data>(
+                    {"caustic-maps",
+                     plan.why + "; " + std::to_string(settings.map_size) +
+                         "² photons per light and ring, reflected "
+                         "by the ring and landed by the distance impostor in the room's distance cube, "
+                         "splatted (Gaussian σ " +
+                         glsl_float(settings.filter_width) + " m) into six " + std::to_string(settings.light_map_size) +
+                         "² light maps",
+                     Processor::gpu},
+                    [&](Builder& b, Data& d) {
+                        b.read(g.in.environment);
+                        d.out = b.create<CausticLightMaps>("caustic-light-maps", {settings.light_map_size});
+                    },
+                    [run, plan, settings](const Data& d, Resources& r) {
+                        render_caustic_light_maps(run->renderer(), plan, settings, r.get(d.out));
+                    })
+                .out;
+        g.frame.add(maps);
+        g.environment.add(maps);
     }
 
     // --- The CPU reference (the photon tracer) ---
