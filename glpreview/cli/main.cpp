@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "glpreview/effects/caustic_maps_bench.hpp"
 #include "glpreview/effects/interreflections_bench.hpp"
 #include "glpreview/effects/lights_bench.hpp"
 #include "glpreview/gl/gl_context.hpp"
@@ -168,8 +169,8 @@ int run_glpreview(int argc, char** argv) {
     app.add_flag("--batch", batch,
                  "Render every scene given, each into OUTPUT/<scene file's stem>/, in one process and one GL context");
     bool bench_shader_cost = false, bench_localization_cost = false, bench_glossy_cost = false,
-         bench_lights_cost = false, bench_interreflections_cost = false, bench_bounces_cost = false, quick = false,
-         json = false;
+         bench_lights_cost = false, bench_caustic_maps_cost = false, bench_interreflections_cost = false,
+         bench_bounces_cost = false, quick = false, json = false;
     app.add_flag(
         "--bench-shaders", bench_shader_cost,
         "Benchmark: full-screen 1024² pass per libfit model, ratio to the exact conductor-rgb pass (JSON with --json)");
@@ -184,6 +185,9 @@ int run_glpreview(int argc, char** argv) {
         "--bench-lights", bench_lights_cost,
         "Benchmark: a rough sphere's frame with 0, 1 and 4 point lights and one light's shadow pass, as ratios to the "
         "mirror frame (a Markdown table; JSON with --json)");
+    app.add_flag("--bench-caustic-maps", bench_caustic_maps_cost,
+                 "Benchmark: one light's caustic map and its splat into the room's light maps at 32²-256² photons, as "
+                 "ratios to the ring scene's mirror frame (a Markdown table; JSON with --json)");
     app.add_flag(
         "--bench-interreflections", bench_interreflections_cost,
         "Benchmark: four mirror spheres' frame at max_bounces 1-4 and the making of one sphere's distance map, as "
@@ -295,6 +299,26 @@ int run_glpreview(int argc, char** argv) {
                         result["shadow_pass_per_light"]["ratio_noise"].get<double>());
             return ok;
         }
+        if (bench_caustic_maps_cost) {
+            GlContext context = GlContext::create();
+            const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
+            const auto result = bench_caustic_maps(context, options, quick);
+            if (json) {
+                std::cout << result.dump(2) << "\n";
+                return ok;
+            }
+            std::printf(
+                "renderer %s; %dx%d, %d interleaved rounds\n\n| variant | ms | ratio to the mirror frame |\n|---|---:|---:|\n",
+                result["renderer"].get<std::string>().c_str(), result["size"][0].get<int>(),
+                result["size"][1].get<int>(), result["rounds"].get<int>());
+            for (const auto& r : result["rows"])
+                std::printf("| %s | %.3f | %.2f ± %.2f |\n", r["variant"].get<std::string>().c_str(),
+                            r["ms"].get<double>(), r["ratio_to_mirror_frame"].get<double>(),
+                            r["ratio_noise"].get<double>());
+            std::printf("\nthe article (Szirmay-Kalos et al. 2005, GPU of 2005): a 64² caustic map with shadows, "
+                        "reflection and refraction at 50 FPS; 32² photons splatted into a 256² light map\n");
+            return ok;
+        }
         if (bench_interreflections_cost) {
             GlContext context = GlContext::create();
             const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
@@ -379,7 +403,7 @@ int run_glpreview(int argc, char** argv) {
         }
         if (scene_files.empty())
             throw UsageError(
-                "a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy / --bench-lights / "
+                "a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy / --bench-lights / --bench-caustic-maps / "
                 "--bench-bounces)");
         if (scene_files.size() > 1 && !batch) throw UsageError("several scene files need --batch");
         if (batch && (!sheet.empty() || explain_only || !capture_probe_size.empty()))
