@@ -145,10 +145,10 @@ CausticFloor gpu_caustic(const Scene& scene) {
     GlContext context = GlContext::create();
     GpuRenderer renderer(scene, plan_features(scene), {}, nullptr);
     const CausticSettings settings = caustic_settings(scene);
-    const CausticLightMaps maps = CausticLightMaps::create({settings.light_map_size});
+    const RoomLightMaps maps = RoomLightMaps::create({settings.light_map_size});
     render_caustic_light_maps(renderer, plan_caustics(scene), settings, maps);
     CausticFloor out;
-    out.layers = read_light_maps(maps);
+    out.layers = read_room_light_maps(maps);
     const Room& room = scene.environment.room;
     const double size = maps.size;
     for (int face = 0; face < 6; ++face) {

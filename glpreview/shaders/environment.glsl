@@ -33,11 +33,22 @@ bool checker_even(float a, float b, float size) {
 
 // A room surface of colour c (its radiance) at p with inward normal n: where an effect lights the room
 // (ENVIRONMENT_LIGHTING(albedo, p, n): the lights; ENVIRONMENT_CAUSTICS(albedo, p, n): light that objects threw onto
-// it; each its reflected radiance), that light added with the albedo c clamped to 1.
-#if defined(ENVIRONMENT_LIGHTING) && defined(ENVIRONMENT_CAUSTICS)
+// it; ENVIRONMENT_INDIRECT(albedo, p, n): light the room reflected once more; each its reflected radiance), that light
+// added with the albedo c clamped to 1.
+#if defined(ENVIRONMENT_CAUSTICS) || defined(ENVIRONMENT_INDIRECT)
 vec3 lit_surface(vec3 c, vec3 p, vec3 n) {
     vec3 albedo = min(c, vec3(1.0));
-    return c + ENVIRONMENT_LIGHTING(albedo, p, n) + ENVIRONMENT_CAUSTICS(albedo, p, n);
+    vec3 radiance = c;
+#if defined(ENVIRONMENT_LIGHTING)
+    radiance += ENVIRONMENT_LIGHTING(albedo, p, n);
+#endif
+#if defined(ENVIRONMENT_CAUSTICS)
+    radiance += ENVIRONMENT_CAUSTICS(albedo, p, n);
+#endif
+#if defined(ENVIRONMENT_INDIRECT)
+    radiance += ENVIRONMENT_INDIRECT(albedo, p, n);
+#endif
+    return radiance;
 }
 #define ROOM_SURFACE(c, p, n) lit_surface(c, p, n)
 #elif defined(ENVIRONMENT_LIGHTING)

@@ -11,6 +11,7 @@
 #include "fresnel/fresnel_effect.hpp"
 #include "glossy_localized/glossy_localized_effect.hpp"
 #include "glossy_prefiltered/glossy_prefiltered_effect.hpp"
+#include "indirect/indirect_effect.hpp"
 #include "interreflections/interreflections_effect.hpp"
 #include "lights/lights_effect.hpp"
 #include "localization_diagnostics/localization_diagnostics_effect.hpp"
@@ -23,10 +24,11 @@
 namespace metalfit::glpreview {
 
 std::span<const Effect* const> all_effects() {
-    static const std::array<const Effect*, 14> effects{
+    static const std::array<const Effect*, 15> effects{
         &rings_effect(),     // first: the room's rings are in every program that reads the environment
         &lights_effect(),    // before the capture of the environment: it reads its shadow maps
         &caustics_effect(),  // after the lights, before the capture: it reads its light maps
+        &indirect_effect(),  // after the lights and caustics: its CPU reference gathers their light
         &environment_effect(),
         &reflection_effect(),
         &fresnel_effect(),

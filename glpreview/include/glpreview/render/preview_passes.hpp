@@ -117,6 +117,8 @@ struct PreviewHandles {
     // max_bounces > 1: per sphere, the errors of each bounce order (render/bounce_orders.hpp), metrics.json's
     // "bounce_orders" of each sphere.
     std::optional<graph::Handle<Json>> bounce_orders = {};
+    // Figures an effect adds to metrics.json, each under its own key (its output passes run before the metrics').
+    std::vector<std::pair<std::string, graph::Handle<Json>>> effect_metrics = {};
 };
 
 // Every pass of a preview and the skips --explain lists. `run` may be null (compile and explain only).

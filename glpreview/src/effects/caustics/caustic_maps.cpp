@@ -77,20 +77,6 @@ const EnvironmentCube& room_distances(GpuRenderer& renderer) {
     return *state.cube;
 }
 
-// A room face's corner at (u, v) = (0, 0) and its two axes over their lengths (caustics.glsl's mapping).
-struct FaceFrame {
-    Vec3 origin, u, v;
-};
-FaceFrame face_frame(const Room& room, int face) {
-    const int axis = face / 2, side = face % 2;
-    const int ua = axis == 0 ? 1 : 0, va = axis == 2 ? 1 : 2;
-    FaceFrame f{room.min, {0, 0, 0}, {0, 0, 0}};
-    f.origin[axis] = side == 0 ? room.min[axis] : room.max[axis];
-    f.u[ua] = room.max[ua] - room.min[ua];
-    f.v[va] = room.max[va] - room.min[va];
-    return f;
-}
-
 }  // namespace
 
 bool making_caustics(GpuRenderer& renderer) { return renderer.frame().state<CausticsInProgress>().active; }
@@ -138,21 +124,8 @@ CausticPlan plan_caustics(const Scene& scene) {
     return plan;
 }
 
-CausticLightMaps CausticLightMaps::create(const Descriptor& d) {
-    CausticLightMaps maps{gl::create_texture(GL_TEXTURE_2D_ARRAY), d.size};
-    glTextureStorage3D(maps.texture.id(), 1, GL_RGBA32F, d.size, d.size, 6);
-    glTextureParameteri(maps.texture.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(maps.texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(maps.texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(maps.texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    const float zero[4] = {0, 0, 0, 0};
-    glClearTexImage(maps.texture.id(), 0, GL_RGBA, GL_FLOAT, zero);
-    check_gl("creating the caustic light maps");
-    return maps;
-}
-
 void render_caustic_light_maps(GpuRenderer& renderer, const CausticPlan& plan, const CausticSettings& settings,
-                               const CausticLightMaps& maps) {
+                               const RoomLightMaps& maps) {
     GLint framebuffer = 0, program_in_use = 0, vertex_array = 0, viewport[4] = {0, 0, 0, 0};
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
     glGetIntegerv(GL_CURRENT_PROGRAM, &program_in_use);
@@ -265,7 +238,7 @@ void render_caustic_light_maps(GpuRenderer& renderer, const CausticPlan& plan, c
         glBlendFunc(GL_ONE, GL_ONE);
         glViewport(0, 0, maps.size, maps.size);
         for (int face = 0; face < 6; ++face) {
-            const FaceFrame f = face_frame(room, face);
+            const RoomFace f = room_face(room, face);
             set_uniform(sp, "u_face", face);
             set_uniform(sp, "u_face_origin", f.origin);
             set_uniform(sp, "u_face_u", f.u);
@@ -291,18 +264,6 @@ void render_caustic_light_maps(GpuRenderer& renderer, const CausticPlan& plan, c
         glEnable(GL_BLEND);
     else
         glDisable(GL_BLEND);
-}
-
-std::vector<std::vector<float>> read_light_maps(const CausticLightMaps& maps) {
-    std::vector<float> all(static_cast<std::size_t>(maps.size) * maps.size * 6 * 4);
-    glGetTextureImage(maps.texture.id(), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(all.size() * sizeof(float)),
-                      all.data());
-    std::vector<std::vector<float>> layers(6);
-    const std::size_t texels = static_cast<std::size_t>(maps.size) * maps.size;
-    for (std::size_t layer = 0; layer < 6; ++layer)
-        for (std::size_t t = 0; t < texels; ++t)
-            for (std::size_t c = 0; c < 3; ++c) layers[layer].push_back(all[(layer * texels + t) * 4 + c]);
-    return layers;
 }
 
 }  // namespace metalfit::glpreview

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "caustic_settings.hpp"
-#include "glpreview/gl/objects.hpp"
+#include "glpreview/render/room_light_maps.hpp"
 #include "glpreview/scene/scene.hpp"
 
 namespace metalfit::glpreview {
@@ -29,26 +29,15 @@ CausticPlan plan_caustics(const Scene& scene);
 // The scene's settings (its "caustics" key, else the defaults).
 CausticSettings caustic_settings(const Scene& scene);
 
-// The room's six light maps: a 2D texture array, layer 2·axis + side (side 0: the min plane), RGBA32F, each texel
-// the caustic irradiance (W/m²) at its centre; u and v run along the face's two other axes in x, y, z order.
-struct CausticLightMaps {
-    struct Descriptor {
-        int size = 256;
-    };
-    static CausticLightMaps create(const Descriptor& descriptor);
-    gl::Texture texture;
-    int size = 0;
-};
+// The caustics' light maps (RoomLightMaps) hold irradiance (W/m²); on the frame's blackboard under this name.
+inline const char* const kCausticLightName = "caustic-light";
 
 // Renders every job of `plan` and splats it into `maps` (cleared first). Leaves the GL state it found.
 void render_caustic_light_maps(GpuRenderer& renderer, const CausticPlan& plan, const CausticSettings& settings,
-                               const CausticLightMaps& maps);
+                               const RoomLightMaps& maps);
 
 // Whether render_caustic_light_maps is running on `renderer` (its own programs read the environment too, without the
 // light maps they are making).
 bool making_caustics(GpuRenderer& renderer);
-
-// The caustic light maps read back, layer by layer (rgb per texel, row 0 at v = 0): tests and metrics.
-std::vector<std::vector<float>> read_light_maps(const CausticLightMaps& maps);
 
 }  // namespace metalfit::glpreview

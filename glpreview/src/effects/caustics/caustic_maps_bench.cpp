@@ -35,14 +35,14 @@ nlohmann::ordered_json bench_caustic_maps(GlContext& context, const PreviewOptio
     };
     const std::vector<Case> cases{{32, 256}, {64, 256}, {128, 256}, {256, 256}, {256, 512}};
     std::vector<std::function<void()>> variants{[&gpu] { gpu.draw_frame_for_timing(); }};
-    std::vector<CausticLightMaps> maps;
+    std::vector<RoomLightMaps> maps;
     maps.reserve(cases.size());
     for (const Case& c : cases) {
         CausticSettings settings = caustic_settings(scene);
         settings.map_size = c.photons_edge;
         settings.light_map_size = c.light_map_size;
-        maps.push_back(CausticLightMaps::create({c.light_map_size}));
-        const CausticLightMaps* target = &maps.back();
+        maps.push_back(RoomLightMaps::create({c.light_map_size}));
+        const RoomLightMaps* target = &maps.back();
         render_caustic_light_maps(gpu, plan, settings, *target);  // its programs compiled before the timing
         variants.push_back(
             [&gpu, &plan, settings, target] { render_caustic_light_maps(gpu, plan, settings, *target); });

@@ -6,13 +6,8 @@ uniform vec3 u_caustic_room_min;
 uniform vec3 u_caustic_room_max;
 
 vec3 caustics_on_surface(vec3 albedo, vec3 p, vec3 n) {
-    int axis = abs(n.x) > 0.5 ? 0 : (abs(n.y) > 0.5 ? 1 : 2);
-    int side = n[axis] > 0.0 ? 0 : 1;  // the inward normal of the min plane points up the axis
-    float plane = side == 0 ? u_caustic_room_min[axis] : u_caustic_room_max[axis];
-    if (abs(p[axis] - plane) > 1e-3) return vec3(0.0);
-    int ua = axis == 0 ? 1 : 0, va = axis == 2 ? 1 : 2;
-    vec2 uv = vec2((p[ua] - u_caustic_room_min[ua]) / (u_caustic_room_max[ua] - u_caustic_room_min[ua]),
-                   (p[va] - u_caustic_room_min[va]) / (u_caustic_room_max[va] - u_caustic_room_min[va]));
-    vec3 irradiance = texture(u_caustic_light, vec3(uv, float(2 * axis + side))).rgb;
-    return albedo * irradiance / 3.14159265358979;
+    int face;
+    vec2 uv;
+    if (!room_face_of(p, n, u_caustic_room_min, u_caustic_room_max, face, uv)) return vec3(0.0);
+    return albedo * texture(u_caustic_light, vec3(uv, float(face))).rgb / 3.14159265358979;
 }

@@ -21,7 +21,7 @@ using graph::Resources;
 
 // The light maps the renderer made itself (no graph: tests, benchmarks).
 struct OwnLightMaps {
-    std::optional<CausticLightMaps> maps;
+    std::optional<RoomLightMaps> maps;
 };
 
 class CausticsEffect final : public Effect {
@@ -36,6 +36,7 @@ public:
     void declare_environment_program(const Scene& scene, ShaderBuilder& builder) const override {
         if (plan_caustics(scene).jobs.empty()) return;
         builder.define("ENVIRONMENT_CAUSTICS", "caustics_on_surface")
+            .source(shader_text("room_face.glsl"))
             .source(shader_text("caustics.glsl"))
             .sampler("u_caustic_light");
     }
@@ -48,12 +49,12 @@ public:
 
     void bind_environment_program(GpuRenderer& renderer, const BuiltProgram& program) const override {
         if (!program.reads("u_caustic_light") || making_caustics(renderer)) return;  // not while they are made
-        const CausticLightMaps* maps = renderer.frame().find<CausticLightMaps>();
+        const RoomLightMaps* maps = renderer.frame().find<RoomLightMaps>(kCausticLightName);
         if (!maps) {  // no graph handed them over: made here once
             auto& own = renderer.frame().state<OwnLightMaps>();
             if (!own.maps) {
                 const CausticSettings settings = caustic_settings(renderer.scene());
-                own.maps = CausticLightMaps::create({settings.light_map_size});
+                own.maps = RoomLightMaps::create({settings.light_map_size});
                 render_caustic_light_maps(renderer, plan_caustics(renderer.scene()), settings, *own.maps);
             }
             maps = &*own.maps;
@@ -69,10 +70,10 @@ public:
         }
         const CausticSettings settings = caustic_settings(g.scene);
         struct Data {
-            Handle<CausticLightMaps> out;
+            Handle<RoomLightMaps> out;
         };
         PreviewRun* run = g.run;
-        const Handle<CausticLightMaps> maps =
+        const Handle<RoomLightMaps> maps =
             g.graph
                 .add_pass<Data>(
                     {"caustic-maps",
@@ -85,14 +86,14 @@ public:
                      Processor::gpu},
                     [&](Builder& b, Data& d) {
                         b.read(g.in.environment);
-                        d.out = b.create<CausticLightMaps>("caustic-light-maps", {settings.light_map_size});
+                        d.out = b.create<RoomLightMaps>("caustic-light-maps", {settings.light_map_size});
                     },
                     [run, plan, settings](const Data& d, Resources& r) {
                         render_caustic_light_maps(run->renderer(), plan, settings, r.get(d.out));
                     })
                 .out;
-        g.frame.add(maps);
-        g.environment.add(maps);
+        g.frame.add(maps, kCausticLightName);
+        g.environment.add(maps, kCausticLightName);
     }
 
     // --- The CPU reference (the photon tracer) ---

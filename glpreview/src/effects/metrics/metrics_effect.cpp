@@ -17,7 +17,7 @@ using graph::Resources;
 
 Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRender& reference,
                   const Image& localization, const Image* standard_error, const Image* fit_reference,
-                  const Json* bounce_orders) {
+                  const Json* bounce_orders, const std::vector<std::pair<std::string, const Json*>>& effect_metrics) {
     const Scene& scene = run.scene;
     Json j;
     j["schema"] = "metalfit.preview-metrics/1";
@@ -74,6 +74,7 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
         if (bounce_orders) e["bounce_orders"] = bounce_orders->at(i);
         j["spheres"].push_back(e);
     }
+    for (const auto& [key, figures] : effect_metrics) j[key] = *figures;
     return j;
 }
 
@@ -126,14 +127,18 @@ public:
                         if (h.reference_standard_error) b.read(*h.reference_standard_error);
                         if (h.fit_reference) b.read(*h.fit_reference);
                         if (h.bounce_orders) b.read(*h.bounce_orders);
+                        for (const auto& [key, handle] : h.effect_metrics) b.read(handle);
                         d.out = b.produce<Json>("metrics");
                     },
                     [run, h](const Out<Json>& d, Resources& r) {
-                        r.emplace(d.out, metrics_json(*run, r.get(h.beauty), r.get(h.reference), r.get(h.localization),
-                                                      h.reference_standard_error ? &r.get(*h.reference_standard_error)
-                                                                                 : nullptr,
-                                                      h.fit_reference ? &r.get(*h.fit_reference) : nullptr,
-                                                      h.bounce_orders ? &r.get(*h.bounce_orders) : nullptr));
+                        std::vector<std::pair<std::string, const Json*>> effect_metrics;
+                        for (const auto& [key, handle] : h.effect_metrics)
+                            effect_metrics.push_back({key, &r.get(handle)});
+                        r.emplace(d.out, metrics_json(
+                                             *run, r.get(h.beauty), r.get(h.reference), r.get(h.localization),
+                                             h.reference_standard_error ? &r.get(*h.reference_standard_error) : nullptr,
+                                             h.fit_reference ? &r.get(*h.fit_reference) : nullptr,
+                                             h.bounce_orders ? &r.get(*h.bounce_orders) : nullptr, effect_metrics));
                     })
                 .out;
     }
