@@ -10,7 +10,7 @@
 namespace metalfit::glpreview {
 
 struct CausticSettings {
-    int map_size = 128;         // caustic-map texels per edge, per light and ring: map_size² photons on the GPU
+    int map_size = 128;          // caustic-map texels per edge, per light and ring: map_size² photons on the GPU
     double filter_width = 0.03;  // m: σ of the Gaussian each photon is splatted with (GPU) and density-estimated (CPU)
     int light_map_size = 256;    // texels per edge of each room face's light map
     int reference_photons = 1 << 20;  // photons the CPU reference traces per light and ring
