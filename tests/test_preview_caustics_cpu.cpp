@@ -15,6 +15,7 @@
 #include "effects/rings/ring.hpp"
 #include "effects/rings/rings_effect.hpp"
 #include "glpreview/effects/registry.hpp"
+#include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/preview.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
 #include "libfit/base/errors.hpp"
@@ -177,6 +178,54 @@ TEST(CpuRing, CastsShadowsForTheLightsCpuShadowRays) {
     EXPECT_FALSE(occluded(scene, Vec3{0, 0, -2.2}, to_light, std::numeric_limits<double>::infinity()));
 }
 
+// The share of the pixels that see no sphere (the room and the ring) where the GPU's beauty and the CPU reference
+// agree within `tolerance` (relative, green), and their mean |difference|.
+struct Agreement {
+    double share = 0, mean_abs = 0;
+};
+Agreement agreement(const PreviewResult& r, double tolerance) {
+    int agree = 0, total = 0;
+    double sum = 0;
+    for (int y = 0; y < r.beauty->height; ++y)
+        for (int x = 0; x < r.beauty->width; ++x) {
+            if (r.reference->sphere_id[static_cast<std::size_t>(y) * r.beauty->width + x] >= 0) continue;
+            const double a = r.beauty->at(x, y).g, b = r.reference->image.at(x, y).g;
+            ++total;
+            sum += std::abs(a - b);
+            agree += std::abs(a - b) <= tolerance * std::max(b, 1e-3) ? 1 : 0;
+        }
+    return {double(agree) / total, sum / total};
+}
+
+TEST(CpuRingGpu, TheReferenceAgreesWithTheBeautyWithoutLights) {
+    // A room lit by its ceiling panel alone: no caustics; the gold ring seen, reflecting the room, on both sides.
+    Scene scene = parse_scene(ring_scene(kGoldRing + R"(, {"base": [1.5, 0, -1.2], "radius": 0.5, "height": 0.6,
+                                             "arc_deg": 300, "facing_deg": 135, "material": "Cu", "fresnel": "f82-tint"})",
+                                         ""),
+                              "caustics.json");
+    scene.environment.room.panels.push_back({-0.5, -0.5, 0.5, 0.5, {4, 4, 4}});
+    const PreviewResult r = run_preview(scene, {kData, choose_ocio_config(std::nullopt, kData), {}, 1});
+    const Agreement a = agreement(r, 0.01);
+    std::cout << "ring scene without lights: " << 100 * a.share << " % of the pixels within 1 %, mean |diff| "
+              << a.mean_abs << "\n";
+    EXPECT_GT(a.share, 0.999);
+    EXPECT_LT(a.mean_abs, 1e-5);
+}
+
+TEST(CpuRingGpu, WithALightTheyDifferInTheCausticAndAtShadowEdges) {
+    // The GPU of this branch throws no caustic: the reference is brighter where the ring focuses the light, and
+    // they differ where the shadow maps' texels blur the ring's shadow edge; elsewhere they agree.
+    const Scene scene =
+        parse_scene(ring_scene(kGoldRing, R"({"type": "directional", "direction": [0, -0.35, -1], "intensity": 3})",
+                               R"(, "caustics": {"reference_photons": 100000})"),
+                    "caustics.json");
+    const PreviewResult r = run_preview(scene, {kData, choose_ocio_config(std::nullopt, kData), {}, 1});
+    const Agreement a = agreement(r, 0.02);
+    std::cout << "ring scene with a light: " << 100 * a.share << " % of the pixels within 2 %, mean |diff| "
+              << a.mean_abs << "\n";
+    EXPECT_GT(a.share, 0.85);
+}
+
 // ---- The photon tracer --------------------------------------------------------------------------------------------
 
 CausticMap trace(const Scene& scene, int photons, double sigma, bool spectral = true) {
@@ -225,6 +274,10 @@ TEST(Photons, ConserveEnergy) {
         EXPECT_LE(b.deposited[c] + b.absorbed[c], b.reflected[c] * (1 + 1e-12));
         EXPECT_LE(b.reflected[c], b.intercepted[c] * max_f);
     }
+    // In luminance (a positive functional of the spectrum) no channel's white balance lifts it: Y out ≤ Y in.
+    const RGB y{0.2126, 0.7152, 0.0722};
+    const auto luminance = [&](const RGB& c) { return y.r * c.r + y.g * c.g + y.b * c.b; };
+    EXPECT_LT(luminance(b.deposited), luminance(b.intercepted));
     // The grid keeps the power: Σ E × step² over a receiver is its photons' power.
     for (int r = 0; r < kReceivers; ++r) {
         const ReceiverMap& m = map.receiver(static_cast<Receiver>(r));

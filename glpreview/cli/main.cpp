@@ -155,7 +155,7 @@ void print_bounces_table(const nlohmann::ordered_json& result) {
 void print_caustics_table(const nlohmann::ordered_json& result) {
     std::printf("%s; light %s; %d photons, filter width %.3g m; CPU. Errors against the spectral reference (the "
                 "worst channel, signed): total caustic power, floor peak irradiance at the reference's peak, colour "
-                "(each channel's share of the power); peak shift: the model's own floor peak from the reference's\n",
+                "(each channel's share of the power)\n",
                 result["scene"].get<std::string>().c_str(), result["light"].get<std::string>().c_str(),
                 result["photons"].get<int>(), result["filter_width"].get<double>());
     for (const auto& m : result["metals"]) {
@@ -169,13 +169,11 @@ void print_caustics_table(const nlohmann::ordered_json& result) {
                     ref["peak_position"][2].get<double>());
         if (ref.contains("focus_distance"))
             std::printf(", %.3f m from the closed form's cusp", ref["focus_distance"].get<double>());
-        std::printf(
-            "\n\n| model | params | power | peak | colour | peak shift (mm) |\n|---|---|---:|---:|---:|---:|\n");
+        std::printf("\n\n| model | params | power | peak | colour |\n|---|---|---:|---:|---:|\n");
         for (const auto& r : m["rows"])
-            std::printf("| %s | %s | %+.2f%% | %+.2f%% | %+.2f%% | %.1f |\n", r["model"].get<std::string>().c_str(),
+            std::printf("| %s | %s | %+.2f%% | %+.2f%% | %+.2f%% |\n", r["model"].get<std::string>().c_str(),
                         r["params"].get<std::string>().c_str(), 100 * r["power_rel"]["worst"].get<double>(),
-                        100 * r["peak_rel"]["worst"].get<double>(), 100 * r["colour_rel"]["worst"].get<double>(),
-                        1000 * r["peak_shift"].get<double>());
+                        100 * r["peak_rel"]["worst"].get<double>(), 100 * r["colour_rel"]["worst"].get<double>());
         for (const auto& s : m["skipped"])
             std::printf("\nskipped %s (%s): %s", s["model"].get<std::string>().c_str(),
                         s["params"].get<std::string>().c_str(), s["why"].get<std::string>().c_str());
