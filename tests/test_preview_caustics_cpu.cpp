@@ -304,6 +304,35 @@ TEST(Photons, InterceptTheLightTheRingPresents) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(map.budget().intercepted[c], expected, 0.01 * expected);
 }
 
+TEST(Photons, ASpotIsAPointLightInsideItsConeAndTheMapIsTheSameOnAnyThreads) {
+    const std::string ring = R"({"base": [0, 0, 0], "radius": 0.5, "height": 0.3, "arc_deg": 360, "material": "Au"})";
+    const Scene point = resolved(ring_scene(ring, R"({"type": "point", "position": [0, 2, 1.5], "intensity": 2})"));
+    // Its axis on the ring, the cone wide enough for the whole bounding sphere: weight 1 on every photon.
+    const Scene wide =
+        resolved(ring_scene(ring, R"({"type": "spot", "position": [0, 2, 1.5], "direction": [0, -1.85, -1.5],
+        "cone_inner_deg": 40, "cone_outer_deg": 50, "intensity": 2})"));
+    const Scene narrow = resolved(ring_scene(ring, R"({"type": "spot", "position": [0, 2, 1.5], "direction": [0, 1, 0],
+        "cone_inner_deg": 5, "cone_outer_deg": 10, "intensity": 2})"));
+    const CausticMap p = trace(point, 50000, 0.03), w = trace(wide, 50000, 0.03), n = trace(narrow, 50000, 0.03);
+    EXPECT_GT(p.budget().hits, 1000);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_DOUBLE_EQ(w.budget().intercepted[c], p.budget().intercepted[c]);
+        EXPECT_DOUBLE_EQ(w.budget().deposited[c], p.budget().deposited[c]);
+        EXPECT_EQ(n.budget().intercepted[c], 0);  // pointing away
+    }
+    // The same photons on 1 and 3 threads: the same map, bit for bit.
+    PhotonFresnel fresnel;
+    fresnel.rgb = rings_of(point).fresnel;
+    PhotonOptions options;
+    options.photons = 30000;
+    options.threads = 1;
+    const CausticMap one = trace_caustics(point, rings_of(point), *point.effects.find<Lights>(), fresnel, options);
+    options.threads = 3;
+    const CausticMap three = trace_caustics(point, rings_of(point), *point.effects.find<Lights>(), fresnel, options);
+    EXPECT_EQ(one.receiver(Receiver::floor).grid, three.receiver(Receiver::floor).grid);
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(one.budget().deposited[c], three.budget().deposited[c]);
+}
+
 // The floor's brightest point of a fine photon map against the closed form's focus. The focus is a cusp of the
 // floor's irradiance: smoothed with a Gaussian of σ, its brightest point lies inside the cusp, towards the wall, at a
 // distance that shrinks as σ^(2/3) (a cusp's scaling: across its axis as λ³, along it as λ²), not within σ. So the
