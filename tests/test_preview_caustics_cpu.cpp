@@ -14,6 +14,7 @@
 #include "effects/lights/cpu_lights.hpp"
 #include "effects/rings/ring.hpp"
 #include "effects/rings/rings_effect.hpp"
+#include "glpreview/effects/caustics_bench.hpp"
 #include "glpreview/effects/registry.hpp"
 #include "glpreview/render/cpu_reference.hpp"
 #include "glpreview/render/preview.hpp"
@@ -273,6 +274,8 @@ TEST(Photons, ConserveEnergy) {
         EXPECT_LE(b.deposited[c], b.intercepted[c] * max_f);
         EXPECT_LE(b.deposited[c] + b.absorbed[c], b.reflected[c] * (1 + 1e-12));
         EXPECT_LE(b.reflected[c], b.intercepted[c] * max_f);
+        EXPECT_GT(b.deposited_multiple[c], 0);
+        EXPECT_LT(b.deposited_multiple[c], b.deposited[c]);
     }
     // In luminance (a positive functional of the spectrum) no channel's white balance lifts it: Y out ≤ Y in.
     const RGB y{0.2126, 0.7152, 0.0722};
@@ -395,6 +398,26 @@ TEST(CausticFocus, SaysWhyThereIsNone) {
     light.position = {0.5, 1, 0.5};
     EXPECT_FALSE(caustic_focus(ring, light, &why));
     EXPECT_TRUE(test::Contains(why, "circle"));
+}
+
+// ---- The per-model table -------------------------------------------------------------------------------------------
+
+TEST(CausticsBench, EveryModelAgainstTheSpectralReference) {
+    const nlohmann::ordered_json j =
+        bench_caustics({kData, choose_ocio_config(std::nullopt, kData), {}, 0}, /*quick=*/true);
+    ASSERT_EQ(j["metals"].size(), 3u);
+    for (const auto& m : j["metals"]) {
+        // Every model of the registry has a fitted row; the RGB reference curve is the spectral one's within 0.5 %.
+        std::size_t fitted = 0;
+        for (const auto& r : m["rows"]) fitted += r["params"] == "fit" ? 1 : 0;
+        EXPECT_EQ(fitted, all_models().size());
+        const auto& lut = m["rows"][0];
+        EXPECT_EQ(lut["model"], "reference-lut");
+        EXPECT_LT(std::abs(lut["power_rel"]["worst"].get<double>()), 0.005) << m["metal"];
+        EXPECT_LT(std::abs(lut["peak_rel"]["worst"].get<double>()), 0.005) << m["metal"];
+        EXPECT_LT(m["reference"]["focus_distance"].get<double>(), 0.1);  // σ = 0.03: the σ^(2/3) offset
+        for (const auto& r : m["rows"]) EXPECT_EQ(r["peak_shift"].get<double>(), 0.0);
+    }
 }
 
 // ---- Bad input ------------------------------------------------------------------------------------------------------

@@ -14,7 +14,7 @@
 
 namespace metalfit::glpreview {
 
-// {"scene", "light", "photons", "filter_width", "metals": [{"metal", "source", "reference": {power, peak_irradiance,
+// {"scene", "light", "photons", "filter_width", "metals": [{"metal", "source", "reference": {power, power_after_several_reflections, peak_irradiance,
 //  peak_position, focus, focus_distance}, "rows": [{model, params, power, peak_irradiance, power_rel, peak_rel,
 //  colour_rel, peak_shift}], "skipped": [{model, params, why}]}]}. Relative errors are per channel (R, G, B) and
 // `worst` (the channel of largest magnitude, with its sign).

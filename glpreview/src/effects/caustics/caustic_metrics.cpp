@@ -34,6 +34,7 @@ nlohmann::json caustic_metrics_json(const Scene& scene, const CausticMap& map, c
     j["intercepted"] = rgb_json(b.intercepted);
     j["reflected"] = rgb_json(b.reflected);
     j["deposited"] = rgb_json(b.deposited);
+    j["deposited_after_several_reflections"] = rgb_json(b.deposited_multiple);
     j["absorbed"] = rgb_json(b.absorbed);
     j["receivers"] = nlohmann::json::array();
     const Room& room = scene.environment.room;

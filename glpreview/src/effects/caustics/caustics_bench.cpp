@@ -89,6 +89,7 @@ Json bench_caustics(const PreviewOptions& options, bool quick) {
         m["metal"] = reference_lut.material;
         m["source"] = reference_lut.source;
         Json ref{{"power", rgb_json(reference_power)},
+                 {"power_after_several_reflections", rgb_json(reference.budget().deposited_multiple)},
                  {"peak_irradiance", rgb_json(peak.irradiance)},
                  {"peak_position", Json::array({peak.u, 0.0, peak.v})}};
         if (const std::optional<CausticFocus> focus = caustic_focus(ring, light)) {

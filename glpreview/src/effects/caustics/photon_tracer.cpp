@@ -339,6 +339,7 @@ CausticMap trace_caustics(const Scene& scene, const Rings& rings, const Lights& 
                     out.paths.push_back({power, static_cast<int>(face), u, v, static_cast<std::uint32_t>(path_start),
                                          static_cast<std::uint32_t>(out.bounces.size() - path_start)});
                 out.budget.deposited = out.budget.deposited + deposited;
+                if (bounce > 0) out.budget.deposited_multiple = out.budget.deposited_multiple + deposited;
                 break;
             }
         }
@@ -367,6 +368,7 @@ CausticMap trace_caustics(const Scene& scene, const Rings& rings, const Lights& 
         budget.reflected = budget.reflected + r.budget.reflected;
         budget.deposited = budget.deposited + r.budget.deposited;
         budget.absorbed = budget.absorbed + r.budget.absorbed;
+        budget.deposited_multiple = budget.deposited_multiple + r.budget.deposited_multiple;
         budget.traced += r.budget.traced;
         budget.hits += r.budget.hits;
         budget.multiple += r.budget.multiple;
@@ -407,12 +409,13 @@ CausticMap reweight(const CausticMap& traced, const PhotonFresnel& fresnel, int 
     });
     std::array<ReceiverMap, kReceivers> receivers;
     PhotonBudget budget = traced.budget();
-    budget.deposited = {0, 0, 0};
+    budget.deposited = budget.deposited_multiple = {0, 0, 0};
     for (std::size_t i = 0; i < weighed.size(); ++i) {
         ReceiverMap& m = receivers[static_cast<std::size_t>(traced.paths[i].face)];
         m.photons.push_back(weighed[i]);
         m.power = m.power + weighed[i].power;
         budget.deposited = budget.deposited + weighed[i].power;
+        if (traced.paths[i].count > 1) budget.deposited_multiple = budget.deposited_multiple + weighed[i].power;
     }
     build_grids(receivers, traced.sigma(), threads);
     return CausticMap(std::move(receivers), budget, traced.sigma());

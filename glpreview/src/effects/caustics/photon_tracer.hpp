@@ -69,10 +69,11 @@ struct PathBounce {
 
 // What the photons carried, summed over every light and ring (W, RGB).
 struct PhotonBudget {
-    RGB intercepted{0, 0, 0};  // reached a ring's wall
-    RGB reflected{0, 0, 0};    // left the first wall (× F)
-    RGB deposited{0, 0, 0};    // on the room's faces
-    RGB absorbed{0, 0, 0};     // stopped by a sphere or room box after a reflection, or after kMaxPhotonBounces
+    RGB intercepted{0, 0, 0};         // reached a ring's wall
+    RGB reflected{0, 0, 0};           // left the first wall (× F)
+    RGB deposited{0, 0, 0};           // on the room's faces
+    RGB absorbed{0, 0, 0};            // stopped by a sphere or room box after a reflection, or after kMaxPhotonBounces
+    RGB deposited_multiple{0, 0, 0};  // the part of `deposited` that photons reflected more than once carried
     std::int64_t traced = 0, hits = 0, multiple = 0;  // photons traced, reaching a ring, reflected more than once
 };
 
