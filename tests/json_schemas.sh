@@ -58,6 +58,21 @@ if [ "$glpreview" != - ]; then
 EOF
   "$glpreview" "$dir/scene.json" -o "$dir/preview" > /dev/null
   files+=("$dir/preview/metrics.json" "$dir/preview/timings.json")
+  # A ring under a light: metrics.json's caustics entry (issue 35).
+  cat > "$dir/ring.json" <<'EOF'
+{
+  "image": {"width": 48, "height": 32},
+  "camera": {"position": [0.0, 2.2, 2.6], "look_at": [0, 0.2, 0], "fov_y_deg": 50},
+  "environment": {"type": "room"},
+  "lights": [{"type": "directional", "direction": [0, -0.35, -1], "intensity": 3}],
+  "rings": [{"base": [0, 0, 0], "radius": 1.0, "height": 0.35, "arc_deg": 180, "facing_deg": -90, "material": "Au"}],
+  "caustics": {"reference_photons": 4000},
+  "spheres": [{"center": [1.6, 0.3, 1.0], "radius": 0.3, "material": "Ag"}],
+  "outputs": {"beauty": false, "reference": false, "difference": false, "metrics": true}
+}
+EOF
+  "$glpreview" "$dir/ring.json" -o "$dir/ring" > /dev/null
+  files+=("$dir/ring/metrics.json")
 fi
 "$node" "$here/json_schemas.mjs" "$modules" "$schemas" "${files[@]}"
 "$node" "$here/json_schemas.mjs" "$modules" "$schemas" --broken "${files[@]}"

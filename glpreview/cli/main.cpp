@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "glpreview/effects/caustic_maps_bench.hpp"
+#include "glpreview/effects/caustics_bench.hpp"
 #include "glpreview/effects/interreflections_bench.hpp"
 #include "glpreview/effects/lights_bench.hpp"
 #include "glpreview/gl/gl_context.hpp"
@@ -151,6 +152,36 @@ void print_bounces_table(const nlohmann::ordered_json& result) {
     if (!result["skipped"].empty()) std::printf("\n");
 }
 
+// The per-model caustic table of --bench-caustics as Markdown.
+void print_caustics_table(const nlohmann::ordered_json& result) {
+    std::printf("%s; light %s; %d photons, filter width %.3g m; CPU. Errors against the spectral reference (the "
+                "worst channel, signed): total caustic power, floor peak irradiance at the reference's peak, colour "
+                "(each channel's share of the power)\n",
+                result["scene"].get<std::string>().c_str(), result["light"].get<std::string>().c_str(),
+                result["photons"].get<int>(), result["filter_width"].get<double>());
+    for (const auto& m : result["metals"]) {
+        const auto& ref = m["reference"];
+        std::printf("\n%s (%s): reference power (%.4g, %.4g, %.4g) W, floor peak (%.4g, %.4g, %.4g) W/m2 at (%.3f, "
+                    "%.3f)",
+                    m["metal"].get<std::string>().c_str(), m["source"].get<std::string>().c_str(),
+                    ref["power"][0].get<double>(), ref["power"][1].get<double>(), ref["power"][2].get<double>(),
+                    ref["peak_irradiance"][0].get<double>(), ref["peak_irradiance"][1].get<double>(),
+                    ref["peak_irradiance"][2].get<double>(), ref["peak_position"][0].get<double>(),
+                    ref["peak_position"][2].get<double>());
+        if (ref.contains("focus_distance"))
+            std::printf(", %.3f m from the closed form's cusp", ref["focus_distance"].get<double>());
+        std::printf("\n\n| model | params | power | peak | colour |\n|---|---|---:|---:|---:|\n");
+        for (const auto& r : m["rows"])
+            std::printf("| %s | %s | %+.2f%% | %+.2f%% | %+.2f%% |\n", r["model"].get<std::string>().c_str(),
+                        r["params"].get<std::string>().c_str(), 100 * r["power_rel"]["worst"].get<double>(),
+                        100 * r["peak_rel"]["worst"].get<double>(), 100 * r["colour_rel"]["worst"].get<double>());
+        for (const auto& s : m["skipped"])
+            std::printf("\nskipped %s (%s): %s", s["model"].get<std::string>().c_str(),
+                        s["params"].get<std::string>().c_str(), s["why"].get<std::string>().c_str());
+        if (!m["skipped"].empty()) std::printf("\n");
+    }
+}
+
 int run_glpreview(int argc, char** argv) {
     using namespace metalfit;
     using namespace metalfit::glpreview;
@@ -170,7 +201,7 @@ int run_glpreview(int argc, char** argv) {
                  "Render every scene given, each into OUTPUT/<scene file's stem>/, in one process and one GL context");
     bool bench_shader_cost = false, bench_localization_cost = false, bench_glossy_cost = false,
          bench_lights_cost = false, bench_caustic_maps_cost = false, bench_interreflections_cost = false,
-         bench_bounces_cost = false, quick = false, json = false;
+         bench_bounces_cost = false, bench_caustics_cost = false, quick = false, json = false;
     app.add_flag(
         "--bench-shaders", bench_shader_cost,
         "Benchmark: full-screen 1024² pass per libfit model, ratio to the exact conductor-rgb pass (JSON with --json)");
@@ -197,6 +228,11 @@ int run_glpreview(int argc, char** argv) {
         "Benchmark (CPU only): gold, copper, silver and aluminium mirrors reflecting each other, bounce orders 1-4, "
         "every model's image RMSE and dE2000 against the RGB reference and the RGB-vs-spectral error (a Markdown "
         "table; JSON with --json)");
+    app.add_flag(
+        "--bench-caustics", bench_caustics_cost,
+        "Benchmark (CPU only): a gold, copper and aluminium ring under a grazing directional light, every model's "
+        "caustic power, peak irradiance and colour against the spectral photon-traced reference (a Markdown table; "
+        "JSON with --json)");
     app.add_flag("--quick", quick, "Benchmarks: fewer frames, smaller images");
     app.add_flag("--json", json, "Benchmarks: print JSON");
     app.add_option("-o,--output", output_dir, "Output folder (default: preview/)");
@@ -266,6 +302,16 @@ int run_glpreview(int argc, char** argv) {
         return code == 0 ? ok : usage;
     }
     try {
+        if (bench_caustics_cost) {
+            const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
+            const auto result = bench_caustics(options, quick);
+            if (json) {
+                std::cout << result.dump(2) << "\n";
+                return ok;
+            }
+            print_caustics_table(result);
+            return ok;
+        }
         if (bench_bounces_cost) {
             const PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), {}, 0};
             const auto result = bench_bounces(options, quick);
@@ -403,8 +449,8 @@ int run_glpreview(int argc, char** argv) {
         }
         if (scene_files.empty())
             throw UsageError(
-                "a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy / --bench-lights / --bench-caustic-maps / "
-                "--bench-bounces)");
+                "a scene file is required (or --bench-shaders / --bench-localization / --bench-glossy / --bench-lights / "
+                "--bench-caustic-maps / --bench-bounces / --bench-caustics)");
         if (scene_files.size() > 1 && !batch) throw UsageError("several scene files need --batch");
         if (batch && (!sheet.empty() || explain_only || !capture_probe_size.empty()))
             throw UsageError("--batch renders scenes: --sheet, --explain and --capture-probe take one scene");

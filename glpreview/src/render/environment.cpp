@@ -17,13 +17,21 @@ bool checker_even(double a, double b, double size) {
 
 }  // namespace
 
-EnvironmentTracer::EnvironmentTracer(const Environment& environment, const Image* equirect, SurfaceLight light)
-    : environment_(environment), equirect_(equirect), light_(std::move(light)) {
+EnvironmentTracer::EnvironmentTracer(const Environment& environment, const Image* equirect, SurfaceLight light,
+                                     EnvironmentObjects objects)
+    : environment_(environment), equirect_(equirect), light_(std::move(light)), objects_(std::move(objects)) {
     if (environment.type == EnvironmentType::equirect && !equirect)
         throw std::invalid_argument("EnvironmentTracer: the equirect image is missing");
 }
 
 EnvironmentHit EnvironmentTracer::trace(Vec3 origin, Vec3 dir) const {
+    const EnvironmentHit room = room_trace(origin, dir);
+    if (!objects_ || environment_.type != EnvironmentType::room) return room;
+    if (std::optional<EnvironmentHit> seen = objects_(origin, dir, room.t, *this)) return *seen;
+    return room;
+}
+
+EnvironmentHit EnvironmentTracer::room_trace(Vec3 origin, Vec3 dir) const {
     switch (environment_.type) {
         case EnvironmentType::room: return trace_room(origin, dir);
         case EnvironmentType::sphere_room: return trace_sphere_room(origin, dir);

@@ -5,6 +5,7 @@
 // renderer and the preview's graph call every registered effect and name none.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -96,6 +97,18 @@ public:
     virtual RadianceEstimate cpu_sphere_light(const Scene&, std::size_t /*sphere*/, Vec3 /*p*/, Vec3 /*n*/, Vec3 /*v*/,
                                               const SphereFresnel&, int /*samples*/, std::uint64_t /*seed*/) const {
         return {};
+    }
+    // An object this effect stands in the room that the ray o + t d (d unit) meets before t_max, the room's own hit:
+    // its radiance and ray parameter, as ENVIRONMENT_OBJECT on the GPU (environment.glsl); `room` traces the room
+    // alone (EnvironmentTracer::room_trace, with the light effects add to its surfaces).
+    virtual std::optional<EnvironmentHit> cpu_environment_object(const Scene&, Vec3 /*o*/, Vec3 /*d*/, double /*t_max*/,
+                                                                 const EnvironmentTracer& /*room*/) const {
+        return std::nullopt;
+    }
+    // Where a shadow ray from o along unit d first meets an object of this effect (ENVIRONMENT_OCCLUDER), past a
+    // small epsilon; ∞ when it meets none. The lights' CPU shadow rays (cpu_lights' occluded) ask every effect.
+    virtual double cpu_occluder(const Scene&, Vec3 /*o*/, Vec3 /*d*/) const {
+        return std::numeric_limits<double>::infinity();
     }
     // Whether this effect adds anything to the CPU references of `scene` (else its cpu_* are not called).
     virtual bool lights_cpu_reference(const Scene&) const { return false; }

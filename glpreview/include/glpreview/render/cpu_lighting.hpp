@@ -24,6 +24,8 @@ struct RadianceEstimate {
 
 struct CpuLighting {
     SurfaceLight surface;
+    // The objects effects stand in the room (the rings), which the environment tracer meets before the room.
+    EnvironmentObjects objects;
     // The emitter a ray from `origin` along unit `dir` meets first, if any: its radiance.
     std::function<std::optional<RGB>(Vec3 origin, Vec3 dir)> emitter;
     // The direct light reflected towards unit `v` at point p (unit normal n) of sphere `sphere`, roughness > 0.

@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <limits>
+#include <optional>
 
 #include "glpreview/io/image.hpp"
 #include "glpreview/scene/scene.hpp"
@@ -20,15 +21,26 @@ struct EnvironmentHit {
 // as ENVIRONMENT_LIGHTING does in environment.glsl.
 using SurfaceLight = std::function<RGB(const RGB& albedo, Vec3 p, Vec3 n)>;
 
+class EnvironmentTracer;
+// The objects effects stand in a room (ENVIRONMENT_OBJECT in environment.glsl: the rings): whether the ray from o
+// along unit d meets one before t_max (the room's own hit), and then its radiance and ray parameter; `room` traces
+// the room alone (EnvironmentTracer::room_trace), as the GPU's reflected rays read it.
+using EnvironmentObjects =
+    std::function<std::optional<EnvironmentHit>(Vec3 o, Vec3 d, double t_max, const EnvironmentTracer& room)>;
+
 class EnvironmentTracer {
 public:
     // `equirect` must be the loaded image when the environment is an equirect one (kept by reference). `light`: the
     // light effects add to the room's surfaces (none: the room's emission alone); its albedo is a surface's colour
     // clamped to 1; ceiling panels are emitters and take none.
-    EnvironmentTracer(const Environment& environment, const Image* equirect = nullptr, SurfaceLight light = {});
+    // `objects`: what effects stand in a room (none: the room alone).
+    EnvironmentTracer(const Environment& environment, const Image* equirect = nullptr, SurfaceLight light = {},
+                      EnvironmentObjects objects = {});
 
-    // Radiance seen from `origin` along unit direction `dir`, and where it is.
+    // Radiance seen from `origin` along unit direction `dir`, and where it is: the room and the objects in it.
     EnvironmentHit trace(Vec3 origin, Vec3 dir) const;
+    // The same without the objects (environment.glsl's room_trace).
+    EnvironmentHit room_trace(Vec3 origin, Vec3 dir) const;
 
 private:
     EnvironmentHit trace_room(Vec3 origin, Vec3 dir) const;
@@ -40,6 +52,7 @@ private:
     const Environment& environment_;
     const Image* equirect_;
     SurfaceLight light_;
+    EnvironmentObjects objects_;
 };
 
 // Bilinear lookup in an equirect image (u wraps, v clamps), as the shader does it with texelFetch.

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <random>
 
+#include "glpreview/effects/registry.hpp"
 #include "glpreview/render/ggx.hpp"
 
 namespace metalfit::glpreview {
@@ -80,6 +81,14 @@ double spot_weight(const Light& light, double cos_angle) {
 }
 
 bool occluded(const Scene& scene, Vec3 o, Vec3 d, double t_max, std::optional<std::size_t> skip) {
+    if (occluded_by_spheres_and_boxes(scene, o, d, t_max, skip)) return true;
+    // The objects effects stand in the room (the rings: ENVIRONMENT_OCCLUDER in the shadow maps).
+    for (const Effect* effect : all_effects())
+        if (effect->cpu_occluder(scene, o, d) < t_max) return true;
+    return false;
+}
+
+bool occluded_by_spheres_and_boxes(const Scene& scene, Vec3 o, Vec3 d, double t_max, std::optional<std::size_t> skip) {
     for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
         if (skip && *skip == i) continue;
         const Sphere& s = scene.spheres[i];

@@ -38,6 +38,15 @@ std::optional<CpuLighting> cpu_lighting(const Scene& scene) {
             if (const std::optional<RGB> emitted = effect->cpu_emitter(scene, origin, dir)) return emitted;
         return std::nullopt;
     };
+    all.objects = [&scene, lighting](Vec3 o, Vec3 d, double t_max,
+                                     const EnvironmentTracer& room) -> std::optional<EnvironmentHit> {
+        std::optional<EnvironmentHit> nearest;
+        for (const Effect* effect : lighting)
+            if (std::optional<EnvironmentHit> seen =
+                    effect->cpu_environment_object(scene, o, d, nearest ? nearest->t : t_max, room))
+                nearest = seen;
+        return nearest;
+    };
     all.sphere_light = [&scene, lighting](std::size_t sphere, Vec3 p, Vec3 n, Vec3 v, const SphereFresnel& fresnel,
                                           int samples, std::uint64_t seed) {
         RadianceEstimate sum;
@@ -49,6 +58,13 @@ std::optional<CpuLighting> cpu_lighting(const Scene& scene) {
         return sum;
     };
     return all;
+}
+
+// The references' environment: the room with the light and the objects effects add to it.
+EnvironmentTracer reference_tracer(const Scene& scene, const std::optional<CpuLighting>& lighting,
+                                   const Image* equirect) {
+    return EnvironmentTracer(scene.environment, equirect, lighting ? lighting->surface : SurfaceLight{},
+                             lighting ? lighting->objects : EnvironmentObjects{});
 }
 
 class ReferenceEffect final : public Effect {
@@ -81,8 +97,8 @@ public:
                     },
                     [run, equirect = h.environment.equirect_image](const Out<ReferenceRender>& d, Resources& r) {
                         const std::optional<CpuLighting> lighting = cpu_lighting(run->scene);
-                        const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr,
-                                                       lighting ? lighting->surface : SurfaceLight{});
+                        const EnvironmentTracer tracer =
+                            reference_tracer(run->scene, lighting, equirect ? &r.get(*equirect) : nullptr);
                         r.emplace(d.out, render_reference(run->scene, run->fresnel, tracer, run->threads,
                                                           lighting ? &*lighting : nullptr, max_bounces(run->scene)));
                     })
@@ -111,8 +127,8 @@ public:
                 },
                 [run, equirect = h.environment.equirect_image](const Data& d, Resources& r) {
                     const std::optional<CpuLighting> lighting = cpu_lighting(run->scene);
-                    const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr,
-                                                   lighting ? lighting->surface : SurfaceLight{});
+                    const EnvironmentTracer tracer =
+                        reference_tracer(run->scene, lighting, equirect ? &r.get(*equirect) : nullptr);
                     MonteCarloReference result = render_monte_carlo_reference(
                         run->scene, run->fresnel, tracer, r.get(d.analytic), run->scene.outputs.reference_samples,
                         run->threads, lighting ? &*lighting : nullptr, max_bounces(run->scene));
@@ -154,8 +170,8 @@ private:
                     },
                     [run, orders, equirect = h.environment.equirect_image](const Out<Json>& d, Resources& r) {
                         const std::optional<CpuLighting> lighting = cpu_lighting(run->scene);
-                        const EnvironmentTracer tracer(run->scene.environment, equirect ? &r.get(*equirect) : nullptr,
-                                                       lighting ? lighting->surface : SurfaceLight{});
+                        const EnvironmentTracer tracer =
+                            reference_tracer(run->scene, lighting, equirect ? &r.get(*equirect) : nullptr);
                         BounceFresnel fresnel{run->fresnel, run->reference_fresnel, {}, run->uplift.get()};
                         for (const auto& s : run->spectral) fresnel.spectral.push_back(s.get());
                         const std::size_t spheres = run->scene.spheres.size();

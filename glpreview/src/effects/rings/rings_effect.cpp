@@ -1,6 +1,8 @@
 #include "rings_effect.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -18,6 +20,9 @@ const Rings* rings_of(const Scene& scene) {
     const Rings* rings = scene.effects.find<Rings>();
     return rings && !rings->rings.empty() ? rings : nullptr;
 }
+
+// Shadow rays start this far from their surface (cpu_lights' epsilon).
+constexpr double kRingShadowEpsilon = 1e-6;
 
 // Entries of a ring's Fresnel table on the GPU (μ_k = k / (n − 1)): the reference's own table, a model tabulated.
 constexpr int kRingFresnelSize = kReferenceLutSize;
@@ -80,6 +85,29 @@ public:
         for (std::size_t i = 0; i < resolved.rings.size(); ++i)
             resolved.fresnel.push_back(&library.get(resolved.rings[i].surface(), "rings[" + std::to_string(i) + "]"));
         scene.effects.set(std::move(resolved));
+    }
+
+    // The CPU references: a ray meeting a wall before the room sees F(μ) × the room along the reflected ray (one
+    // reflection, the room alone), as rings_seen in ring.glsl; shadow rays stop at the first wall (rings_distance).
+    bool lights_cpu_reference(const Scene& scene) const override { return rings_of(scene) != nullptr; }
+    std::optional<EnvironmentHit> cpu_environment_object(const Scene& scene, Vec3 o, Vec3 d, double t_max,
+                                                         const EnvironmentTracer& room) const override {
+        const Rings* rings = rings_of(scene);
+        if (!rings) return std::nullopt;
+        const std::optional<RingHit> hit = intersect_rings(rings->rings, o, d, 0, t_max);
+        if (!hit) return std::nullopt;
+        if (rings->fresnel.size() != rings->rings.size())
+            throw std::logic_error("rings: their Fresnel is not resolved (resolve_effect_materials)");
+        const double mu = std::clamp(-dot(d, hit->normal), 0.0, 1.0);
+        const Vec3 reflected = d - 2 * dot(d, hit->normal) * hit->normal;
+        return EnvironmentHit{(*rings->fresnel[hit->ring])(mu)*room.room_trace(hit->point, reflected).radiance, hit->t};
+    }
+    double cpu_occluder(const Scene& scene, Vec3 o, Vec3 d) const override {
+        const Rings* rings = rings_of(scene);
+        if (!rings) return std::numeric_limits<double>::infinity();
+        const std::optional<RingHit> hit =
+            intersect_rings(rings->rings, o, d, kRingShadowEpsilon, std::numeric_limits<double>::infinity());
+        return hit ? hit->t : std::numeric_limits<double>::infinity();
     }
 
     void declare_environment_program(const Scene& scene, ShaderBuilder& builder) const override {

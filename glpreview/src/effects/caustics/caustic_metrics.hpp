@@ -1,0 +1,16 @@
+// metrics.json's "caustics" entry (schemas/preview-metrics.schema.json): the reference photon map's budget, per
+// receiver its total power and brightest point, and per light and ring the closed form's focus with the distance of
+// the floor's brightest point from it. measure_irradiance (photon_tracer.hpp) measures the same on any irradiance
+// image (a GPU light map).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "photon_tracer.hpp"
+
+namespace metalfit::glpreview {
+
+// The entry for a map of `scene` (its rings and lights); `luminance`: the weights the brightest point is found by.
+nlohmann::json caustic_metrics_json(const Scene& scene, const CausticMap& map, const RGB& luminance);
+
+}  // namespace metalfit::glpreview
