@@ -67,6 +67,7 @@ EOF
   "lights": [{"type": "directional", "direction": [0, -0.35, -1], "intensity": 3}],
   "rings": [{"base": [0, 0, 0], "radius": 1.0, "height": 0.35, "arc_deg": 180, "facing_deg": -90, "material": "Au"}],
   "caustics": {"reference_photons": 4000},
+  "indirect": {"paths": 16, "reference_samples": 4, "light_map_size": 8},
   "spheres": [{"center": [1.6, 0.3, 1.0], "radius": 0.3, "material": "Ag"}],
   "outputs": {"beauty": false, "reference": false, "difference": false, "metrics": true}
 }

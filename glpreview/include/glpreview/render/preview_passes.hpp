@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,6 +26,7 @@
 #include "glpreview/render/gpu_resources.hpp"
 #include "glpreview/render/output_staging.hpp"
 #include "glpreview/render/rgb_uplift.hpp"
+#include "glpreview/render/room_light_maps.hpp"
 #include "glpreview/render/spectral_fresnel.hpp"
 #include "glpreview/render/sphere_fresnel.hpp"
 #include "libfit/color/color_space.hpp"
@@ -119,6 +121,9 @@ struct PreviewHandles {
     std::optional<graph::Handle<Json>> bounce_orders = {};
     // Figures an effect adds to metrics.json, each under its own key (its output passes run before the metrics').
     std::vector<std::pair<std::string, graph::Handle<Json>>> effect_metrics = {};
+    // The room's light maps effects made for the frame, by their name (render/room_light_maps.hpp): what their own
+    // output passes measure.
+    std::map<std::string, graph::Handle<RoomLightMaps>> room_light_maps = {};
 };
 
 // Every pass of a preview and the skips --explain lists. `run` may be null (compile and explain only).

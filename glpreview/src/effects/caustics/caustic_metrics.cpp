@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "caustic_closed_form.hpp"
+#include "glpreview/render/room_light_maps.hpp"
 
 namespace metalfit::glpreview {
 namespace {
@@ -71,6 +72,74 @@ nlohmann::json caustic_metrics_json(const Scene& scene, const CausticMap& map, c
             }
             j["focus"].push_back(e);
         }
+    return j;
+}
+
+nlohmann::json gpu_caustic_metrics_json(const Scene& scene, const CausticMap& map,
+                                        const std::vector<std::vector<float>>& faces, int size, const RGB& luminance) {
+    const Room& room = scene.environment.room;
+    const auto weigh = [&luminance](const RGB& c) { return luminance.r * c.r + luminance.g * c.g + luminance.b * c.b; };
+    nlohmann::json j;
+    j["light_map_size"] = size;
+    j["receivers"] = nlohmann::json::array();
+    static const char* const kFaceNames[6] = {"wall_x_min", "wall_x_max", "floor",
+                                              "ceiling",    "wall_z_min", "wall_z_max"};
+    Vec3 floor_peak;
+    bool floor_lit = false;
+    for (int face = 0; face < 6; ++face) {
+        const RoomFace f = room_face(room, face);
+        const std::vector<float>& texels = faces.at(static_cast<std::size_t>(face));
+        RGB gpu_power{0, 0, 0}, reference_power{0, 0, 0};
+        double deviation = 0, norm = 0, best_gpu = -1, best_reference = -1;
+        Vec3 gpu_peak, reference_peak;
+        const double area = f.texel_area(size);
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const Vec3 p = f.origin + ((x + 0.5) / size) * f.u + ((y + 0.5) / size) * f.v;
+                const std::size_t t = 3 * (static_cast<std::size_t>(y) * size + x);
+                const RGB gpu{texels[t], texels[t + 1], texels[t + 2]};
+                const RGB reference = map.irradiance_at(room, p, f.normal);
+                gpu_power = gpu_power + area * gpu;
+                reference_power = reference_power + area * reference;
+                const double g = weigh(gpu), r = weigh(reference);
+                deviation += (g - r) * (g - r);
+                norm += r * r;
+                if (g > best_gpu) {
+                    best_gpu = g;
+                    gpu_peak = p;
+                }
+                if (r > best_reference) {
+                    best_reference = r;
+                    reference_peak = p;
+                }
+            }
+        if (!(weigh(gpu_power) > 0) && !(weigh(reference_power) > 0)) continue;
+        if (face == 2) {
+            floor_peak = gpu_peak;
+            floor_lit = weigh(gpu_power) > 0;
+        }
+        j["receivers"].push_back(
+            {{"receiver", kFaceNames[face]},
+             {"power", rgb_json(gpu_power)},
+             {"reference_power_on_texels", rgb_json(reference_power)},
+             {"power_ratio", weigh(reference_power) > 0 ? nlohmann::json(weigh(gpu_power) / weigh(reference_power))
+                                                        : nlohmann::json(nullptr)},
+             {"peak_position", {gpu_peak.x, gpu_peak.y, gpu_peak.z}},
+             {"peak_distance_to_reference", length(gpu_peak - reference_peak)},
+             {"irradiance_rel_rms", norm > 0 ? nlohmann::json(std::sqrt(deviation / norm)) : nlohmann::json(nullptr)}});
+    }
+    j["focus"] = nlohmann::json::array();
+    const Rings& rings = *scene.effects.find<Rings>();
+    const Lights& lights = *scene.effects.find<Lights>();
+    for (std::size_t l = 0; l < lights.lights.size(); ++l)
+        for (std::size_t r = 0; r < rings.rings.size(); ++r)
+            if (const std::optional<CausticFocus> focus = caustic_focus(rings.rings[r], lights.lights[l], nullptr))
+                j["focus"].push_back(
+                    {{"light", l},
+                     {"ring", r},
+                     {"floor_peak_distance", floor_lit ? nlohmann::json(std::hypot(floor_peak.x - focus->point.x,
+                                                                                   floor_peak.z - focus->point.z))
+                                                       : nlohmann::json(nullptr)}});
     return j;
 }
 

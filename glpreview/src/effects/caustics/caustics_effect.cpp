@@ -5,6 +5,7 @@
 
 #include "../rings/ring.hpp"
 #include "caustic_maps.hpp"
+#include "caustic_metrics.hpp"
 #include "caustic_reference.hpp"
 #include "caustic_settings.hpp"
 #include "glpreview/gl/uniforms.hpp"
@@ -96,6 +97,41 @@ public:
                 .out;
         g.frame.add(maps, kCausticLightName);
         g.environment.add(maps, kCausticLightName);
+        g.handles.room_light_maps[kCausticLightName] = maps;
+    }
+
+    // metrics.json's "caustics": the reference photon map's budget, receivers and focus, and the GPU's light maps
+    // against it ("gpu").
+    void add_output_passes(PreviewGraph& g) const override {
+        const auto maps = g.handles.room_light_maps.find(kCausticLightName);
+        if (maps == g.handles.room_light_maps.end() || !g.scene.outputs.metrics) return;
+        const Handle<RoomLightMaps> light_maps = maps->second;
+        PreviewRun* run = g.run;
+        const Scene& scene = g.scene;
+        const Handle<Json> figures =
+            g.graph
+                .add_pass<graph::Out<Json>>(
+                    {"caustic-figures",
+                     "metrics.json's caustics: the photon-traced reference's power, peaks and focus, and the GPU's "
+                     "light maps against it",
+                     Processor::cpu},
+                    [&](Builder& b, graph::Out<Json>& d) {
+                        b.read(light_maps);
+                        b.read(g.in.materials);
+                        d.out = b.produce<Json>("caustic-figures");
+                    },
+                    [run, &scene, light_maps](const graph::Out<Json>& d, Resources& r) {
+                        Json j;
+                        if (const CausticMap* map = reference_caustic_map(scene)) {
+                            const RoomLightMaps& gpu = r.get(light_maps);
+                            j = caustic_metrics_json(scene, *map, run->luminance);
+                            j["gpu"] = gpu_caustic_metrics_json(scene, *map, read_room_light_maps(gpu), gpu.size,
+                                                                run->luminance);
+                        }
+                        r.emplace(d.out, std::move(j));
+                    })
+                .out;
+        g.handles.effect_metrics.push_back({"caustics", figures});
     }
 
     // --- The CPU reference (the photon tracer) ---

@@ -216,7 +216,7 @@ public:
     // what leaving the others out cost (relative RMS against the gather with every shadow ray), both against the
     // Monte-Carlo reference.
     void add_output_passes(PreviewGraph& g) const override {
-        if (!asked(g.scene) || !g.scene.outputs.metrics || !g.scene.outputs.reference) return;
+        if (!asked(g.scene) || !g.scene.outputs.metrics) return;
         const Scene& scene = g.scene;
         const Effect* self = this;
         const Handle<Json> figures =

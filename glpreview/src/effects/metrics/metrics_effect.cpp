@@ -1,7 +1,5 @@
 #include "metrics_effect.hpp"
 
-#include "../caustics/caustic_metrics.hpp"
-#include "../caustics/caustic_reference.hpp"
 #include "glpreview/render/delta_e_view.hpp"
 #include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/preview_passes.hpp"
@@ -76,9 +74,6 @@ Json metrics_json(const PreviewRun& run, const Image& beauty, const ReferenceRen
         if (bounce_orders) e["bounce_orders"] = bounce_orders->at(i);
         j["spheres"].push_back(e);
     }
-    // A scene whose rings throw caustics: the reference photon map's power, peaks and focus (absent otherwise).
-    if (const CausticMap* caustics = reference_caustic_map(scene))
-        j["caustics"] = caustic_metrics_json(scene, *caustics, run.luminance);
     for (const auto& [key, figures] : effect_metrics) j[key] = *figures;
     return j;
 }
