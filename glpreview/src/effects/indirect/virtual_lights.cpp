@@ -78,14 +78,22 @@ std::vector<VirtualLight> shoot_virtual_lights(const Scene& scene, const Indirec
     for (const Light& light : lights->lights) {
         if (light.type == LightType::sphere) continue;  // not shot (docs/preview.md)
         if (light.local()) {
-            // A Fibonacci sphere of directions: n paths of I · 4π / n each (a spot's weighted by its cone).
+            // A Fibonacci spiral of directions over the light's cap (a point light's: the whole sphere; a spot's: its
+            // outer cone), even in solid angle: n paths of I · the cap's solid angle / n each (a spot's times its cone
+            // weight).
+            const bool spot = light.type == LightType::spot;
+            const double cap_cos = spot ? std::cos(light.cone_outer_deg * kPi / 180) : -1.0;
+            const Vec3 w = spot ? light.direction : Vec3{0, 1, 0};
+            const Vec3 a = normalize(std::abs(w.y) < 0.99 ? cross(w, Vec3{0, 1, 0}) : cross(w, Vec3{1, 0, 0}));
+            const Vec3 b = cross(w, a);
+            const double solid_angle = 2 * kPi * (1 - cap_cos);
             for (int k = 0; k < n; ++k) {
-                const double z = 1 - 2 * (k + 0.5) / n, r = std::sqrt(std::max(0.0, 1 - z * z));
+                const double z = 1 - (1 - cap_cos) * (k + 0.5) / n, r = std::sqrt(std::max(0.0, 1 - z * z));
                 const double phi = k * kPi * (3 - std::sqrt(5.0));
-                const Vec3 d{r * std::cos(phi), z, r * std::sin(phi)};
-                const double cone = light.type == LightType::spot ? spot_weight(light, dot(d, light.direction)) : 1.0;
+                const Vec3 d = normalize(z * w + r * std::cos(phi) * a + r * std::sin(phi) * b);
+                const double cone = spot ? spot_weight(light, dot(d, light.direction)) : 1.0;
                 if (cone <= 0) continue;
-                follow_path(scene, rings, light.position, d, (4 * kPi / n * cone) * light.power(), out);
+                follow_path(scene, rings, light.position, d, (solid_angle / n * cone) * light.power(), out);
             }
             continue;
         }
