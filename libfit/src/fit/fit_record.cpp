@@ -141,7 +141,8 @@ Json budget_record(const BudgetChoice& choice) {
             {"candidates", candidates}};
 }
 
-Json material_record(const MaterialFit& m, const std::filesystem::path& data_dir, const BudgetChoice* budget) {
+Json material_record(const MaterialFit& m, const std::filesystem::path& data_dir, const BudgetChoice* budget,
+                     const Json* recommendation) {
     Json out_of_gamut = Json::array();
     for (int c = 0; c < 3; ++c)
         if (m.F0[c] > 1.0 || m.F0[c] < 0.0) out_of_gamut.push_back(kChannelNames[c]);
@@ -156,6 +157,7 @@ Json material_record(const MaterialFit& m, const std::filesystem::path& data_dir
                    {"warnings", m.material.warnings},
                    {"models", models}};
     if (budget) record["budget"] = budget_record(*budget);
+    if (recommendation) record["recommendation"] = *recommendation;
     return record;
 }
 
@@ -186,6 +188,8 @@ Json fit_record_without_materials(const FitRecordContext& context, const BudgetC
     // Only when a constraint is on, so that unconstrained records keep their keys.
     if (context.constraints.pin_f0) record["provenance"]["constraints"]["pin_f0"] = true;
     if (context.constraints.gamut_fit) record["provenance"]["constraints"]["gamut_fit"] = true;
+    if (context.constraints.f0_tolerance)
+        record["provenance"]["constraints"]["f0_tolerance"] = *context.constraints.f0_tolerance;
     if (first_budget)
         record["provenance"]["budget"] = {{"metric", to_string(first_budget->budget.metric)},
                                           {"limit", first_budget->budget.limit},

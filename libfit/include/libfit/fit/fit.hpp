@@ -83,9 +83,14 @@ struct FitConstraints {
     // --gamut-fit: every channel's fitted curve stays in [0, 1] at every μ (4097-point grid), fitted under that
     // constraint; closed forms outside it are never kept as fallbacks. Not together with pin_f0 (UsageError).
     bool gamut_fit = false;
+    // --f0-tolerance T: |err_f0| = |F(1)/R(1) − 1| ≤ T in every channel, a constraint of the solve (F(1) a bounded
+    // unknown, the pinned parameter computed from it: ChannelConstraints::f0_range). A channel whose unconstrained fit
+    // meets it keeps that fit. Not with pin_f0 (which is T = 0) nor gamut_fit; T finite and ≥ 0.
+    std::optional<double> f0_tolerance;
     bool operator==(const FitConstraints&) const = default;
     // The one place that says which constraints combine: a UsageError for a combination that cannot be met (pin_f0
-    // with gamut_fit). fit_model calls it; a command line calls it before any work.
+    // with gamut_fit, f0_tolerance with either) or a tolerance that is not a finite number ≥ 0. fit_model calls it; a
+    // command line calls it before any work.
     void check_combination() const;
 };
 
