@@ -141,23 +141,22 @@ Recommendation recommend(const MaterialFit& fit, const CostTable& costs, const T
 }
 
 std::string Recommendation::text() const {
-    std::string s = "  recommended for " + to_string(target) + " (" + tolerance_text(tolerance) +
-                    "; cost: " + choice.cost_source + "): ";
-    if (choice.chosen) {
-        for (const BudgetCandidate& c : choice.candidates)
-            if (c.model == choice.chosen)
-                s += std::string(choice.chosen->id()) + " (rel_rms " + percent(c.values[0]) + ", |F0 error| " +
-                     percent(c.values[1]) + ", ΔE2000 max " + significant_text(c.values[2], 3) + ")\n";
-        std::size_t start = 0;
-        while (start < constants.size()) {
-            const std::size_t end = constants.find('\n', start);
-            s += "    " + constants.substr(start, end - start) + "\n";
-            start = end == std::string::npos ? constants.size() : end + 1;
-        }
-    } else {
+    std::string s = "  recommended for " + to_string(target) + ": ";
+    const BudgetCandidate* chosen = nullptr;
+    for (const BudgetCandidate& c : choice.candidates)
+        if (c.model == choice.chosen) chosen = &c;
+    if (chosen)
+        s += std::string(chosen->model->id()) + " (rel_rms " + percent(chosen->values[0]) + ", |F0 error| " +
+             percent(chosen->values[1]) + ", ΔE2000 max " + significant_text(chosen->values[2], 3) + ")\n";
+    else
         s += "no model meets the tolerance\n";
+    s += "    tolerance: " + tolerance_text(tolerance) + " in every channel; cost table: " + choice.cost_source + "\n";
+    for (std::size_t start = 0; start < constants.size();) {
+        const std::size_t end = constants.find('\n', start);
+        s += "    " + constants.substr(start, end - start) + "\n";
+        start = end == std::string::npos ? constants.size() : end + 1;
     }
-    if (!cheaper.empty()) s += choice.chosen ? "  cheaper models fail:\n" : "  every model fails:\n";
+    if (!cheaper.empty()) s += chosen ? "  cheaper models fail:\n" : "  every model fails:\n";
     for (const std::string& line : cheaper) s += "    " + line + "\n";
     return s;
 }
