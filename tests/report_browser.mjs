@@ -105,6 +105,10 @@ for (const m of report.materials) {
     const pre = await page.evaluate(() => document.querySelector('pre.constants').textContent);
     check(pre === m.recommendation.constants, `${m.page}: the constants shown are not report.json's`);
   }
+  // Every fit on a bound of its model (fit.at_bound) is marked in the model table.
+  const bound = Object.values(m.models).filter((x) => x.fit.at_bound).length;
+  const marks = await page.evaluate(() => document.querySelectorAll('#models-table tbody tr.fit .at-bound').length);
+  check(marks === bound, `${m.page}: ${marks} fits marked on a bound, report.json has ${bound}`);
   const modelRows = await page.evaluate(() => document.querySelectorAll('#models-table tbody tr.fit').length);
   check(modelRows === report.models.length, `${m.page}: ${modelRows} fitted rows in the model table`);
   if (report.renders.skipped === undefined && m.render_row != null) {

@@ -1199,6 +1199,47 @@ TEST(FitConstraints, F0ToleranceIsAConstraintOfTheSolve) {
     EXPECT_GT(std::abs(fitted("Os").result("schlick-comp-general").fit.value.metrics.err_f0[1]), T);  // free: fails F0
 }
 
+// Issue 29 item 4: a fit that ends on a bound of its model says so in the record (fit.at_bound, per channel, naming the
+// parameter), and only then; checked against the bounds here, on gold, whose red (R(1) > 1 in Linear Rec.709) drives
+// the n, k models onto their bounds.
+TEST(FitBounds, AFitOnABoundIsNamedInTheRecord) {
+    const Fitted& f = fitted("Au");
+    const auto record = material_record(*f.fit, kData);
+    int on_bound = 0;
+    for (const ModelResult& r : f.fit->models) {
+        const auto& fit = record["models"][std::string(r.model->id())]["fit"];
+        bool any = false;
+        for (int c = 0; c < 3; ++c) {
+            const ChannelParameters& p = r.fit.value.params[c];
+            std::string expected_name;
+            const auto parameters = r.model->parameters();
+            for (std::size_t i = 0; i < parameters.size(); ++i) {
+                const double lo = parameters[i].lower, hi = parameters[i].upper;
+                const double tol = 1e-9 * (std::isfinite(hi - lo) ? hi - lo : 1.0);
+                if ((std::isfinite(lo) && std::abs(p[i] - lo) <= tol) ||
+                    (std::isfinite(hi) && std::abs(p[i] - hi) <= tol)) {
+                    if (expected_name.empty()) expected_name = std::string(parameters[i].name) + " = ";
+                }
+            }
+            SCOPED_TRACE(std::string(r.model->id()) + " " + kChannel[c]);
+            if (expected_name.empty()) {
+                if (fit.contains("at_bound")) {
+                    EXPECT_TRUE(fit["at_bound"][c].is_null()) << fit["at_bound"].dump();
+                }
+                continue;
+            }
+            any = true;
+            ++on_bound;
+            ASSERT_TRUE(fit.contains("at_bound")) << fit.dump();
+            EXPECT_TRUE(Contains(fit["at_bound"][c].get<std::string>(), expected_name)) << fit["at_bound"].dump();
+        }
+        if (!any) {
+            EXPECT_FALSE(fit.contains("at_bound")) << fit.dump();
+        }
+    }
+    EXPECT_GE(on_bound, 1);
+}
+
 // The constraints that do not combine, and tolerances that are not numbers ≥ 0: UsageErrors.
 TEST(FitConstraints, F0ToleranceCombinations) {
     FitConstraints c;

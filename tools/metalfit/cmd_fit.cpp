@@ -126,6 +126,9 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
             if (!r.fit.unrepresentable[c].empty())
                 note +=
                     std::string(note.empty() ? "  (" : ", ") + "RGB"[c] + " cannot be represented within the bounds";
+        for (int c = 0; c < 3; ++c)
+            if (const std::string b = at_bound(m, r.fit.value.params[c]); !b.empty())
+                note += std::string(note.empty() ? "  (" : ", ") + "RGB"[c] + " on a bound: " + b;
         if (!note.empty()) note += ")";
         row(r.best_closed ? "" : std::string(m.id()), "fit", r.fit.value, m, note);
     }

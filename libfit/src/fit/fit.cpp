@@ -45,6 +45,22 @@ std::string outside_bounds(const Model& model, const ChannelParameters& params) 
     return text;
 }
 
+std::string at_bound(const Model& model, const ChannelParameters& params) {
+    const auto parameters = model.parameters();
+    std::string text;
+    for (std::size_t i = 0; i < parameters.size() && i < params.size(); ++i) {
+        const double lo = parameters[i].lower, hi = parameters[i].upper;
+        const double tol = 1e-9 * (std::isfinite(hi - lo) ? hi - lo : 1.0);
+        const char* side = std::isfinite(lo) && std::abs(params[i] - lo) <= tol   ? "lower"
+                           : std::isfinite(hi) && std::abs(params[i] - hi) <= tol ? "upper"
+                                                                                  : nullptr;
+        if (side)
+            text += (text.empty() ? "" : ", ") + std::string(parameters[i].name) + " = " + number(params[i]) +
+                    " at its " + side + " bound";
+    }
+    return text;
+}
+
 double curve_excess_outside_unit_range(const Model& model, const ChannelParameters& params) {
     double excess = std::max(0.0, std::abs(model.evaluate(std::span<const double>(params), 0.0) - 1) - 1e-15);
     for (int j = 1; j <= 4096; ++j) {

@@ -1,6 +1,7 @@
 #include "libfit/fit/fit_record.hpp"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "libfit/base/file_digest.hpp"
@@ -120,6 +121,14 @@ Json model_record(const ModelResult& result) {
         for (const std::string& u : result.fit.unrepresentable)
             unrepresentable.push_back(u.empty() ? Json(nullptr) : Json(u));
         fit["unrepresentable"] = unrepresentable;
+    }
+    // Only where a channel's fit ends on a bound of the model (issue 29 item 4): which parameter, which bound.
+    std::array<std::string, 3> on_bound;
+    for (int c = 0; c < 3; ++c) on_bound[c] = at_bound(model, result.fit.value.params[c]);
+    if (std::any_of(on_bound.begin(), on_bound.end(), [](const std::string& b) { return !b.empty(); })) {
+        Json at = Json::array();
+        for (const std::string& b : on_bound) at.push_back(b.empty() ? Json(nullptr) : Json(b));
+        fit["at_bound"] = at;
     }
     return {{"title", model.title()}, {"parameters", names}, {"closed", closed}, {"closed_forms", forms}, {"fit", fit}};
 }

@@ -47,6 +47,10 @@ struct FitResult {
 
 // Where a channel's parameters leave the model's bounds ("g = 1.03 outside [0, 1]"), or "" when they are inside.
 std::string outside_bounds(const Model& model, const ChannelParameters& params);
+// Which of a channel's parameters sit on a finite bound of the model (within 1e-9 of its width, or of 1 for an
+// unbounded side), "n = 0.001 at its lower bound, k = 10000 at its upper bound", or "" when none does: a fit that ends
+// there is the best the model allows inside its bounds, not a free optimum (the record's fit.at_bound).
+std::string at_bound(const Model& model, const ChannelParameters& params);
 // How far a channel's curve leaves [0, 1] on a 4097-point grid of μ (0 inside; at μ = 0, where every model's F is 1
 // by construction, 1e-15 of rounding is allowed): what --gamut-fit holds.
 double curve_excess_outside_unit_range(const Model& model, const ChannelParameters& params);

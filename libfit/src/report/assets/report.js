@@ -238,7 +238,9 @@
         const x = e.metrics;
         rows.push(el('tr', { class: which === 'fit' ? 'fit' : 'closed' },
           cell(`${m.id}`, m.id), cell(which),
-          cell(paramsText(e.params)),
+          // A fit on a bound of its model is marked (fit.at_bound: which channel, which parameter).
+          cell(e.at_bound ? el('span', {}, paramsText(e.params), el('div', { class: 'at-bound', text: 'on a bound: ' +
+            e.at_bound.map((b, k) => (b ? `${'RGB'[k]} ${b}` : null)).filter((b) => b).join('; ') })) : paramsText(e.params)),
           cell(rgbText(x.rel_rms, pct), Math.max(...x.rel_rms.map((v) => (v == null ? Infinity : v)))),
           cell(rgbText(x.abs_rms, pct), Math.max(...x.abs_rms)),
           cell(rgbText(x.max_rel, pct), Math.max(...x.max_rel.map((v) => (v == null ? Infinity : v)))),
