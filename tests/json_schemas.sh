@@ -16,6 +16,8 @@ export OCIO=
 "$metalfit" fit Au,Cu,Zn,TiN --model all --json -o "$dir/fit.json"
 "$metalfit" fit Au --model f82-tint,schlick --pin F0 --json -o "$dir/fit-pinned.json"
 "$metalfit" fit Cu,Al --model all --budget 0.5% --json -o "$dir/fit-budget.json"
+# The recommendation under its F0 constraint (issue 29): the record's recommendation and provenance.constraints.
+"$metalfit" fit Os,Au --recommend --target openpbr --json -o "$dir/fit-recommend.json"
 "$metalfit" export Au --model all --format json,openpbr,gltf -o "$dir/ex" 2>/dev/null
 "$metalfit" export Cu --model f82-tint,conductor-rgb --format json,openpbr,gltf --params closed --gamut scale --roughness 0.05 -o "$dir/ex" 2>/dev/null
 "$metalfit" export Ag --model f82-tint --format json,openpbr,gltf --id-prefix studio -o "$dir/ex-studio" 2>/dev/null

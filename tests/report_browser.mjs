@@ -66,9 +66,21 @@ async function openPage(relative, label) {
   const { page, charts } = await openPage('index.html', 'index.html');
   const ids = charts.map((c) => c.id);
   for (const id of ['heatmap', 'swatches']) check(ids.includes(id), `index.html: no ${id} chart`);
-  const cells = await page.evaluate(() => document.querySelectorAll('#heatmap svg g.mark-rect.role-mark > path').length);
-  check(cells === report.materials.length * report.models.length,
-        `index.html: heat map has ${cells} cells, expected ${report.materials.length} × ${report.models.length}`);
+  // A cell per material and model, plus the outline of each material's recommended model.
+  const recommended = report.materials.filter((m) => m.recommendation && m.recommendation.chosen != null).length;
+  const heatmapCells = () => page.evaluate(() => document.querySelectorAll('#heatmap svg g.mark-rect.role-mark > path').length);
+  const cells = await heatmapCells();
+  check(cells === report.materials.length * report.models.length + recommended,
+        `index.html: heat map has ${cells} rects, expected ${report.materials.length} × ${report.models.length} + ${recommended} outlines`);
+  // The metric menu redraws it for each metric, with the metric in its title.
+  for (const metric of ['f0_err', 'de2000_max', 'max_rel', 'rel_rms']) {
+    await page.selectOption('#heatmap-metric', metric);
+    await page.waitForFunction(() => document.querySelectorAll('#heatmap svg').length > 0);
+    const title = await page.evaluate(() => document.querySelector('#heatmap svg').textContent);
+    const expected = { f0_err: '|F0 error|', de2000_max: 'ΔE2000 max', max_rel: 'max_rel', rel_rms: 'rel_rms' }[metric];
+    check(title.includes(expected), `index.html: heat map for ${metric} is not titled ${expected}`);
+    check(await heatmapCells() === cells, `index.html: heat map for ${metric} has another number of cells`);
+  }
   const rows = await page.evaluate(() => document.querySelectorAll('#catalog-table tbody tr').length);
   check(rows === report.materials.length, `index.html: table has ${rows} rows`);
   // Sorting by a model column puts its values in ascending order.
@@ -86,6 +98,17 @@ for (const m of report.materials) {
   const { page, charts } = await openPage(m.page, m.page);
   const ids = charts.map((c) => c.id);
   for (const id of ['nk', 'spectral', 'reflectance', 'rel_error', 'de2000', 'stripes']) check(ids.includes(id), `${m.page}: no ${id} chart`);
+  // The first screen: the recommended model (or that none meets the tolerance), before the provenance.
+  const first = await page.evaluate(() => document.querySelector('main section h2').textContent);
+  check(first === 'Recommended model', `${m.page}: the first section is "${first}", not the recommendation`);
+  if (m.recommendation.chosen != null) {
+    const pre = await page.evaluate(() => document.querySelector('pre.constants').textContent);
+    check(pre === m.recommendation.constants, `${m.page}: the constants shown are not report.json's`);
+  }
+  // Every fit on a bound of its model (fit.at_bound) is marked in the model table.
+  const bound = Object.values(m.models).filter((x) => x.fit.at_bound).length;
+  const marks = await page.evaluate(() => document.querySelectorAll('#models-table tbody tr.fit .at-bound').length);
+  check(marks === bound, `${m.page}: ${marks} fits marked on a bound, report.json has ${bound}`);
   const modelRows = await page.evaluate(() => document.querySelectorAll('#models-table tbody tr.fit').length);
   check(modelRows === report.models.length, `${m.page}: ${modelRows} fitted rows in the model table`);
   if (report.renders.skipped === undefined && m.render_row != null) {

@@ -356,6 +356,59 @@ TEST_F(Cli, PinBudgetAndBestExport) {
     EXPECT_FALSE(fs::exists(dir_ / "none"));
 }
 
+// --recommend (issue 29): the record holds the recommendation under --f0-tolerance = --max-f0-error; checked here from
+// the record's own fits: the chosen model meets every limit and every cheaper candidate misses one; the human output
+// gives the constants; table --recommend names the same model; bad limits and targets are one-line errors.
+TEST_F(Cli, RecommendNamesTheCheapestModelMeetingTheTolerance) {
+    const Result r = run("fit osmium --recommend --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["provenance"]["constraints"]["f0_tolerance"], 0.005);
+    const auto& rec = j["materials"]["Os"]["recommendation"];
+    ASSERT_TRUE(rec["chosen"].is_string()) << rec.dump();
+    EXPECT_EQ(rec["target"], "glsl");
+    const auto worst = [](const nlohmann::json& v, bool absolute) {
+        double w = 0;
+        for (const auto& x : v) w = std::max(w, absolute ? std::abs(x.get<double>()) : x.get<double>());
+        return w;
+    };
+    bool before = true;
+    for (const auto& c : rec["candidates"]) {
+        const auto& fit = j["materials"]["Os"]["models"][c["model"].get<std::string>()]["fit"];
+        const bool meets = worst(fit["metrics"]["rel_rms"], false) <= 0.005 && worst(fit["err_f0"], true) <= 0.005 &&
+                           fit["metrics"]["de2000_max"].get<double>() <= 1;
+        if (c["model"] == rec["chosen"]) {
+            EXPECT_TRUE(meets) << c.dump();
+            before = false;
+        } else if (before) {
+            EXPECT_FALSE(meets) << c.dump();  // glsl renders every model: a cheaper one fails a limit
+            EXPECT_FALSE(c["qualifies"].get<bool>());
+        }
+    }
+    const Result human = run("fit osmium --recommend");
+    ASSERT_EQ(human.exit_code, 0) << human.err;
+    EXPECT_NE(human.out.find("recommended for glsl"), std::string::npos) << human.out;
+    EXPECT_NE(human.out.find("const vec3 "), std::string::npos) << human.out;
+    EXPECT_NE(human.out.find("cheaper models fail:"), std::string::npos) << human.out;
+
+    const Result table = run("table Os,Au --recommend --format csv");
+    ASSERT_EQ(table.exit_code, 0) << table.err;
+    EXPECT_NE(table.out.find("\nOs,glsl," + rec["chosen"].get<std::string>() + ","), std::string::npos) << table.out;
+
+    for (const auto& [args, option] : std::vector<std::pair<std::string, std::string>>{
+             {"fit osmium --recommend --target vulkan", "--target"},
+             {"fit osmium --recommend --max-rel-rms x", "--max-rel-rms"},
+             {"fit osmium --recommend --max-f0-error -1%", "--max-f0-error"},
+             {"fit osmium --recommend --max-de2000 -1", "--max-de2000"},
+             {"fit osmium --f0-tolerance -1%", "--f0-tolerance"},
+             {"fit osmium --f0-tolerance 1% --pin F0", "--f0-tolerance"},
+             {"table Os --recommend --format physicallybased", "--recommend"}}) {
+        const Result bad = run(args);
+        EXPECT_EQ(bad.exit_code, 2) << args;
+        expect_one_line_error(bad, option);
+    }
+}
+
 TEST_F(Cli, FitSummaryRowsAreTheRecordsWorstChannels) {
     // The Markdown summary and the JSON record are written by different code from the same fits: each cell of the
     // summary must be 100 × the largest rel_rms channel of the record, to two decimals.

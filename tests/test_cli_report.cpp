@@ -61,12 +61,14 @@ TEST_F(Report, NumbersAreTheFitRecordsForTheSameOptions) {
         const auto r = run("report Au,Zn --renders off -o '" + dir.string() + "'" + options);
         ASSERT_EQ(r.exit_code, 0) << r.err;
         const Json report = report_json(dir);
-        Json record = Json::parse(run("fit Au --json" + options).out);
-        record["materials"].update(Json::parse(run("fit Zn --json" + options).out)["materials"]);
+        // The report's fits hold the recommendation's F0 error (--max-f0-error, 0.5 %): fit's --f0-tolerance.
+        Json record = Json::parse(run("fit Au --json --f0-tolerance 0.5%" + options).out);
+        record["materials"].update(Json::parse(run("fit Zn --json --f0-tolerance 0.5%" + options).out)["materials"]);
         expect_same_numbers_as_the_fit_record(report, record);
         EXPECT_EQ(report["schema"], "metalfit.report/1");
         EXPECT_EQ(report["provenance"]["color_space"], record["provenance"]["color_space"]);
         EXPECT_EQ(report["provenance"]["metric"], record["provenance"]["metric"]);
+        EXPECT_EQ(report["provenance"]["constraints"], record["provenance"]["constraints"]);
     }
 }
 

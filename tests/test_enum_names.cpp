@@ -48,7 +48,7 @@ void expect_round_trip(const Table& table, std::size_t values) {
 }
 
 TEST(EnumNames, EveryValueOfEveryTableReadsBack) {
-    expect_round_trip(kBudgetMetricNames, 3);
+    expect_round_trip(kBudgetMetricNames, 4);
     expect_round_trip(kRenderModeNames, 3);
     expect_round_trip(kErrorMetricNames, 2);
     expect_round_trip(kAngularWeightNames, 2);
@@ -88,7 +88,7 @@ TEST(EnumNames, NamesAreExact) {
 TEST(EnumNames, AnUnknownNameGetsTheMessageItAlwaysGot) {
     // Each the exact text the hand-written parser of that option printed.
     EXPECT_EQ(usage_message([] { parse_budget_metric("rms"); }),
-              "unknown budget metric 'rms' (known: rel_rms, max_rel, de2000_max)");
+              "unknown budget metric 'rms' (known: rel_rms, max_rel, de2000_max, f0_err)");
     EXPECT_EQ(usage_message([] { parse_render_mode("yes"); }), "unknown --renders mode 'yes' (auto, on or off)");
     EXPECT_EQ(usage_message([] { parse_error_metric("rmse"); }), "unknown error metric 'rmse' (known: rel, abs)");
     EXPECT_EQ(usage_message([] { parse_angular_weight("flat"); }),

@@ -1128,6 +1128,134 @@ TEST(FitConstraints, GamutFitKeepsEveryCurveInTheUnitInterval) {
     EXPECT_THROW(fit_material(*free.material, env().colorimetry, env().converter, both), UsageError);
 }
 
+// --f0-tolerance T: |err_f0| ≤ T in every channel the model can represent so, and the fit is the constrained optimum:
+// for Schlick (linear in F0) and F82-tint (linear in F0 and b) the exact least squares with F0 boxed to R(1)(1 ∓ T),
+// computed here; for every model no worse than the pinned fit (T = 0 is a special case) and no better than the free
+// one. A channel whose free fit meets T keeps it. Osmium, which the pin and the free fit both fail at 0.5 %, meets
+// rel_rms ≤ 0.5 % and |err_f0| ≤ 0.5 % together (schlick-comp-general, 0.466 % in Linear Rec.709: issue 29).
+TEST(FitConstraints, F0ToleranceIsAConstraintOfTheSolve) {
+    constexpr double T = 0.005;
+    MaterialFitRequest bounded = request(), pinned = request();
+    bounded.constraints.f0_tolerance = T;
+    pinned.constraints.pin_f0 = true;
+    int held = 0, active = 0;
+    for (const char* id : {"Os", "Au", "Zn"}) {
+        const Fitted& free = fitted(id);
+        const MaterialFit fit = fit_material(*free.material, env().colorimetry, env().converter, bounded);
+        const MaterialFit pin = fit_material(*free.material, env().colorimetry, env().converter, pinned);
+        const RGB R1 = (*free.curve)(1.0);
+        for (std::size_t m = 0; m < fit.models.size(); ++m) {
+            const ModelResult& r = fit.models[m];
+            const ModelResult& f = free.result(r.model->id());
+            for (int c = 0; c < 3; ++c) {
+                SCOPED_TRACE(std::string(id) + " " + std::string(r.model->id()) + " " + kChannel[c]);
+                const ChannelParameters& p = r.fit.value.params[c];
+                const double rms = r.fit.value.metrics.rel_rms[c];
+                EXPECT_TRUE(within_bounds(*r.model, p)) << params_text(p);  // always, represented or not
+                if (!r.fit.unrepresentable[c].empty()) {
+                    EXPECT_TRUE(Contains(r.fit.unrepresentable[c], "--f0-tolerance")) << r.fit.unrepresentable[c];
+                    continue;
+                }
+                EXPECT_GE(rms, f.fit.value.metrics.rel_rms[c] * (1 - 1e-6));
+                ++held;
+                const double err = r.model->evaluate(std::span<const double>(p), 1.0) / R1[c] - 1;
+                EXPECT_LE(std::abs(err), T);
+                EXPECT_NEAR(r.fit.value.metrics.err_f0[c], err, 1e-12);
+                if (std::abs(f.fit.value.metrics.err_f0[c]) <= T) {
+                    EXPECT_EQ(p, f.fit.value.params[c]);  // the free optimum meets it: kept as it is
+                } else {
+                    ++active;
+                    if (pin.models[m].fit.unrepresentable[c].empty()) {
+                        EXPECT_LE(rms, pin.models[m].fit.value.metrics.rel_rms[c] * (1 + 1e-6));
+                    }
+                }
+            }
+        }
+        // The exact constrained optima of the linear models, channel by channel.
+        for (int c = 0; c < 3; ++c) {
+            const ChannelTarget t = free.reference->target(c);
+            const double lo = R1[c] * (1 - T), hi = R1[c] * (1 + T);
+            const Optimum schlick = exact_schlick(t, lo, hi);
+            const ModelResult& s = [&]() -> const ModelResult& {
+                for (const ModelResult& r : fit.models)
+                    if (r.model->id() == "schlick") return r;
+                throw std::logic_error("no schlick");
+            }();
+            if (!s.fit.unrepresentable[c].empty()) continue;
+            EXPECT_NEAR(s.fit.value.params[c][0], schlick.params[0], 1e-6 * hi) << id << " " << kChannel[c];
+        }
+    }
+    EXPECT_GT(held, 70);
+    EXPECT_GT(active, 20);  // the constraint had work to do
+    // Osmium: rel_rms ≤ 0.5 % and |err_f0| ≤ 0.5 % together.
+    const MaterialFit os = fit_material(*fitted("Os").material, env().colorimetry, env().converter, bounded);
+    const ModelResult& general = [&]() -> const ModelResult& {
+        for (const ModelResult& r : os.models)
+            if (r.model->id() == "schlick-comp-general") return r;
+        throw std::logic_error("no schlick-comp-general");
+    }();
+    EXPECT_LE(worst_channel(general.fit.value.metrics.rel_rms), 0.005);
+    for (int c = 0; c < 3; ++c) EXPECT_LE(std::abs(general.fit.value.metrics.err_f0[c]), T);
+    EXPECT_GT(std::abs(fitted("Os").result("schlick-comp-general").fit.value.metrics.err_f0[1]), T);  // free: fails F0
+}
+
+// Issue 29 item 4: a fit that ends on a bound of its model says so in the record (fit.at_bound, per channel, naming the
+// parameter), and only then; checked against the bounds here, on gold, whose red (R(1) > 1 in Linear Rec.709) drives
+// the n, k models onto their bounds.
+TEST(FitBounds, AFitOnABoundIsNamedInTheRecord) {
+    const Fitted& f = fitted("Au");
+    const auto record = material_record(*f.fit, kData);
+    int on_bound = 0;
+    for (const ModelResult& r : f.fit->models) {
+        const auto& fit = record["models"][std::string(r.model->id())]["fit"];
+        bool any = false;
+        for (int c = 0; c < 3; ++c) {
+            const ChannelParameters& p = r.fit.value.params[c];
+            std::string expected_name;
+            const auto parameters = r.model->parameters();
+            for (std::size_t i = 0; i < parameters.size(); ++i) {
+                const double lo = parameters[i].lower, hi = parameters[i].upper;
+                const double tol = 1e-9 * (std::isfinite(hi - lo) ? hi - lo : 1.0);
+                if ((std::isfinite(lo) && std::abs(p[i] - lo) <= tol) ||
+                    (std::isfinite(hi) && std::abs(p[i] - hi) <= tol)) {
+                    if (expected_name.empty()) expected_name = std::string(parameters[i].name) + " = ";
+                }
+            }
+            SCOPED_TRACE(std::string(r.model->id()) + " " + kChannel[c]);
+            if (expected_name.empty()) {
+                if (fit.contains("at_bound")) {
+                    EXPECT_TRUE(fit["at_bound"][c].is_null()) << fit["at_bound"].dump();
+                }
+                continue;
+            }
+            any = true;
+            ++on_bound;
+            ASSERT_TRUE(fit.contains("at_bound")) << fit.dump();
+            EXPECT_TRUE(Contains(fit["at_bound"][c].get<std::string>(), expected_name)) << fit["at_bound"].dump();
+        }
+        if (!any) {
+            EXPECT_FALSE(fit.contains("at_bound")) << fit.dump();
+        }
+    }
+    EXPECT_GE(on_bound, 1);
+}
+
+// The constraints that do not combine, and tolerances that are not numbers ≥ 0: UsageErrors.
+TEST(FitConstraints, F0ToleranceCombinations) {
+    FitConstraints c;
+    c.f0_tolerance = 0.005;
+    EXPECT_NO_THROW(c.check_combination());
+    c.pin_f0 = true;
+    EXPECT_THROW(c.check_combination(), UsageError);
+    c.pin_f0 = false, c.gamut_fit = true;
+    EXPECT_THROW(c.check_combination(), UsageError);
+    c.gamut_fit = false;
+    for (double bad : {-0.001, std::numeric_limits<double>::infinity(), std::nan("")}) {
+        c.f0_tolerance = bad;
+        EXPECT_THROW(c.check_combination(), UsageError) << bad;
+    }
+}
+
 // err_f0 = M(1) / R(1) − 1, with R(1) from the reference curve itself.
 TEST(FitMetrics, ErrorAtNormalIncidenceIsSignedAndRelative) {
     const Fitted& f = fitted("Zn");

@@ -107,7 +107,7 @@ std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& glo
                        "), or best:BUDGET (e.g. best:0.5%: the cheapest model meeting that error in every channel)")
         ->required();
     app.add_option("--budget-metric", o->budget_metric,
-                   "Metric of --model best:BUDGET: rel_rms, max_rel or de2000_max");
+                   "Metric of --model best:BUDGET: rel_rms, max_rel, f0_err or de2000_max");
     app.add_option(
         "--costs", o->costs,
         "Cost table for --model best:BUDGET: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -15,6 +16,8 @@
 #include "layer_options.hpp"
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
+#include "libfit/export/recommendation.hpp"
 #include "libfit/fit/budget.hpp"
 #include "libfit/fit/catalog_summary.hpp"
 #include "libfit/fit/fit.hpp"
@@ -26,6 +29,7 @@
 #include "libfit/io/layer_stack.hpp"
 #include "material_selection.hpp"
 #include "progress.hpp"
+#include "recommend_options.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -43,9 +47,11 @@ struct FitOptions {
     std::filesystem::path summary;  // --summary: the catalog summary (Markdown)
     std::string pin;                // --pin F0
     bool gamut_fit = false;         // --gamut-fit
+    std::string f0_tolerance;       // --f0-tolerance 0.5%
     std::string budget;             // --budget 0.5%
     std::string budget_metric = "rel_rms";
     std::filesystem::path costs;  // --costs BENCH.json
+    RecommendOptions recommend;   // --recommend, --target, --max-*
 };
 
 std::string params_text(const Model& model, const ModelParameters& p) {
@@ -86,6 +92,9 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
     s << "\n";
     if (context.constraints.pin_f0) s << "  F0 pinned: F(1) = R(1) in every channel (--pin F0)\n";
     if (context.constraints.gamut_fit) s << "  fitted curves held in [0, 1] at every angle (--gamut-fit)\n";
+    if (context.constraints.f0_tolerance)
+        s << "  F0 error held within " << significant_text(100 * *context.constraints.f0_tolerance, 4)
+          << " % in every channel (--f0-tolerance)\n";
     s << "  " << pad("model", width) << pad("", 24) << pad("rel_rms % R/G/B", 23) << pad("abs_rms % R/G/B", 23)
       << pad("ΔE00 max", 10) << "parameters\n";
     const auto row = [&](const std::string& model, const std::string& which, const EvaluatedParameters& v,
@@ -117,6 +126,9 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
             if (!r.fit.unrepresentable[c].empty())
                 note +=
                     std::string(note.empty() ? "  (" : ", ") + "RGB"[c] + " cannot be represented within the bounds";
+        for (int c = 0; c < 3; ++c)
+            if (const std::string b = at_bound(m, r.fit.value.params[c]); !b.empty())
+                note += std::string(note.empty() ? "  (" : ", ") + "RGB"[c] + " on a bound: " + b;
         if (!note.empty()) note += ")";
         row(r.best_closed ? "" : std::string(m.id()), "fit", r.fit.value, m, note);
     }
@@ -155,12 +167,16 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
         constraints.pin_f0 = true;
     }
     constraints.gamut_fit = o.gamut_fit;
+    if (!o.f0_tolerance.empty()) constraints.f0_tolerance = parse_fraction_limit("--f0-tolerance", o.f0_tolerance);
     constraints.check_combination();
     std::optional<Budget> budget;
     if (!o.budget.empty())
         budget = parse_budget(o.budget, parse_budget_metric(o.budget_metric));
-    else if (!o.costs.empty())
-        throw UsageError("--costs needs --budget");
+    else if (!o.costs.empty() && !o.recommend.recommend)
+        throw UsageError("--costs needs --budget or --recommend");
+    const std::optional<Tolerance> tolerance = o.recommend.tolerance();
+    const ExportFormat target = o.recommend.target_format();
+    o.recommend.constrain(constraints);
     const CostTable costs =
         o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs, global.data_dir);
     const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models), constraints};
@@ -189,14 +205,19 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
         if (!o.summary.empty()) summary.add(fit);
         std::optional<BudgetChoice> choice;
         if (budget) choice = choose_model(fit.models, costs, *budget);
+        std::optional<Recommendation> recommendation;
+        if (tolerance) recommendation = recommend(fit, costs, *tolerance, target);
         if (record) {
-            record->add(fit, choice ? &*choice : nullptr);
+            std::optional<nlohmann::ordered_json> recommended;
+            if (recommendation) recommended = recommendation_record(*recommendation);
+            record->add(fit, choice ? &*choice : nullptr, recommended ? &*recommended : nullptr);
             return;
         }
         std::string text = (index == 0 ? "" : "\n") + human_table(fit, context);
         if (choice)
             text += "  budget " + budget_text(*budget) + " in every channel: " + choice->summary() +
                     "\n  cost table: " + choice->cost_source + "\n";
+        if (recommendation) text += recommendation->text();
         out->write(text);
     };
 
@@ -243,13 +264,19 @@ std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global
     app.add_flag(
         "--gamut-fit", o->gamut_fit,
         "Fit every channel's curve inside [0, 1] at every angle (constrained, not clipped after; not with --pin F0)");
+    app.add_option("--f0-tolerance", o->f0_tolerance,
+                   "Fit under |F0 error| <= T in every channel (0.5% or 0.005; a constraint of the solve; not with "
+                   "--pin F0 or --gamut-fit)");
     app.add_option(
         "--budget", o->budget,
         "Per material, the cheapest model whose fit meets this error in every channel (0.5% or 0.005; a Delta E for de2000_max)");
     app.add_option("--budget-metric", o->budget_metric,
-                   "Metric of --budget: rel_rms, max_rel or de2000_max (default: rel_rms)");
-    app.add_option("--costs", o->costs,
-                   "Cost table for --budget: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");
+                   "Metric of --budget: rel_rms, max_rel, f0_err or de2000_max (default: rel_rms)");
+    app.add_option(
+        "--costs", o->costs,
+        "Cost table for --budget and --recommend: a `metalfit bench --json` report (default: built-in SPIR-V "
+        "op counts)");
+    add_recommend_options(app, o->recommend);
     return [o, &global] { run_fit(*o, global); };
 }
 

@@ -22,6 +22,7 @@
 #include "libfit/report/report.hpp"
 #include "material_selection.hpp"
 #include "progress.hpp"
+#include "recommend_options.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -40,6 +41,7 @@ struct ReportOptions {
     std::string budget_metric = "rel_rms";
     std::filesystem::path costs;
     std::filesystem::path output;
+    RecommendOptions recommend{true};  // always: each page opens with it, the heat map marks it
 };
 
 void run_report(const ReportOptions& o, const GlobalOptions& global) {
@@ -50,6 +52,8 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     if (!o.budget.empty()) budget = parse_budget(o.budget, parse_budget_metric(o.budget_metric));
     const CostTable cost_table =
         o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs, global.data_dir);
+    const Tolerance tolerance = *o.recommend.tolerance();
+    const ExportFormat target = o.recommend.target_format();
     check_report_folder(o.output);  // before the fits, which take a while for --all
     const Catalog catalog = Catalog::load(global.data_dir);
     const auto selected = o.selection.loaders(catalog, "report");
@@ -58,7 +62,9 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     const auto loaders = o.layers.over(selected, global.data_dir, setup.spectral);
     const DisplayTransform display = DisplayTransform::create(setup.config);
     const ErrorSettings error = o.error.settings();
-    const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models)};
+    FitConstraints constraints;
+    o.recommend.constrain(constraints);  // the fits hold the recommendation's F0 error
+    const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models), constraints};
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     TerminalProgress progress("metalfit report: fits");
     const std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), request, jobs, progress.callback());
@@ -99,8 +105,9 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     if (!renders.sheet && render_mode == RenderMode::auto_)
         std::cerr << "metalfit: renders skipped: " << renders.skipped << "\n";
 
-    const FitRecordContext context = setup.record_context(error);
-    const CostAndBudget cost = report_costs(fits, cost_table, budget);
+    FitRecordContext context = setup.record_context(error);
+    context.constraints = constraints;
+    const CostAndBudget cost = report_costs(fits, cost_table, budget, tolerance, target);
     const ReportInputs inputs{context, setup.colorimetry, setup.converter,   display, catalog,
                               cost,    renders,           o.sources == "all"};
     std::vector<ReportFile> files = report_files(fits, inputs);
@@ -138,9 +145,10 @@ std::function<void()> add_report_command(CLI::App& app, const GlobalOptions& glo
                    "rel_rms is above REL (0.005 or 0.5%)");
     app.add_option("--budget", o->budget,
                    "Mark per material the cheapest model whose fit meets this error in every channel (0.5% or 0.005)");
-    app.add_option("--budget-metric", o->budget_metric, "Metric of --budget: rel_rms, max_rel or de2000_max");
+    app.add_option("--budget-metric", o->budget_metric, "Metric of --budget: rel_rms, max_rel, f0_err or de2000_max");
     app.add_option("--costs", o->costs,
                    "Cost table: a `metalfit bench --json` report (default: the built-in SPIR-V op counts)");
+    add_recommend_options(app, o->recommend, false);
     app.add_option("-o,--output", o->output, "Report folder (written as a whole; replaced if it exists)")->required();
     return [o, &global] { run_report(*o, global); };
 }

@@ -1,18 +1,26 @@
 // metalfit table: F0 and F82 tint of every catalog metal (or of the materials named, under --film/--coat when given),
 // linear and as 8-bit display values / hex, with the source and caveat (libfit's metal_table), as CSV, JSON or
 // Markdown; or, in srgb-linear and ACEScg at once, in physicallybased.info's material shape (libfit's
-// physicallybased_table).
+// physicallybased_table); or, with --recommend, the recommended model of each material (libfit's
+// export/recommendation).
 #include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <thread>
 
 #include "colour_options.hpp"
 #include "commands.hpp"
+#include "error_options.hpp"
 #include "layer_options.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/export/recommendation.hpp"
 #include "libfit/fit/fit_batch.hpp"
 #include "libfit/fit/metal_table.hpp"
+#include "libfit/fit/model_cost.hpp"
 #include "libfit/fit/oxide_chart.hpp"
 #include "libfit/fit/physicallybased_table.hpp"
 #include "material_selection.hpp"
+#include "recommend_options.hpp"
 
 namespace metalfit::cli {
 namespace {
@@ -22,6 +30,8 @@ struct TableOptions {
     LayerOptions layers;
     ColourOptions colour;
     std::string format = "md";
+    RecommendOptions recommend;   // --recommend: the recommended model per material instead of F0 and F82 tint
+    std::filesystem::path costs;  // --costs of --recommend
     std::filesystem::path output;
     std::string thickness;  // --thickness FIRST:LAST:STEP: the oxide chart
     std::string versus;     // --versus INDEX
@@ -58,6 +68,34 @@ void run_chart(const TableOptions& o, const GlobalOptions& global, const Catalog
         emit(oxide_chart_markdown(chart), o.output);
 }
 
+// `table --recommend`: every model fitted per material (under the tolerance's F0 constraint), the recommendation of
+// each (libfit's export/recommendation).
+void run_recommendations(const TableOptions& o, const GlobalOptions& global, const Catalog& catalog,
+                         const ColourSetup& setup, bool every_metal) {
+    const Tolerance tolerance = *o.recommend.tolerance();
+    const ExportFormat target = o.recommend.target_format();
+    const CostTable costs =
+        o.costs.empty() ? builtin_cost_table() : cost_table_from_bench_json(o.costs, global.data_dir);
+    FitConstraints constraints;
+    o.recommend.constrain(constraints);
+    const ErrorSettings error = ErrorOptions{}.settings();
+    const MaterialFitRequest request{setup.spectral, error, parse_model_list("all"), constraints};
+    const auto selected = every_metal ? material_loaders(catalog, true, {}, "", o.selection.labels)
+                                      : o.selection.loaders(catalog, "table");
+    const auto loaders = o.layers.over(selected, global.data_dir, setup.spectral);
+    std::vector<Recommendation> rows;
+    const int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    fit_materials_in_order(loaders, setup.batch(), request, jobs, [&](std::size_t, MaterialFit&& fit) {
+        rows.push_back(recommend(fit, costs, tolerance, target));
+    });
+    if (o.format == "csv")
+        emit(recommendation_table_csv(rows), o.output);
+    else if (o.format == "json")
+        emit(recommendation_table_json(rows).dump(2) + "\n", o.output);
+    else
+        emit(recommendation_table_markdown(rows), o.output);
+}
+
 }  // namespace
 
 std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& global) {
@@ -76,6 +114,9 @@ std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& glob
                    "With --thickness: beside each row a film of this constant index (2.488, physicallybased.info's "
                    "anodized titanium) and the CIEDE2000 between the two");
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
+    add_recommend_options(app, o->recommend);
+    app.add_option("--costs", o->costs,
+                   "Cost table of --recommend: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");
     return [o, &global] {
         const Catalog catalog = Catalog::load(global.data_dir);
         const ColourSetup setup = resolve_colour_options(o->colour, global);
@@ -86,6 +127,13 @@ std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& glob
         if (!o->versus.empty()) throw UsageError("--versus compares the oxide chart's film: give --thickness");
         if (o->format == "html") throw UsageError("--format html is the oxide chart's (--thickness)");
         const bool every_metal = o->selection.materials().empty();
+        if (o->recommend.recommend) {
+            if (o->format != "md" && o->format != "csv" && o->format != "json")
+                throw UsageError("--recommend: the table's formats are md, csv and json");
+            run_recommendations(*o, global, catalog, setup, every_metal);
+            return;
+        }
+        if (!o->costs.empty()) throw UsageError("--costs needs --recommend");
         if (o->format == "physicallybased") {
             if (!every_metal || !o->layers.film.empty() || !o->layers.coat.empty())
                 throw UsageError(

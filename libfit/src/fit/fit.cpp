@@ -30,6 +30,9 @@ std::vector<NamedStart> starts_for_channel(const Model& model, const std::vector
 
 std::string number(double x) { return significant_text(x, 6); }
 
+// err_f0 of docs/fitting.md: F(1) / R(1) − 1, NaN where R(1) ≤ 0.
+double f0_error(double F1, double R1) { return R1 > 0 ? F1 / R1 - 1 : std::numeric_limits<double>::quiet_NaN(); }
+
 }  // namespace
 
 std::string outside_bounds(const Model& model, const ChannelParameters& params) {
@@ -39,6 +42,22 @@ std::string outside_bounds(const Model& model, const ChannelParameters& params) 
         if (!(params[i] >= parameters[i].lower && params[i] <= parameters[i].upper))
             text += (text.empty() ? "" : ", ") + std::string(parameters[i].name) + " = " + number(params[i]) +
                     " outside [" + number(parameters[i].lower) + ", " + number(parameters[i].upper) + "]";
+    return text;
+}
+
+std::string at_bound(const Model& model, const ChannelParameters& params) {
+    const auto parameters = model.parameters();
+    std::string text;
+    for (std::size_t i = 0; i < parameters.size() && i < params.size(); ++i) {
+        const double lo = parameters[i].lower, hi = parameters[i].upper;
+        const double tol = 1e-9 * (std::isfinite(hi - lo) ? hi - lo : 1.0);
+        const char* side = std::isfinite(lo) && std::abs(params[i] - lo) <= tol   ? "lower"
+                           : std::isfinite(hi) && std::abs(params[i] - hi) <= tol ? "upper"
+                                                                                  : nullptr;
+        if (side)
+            text += (text.empty() ? "" : ", ") + std::string(parameters[i].name) + " = " + number(params[i]) +
+                    " at its " + side + " bound";
+    }
     return text;
 }
 
@@ -76,12 +95,18 @@ ClosedFormInput closed_form_input(const ReferenceCurve& curve, const Material& m
 void FitConstraints::check_combination() const {
     if (pin_f0 && gamut_fit)
         throw UsageError("--pin F0 and --gamut-fit together: F(1) = R(1) leaves [0, 1] wherever R(1) does; choose one");
+    if (f0_tolerance) {
+        if (!std::isfinite(*f0_tolerance) || *f0_tolerance < 0)
+            throw UsageError("--f0-tolerance: give a finite number >= 0 (0.5% or 0.005)");
+        if (pin_f0) throw UsageError("--f0-tolerance and --pin F0 together: --pin F0 holds F0 exactly; choose one");
+        if (gamut_fit) throw UsageError("--f0-tolerance and --gamut-fit together are not supported; choose one");
+    }
 }
 
 ModelResult fit_model(const Model& model, const SampledReference& reference, const ClosedFormInput& input,
                       FitTimings* timings, const FitConstraints& constraints) {
     constraints.check_combination();
-    if (constraints.pin_f0 && !model.can_pin_f0())
+    if ((constraints.pin_f0 || constraints.f0_tolerance) && !model.can_pin_f0())
         throw UsageError("--pin F0: model " + std::string(model.id()) + " cannot hold F(1) at a given value");
     const RGB R1 = reference.dense().back().value;  // R(1): the dense grid ends at μ = 1
     const ErrorMetric metric = reference.settings().metric;
@@ -113,6 +138,8 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
 
     clock.charge(t.metrics);
     FitResult& fit = result.fit;
+    // --f0-tolerance: per channel, why the constrained fit was not kept (it needs a parameter outside its bounds).
+    std::array<std::string, 3> f0_refused;
     for (int c = 0; c < 3; ++c) {
         const ChannelTarget target = reference.target(c);
         auto starts = starts_for_channel(model, result.closed_forms, c, target);
@@ -125,7 +152,42 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
             const ChannelFit free = model.fit(target, starts);
             if (!free.params.empty()) starts.insert(starts.begin(), NamedStart{"unpinned optimum", free.params});
         }
-        ChannelFit channel = model.fit(target, starts, channel_constraints);
+        std::optional<ChannelFit> kept, free_fit;
+        if (constraints.f0_tolerance && R1[c] > 0) {
+            // A channel whose unconstrained optimum meets the tolerance keeps it (the constrained optimum cannot be
+            // lower); else F(1) is a bounded unknown, from the unconstrained optimum first and every start.
+            const double T = *constraints.f0_tolerance;
+            ChannelFit free = model.fit(target, starts);
+            if (!free.params.empty() &&
+                std::abs(f0_error(model.evaluate(std::span<const double>(free.params), 1.0), R1[c])) <= T)
+                kept = std::move(free);
+            else {
+                if (!free.params.empty()) {
+                    starts.insert(starts.begin(), NamedStart{"unconstrained optimum", free.params});
+                    free_fit = std::move(free);
+                }
+                // A hair inside the interval, so that the F(1) computed back from the parameters stays within T.
+                const double t = T * (1 - 1e-9);
+                channel_constraints.f0_range = std::array<double, 2>{R1[c] * (1 - t), R1[c] * (1 + t)};
+            }
+        }
+        ChannelFit channel = kept ? std::move(*kept) : model.fit(target, starts, channel_constraints);
+        // The parameter computed from F(1) may need a value outside its bounds (gold's red R(1) = 1.038 in Linear
+        // Rec.709 asks Gulbrandsen's r > 1): such parameters are never kept; the unconstrained fit stays, and the
+        // record says that the model cannot meet the tolerance.
+        if (channel_constraints.f0_range && free_fit) {
+            if (channel.params.empty()) {
+                f0_refused[c] = "a parameter outside its bounds from every start";
+                channel = std::move(*free_fit);
+            } else if (const std::string out = outside_bounds(model, channel.params); !out.empty()) {
+                f0_refused[c] = out;
+                channel = std::move(*free_fit);
+            } else if (!(std::abs(f0_error(model.evaluate(std::span<const double>(channel.params), 1.0), R1[c])) <=
+                         *constraints.f0_tolerance * (1 + 1e-9))) {
+                f0_refused[c] = "an F(1) the model cannot take";  // lazanyi's k from n where R(1) > 1
+                channel = std::move(*free_fit);
+            }
+        }
         if (channel.params.empty())
             throw std::runtime_error(std::string(model.id()) + ": no start of the " + kChannelNames[c] +
                                      " fit converged" + (constraints.gamut_fit ? " inside [0, 1] (--gamut-fit)" : ""));
@@ -142,6 +204,10 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
     const auto competes = [&](const ClosedFormResult& form, int c) {
         if (!form.value) return false;
         if (constraints.gamut_fit) return curve_excess_outside_unit_range(model, form.value->params[c]) == 0;
+        if (constraints.f0_tolerance)
+            return R1[c] > 0 ? std::abs(f0_error(model.evaluate(std::span<const double>(form.value->params[c]), 1.0),
+                                                 R1[c])) <= *constraints.f0_tolerance
+                             : true;
         if (!constraints.pin_f0) return true;
         return std::abs(model.evaluate(std::span<const double>(form.value->params[c]), 1.0) - R1[c]) <= 1e-12;
     };
@@ -179,6 +245,17 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
                     "--pin F0: F(1) = R(1) = " + number(R1[c]) + " needs " +
                     (out.empty() ? "a value the model cannot take (F(1) = " + number(F1) + ")" : out) +
                     ": the model cannot represent these data with F0 pinned";
+        }
+        // The F(1) within the tolerance computes a parameter too, which may need a value outside its bounds.
+        if (constraints.f0_tolerance) {
+            const double err = fit.value.metrics.err_f0[c];
+            if (!f0_refused[c].empty() || std::abs(err) > *constraints.f0_tolerance)
+                fit.unrepresentable[c] =
+                    "--f0-tolerance " + number(*constraints.f0_tolerance) + ": err_f0 = " + number(err) +
+                    (f0_refused[c].empty()
+                         ? std::string()
+                         : " (the constrained fit needs " + f0_refused[c] + "; the unconstrained fit is kept)") +
+                    ": the model cannot represent these data within the F0 tolerance";
         }
     }
     clock.charge(t.metrics);

@@ -1,6 +1,7 @@
 #include "libfit/fit/fit_record.hpp"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "libfit/base/file_digest.hpp"
@@ -121,6 +122,14 @@ Json model_record(const ModelResult& result) {
             unrepresentable.push_back(u.empty() ? Json(nullptr) : Json(u));
         fit["unrepresentable"] = unrepresentable;
     }
+    // Only where a channel's fit ends on a bound of the model (issue 29 item 4): which parameter, which bound.
+    std::array<std::string, 3> on_bound;
+    for (int c = 0; c < 3; ++c) on_bound[c] = at_bound(model, result.fit.value.params[c]);
+    if (std::any_of(on_bound.begin(), on_bound.end(), [](const std::string& b) { return !b.empty(); })) {
+        Json at = Json::array();
+        for (const std::string& b : on_bound) at.push_back(b.empty() ? Json(nullptr) : Json(b));
+        fit["at_bound"] = at;
+    }
     return {{"title", model.title()}, {"parameters", names}, {"closed", closed}, {"closed_forms", forms}, {"fit", fit}};
 }
 
@@ -141,7 +150,8 @@ Json budget_record(const BudgetChoice& choice) {
             {"candidates", candidates}};
 }
 
-Json material_record(const MaterialFit& m, const std::filesystem::path& data_dir, const BudgetChoice* budget) {
+Json material_record(const MaterialFit& m, const std::filesystem::path& data_dir, const BudgetChoice* budget,
+                     const Json* recommendation) {
     Json out_of_gamut = Json::array();
     for (int c = 0; c < 3; ++c)
         if (m.F0[c] > 1.0 || m.F0[c] < 0.0) out_of_gamut.push_back(kChannelNames[c]);
@@ -156,6 +166,7 @@ Json material_record(const MaterialFit& m, const std::filesystem::path& data_dir
                    {"warnings", m.material.warnings},
                    {"models", models}};
     if (budget) record["budget"] = budget_record(*budget);
+    if (recommendation) record["recommendation"] = *recommendation;
     return record;
 }
 
@@ -186,6 +197,8 @@ Json fit_record_without_materials(const FitRecordContext& context, const BudgetC
     // Only when a constraint is on, so that unconstrained records keep their keys.
     if (context.constraints.pin_f0) record["provenance"]["constraints"]["pin_f0"] = true;
     if (context.constraints.gamut_fit) record["provenance"]["constraints"]["gamut_fit"] = true;
+    if (context.constraints.f0_tolerance)
+        record["provenance"]["constraints"]["f0_tolerance"] = *context.constraints.f0_tolerance;
     if (first_budget)
         record["provenance"]["budget"] = {{"metric", to_string(first_budget->budget.metric)},
                                           {"limit", first_budget->budget.limit},

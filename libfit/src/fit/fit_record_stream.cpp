@@ -38,14 +38,15 @@ void FitRecordStream::write_head(const BudgetChoice* first_budget) {
     head_written_ = true;
 }
 
-void FitRecordStream::add(const MaterialFit& fit, const BudgetChoice* budget) {
+void FitRecordStream::add(const MaterialFit& fit, const BudgetChoice* budget,
+                          const nlohmann::ordered_json* recommendation) {
     if (finished_) throw std::logic_error("FitRecordStream: material added after finish");
     if (!head_written_) write_head(budget);
     if (!ids_.insert(fit.material.id).second) return;
     const nlohmann::ordered_json key = fit.material.id;
     const std::string margin(2 * kIndent, ' ');
     write_((ids_.size() == 1 ? "\n" : ",\n") + margin + key.dump() + ": " +
-           indented(material_record(fit, context_.data_dir, budget).dump(kIndent), 2));
+           indented(material_record(fit, context_.data_dir, budget, recommendation).dump(kIndent), 2));
 }
 
 void FitRecordStream::finish() {

@@ -93,6 +93,29 @@ struct PinnedCurveResidual {
     }
 };
 
+// --f0-tolerance: F(1) is an unknown of the solve held in the pinned parameter's slot of the parameter block, bounded
+// to the tolerance's interval; the pinned parameter is recomputed from the others and that F(1) before each evaluation
+// (as PinnedCurveResidual), so the solve is the bounded least squares of the reparameterised curve: a true optimum
+// under |F(1)/R(1) − 1| ≤ T, not a penalty. Where the computed parameter leaves its own bounds the evaluation fails,
+// which Ceres treats as an infeasible step (it shrinks the trust region): the solve stays inside the model's bounds.
+template <class M>
+struct F0RangeResidual {
+    const ChannelTarget* target;
+
+    template <class T>
+    bool operator()(const T* params, T* residuals) const {
+        std::array<T, M::kParameters.size()> q;
+        for (std::size_t i = 0; i < q.size(); ++i) q[i] = params[i];
+        q[M::kPinnedParameter] = M::pinned_value(q.data(), params[M::kPinnedParameter]);
+        const Parameter& bounds = M::kParameters[M::kPinnedParameter];
+        if (!(q[M::kPinnedParameter] >= T(bounds.lower) && q[M::kPinnedParameter] <= T(bounds.upper))) return false;
+        const auto n = target->mu.size();
+        for (std::size_t i = 0; i < n; ++i)
+            residuals[i] = T(target->scale[i]) * (M::evaluate(q.data(), T(target->mu[i])) - T(target->value[i]));
+        return true;
+    }
+};
+
 // --gamut-fit: weight · (how far M(p, μ_j) is outside [0, upper]) on the uniform grid of μ the constraint is checked
 // on, zero inside. `limits` is
 // the solver's own: its weight grows and its upper end tightens between solves of the same problem.
@@ -199,6 +222,13 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
     if constexpr (PinnableF0<M>)
         if (constraints.pinned_f0) pinned = static_cast<int>(M::kPinnedParameter);
     if (constraints.pinned_f0 && pinned < 0) throw std::logic_error(std::string(M::kId) + " cannot pin F0");
+    // --f0-tolerance: the pinned parameter's slot holds F(1) during the solves, bounded to f0_range.
+    int ranged = -1;
+    if constexpr (PinnableF0<M>)
+        if (constraints.f0_range) ranged = static_cast<int>(M::kPinnedParameter);
+    if (constraints.f0_range && ranged < 0) throw std::logic_error(std::string(M::kId) + " cannot bound F0");
+    const auto lower_bound = [&](int i) { return i == ranged ? (*constraints.f0_range)[0] : M::kParameters[i].lower; };
+    const auto upper_bound = [&](int i) { return i == ranged ? (*constraints.f0_range)[1] : M::kParameters[i].upper; };
     const auto solve = [&](ChannelParameters& x, std::vector<int> fixed, ceres::Solver::Summary& summary,
                            StartPruning* pruning = nullptr) {
         ceres::Problem problem;
@@ -215,7 +245,13 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                         new PinnedCurveResidual<M>{&target, *constraints.pinned_f0}, residuals),
                     nullptr, x.data());
         }
-        if (pinned < 0) {
+        if constexpr (PinnableF0<M>) {
+            if (ranged >= 0)
+                problem.AddResidualBlock(new ceres::AutoDiffCostFunction<F0RangeResidual<M>, ceres::DYNAMIC, kCount>(
+                                             new F0RangeResidual<M>{&target}, residuals),
+                                         nullptr, x.data());
+        }
+        if (pinned < 0 && ranged < 0) {
             if constexpr (AnalyticGradient<M>)
                 problem.AddResidualBlock(new AnalyticCurveResidual<M>(&target), nullptr, x.data());
             else
@@ -228,8 +264,8 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
         for (int i = 0; i < kCount; ++i) {
             if (std::find(fixed.begin(), fixed.end(), i) != fixed.end()) continue;
-            problem.SetParameterLowerBound(x.data(), i, M::kParameters[i].lower);
-            problem.SetParameterUpperBound(x.data(), i, M::kParameters[i].upper);
+            problem.SetParameterLowerBound(x.data(), i, lower_bound(i));
+            problem.SetParameterUpperBound(x.data(), i, upper_bound(i));
         }
         if (static_cast<int>(fixed.size()) == kCount)
             problem.SetParameterBlockConstant(x.data());
@@ -280,7 +316,7 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         // parameters are not used); the cost compared and kept is that of the full parameters returned. Starts with
         // the same non-linear parameter take the same path, and a start whose bracket holds the minimum of an earlier
         // one ends there: both skipped, ties keep the first (docs/decisions.md).
-        if (!constraints.unit_range && !constraints.pinned_f0) {
+        if (!constraints.unit_range && !constraints.pinned_f0 && !constraints.f0_range) {
             constexpr auto kNonlinear = M::Projection::kNonlinearParameters;
             static_assert(kNonlinear.size() <= 1, "variable projection leaves at most one non-linear parameter");
             typename M::Projection projection(target);
@@ -334,9 +370,12 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
     // A start equal to an earlier one (after clamping) takes the same path to the same cost, and ties keep the
     // first: it is skipped (rational's linearised starts and the closed forms repeat each other).
     std::vector<ChannelParameters> tried;
-    const bool prune = !constraints.unit_range && !constraints.pinned_f0;
+    const bool prune = !constraints.unit_range && !constraints.pinned_f0 && !constraints.f0_range;
     for (std::size_t s = 0; s < starts.size(); ++s) {
         ChannelParameters x = clamp_to_bounds<M>(starts[s].params);
+        if constexpr (PinnableF0<M>)
+            if (ranged >= 0)
+                x[ranged] = std::clamp(M::evaluate(x.data(), 1.0), lower_bound(ranged), upper_bound(ranged));
         const auto same_bits = [&x](const ChannelParameters& y) {
             return std::equal(x.begin(), x.end(), y.begin(), y.end(), [](double a, double b) {
                 return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
@@ -356,7 +395,7 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         ChannelParameters y = x;
         for (int i = 0; i < kCount; ++i) {
             if (i == pinned) continue;
-            const double lo = M::kParameters[i].lower, hi = M::kParameters[i].upper, tol = 1e-9 * (hi - lo);
+            const double lo = lower_bound(i), hi = upper_bound(i), tol = 1e-9 * (hi - lo);
             if (y[i] <= lo + tol)
                 y[i] = lo, on_bound.push_back(i);
             else if (y[i] >= hi - tol)
@@ -371,8 +410,12 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                 summary.termination_type = polished.termination_type;
             }
         }
-        if constexpr (PinnableF0<M>)
-            if (pinned >= 0) x[M::kPinnedParameter] = M::pinned_value(x.data(), *constraints.pinned_f0);
+        if constexpr (PinnableF0<M>) {
+            if (pinned >= 0)
+                x[M::kPinnedParameter] = M::pinned_value(x.data(), *constraints.pinned_f0);
+            else if (ranged >= 0)
+                x[M::kPinnedParameter] = M::pinned_value(x.data(), x[M::kPinnedParameter]);
+        }
         if (final_cost < best.solver.final_cost) {
             best.params = x;
             best.solver.method = kCeresSolve;

@@ -22,4 +22,12 @@ CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable
     return out;
 }
 
+CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable& table,
+                           const std::optional<Budget>& budget, const Tolerance& tolerance, ExportFormat target) {
+    CostAndBudget out = report_costs(fits, table, budget);
+    for (const MaterialFit& fit : fits)
+        out.recommendations.emplace(fit.material.id, recommend(fit, table, tolerance, target));
+    return out;
+}
+
 }  // namespace metalfit

@@ -123,6 +123,8 @@ Json material_charts() {
 Json catalog_charts(bool with_costs) {
     Json charts = Json::object();
     charts["heatmap"] = {
+        // The page sets the metric (rel_rms, |F0 error|, ΔE2000 max, max_rel: a menu above it) into "title" and the
+        // legend's title and format; the outlined cell of each row is the material's recommendation.
         {"title", "worst-channel rel_rms of the fit, material × model (log colour scale; value in %)"},
         {"data", data("heatmap")},
         {"encoding",
@@ -143,6 +145,8 @@ Json catalog_charts(bool with_costs) {
                {"title", "rel_rms"},
                {"legend", {{"format", ".2~%"}}}}},
              {"tooltip", tooltip({{"material", "nominal"}, {"model", "nominal"}, {"label", "nominal"}})}}}},
+          {{"transform", Json::array({{{"filter", "datum.recommended"}}})},
+           {"mark", {{"type", "rect"}, {"fillOpacity", 0}, {"stroke", "#e4002b"}, {"strokeWidth", 3}}}},
           {{"mark", {{"type", "text"}, {"fontSize", 10}}},
            {"encoding",
             {{"text", {{"field", "label"}, {"type", "nominal"}}},

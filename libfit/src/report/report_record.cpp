@@ -239,6 +239,9 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
         j["stripe"] = swatches(values);
         models[std::string(model.id())] = std::move(j);
     }
+    Json recommendation = nullptr;
+    if (const auto it = in.cost.recommendations.find(material.id); it != in.cost.recommendations.end())
+        recommendation = recommendation_record(it->second);
     Json choice = nullptr;
     if (const auto it = in.cost.choices.find(material.id); it != in.cost.choices.end())
         choice = {{"model", it->second.model ? Json(*it->second.model) : Json(nullptr)}, {"note", it->second.note}};
@@ -263,6 +266,7 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
             {"models", models},
             {"data_sources", sources_json(fit, in)},
             {"budget_choice", choice},
+            {"recommendation", recommendation},
             {"render_row", render_row ? Json(*render_row) : Json(nullptr)}};
 }
 
@@ -351,6 +355,8 @@ Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in)
     }
 
     const ErrorSettings& e = c.error;
+    Json constraints = nullptr;  // the F0 tolerance the fits were held to (the recommendation's), if any
+    if (c.constraints.f0_tolerance) constraints = {{"f0_tolerance", *c.constraints.f0_tolerance}};
     Json costs = nullptr;
     if (in.cost.costs) costs = {{"source", in.cost.costs->source}, {"unit", in.cost.costs->unit}};
     return {{"schema", kReportSchema},
@@ -371,7 +377,8 @@ Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in)
               {"quadrature", "Gauss-Legendre on [0, 1]"},
               {"metric", to_string(e.metric)},
               {"weight", to_string(e.weight)},
-              {"fitted_parameters", "Ceres fit per channel (never worse than the best closed form on the metric)"}}},
+              {"fitted_parameters", "Ceres fit per channel (never worse than the best closed form on the metric)"},
+              {"constraints", constraints}}},
             {"costs", costs},
             {"budget", in.cost.budget ? Json(*in.cost.budget) : Json(nullptr)},
             {"models", models},

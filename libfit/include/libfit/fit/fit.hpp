@@ -47,6 +47,10 @@ struct FitResult {
 
 // Where a channel's parameters leave the model's bounds ("g = 1.03 outside [0, 1]"), or "" when they are inside.
 std::string outside_bounds(const Model& model, const ChannelParameters& params);
+// Which of a channel's parameters sit on a finite bound of the model (within 1e-9 of its width, or of 1 for an
+// unbounded side), "n = 0.001 at its lower bound, k = 10000 at its upper bound", or "" when none does: a fit that ends
+// there is the best the model allows inside its bounds, not a free optimum (the record's fit.at_bound).
+std::string at_bound(const Model& model, const ChannelParameters& params);
 // How far a channel's curve leaves [0, 1] on a 4097-point grid of μ (0 inside; at μ = 0, where every model's F is 1
 // by construction, 1e-15 of rounding is allowed): what --gamut-fit holds.
 double curve_excess_outside_unit_range(const Model& model, const ChannelParameters& params);
@@ -83,9 +87,14 @@ struct FitConstraints {
     // --gamut-fit: every channel's fitted curve stays in [0, 1] at every μ (4097-point grid), fitted under that
     // constraint; closed forms outside it are never kept as fallbacks. Not together with pin_f0 (UsageError).
     bool gamut_fit = false;
+    // --f0-tolerance T: |err_f0| = |F(1)/R(1) − 1| ≤ T in every channel, a constraint of the solve (F(1) a bounded
+    // unknown, the pinned parameter computed from it: ChannelConstraints::f0_range). A channel whose unconstrained fit
+    // meets it keeps that fit. Not with pin_f0 (which is T = 0) nor gamut_fit; T finite and ≥ 0.
+    std::optional<double> f0_tolerance;
     bool operator==(const FitConstraints&) const = default;
     // The one place that says which constraints combine: a UsageError for a combination that cannot be met (pin_f0
-    // with gamut_fit). fit_model calls it; a command line calls it before any work.
+    // with gamut_fit, f0_tolerance with either) or a tolerance that is not a finite number ≥ 0. fit_model calls it; a
+    // command line calls it before any work.
     void check_combination() const;
 };
 

@@ -47,8 +47,10 @@ nlohmann::ordered_json fit_record_without_materials(const FitRecordContext& cont
 // One material's record (the value under materials.<id>): name, source, data, F0, ..., models, and its "budget"
 // when `budget` is given.
 // Its files are named by record_path against `data_dir` (the context's).
+// `recommendation` (export/recommendation.hpp's record), when given, is written as its "recommendation".
 nlohmann::ordered_json material_record(const MaterialFit& fit, const std::filesystem::path& data_dir,
-                                       const BudgetChoice* budget = nullptr);
+                                       const BudgetChoice* budget = nullptr,
+                                       const nlohmann::ordered_json* recommendation = nullptr);
 
 // {"metric", "limit", "cost_table", "cost_unit", "chosen": id or null, "summary", "candidates": [{"model", "cost",
 // "value", "qualifies", "reason"}]} (docs/fit-record.md).

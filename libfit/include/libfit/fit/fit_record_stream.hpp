@@ -23,7 +23,9 @@ public:
     // The next material, in the order of the record; `budget` for every material or for none, as fit_record takes
     // them. A material whose id was already written is left out: fit_record, whose "materials" is a JSON object,
     // keeps one entry per id (the same material named twice gives the same entry).
-    void add(const MaterialFit& fit, const BudgetChoice* budget = nullptr);
+    // `recommendation`: the material's "recommendation" (material_record), when given.
+    void add(const MaterialFit& fit, const BudgetChoice* budget = nullptr,
+             const nlohmann::ordered_json* recommendation = nullptr);
 
     // The end of the record (without the final newline of `metalfit fit --json`).
     void finish();

@@ -124,6 +124,9 @@ struct ChannelConstraints {
     // --gamut-fit: the fitted curve stays in [0, 1] at every μ (a penalty on a 4097-point grid, stiffened and
     // tightened until that grid holds it), fitted under that constraint rather than clipped after.
     bool unit_range = false;
+    // --f0-tolerance: F(1) within [lower, upper] (R(1)(1 ∓ T)), a true constraint: the pinned parameter is computed
+    // from the others and F(1), and F(1) is a free unknown of the solve bounded to this interval.
+    std::optional<std::array<double, 2>> f0_range;
 };
 
 class Model {

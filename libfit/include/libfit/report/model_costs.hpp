@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "libfit/export/recommendation.hpp"
 #include "libfit/fit/budget.hpp"
 #include "libfit/fit/model_cost.hpp"
 
@@ -40,11 +41,17 @@ struct CostAndBudget {
     std::optional<ModelCosts> costs;
     std::optional<double> budget;               // worst-channel rel_rms the choice had to meet
     std::map<std::string, BudgetMark> choices;  // material id → choice
+    // material id → the recommendation (export/recommendation.hpp) the material's page opens with and the heat map
+    // marks; empty when none was asked for.
+    std::map<std::string, Recommendation> recommendations;
 };
 
 // What the report shows for a cost table (the built-in SPIR-V op counts or a `metalfit bench --json` file) and, when
 // a budget is given, each material's choose_model() result.
 CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable& table,
                            const std::optional<Budget>& budget);
+// The same with each material's recommendation for `target` under `tolerance` (recommend(), ranked by `table`).
+CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable& table,
+                           const std::optional<Budget>& budget, const Tolerance& tolerance, ExportFormat target);
 
 }  // namespace metalfit

@@ -79,6 +79,63 @@
     return report.renders.skipped === undefined ? null : el('p', { class: 'renders-skipped', text: 'renders skipped: ' + report.renders.skipped });
   }
 
+  // The heat map's metrics: the worst channel of each fit's rel_rms, |err_f0| and max_rel, and its ΔE2000 max.
+  const worstOf = (values) => (values == null || values.some((v) => v == null) ? null : Math.max(...values));
+  const HEATMAP_METRICS = [
+    { key: 'rel_rms', title: 'worst-channel rel_rms', percent: true, value: (f) => worstOf(f.metrics.rel_rms) },
+    { key: 'f0_err', title: 'worst-channel |F0 error|', percent: true, value: (f) => worstOf(f.err_f0 && f.err_f0.map((v) => (v == null ? null : Math.abs(v)))) },
+    { key: 'de2000_max', title: 'ΔE2000 max', percent: false, value: (f) => f.metrics.de2000_max },
+    { key: 'max_rel', title: 'worst-channel max_rel', percent: true, value: (f) => worstOf(f.metrics.max_rel) },
+  ];
+  const heatmapMetric = (key) => HEATMAP_METRICS.find((m) => m.key === key);
+
+  function heatmapData(report, key) {
+    const metric = heatmapMetric(key);
+    const cells = [];
+    report.materials.forEach((mat) => report.models.forEach((m) => {
+      const fit = mat.models[m.id] && mat.models[m.id].fit;
+      const v = fit ? metric.value(fit) : null;
+      cells.push({ material: mat.id, model: m.id, worst: v, label: metric.percent ? pct(v, 2) : num(v, 2),
+                   recommended: mat.recommendation != null && mat.recommendation.chosen === m.id });
+    }));
+    const positive = cells.map((c) => c.worst).filter((v) => v != null && v > 0);
+    const lo = Math.log(Math.min(...positive)), hi = Math.log(Math.max(...positive));
+    cells.forEach((c) => { c.dark = c.worst != null && c.worst > 0 && hi > lo && (Math.log(c.worst) - lo) / (hi - lo) < 0.55; });
+    return cells;
+  }
+
+  function heatmapSpec(base, key) {
+    const metric = heatmapMetric(key);
+    const spec = JSON.parse(JSON.stringify(base));
+    spec.title = `${metric.title} of the fit, material × model (log colour scale${metric.percent ? '; value in %' : ''})`;
+    const colour = spec.layer[0].encoding.color;
+    colour.title = metric.key;
+    colour.legend = { format: metric.percent ? '.2~%' : '.2~f' };
+    return spec;
+  }
+
+  // The first screen of a material page: the model to use, its constants for the target, why the cheaper ones fail.
+  function recommendationSection(mat) {
+    const r = mat.recommendation;
+    if (!r) return null;
+    const t = r.tolerance;
+    const limits = `rel_rms ≤ ${pct(t.rel_rms, 2)}, |F0 error| ≤ ${pct(t.f0_err, 2)}, ΔE2000 max ≤ ${t.de2000_max}`;
+    const chosen = r.candidates.find((c) => c.model === r.chosen);
+    const head = chosen
+      ? el('p', { class: 'recommended' }, 'Use ', el('strong', { text: r.chosen }), ` for ${r.target}: rel_rms ${pct(chosen.values.rel_rms, 3)}, ` +
+          `|F0 error| ${pct(chosen.values.f0_err, 3)}, ΔE2000 max ${num(chosen.values.de2000_max, 3)} (${limits}; cost: ${r.cost_table})`)
+      : el('p', { class: 'recommended none', text: `No model meets ${limits} for ${r.target} (cost: ${r.cost_table}).` });
+    const cheaper = [];
+    for (const c of r.candidates) {
+      if (c.model === r.chosen) break;
+      cheaper.push(el('li', { text: `${c.model}: ${c.reason}` }));
+    }
+    return section('Recommended model', head,
+      chosen ? el('pre', { class: 'constants', text: r.constants }) : null,
+      cheaper.length ? el('p', { text: chosen ? 'Cheaper models fail:' : 'Every model fails:' }) : null,
+      cheaper.length ? el('ul', { class: 'cheaper' }, ...cheaper) : null);
+  }
+
   // ---------------------------------------------------------------------------------------------- catalog page
   function catalogPage(report, main) {
     const models = report.models;
@@ -89,21 +146,29 @@
     const charts = report.charts.catalog;
     const done = [];
 
-    const values = [];
-    models.forEach((m) => m.fit_worst_rel_rms.per_material.forEach((v) => { if (v != null && v > 0) values.push(v); }));
-    const lo = Math.log(Math.min(...values)), hi = Math.log(Math.max(...values));
-    const heatmap = [];
-    materials.forEach((mat, i) => models.forEach((m) => {
-      const v = m.fit_worst_rel_rms.per_material[i];
-      heatmap.push({ material: mat.id, model: m.id, worst: v, label: pct(v, 2),
-                     dark: v != null && hi > lo && (Math.log(v) - lo) / (hi - lo) < 0.55 });
-    }));
     const overview = section('Where the cheap models fail');
     main.append(overview);
-    done.push(chart('heatmap', charts.heatmap, { heatmap }, overview));
+    const target = materials.map((m) => m.recommendation).find((r) => r != null);
+    if (target) {
+      const t = target.tolerance;
+      overview.append(el('p', { class: 'recommendation-note', text: `outlined: the cheapest model for ${target.target} meeting ` +
+        `rel_rms ≤ ${pct(t.rel_rms, 2)}, |F0 error| ≤ ${pct(t.f0_err, 2)} and ΔE2000 max ≤ ${t.de2000_max} in every channel (each material's page says why the cheaper ones fail)` }));
+    }
+    const picker = el('select', { id: 'heatmap-metric' },
+      ...HEATMAP_METRICS.map((m) => el('option', { value: m.key, text: m.title })));
+    overview.append(el('p', {}, el('label', { for: 'heatmap-metric', text: 'metric: ' }), picker));
+    const holder = el('div', {});
+    overview.append(holder);
+    const drawHeatmap = (key) => {
+      holder.replaceChildren();
+      return chart('heatmap', heatmapSpec(charts.heatmap, key), { heatmap: heatmapData(report, key) }, holder);
+    };
+    picker.addEventListener('change', () => drawHeatmap(picker.value));
+    done.push(drawHeatmap(HEATMAP_METRICS[0].key));
 
     const headers = ['material', 'name', 'source', 'kind', ...models.map((m) => m.id), 'best fit'];
     if (report.budget != null) headers.push(`budget ${pct(report.budget, 2)}`);
+    if (target) headers.push(`recommended for ${target.target}`);
     const rows = materials.map((mat, i) => {
       let best = null;
       models.forEach((m) => { const v = m.fit_worst_rel_rms.per_material[i]; if (v != null && (best == null || v < best.v)) best = { id: m.id, v }; });
@@ -112,6 +177,7 @@
         ...models.map((m) => cell(pct(m.fit_worst_rel_rms.per_material[i], 2), m.fit_worst_rel_rms.per_material[i])),
         cell(best ? best.id : '—'));
       if (report.budget != null) tr.append(cell(mat.budget_choice ? (mat.budget_choice.model || 'none') : '—'));
+      if (target) tr.append(cell(mat.recommendation ? (mat.recommendation.chosen || 'none') : '—'));
       return tr;
     });
     const summaryRows = ['median', 'worst'].map((which) => el('tr', { class: 'summary' },
@@ -172,7 +238,9 @@
         const x = e.metrics;
         rows.push(el('tr', { class: which === 'fit' ? 'fit' : 'closed' },
           cell(`${m.id}`, m.id), cell(which),
-          cell(paramsText(e.params)),
+          // A fit on a bound of its model is marked (fit.at_bound: which channel, which parameter).
+          cell(e.at_bound ? el('span', {}, paramsText(e.params), el('div', { class: 'at-bound', text: 'on a bound: ' +
+            e.at_bound.map((b, k) => (b ? `${'RGB'[k]} ${b}` : null)).filter((b) => b).join('; ') })) : paramsText(e.params)),
           cell(rgbText(x.rel_rms, pct), Math.max(...x.rel_rms.map((v) => (v == null ? Infinity : v)))),
           cell(rgbText(x.abs_rms, pct), Math.max(...x.abs_rms)),
           cell(rgbText(x.max_rel, pct), Math.max(...x.max_rel.map((v) => (v == null ? Infinity : v)))),
@@ -209,6 +277,7 @@
     const done = [];
     main.append(el('p', {}, el('a', { href: '../index.html', text: '← catalog' })));
     main.append(el('h1', { text: `${mat.name} (${mat.id}, ${mat.source})` }));
+    main.append(recommendationSection(mat) || '');
     main.append(el('p', { class: 'cost', text: costLine(report) }));
     if (mat.budget_choice) main.append(el('p', { class: 'budget', text: `budget ${pct(report.budget, 2)}: ${mat.budget_choice.model || 'no model'} — ${mat.budget_choice.note}` }));
     main.append(section('Provenance', provenanceTable(report, mat), ...mat.warnings.map((w) => el('p', { class: 'warning', text: 'warning: ' + w }))));
