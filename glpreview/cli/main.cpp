@@ -124,6 +124,17 @@ void print_before_commit(const metalfit::glpreview::PreviewResult& result) {
 }
 
 // The compounding table of --bench-bounces as Markdown.
+// A GPU benchmark's rows as ratios to its mirror frame (--bench-lights, --bench-caustic-maps): a Markdown table.
+void print_mirror_frame_ratios(const nlohmann::ordered_json& result) {
+    std::printf(
+        "renderer %s; %dx%d, %d interleaved rounds\n\n| variant | ms | ratio to the mirror frame |\n|---|---:|---:|\n",
+        result["renderer"].get<std::string>().c_str(), result["size"][0].get<int>(), result["size"][1].get<int>(),
+        result["rounds"].get<int>());
+    for (const auto& r : result["rows"])
+        std::printf("| %s | %.3f | %.2f ± %.2f |\n", r["variant"].get<std::string>().c_str(), r["ms"].get<double>(),
+                    r["ratio_to_mirror_frame"].get<double>(), r["ratio_noise"].get<double>());
+}
+
 void print_bounces_table(const nlohmann::ordered_json& result) {
     std::printf("%s; %dx%d, CPU. All: every sphere pixel; k-bounce paths: the pixels whose mirror path reaches "
                 "bounce k\n\n",
@@ -330,14 +341,7 @@ int run_glpreview(int argc, char** argv) {
                 std::cout << result.dump(2) << "\n";
                 return ok;
             }
-            std::printf(
-                "renderer %s; %dx%d, %d interleaved rounds\n\n| variant | ms | ratio to the mirror frame |\n|---|---:|---:|\n",
-                result["renderer"].get<std::string>().c_str(), result["size"][0].get<int>(),
-                result["size"][1].get<int>(), result["rounds"].get<int>());
-            for (const auto& r : result["rows"])
-                std::printf("| %s | %.3f | %.2f ± %.2f |\n", r["variant"].get<std::string>().c_str(),
-                            r["ms"].get<double>(), r["ratio_to_mirror_frame"].get<double>(),
-                            r["ratio_noise"].get<double>());
+            print_mirror_frame_ratios(result);
             std::printf("\nper light: light pass %.2f ± %.2f, shadow pass %.2f ± %.2f (ratios to the mirror frame)\n",
                         result["light_pass_per_light"]["ratio_to_mirror_frame"].get<double>(),
                         result["light_pass_per_light"]["ratio_noise"].get<double>(),
@@ -353,14 +357,7 @@ int run_glpreview(int argc, char** argv) {
                 std::cout << result.dump(2) << "\n";
                 return ok;
             }
-            std::printf(
-                "renderer %s; %dx%d, %d interleaved rounds\n\n| variant | ms | ratio to the mirror frame |\n|---|---:|---:|\n",
-                result["renderer"].get<std::string>().c_str(), result["size"][0].get<int>(),
-                result["size"][1].get<int>(), result["rounds"].get<int>());
-            for (const auto& r : result["rows"])
-                std::printf("| %s | %.3f | %.2f ± %.2f |\n", r["variant"].get<std::string>().c_str(),
-                            r["ms"].get<double>(), r["ratio_to_mirror_frame"].get<double>(),
-                            r["ratio_noise"].get<double>());
+            print_mirror_frame_ratios(result);
             std::printf("\nthe article (Szirmay-Kalos et al. 2005, GPU of 2005): a 64² caustic map with shadows, "
                         "reflection and refraction at 50 FPS; 32² photons splatted into a 256² light map\n");
             return ok;

@@ -9,6 +9,7 @@
 #include "glpreview/effects/effect.hpp"
 #include "glpreview/effects/reflection_lookup.hpp"
 #include "glpreview/gl/program_cache.hpp"
+#include "glpreview/gl/saved_gl_state.hpp"
 #include "glpreview/gl/uniforms.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/gpu_resources.hpp"
@@ -38,6 +39,11 @@ struct SplatProgram {
 
 struct CausticsInProgress {
     bool active = false;
+    struct Scope {  // active while it lives
+        explicit Scope(CausticsInProgress& state) : state_(state) { state_.active = true; }
+        ~Scope() { state_.active = false; }
+        CausticsInProgress& state_;
+    };
 };
 
 // The room's distance cube without the rings (what a photon leaving a ring lands on), made once per renderer.
@@ -126,14 +132,8 @@ CausticPlan plan_caustics(const Scene& scene) {
 
 void render_caustic_light_maps(GpuRenderer& renderer, const CausticPlan& plan, const CausticSettings& settings,
                                const RoomLightMaps& maps) {
-    GLint framebuffer = 0, program_in_use = 0, vertex_array = 0, viewport[4] = {0, 0, 0, 0};
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-    glGetIntegerv(GL_CURRENT_PROGRAM, &program_in_use);
-    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array);
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    const GLboolean depth_test = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND);
-    bool& in_progress = renderer.frame().state<CausticsInProgress>().active;
-    in_progress = true;
+    const SavedGlState saved;
+    const CausticsInProgress::Scope in_progress(renderer.frame().state<CausticsInProgress>());
 
     const Scene& scene = renderer.scene();
     const Room& room = scene.environment.room;
@@ -254,16 +254,6 @@ void render_caustic_light_maps(GpuRenderer& renderer, const CausticPlan& plan, c
         glDisable(GL_PROGRAM_POINT_SIZE);
     }
     check_gl("rendering the caustic maps");
-    in_progress = false;
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
-    glUseProgram(static_cast<GLuint>(program_in_use));
-    glBindVertexArray(static_cast<GLuint>(vertex_array));
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    if (depth_test) glEnable(GL_DEPTH_TEST);
-    if (blend)
-        glEnable(GL_BLEND);
-    else
-        glDisable(GL_BLEND);
 }
 
 }  // namespace metalfit::glpreview

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "glpreview/gl/saved_gl_state.hpp"
 #include "glpreview/gl/uniforms.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/sphere_shader.hpp"
@@ -13,6 +14,11 @@ namespace {
 
 struct IndirectInProgress {
     bool active = false;
+    struct Scope {  // active while it lives
+        explicit Scope(IndirectInProgress& state) : state_(state) { state_.active = true; }
+        ~Scope() { state_.active = false; }
+        IndirectInProgress& state_;
+    };
 };
 
 // The virtual lights as a texture: column i, rows position, normal, intensity.
@@ -42,14 +48,8 @@ bool making_indirect_light(GpuRenderer& renderer) { return renderer.frame().stat
 
 void render_indirect_light_maps(GpuRenderer& renderer, const std::vector<VirtualLight>& lights,
                                 const RoomLightMaps& maps) {
-    GLint framebuffer = 0, program_in_use = 0, vertex_array = 0, viewport[4] = {0, 0, 0, 0};
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-    glGetIntegerv(GL_CURRENT_PROGRAM, &program_in_use);
-    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array);
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    const GLboolean depth_test = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND);
-    bool& in_progress = renderer.frame().state<IndirectInProgress>().active;
-    in_progress = true;
+    const SavedGlState saved;
+    const IndirectInProgress::Scope in_progress(renderer.frame().state<IndirectInProgress>());
 
     const gl::Texture texture = upload(lights);
     ShaderBuilder builder("indirect-gather");
@@ -75,14 +75,6 @@ void render_indirect_light_maps(GpuRenderer& renderer, const std::vector<Virtual
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     check_gl("gathering the indirect light");
-
-    in_progress = false;
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
-    glUseProgram(static_cast<GLuint>(program_in_use));
-    glBindVertexArray(static_cast<GLuint>(vertex_array));
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    if (depth_test) glEnable(GL_DEPTH_TEST);
-    if (blend) glEnable(GL_BLEND);
 }
 
 }  // namespace metalfit::glpreview

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "cpu_lights.hpp"
+#include "glpreview/gl/saved_gl_state.hpp"
 #include "glpreview/gl/uniforms.hpp"
 #include "glpreview/render/frame_inputs.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
@@ -106,20 +107,10 @@ public:
         if (!maps) {  // no graph handed them over: made here once, the frame's GL state kept
             auto& own = renderer.frame().state<OwnShadowMaps>();
             if (!own.maps) {
-                GLint framebuffer = 0, program_in_use = 0, vertex_array = 0, viewport[4] = {0, 0, 0, 0};
-                glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-                glGetIntegerv(GL_CURRENT_PROGRAM, &program_in_use);
-                glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array);
-                glGetIntegerv(GL_VIEWPORT, viewport);
-                const GLboolean depth_test = glIsEnabled(GL_DEPTH_TEST);
+                const SavedGlState saved;
                 const ShadowLayout layout = shadow_layout(renderer.scene(), *lights);
                 own.maps = ShadowMaps::create({kShadowMapSize, layout.cubes, layout.planes});
                 render_shadow_maps(renderer, *lights, layout, *own.maps);
-                glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
-                glUseProgram(static_cast<GLuint>(program_in_use));
-                glBindVertexArray(static_cast<GLuint>(vertex_array));
-                glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-                if (depth_test) glEnable(GL_DEPTH_TEST);
             }
             maps = &*own.maps;
         }
