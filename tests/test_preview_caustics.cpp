@@ -10,6 +10,7 @@
 #include <string>
 
 #include "effects/caustics/caustic_maps.hpp"
+#include "effects/caustics/caustic_reference.hpp"
 #include "effects/lights/light.hpp"
 #include "effects/rings/ring.hpp"
 #include "glpreview/effects/registry.hpp"
@@ -206,6 +207,38 @@ TEST(CausticsGpu, TheCuspLiesAtHalfTheRadiusAlongTheLight) {
     const CausticFloor wide = gpu_caustic(resolved(ring_scene(), library));
     EXPECT_LT(wide.peak.z, narrow.peak.z);
     EXPECT_GT(wide.peak.z, -1.0 / (2 * std::cos(std::numbers::pi / 4)));  // no farther than the 45° rays' crossing
+}
+
+TEST(CausticsGpu, ASphereBeforeTheRingShadowsItsCausticAsInTheReference) {
+    // A sphere between the grazing light and the ring's wall: on the GPU and in the photon-traced reference its shadow
+    // takes the same share of the caustic away.
+    FresnelLibrary library(kData, choose_ocio_config(std::nullopt, kData), "", "ring.json");
+    std::string shaded = ring_scene(R"("radius": 1.0, "height": 0.35, "arc_deg": 180)",
+                                    R"([{"type": "directional", "direction": [0, -0.35, -1], "intensity": 4}])",
+                                    R"({"map_size": 256, "filter_width": 0.02, "reference_photons": 400000})");
+    const std::string far_sphere = R"({"center": [2.2, 0.3, 2.2], "radius": 0.3, "material": "Ag"})";
+    shaded.replace(shaded.find(far_sphere), far_sphere.size(),
+                   far_sphere + R"(, {"center": [0.3, 0.6, 0.3], "radius": 0.3, "material": "Ag"})");
+    double gpu[2] = {0, 0}, reference[2] = {0, 0};
+    int k = 0;
+    for (const std::string& json :
+         {ring_scene(R"("radius": 1.0, "height": 0.35, "arc_deg": 180)",
+                     R"([{"type": "directional", "direction": [0, -0.35, -1], "intensity": 4}])",
+                     R"({"map_size": 256, "filter_width": 0.02, "reference_photons": 400000})"),
+          shaded}) {
+        Scene scene = resolved(json, library);
+        resolve_caustic_spectra(scene, library, true);  // the scene asks for no reference image: the map alone
+        gpu[k] = gpu_caustic(scene).power;
+        const CausticMap* map = reference_caustic_map(scene);
+        ASSERT_NE(map, nullptr);
+        const PhotonBudget& b = map->budget();
+        reference[k] = (b.deposited.r + b.deposited.g + b.deposited.b) / 3;
+        ++k;
+    }
+    EXPECT_LT(gpu[1], 0.9 * gpu[0]) << "the sphere takes part of the caustic";
+    EXPECT_NEAR(gpu[1] / gpu[0], reference[1] / reference[0], 0.02)
+        << "GPU " << gpu[1] << " / " << gpu[0] << ", reference " << reference[1] << " / " << reference[0];
+    EXPECT_NEAR(gpu[0] / reference[0], 1.0, 0.03);
 }
 
 }  // namespace

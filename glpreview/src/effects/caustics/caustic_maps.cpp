@@ -155,6 +155,13 @@ void render_caustic_light_maps(GpuRenderer& renderer, const CausticPlan& plan, c
     set_uniform(mp, "u_map_size", settings.map_size);
     set_uniform(mp, "u_room_min_c", room.min);
     set_uniform(mp, "u_room_max_c", room.max);
+    const int spheres = static_cast<int>(std::min<std::size_t>(scene.spheres.size(), 256));
+    set_uniform(mp, "u_caustic_sphere_count", spheres);
+    for (int i = 0; i < spheres; ++i) {
+        const Sphere& s = scene.spheres[static_cast<std::size_t>(i)];
+        glProgramUniform4f(mp, glGetUniformLocation(mp, ("u_caustic_spheres[" + std::to_string(i) + "]").c_str()),
+                           float(s.center.x), float(s.center.y), float(s.center.z), float(s.radius));
+    }
 
     const int n = settings.map_size;
     const gl::Texture hits = gl::create_texture(GL_TEXTURE_2D), power = gl::create_texture(GL_TEXTURE_2D);
