@@ -96,8 +96,9 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
         request.models = {choice.chosen};
     }
     const std::vector<ExportFile> files = export_files(fits, context, request, materialx_space);
-    for (const std::string& line : out_of_range_lines(files)) warn(line);
     write_export(o.output, files);
+    // After the folder is in place: a refused or failed write stays one line, about what was not written.
+    for (const std::string& line : out_of_range_lines(files)) warn(line);
 }
 
 }  // namespace
