@@ -150,4 +150,40 @@ TEST_F(RecordPaths, ReportRecordIsPortable) {
     expect_data_file(j["provenance"]["ocio_config"]["file"], "ocio/config.ocio");
 }
 
+// The database, the OCIO config and a film file all given by absolute paths outside the working folder (a copy of
+// the database: the default one lies in the source tree), the output folder too: no record or exported file of fit,
+// export or report holds any of those paths, nor the machine's temporary folder.
+TEST_F(RecordPaths, AbsoluteDataFolderConfigAndOutputsLeaveNoAbsolutePath) {
+    const fs::path db = elsewhere_ / "db";
+    fs::copy(kData, db, fs::copy_options::recursive);
+    fs::copy_file(kData / "films" / "TiO2" / "Siefke.yml", elsewhere_ / "film.yml");
+    const std::string abs_db = fs::weakly_canonical(db).string();
+    const std::string flags = "--data-dir '" + abs_db + "' --ocio-config '" + abs_db + "/ocio/config.ocio'";
+    const std::string film = "--film '" + (elsewhere_ / "film.yml").string() + ":40nm'";
+    const auto absolute_free = [&](const std::string& text, const std::string& what) {
+        for (const std::string& absolute : {abs_db, elsewhere_.string(), work_.string(), temp_.path().string(), data_})
+            EXPECT_EQ(text.find(absolute), std::string::npos) << what << " holds " << absolute;
+    };
+    const Result fit = run_in(work_, flags + " fit Au mine.yml '" + (elsewhere_ / "far.yml").string() + "' " + film +
+                                         " --model schlick --json");
+    ASSERT_EQ(fit.exit_code, 0) << fit.err;
+    absolute_free(fit.out, "fit --json");
+    const auto record = nlohmann::json::parse(fit.out);
+    expect_portable(record, "fit --json");
+    EXPECT_EQ(record["provenance"]["ocio_config"]["file"], "data:ocio/config.ocio");
+    const fs::path out = temp_.path() / "export-out";
+    const Result exported = run_in(work_, flags + " export Au mine.yml " + film +
+                                              " --model schlick,rational --format all -o '" + out.string() + "'");
+    ASSERT_EQ(exported.exit_code, 0) << exported.err;
+    int files = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(out)) {
+        if (!entry.is_regular_file()) continue;
+        ++files;
+        const std::string text = read_file(entry.path());
+        absolute_free(text, entry.path().string());
+        if (entry.path().extension() == ".json") expect_portable(nlohmann::json::parse(text), entry.path().string());
+    }
+    EXPECT_GE(files, 10);
+}
+
 }  // namespace

@@ -81,8 +81,10 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), fit_request, jobs, progress.callback());
     // OpenPBR, MaterialX and glTF write a layered material as their own coat / thin film over the bare metal.
     if (needs_bare_metal_fits(request)) attach_bare_metal_fits(fits, setup.batch(), fit_request, jobs);
-    for (const MaterialFit& f : fits)
+    for (const MaterialFit& f : fits) {
         for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
+        for (const std::string& w : refusal_warnings(f)) warn(w);
+    }
     for (const std::string& w : export_warnings(context, request, materialx_space)) warn(w);
     if (budget) {
         const BudgetChoice choice = choose_model(fits.front().models, costs, *budget);
@@ -93,7 +95,10 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
              choice.summary() + "; cost table: " + choice.cost_source);
         request.models = {choice.chosen};
     }
-    write_export(o.output, export_files(fits, context, request, materialx_space));
+    const std::vector<ExportFile> files = export_files(fits, context, request, materialx_space);
+    write_export(o.output, files);
+    // After the folder is in place: a refused or failed write stays one line, about what was not written.
+    for (const std::string& line : out_of_range_lines(files)) warn(line);
 }
 
 }  // namespace

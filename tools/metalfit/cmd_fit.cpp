@@ -202,6 +202,7 @@ void run_fit(const FitOptions& o, const GlobalOptions& global) {
         ++materials;
         if (o.timings) timings += fit.timings;
         for (const std::string& w : fit.material.warnings) warnings.push_back(fit.material.id + ": " + w);
+        for (std::string& w : refusal_warnings(fit)) warnings.push_back(std::move(w));
         if (!o.summary.empty()) summary.add(fit);
         std::optional<BudgetChoice> choice;
         if (budget) choice = choose_model(fit.models, costs, *budget);

@@ -11,6 +11,7 @@
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/number_text.hpp"
+#include "libfit/fit/fit.hpp"
 #include "libfit/models/model.hpp"
 
 namespace metalfit::cli {
@@ -26,6 +27,16 @@ std::string model_ids() {
     std::string ids;
     for (const Model* m : all_models()) ids += (ids.empty() ? "" : ", ") + std::string(m->id());
     return ids;
+}
+
+std::vector<std::string> refusal_warnings(const MaterialFit& fit) {
+    std::vector<std::string> lines;
+    for (const ModelResult& r : fit.models)
+        for (int c = 0; c < 3; ++c)
+            if (!r.fit.refused[c].empty())
+                lines.push_back(fit.material.id + ": " + std::string(r.model->id()) + ": " + kChannelNames[c] + ": " +
+                                r.fit.refused[c]);
+    return lines;
 }
 
 void warn(const std::string& message) { std::cerr << "metalfit: warning: " << sanitised_message(message) << "\n"; }

@@ -12,6 +12,10 @@
 #include <string_view>
 #include <vector>
 
+namespace metalfit {
+struct MaterialFit;
+}
+
 namespace metalfit::cli {
 
 // Options every subcommand shares.
@@ -83,6 +87,10 @@ std::vector<std::string> names_of(const Table& table) {
 
 // "metalfit: warning: ..." on stderr.
 void warn(const std::string& message);
+
+// One line per model and channel whose fit refused something (FitResult::refused: --pin F0 against a bound, every
+// start ending with a pole): "Au: gulbrandsen: red: --pin F0 refused: …". fit and export print them as warnings.
+std::vector<std::string> refusal_warnings(const MaterialFit& fit);
 
 // v with `digits` decimals for human-readable tables; "-" for NaN (an undefined metric).
 std::string fixed(double v, int digits = 5);

@@ -66,6 +66,21 @@ std::string half_precision_note(const WrittenParameters& written, std::string_vi
     return text;
 }
 
+std::vector<ColourOutOfRange> colours_out_of_range(const MaterialExport& material, const WrittenParameters& written,
+                                                   std::string_view model, std::span<const std::string_view> names) {
+    std::vector<ColourOutOfRange> out;
+    const auto parameters = written.model->parameters();
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+        if (parameters[i].kind != ParameterKind::colour) continue;
+        const RGB v = written.params.parameter(i);
+        for (int c = 0; c < 3; ++c)
+            if (!(v[c] >= 0.0 && v[c] <= 1.0))
+                out.push_back({material.fit->material.id, std::string(model),
+                               std::string(i < names.size() ? names[i] : parameters[i].name), c, v[c]});
+    }
+    return out;
+}
+
 std::string comment_header(const MaterialExport& material, const WrittenParameters& written,
                            const ExportContext& context, std::string_view prefix, std::string_view extra,
                            bool base_of_layers) {
@@ -89,6 +104,9 @@ std::string comment_header(const MaterialExport& material, const WrittenParamete
     }
     line("parameters: " + written.origin + "; gamut policy: " + to_string(context.request.gamut));
     for (const std::string& note : written.gamut) line("OUT OF GAMUT: " + note);
+    for (const ColourOutOfRange& o : colours_out_of_range(material, written, written.model->id()))
+        line("OUT OF RANGE: " + o.parameter + " " + kChannelNames[o.channel] + " = " + number(o.value) +
+             " outside [0, 1], written as it is (a consumer may clip it; --gamut clip or scale, or --gamut-fit)");
     line(std::string("error of these parameters against ") + (base_of_layers ? "the bare metal's " : "") +
          "R_c (R, G, B; " + std::to_string(r.error.nodes) + " Gauss-Legendre nodes on [0, 1], " +
          to_string(r.error.weight) + " weight; maxima over mu = i/1024 and the nodes):");

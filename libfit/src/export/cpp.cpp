@@ -188,7 +188,7 @@ std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials,
                 "\n// F(mu) of this material and model, per RGB channel.\ninline metalfit_shader::vec3 evaluate(float mu) {\n"
                 "    return metalfit_shader::" +
                 std::string(w.model->glsl_function()) + "(" + args + "mu);\n}\n\n}  // namespace " + stem + "\n";
-            files.push_back({"cpp/" + stem + ".hpp", text});
+            files.push_back({"cpp/" + stem + ".hpp", text, colours_out_of_range(m, w, w.model->id())});
             index.push_back({"#include \"" + stem + ".hpp\"", "    {" + c_string_literal(m.fit->material.id) + ", \"" +
                                                                   std::string(w.model->id()) + "\", &" + stem +
                                                                   "::evaluate, " + std::to_string(parameters.size()) +

@@ -123,6 +123,16 @@ detail::MaterialExport material_export(const MaterialFit& fit, const ExportReque
 
 }  // namespace
 
+std::vector<std::string> out_of_range_lines(const std::vector<ExportFile>& files) {
+    std::vector<std::string> lines;
+    for (const ExportFile& f : files)
+        for (const ColourOutOfRange& o : f.out_of_range)
+            lines.push_back("export: " + f.path.generic_string() + ": " + o.parameter + " " + kChannelNames[o.channel] +
+                            " = " + detail::number(o.value) + " outside [0, 1] (" + o.material + ", " + o.model +
+                            "; a consumer may clip it: --gamut clip|scale or --gamut-fit)");
+    return lines;
+}
+
 std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
                                      const ExportRequest& request, const std::string& materialx_space) {
     require_export_space(request, context.space, materialx_space);
@@ -142,6 +152,26 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
     for (ExportFormat format : request.formats) {
         std::vector<ExportFile> more = detail::format_entry(format).write(materials, ctx);
         for (ExportFile& f : more) files.push_back(std::move(f));
+    }
+    // Every colour written outside [0, 1], by any format: in the export record, per material and model, each with the
+    // file that writes it (the header of each text file says the same; out_of_range_lines gives stderr's lines).
+    const auto record =
+        std::find_if(files.begin(), files.end(), [](const ExportFile& f) { return f.path == "metalfit_export.json"; });
+    if (record != files.end()) {
+        nlohmann::ordered_json j = nlohmann::ordered_json::parse(record->contents);
+        for (const MaterialFit& fit : fits)
+            for (const Model* model : request.models) {
+                nlohmann::ordered_json list = nlohmann::ordered_json::array();
+                for (const ExportFile& f : files)
+                    for (const ColourOutOfRange& o : f.out_of_range)
+                        if (o.material == fit.material.id && o.model == model->id())
+                            list.push_back({{"file", f.path.generic_string()},
+                                            {"parameter", o.parameter},
+                                            {"channel", kChannelNames[o.channel]},
+                                            {"value", o.value}});
+                j["materials"][fit.material.id]["models"][std::string(model->id())]["export"]["out_of_range"] = list;
+            }
+        record->contents = j.dump(2) + "\n";
     }
     std::set<std::filesystem::path> seen;
     for (const ExportFile& f : files)

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,13 @@ std::string shader_channel_list(const ModelParameters& params, std::size_t index
 std::string comment_header(const MaterialExport& material, const WrittenParameters& written,
                            const ExportContext& context, std::string_view prefix, std::string_view extra = {},
                            bool base_of_layers = false);
+
+// The colour parameters of `written` (ParameterKind::colour) with a channel outside [0, 1], as written; `names`
+// replaces the model's parameter names where the format writes them under its own (OpenPBR base_color, …).
+// `model` is the exported model's id (the stand-in's values are written for it by some formats).
+std::vector<ColourOutOfRange> colours_out_of_range(const MaterialExport& material, const WrittenParameters& written,
+                                                   std::string_view model,
+                                                   std::span<const std::string_view> names = {});
 
 // One line (and one per parameter at its fit bound) saying whether `written` survives half precision (|x| <= 65504):
 // its constants, and what a conductor (k², 4n²k²) or Gulbrandsen's r, g → n, k compute from them.

@@ -56,7 +56,7 @@ std::vector<ExportFile> export_glsl(const std::vector<MaterialExport>& materials
         for (const ModelExport& e : m.models)
             files.push_back(
                 {"glsl/" + file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id()) + ".glsl",
-                 shader_constants(m, e, context, kGlsl)});
+                 shader_constants(m, e, context, kGlsl), colours_out_of_range(m, e.written, e.written.model->id())});
     return files;
 }
 

@@ -103,7 +103,7 @@ std::vector<ExportFile> export_hlsl(const std::vector<MaterialExport>& materials
         for (const ModelExport& e : m.models)
             files.push_back(
                 {"hlsl/" + file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id()) + ".hlsl",
-                 shader_constants(m, e, context, kHlsl)});
+                 shader_constants(m, e, context, kHlsl), colours_out_of_range(m, e.written, e.written.model->id())});
     return files;
 }
 

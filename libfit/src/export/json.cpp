@@ -33,7 +33,12 @@ std::vector<ExportFile> export_json(const std::vector<MaterialExport>& materials
                 written_json(e.written, context.request.gamut, context.request.roughness);
     // Only a prefix other than the default is recorded, so that a default export is what it was before --id-prefix.
     if (context.request.id_prefix != kDefaultIdPrefix) record["id_prefix"] = context.request.id_prefix;
-    return {{"metalfit_export.json", record.dump(2) + "\n"}};
+    std::vector<ColourOutOfRange> outside;
+    for (const MaterialExport& m : materials)
+        for (const ModelExport& e : m.models)
+            for (ColourOutOfRange& o : colours_out_of_range(m, e.written, e.written.model->id()))
+                outside.push_back(std::move(o));
+    return {{"metalfit_export.json", record.dump(2) + "\n", std::move(outside)}};
 }
 
 std::string merge_json_record(const std::string& existing, const std::string& mine) {

@@ -64,7 +64,8 @@ pugi::xml_node append_bsdf(pugi::xml_node root, const char* category, const std:
     return n;
 }
 
-std::string document(const MaterialExport& m, std::size_t model_index, const ExportContext& context) {
+std::string document(const MaterialExport& m, std::size_t model_index, const ExportContext& context,
+                     std::vector<ColourOutOfRange>& outside) {
     const std::string& ocio_space = context.record.space;
     const ModelExport& e = m.models[model_index];
     const std::string stem = file_stem(context.request.id_prefix, m.fit->material.id, e.written.model->id());
@@ -73,6 +74,12 @@ std::string document(const MaterialExport& m, std::size_t model_index, const Exp
     const std::optional<LayeredParameters> layers = m.bare_metal ? layered_parameters(m.fit->material) : std::nullopt;
     std::string extra;
     const WrittenParameters w = materialx_parameters(base, base.models[model_index], extra);
+    static constexpr std::array<std::string_view, 2> kSchlickNames{"color0", "color82"};
+    static constexpr std::array<std::string_view, 2> kArtisticNames{"reflectivity", "edge_color"};
+    outside = colours_out_of_range(m, w, e.written.model->id(),
+                                   w.model->materialx_form() == MaterialxForm::artistic_ior
+                                       ? std::span<const std::string_view>(kArtisticNames)
+                                       : std::span<const std::string_view>(kSchlickNames));
     if (layers)
         for (const std::string& line : layered_notes(*layers, ExportFormat::mtlx))
             extra += std::string(extra.empty() ? "" : "\n") + line;
@@ -218,11 +225,14 @@ std::string xml_text(const pugi::xml_document& doc) {
 std::vector<ExportFile> export_mtlx(const std::vector<MaterialExport>& materials, const ExportContext& context) {
     std::vector<ExportFile> files;
     for (const MaterialExport& m : materials)
-        for (std::size_t i = 0; i < m.models.size(); ++i)
+        for (std::size_t i = 0; i < m.models.size(); ++i) {
+            std::vector<ColourOutOfRange> outside;
+            std::string text = document(m, i, context, outside);
             files.push_back(
                 {"mtlx/" + file_stem(context.request.id_prefix, m.fit->material.id, m.models[i].written.model->id()) +
                      ".mtlx",
-                 document(m, i, context)});
+                 std::move(text), std::move(outside)});
+        }
     return files;
 }
 

@@ -79,7 +79,10 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
                                {"notes", layered_notes(*layers, ExportFormat::openpbr)}};
             }
             j["metrics"] = metrics_record(mt);
-            files.push_back({"openpbr/" + stem + ".json", j.dump(2) + "\n"});
+            static constexpr std::array<std::string_view, 2> kOpenPbrNames{"base_color", "specular_color"};
+            const std::vector<ColourOutOfRange> outside =
+                colours_out_of_range(m, w, e.written.model->id(), kOpenPbrNames);
+            files.push_back({"openpbr/" + stem + ".json", j.dump(2) + "\n", outside});
 
             pugi::xml_document doc;
             if (context.materialx_colorspace.empty())
@@ -110,7 +113,7 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
             }
             add_surface_material(root, stem, shader, false,
                                  comment_header(m, w, context, "", header_note, layers.has_value()));
-            files.push_back({"openpbr/" + stem + ".mtlx", xml_text(doc)});
+            files.push_back({"openpbr/" + stem + ".mtlx", xml_text(doc), outside});
         }
     return files;
 }

@@ -145,12 +145,16 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
         auto starts = starts_for_channel(model, result.closed_forms, c, target);
         ChannelConstraints channel_constraints;
         channel_constraints.unit_range = constraints.gamut_fit;
+        std::optional<ChannelFit> unpinned;  // --pin F0: kept where the pin needs a parameter outside its bounds
         if (constraints.pin_f0) {
             // The unconstrained optimum is the best start of the pinned fit (from the others alone LM stops in local
             // minima: rational on zinc, 19 % instead of 1.3 %).
             channel_constraints.pinned_f0 = R1[c];
-            const ChannelFit free = model.fit(target, starts);
-            if (!free.params.empty()) starts.insert(starts.begin(), NamedStart{"unpinned optimum", free.params});
+            ChannelFit free = model.fit(target, starts);
+            if (!free.params.empty()) {
+                starts.insert(starts.begin(), NamedStart{"unpinned optimum", free.params});
+                unpinned = std::move(free);
+            }
         }
         std::optional<ChannelFit> kept, free_fit;
         if (constraints.f0_tolerance && R1[c] > 0) {
@@ -188,6 +192,42 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
                 channel = std::move(*free_fit);
             }
         }
+        // --pin F0 where F(1) = R(1) needs a parameter outside its bounds (gold's red R(1) = 1.038 asks Gulbrandsen's
+        // r > 0.99999) or no start holds it: the pin is refused for this channel and the unpinned fit kept, said in
+        // fit.refused and on stderr (an export must never carry parameters outside the model's own bounds).
+        if (channel_constraints.pinned_f0) {
+            std::string needs;
+            if (channel.params.empty())
+                needs = "parameters no start reaches inside the bounds";
+            else if (const std::string out = outside_bounds(model, channel.params); !out.empty())
+                needs = out;
+            else if (const double F1 = model.evaluate(std::span<const double>(channel.params), 1.0);
+                     !(std::abs(F1 - R1[c]) <= 1e-9))
+                needs = "a value the model cannot take (F(1) = " + number(F1) + ")";
+            if (!needs.empty() && unpinned) {
+                fit.refused[c] = "--pin F0 refused: F(1) = R(1) = " + number(R1[c]) + " needs " + needs +
+                                 "; the unpinned fit is kept (F(1) = " +
+                                 number(model.evaluate(std::span<const double>(unpinned->params), 1.0)) + ")";
+                channel = std::move(*unpinned);
+            }
+        }
+        // Every start ended on parameters that are no curve (rational: a pole in [0, 1]): the first start that is
+        // a curve inside the bounds is kept as it is, and the channel is reported as unrepresentable.
+        if (channel.params.empty() && !constraints.gamut_fit)
+            for (const NamedStart& start : starts)
+                if (start.params.size() == model.parameters().size() && model.inadmissible(start.params).empty() &&
+                    outside_bounds(model, start.params).empty()) {
+                    const std::string why = channel.discarded_why;
+                    channel.params = start.params;
+                    channel.solver.method = kCeresSolve;
+                    channel.solver.start = start.name;
+                    channel.solver.termination = "NO_CONVERGENCE";
+                    channel.solver.starts = static_cast<int>(starts.size());
+                    fit.refused[c] = "every start of the fit ended on parameters that are no curve (" +
+                                     std::string(why.empty() ? "a pole in [0, 1]" : "e.g. " + why) + "): start " +
+                                     start.name + " kept as it is";
+                    break;
+                }
         if (channel.params.empty())
             throw std::runtime_error(std::string(model.id()) + ": no start of the " + kChannelNames[c] +
                                      " fit converged" + (constraints.gamut_fit ? " inside [0, 1] (--gamut-fit)" : ""));
@@ -208,7 +248,7 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
             return R1[c] > 0 ? std::abs(f0_error(model.evaluate(std::span<const double>(form.value->params[c]), 1.0),
                                                  R1[c])) <= *constraints.f0_tolerance
                              : true;
-        if (!constraints.pin_f0) return true;
+        if (!constraints.pin_f0 || !fit.refused[c].empty()) return true;  // a refused pin: the unpinned fit competes
         return std::abs(model.evaluate(std::span<const double>(form.value->params[c]), 1.0) - R1[c]) <= 1e-12;
     };
     bool replaced = false;
@@ -237,7 +277,10 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
                                      ": the model cannot represent these data within its bounds";
         }
         // The pin computes a parameter, which the data may push out of its bounds (F0 ≥ 1 for n, k models).
-        if (constraints.pin_f0) {
+        if (!fit.refused[c].empty()) {
+            fit.unrepresentable[c] = fit.refused[c] + ": the model cannot represent these data" +
+                                     (constraints.pin_f0 ? " with F0 pinned" : "");
+        } else if (constraints.pin_f0) {
             const std::string out = outside_bounds(model, fit.value.params[c]);
             const double F1 = model.evaluate(std::span<const double>(fit.value.params[c]), 1.0);
             if (!out.empty() || !(std::abs(F1 - R1[c]) <= 1e-9))

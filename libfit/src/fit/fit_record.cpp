@@ -122,6 +122,13 @@ Json model_record(const ModelResult& result) {
             unrepresentable.push_back(u.empty() ? Json(nullptr) : Json(u));
         fit["unrepresentable"] = unrepresentable;
     }
+    // Only where the fit refused something for a channel (--pin F0 against a bound, every start ending with a pole).
+    if (std::any_of(result.fit.refused.begin(), result.fit.refused.end(),
+                    [](const std::string& r) { return !r.empty(); })) {
+        Json refused = Json::array();
+        for (const std::string& r : result.fit.refused) refused.push_back(r.empty() ? Json(nullptr) : Json(r));
+        fit["refused"] = refused;
+    }
     // Only where a channel's fit ends on a bound of the model (issue 29 item 4): which parameter, which bound.
     std::array<std::string, 3> on_bound;
     for (int c = 0; c < 3; ++c) on_bound[c] = at_bound(model, result.fit.value.params[c]);

@@ -354,6 +354,11 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                     final_cost += 0.5 * r * r;
                 }
                 if (!std::isfinite(final_cost) || !(final_cost < best.solver.final_cost)) continue;
+                if constexpr (CheckedCurve<M>)
+                    if (const std::string why = M::inadmissible(full.data()); !why.empty()) {
+                        if (best.discarded++ == 0) best.discarded_why = why;
+                        continue;  // e.g. a pole in [0, 1]: never kept
+                    }
                 best.params = full;
                 best.solver.method = kNonlinear.size() > 0 ? kProjectedLineSolve : kLinearSolve;
                 best.solver.start = starts[s].name;
@@ -416,6 +421,13 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
             else if (ranged >= 0)
                 x[M::kPinnedParameter] = M::pinned_value(x.data(), x[M::kPinnedParameter]);
         }
+        // Parameters that are no curve (rational: a root of the denominator in [0, 1], a pole) are discarded: the
+        // best start without one is kept (docs/fitting.md).
+        if constexpr (CheckedCurve<M>)
+            if (const std::string why = M::inadmissible(x.data()); !why.empty()) {
+                if (best.discarded++ == 0) best.discarded_why = why;
+                continue;
+            }
         if (final_cost < best.solver.final_cost) {
             best.params = x;
             best.solver.method = kCeresSolve;

@@ -41,6 +41,12 @@ public:
         return detail::fit_channel<M>(target, starts, constraints);
     }
     using Model::fit;
+    std::string inadmissible(std::span<const double> p) const override {
+        if constexpr (CheckedCurve<M>)
+            return M::inadmissible(p.data());
+        else
+            return {};
+    }
     bool can_pin_f0() const override { return PinnableF0<M>; }
     std::size_t pinned_parameter() const override {
         if constexpr (PinnableF0<M>)

@@ -87,11 +87,26 @@ bool needs_bare_metal_fits(const ExportRequest& request);
 void attach_bare_metal_fits(std::vector<MaterialFit>& fits, const BatchColour& colour,
                             const MaterialFitRequest& request, int jobs);
 
-// One output file, its path relative to the output directory.
+// A colour channel a file writes outside [0, 1] (F0, tint, r, g, OpenPBR's base_color / specular_color, …): a
+// consumer clips it, or renders more light than arrives. `parameter` is the name the file writes it under.
+struct ColourOutOfRange {
+    std::string material;   // material id
+    std::string model;      // model id of the export (the stand-in's values when the file writes the stand-in)
+    std::string parameter;  // "F0", "tint", "specular_color", …
+    int channel = 0;        // 0, 1, 2: red, green, blue
+    double value = 0;
+};
+
+// One output file, its path relative to the output directory, and the colours it writes outside [0, 1].
 struct ExportFile {
     std::filesystem::path path;
     std::string contents;
+    std::vector<ColourOutOfRange> out_of_range = {};
 };
+
+// One line per colour channel an export writes outside [0, 1], for stderr:
+// "export: openpbr/metalfit_cs_f82_tint.json: specular_color red = 1.37 outside [0, 1] (Cs, f82-tint)".
+std::vector<std::string> out_of_range_lines(const std::vector<ExportFile>& files);
 
 // Every file of an export (layout in docs/export.md). `fits` must hold the models of models_to_fit(request);
 // `materialx_space` is materialx_colorspace(context.config, context.space), resolved once by the caller (it reads

@@ -43,6 +43,11 @@ struct FitResult {
     // data within its bounds ("closed nk-650-550-450 fits better (rel_rms 0.0123 against 0.0150) but g = 1.03 is
     // outside [0, 1]"); "" otherwise.
     std::array<std::string, 3> unrepresentable;
+    // Per channel: what the fit refused and what it kept instead, "" when nothing was refused: --pin F0 where the
+    // pinned F(1) needs a parameter outside its bounds (the unpinned fit is kept), every start ending with a pole
+    // (rational: the best pole-free start is kept, or the first pole-free start when none ends pole-free). Said on
+    // stderr by fit and export, and in the record (fit.refused); such a channel is unrepresentable too.
+    std::array<std::string, 3> refused;
 };
 
 // Where a channel's parameters leave the model's bounds ("g = 1.03 outside [0, 1]"), or "" when they are inside.

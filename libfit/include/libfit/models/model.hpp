@@ -109,6 +109,8 @@ inline constexpr const char* kLinearSolve = "linear least squares (variable proj
 struct ChannelFit {
     ChannelParameters params;
     SolverSummary solver;
+    int discarded = 0;          // starts that ended on parameters that are no curve (Model::inadmissible), not kept
+    std::string discarded_why;  // the first of them's reason
 };
 
 // A start of the fit: "closed r1", "neutral 1", ...
@@ -160,6 +162,9 @@ public:
 
     // --pin F0: whether the model can hold F(1) at a given value, which parameter it computes for it, and that value
     // written into params (which may then lie outside the parameter's bounds: the data need another F(1)).
+    // Why a channel's parameters are no curve a shader may evaluate although inside their bounds (rational: a root
+    // of the denominator in [0, 1], a pole), or "" when they are one. The fit never keeps such parameters.
+    virtual std::string inadmissible(std::span<const double> /*params*/) const { return {}; }
     virtual bool can_pin_f0() const = 0;
     virtual std::size_t pinned_parameter() const = 0;                    // requires can_pin_f0()
     virtual void pin_f0(std::span<double> params, double F0) const = 0;  // requires can_pin_f0()

@@ -72,6 +72,13 @@ concept ModelDefinition = requires(const double* p, double mu, const float* pf, 
     { M::kMaterialx } -> std::convertible_to<MaterialxForm>;
 };
 
+// Optional: `static std::string inadmissible(const double* p)`, why parameters inside their bounds are no curve a
+// shader may evaluate (rational: a pole in [0, 1]), "" when they are one; the fit discards such starts.
+template <class M>
+concept CheckedCurve = requires(const double* p) {
+    { M::inadmissible(p) } -> std::convertible_to<std::string>;
+};
+
 // Whether M can pin F(1) to a given F0 (--pin F0): parameter kPinnedParameter is then a function of the others and
 // F0, pinned_value (templated like evaluate), with evaluate(p, 1) = F0 wherever the value lies inside the bounds.
 template <class M>

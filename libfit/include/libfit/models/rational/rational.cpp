@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "libfit/base/number_text.hpp"
 #include "models/linear_least_squares.hpp"
 
 namespace metalfit::models {
@@ -35,6 +36,12 @@ std::vector<ChannelParameters> Rational::target_starts(const ChannelTarget& t) {
         starts.push_back(std::move(p));
     }
     return starts;
+}
+
+std::string Rational::inadmissible(const double* p) {
+    if (denominator_minimum(p) > 0) return {};
+    return "the denominator 1 + c mu + d mu^2 (c = " + shortest_text(p[2]) + ", d = " + shortest_text(p[3]) +
+           ") has a root in [0, 1]: a pole of the curve";
 }
 
 }  // namespace metalfit::models

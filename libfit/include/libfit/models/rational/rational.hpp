@@ -5,8 +5,10 @@
 // GLSL: rational.glsl beside this header.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -40,6 +42,19 @@ struct Rational {
         const T mu = model_math::clamp_mu(mu_in);
         return (T(1) + mu * (p[0] + p[1] * mu)) / (T(1) + mu * (p[2] + p[3] * mu));
     }
+
+    // A root of the denominator 1 + c mu + d mu^2 in [0, 1] is a pole of the curve there (η ≈ 1 drives the fit to
+    // one: ±8e6 and non-finite values at the root): such parameters are discarded by the fit (docs/fitting.md).
+    // The denominator is 1 at mu = 0; its minimum on [0, 1] is at mu = 1 or at its vertex -c / (2d) when d > 0.
+    static double denominator_minimum(const double* p) {
+        double minimum = std::min(1.0, 1.0 + p[2] + p[3]);
+        if (p[3] > 0) {
+            const double vertex = -p[2] / (2 * p[3]);
+            if (vertex > 0 && vertex < 1) minimum = std::min(minimum, 1.0 + vertex * (p[2] + p[3] * vertex));
+        }
+        return minimum;
+    }
+    static std::string inadmissible(const double* p);  // rational.cpp
 
     // None: no parameter is a property of the data at one angle.
     static std::vector<ClosedForm> closed_forms(const ClosedFormInput&) { return {}; }
