@@ -61,12 +61,6 @@ struct PreviewGraph {
     PreviewHandles& handles;
 };
 
-// A sphere that bounds an object (its centre and radius).
-struct BoundingSphere {
-    Vec3 centre;
-    double radius = 0;
-};
-
 // An effect reads its own scene keys (SceneKeys: scene_keys, read_scene, sphere_keys, read_sphere, check_scene).
 class Effect : public SceneKeys {
 public:

@@ -25,4 +25,10 @@ inline Vec3 normalize(Vec3 a) { return (1.0 / length(a)) * a; }
 // Mirror direction of incident direction d about unit normal n (GLSL reflect()).
 inline Vec3 reflect(Vec3 d, Vec3 n) { return d - 2.0 * dot(d, n) * n; }
 
+// A sphere that bounds an object (its centre and radius).
+struct BoundingSphere {
+    Vec3 centre;
+    double radius = 0;
+};
+
 }  // namespace metalfit::glpreview

@@ -19,10 +19,6 @@
 namespace metalfit::glpreview {
 namespace {
 
-BoundingSphere ring_bounds(const Ring& ring) {
-    return {ring.base + Vec3{0, 0.5 * ring.height, 0}, std::hypot(ring.radius, 0.5 * ring.height)};
-}
-
 bool in_spot_cone(const Light& light, const BoundingSphere& b) {
     const Vec3 to = b.centre - light.position;
     const double distance = length(to);
@@ -118,7 +114,7 @@ CausticPlan plan_caustics(const Scene& scene) {
         }
         std::size_t rings_lit = 0;
         for (std::size_t r = 0; r < rings->rings.size(); ++r) {
-            if (light.type == LightType::spot && !in_spot_cone(light, ring_bounds(rings->rings[r]))) continue;
+            if (light.type == LightType::spot && !in_spot_cone(light, rings->rings[r].bounds())) continue;
             plan.jobs.push_back({l, r});
             ++rings_lit;
         }
@@ -191,7 +187,7 @@ void render_caustic_light_maps(GpuRenderer& renderer, const CausticPlan& plan, c
     const double to_radians = std::numbers::pi / 180;
     for (const CausticJob& job : plan.jobs) {
         const Light& light = lights.lights[job.light];
-        const BoundingSphere bounds = ring_bounds(rings.rings[job.ring]);
+        const BoundingSphere bounds = rings.rings[job.ring].bounds();
         set_uniform(mp, "u_ring", static_cast<int>(job.ring));
         set_uniform(mp, "u_caustic_power_in", light.power());
         set_uniform(mp, "u_caustic_direction", light.direction);

@@ -45,14 +45,6 @@ double room_exit(const Room& room, Vec3 o, Vec3 d, Receiver& face) {
     return t_best;
 }
 
-struct Bounds {
-    Vec3 centre;
-    double radius = 0;
-};
-Bounds ring_bounds(const Ring& ring) {
-    return {ring.base + Vec3{0, 0.5 * ring.height, 0}, std::hypot(ring.radius, 0.5 * ring.height)};
-}
-
 // A photon's spectral (or RGB) throughput.
 struct Throughput {
     std::vector<double> spectrum;
@@ -253,7 +245,7 @@ CausticMap trace_caustics(const Scene& scene, const Rings& rings, const Lights& 
 
     const auto trace_job = [&](const Job& job, ChunkResult& out) {
         const Light& light = lights.lights[job.light];
-        const Bounds bounds = ring_bounds(rings.rings[job.ring]);
+        const BoundingSphere bounds = rings.rings[job.ring].bounds();
         std::mt19937_64 random(options.seed ^ (0x9E3779B97F4A7C15ull * (job.light * 64 + job.ring + 1)) ^
                                (static_cast<std::uint64_t>(job.first) << 20));
         std::uniform_real_distribution<double> uniform(0.0, 1.0);

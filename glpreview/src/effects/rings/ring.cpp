@@ -17,6 +17,8 @@ bool Ring::covers(double x, double z) const {
     return (x * middle_x + z * middle_z) / r >= std::cos(0.5 * arc_deg * to_radians);
 }
 
+BoundingSphere Ring::bounds() const { return {base + Vec3{0, 0.5 * height, 0}, std::hypot(radius, 0.5 * height)}; }
+
 Sphere Ring::surface() const {
     Sphere s;
     s.material = material;

@@ -28,6 +28,9 @@ struct Ring {
 
     // Whether the wall includes the azimuth of horizontal offset (x, z) from the axis.
     bool covers(double x, double z) const;
+    // The smallest sphere around the wall's cylinder: centred half-way up the axis, of radius √(R² + (h/2)²) (what
+    // the shadow maps, the caustic maps and the photon tracer aim at).
+    BoundingSphere bounds() const;
     // The ring as a sphere of the same material and Fresnel choice (what FresnelLibrary resolves).
     Sphere surface() const;
 };

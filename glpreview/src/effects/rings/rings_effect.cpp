@@ -71,9 +71,7 @@ public:
     std::vector<BoundingSphere> shadow_casters(const Scene& scene) const override {
         std::vector<BoundingSphere> bounds;
         if (const Rings* rings = rings_of(scene))
-            for (const Ring& ring : rings->rings)
-                bounds.push_back(
-                    {ring.base + Vec3{0, 0.5 * ring.height, 0}, std::hypot(ring.radius, 0.5 * ring.height)});
+            for (const Ring& ring : rings->rings) bounds.push_back(ring.bounds());
         return bounds;
     }
 
