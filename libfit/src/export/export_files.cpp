@@ -9,6 +9,7 @@
 #include "export/export_formats.hpp"
 #include "export/format_registry.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/export/consumer_curve.hpp"
 
 namespace metalfit {
 
@@ -92,10 +93,7 @@ void attach_bare_metal_fits(std::vector<MaterialFit>& fits, const BatchColour& c
         fits[layered[j]].bare_metal = std::make_shared<const MaterialFit>(std::move(bare[j]));
 }
 
-namespace {
-
-// The written parameters of every requested model of one fit (and the stand-in's where a format needs it).
-detail::MaterialExport material_export(const MaterialFit& fit, const ExportRequest& request) {
+detail::MaterialExport detail::material_export(const MaterialFit& fit, const ExportRequest& request) {
     using detail::ModelExport;
     const Model& stand_in_model = expressible_stand_in();
     if (!fit.reference) throw std::logic_error("export: fit of " + fit.material.id + " has no sampled reference");
@@ -121,8 +119,6 @@ detail::MaterialExport material_export(const MaterialFit& fit, const ExportReque
     return m;
 }
 
-}  // namespace
-
 std::vector<std::string> out_of_range_lines(const std::vector<ExportFile>& files) {
     std::vector<std::string> lines;
     for (const ExportFile& f : files)
@@ -138,12 +134,13 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
     require_export_space(request, context.space, materialx_space);
     std::vector<detail::MaterialExport> materials;
     for (const MaterialFit& fit : fits) {
-        detail::MaterialExport m = material_export(fit, request);
+        detail::MaterialExport m = detail::material_export(fit, request);
         if (fit.material.layers && !fit.material.layers->empty() && needs_bare_metal_fits(request)) {
             if (!fit.bare_metal)
                 throw std::logic_error("export: layered " + fit.material.id +
                                        " has no bare-metal fit (attach_bare_metal_fits)");
-            m.bare_metal = std::make_shared<const detail::MaterialExport>(material_export(*fit.bare_metal, request));
+            m.bare_metal =
+                std::make_shared<const detail::MaterialExport>(detail::material_export(*fit.bare_metal, request));
         }
         materials.push_back(std::move(m));
     }
@@ -170,6 +167,15 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
                                             {"channel", kChannelNames[o.channel]},
                                             {"value", o.value}});
                 j["materials"][fit.material.id]["models"][std::string(model->id())]["export"]["out_of_range"] = list;
+            }
+        // What each requested format's consumer renders for each model, with that curve's error figures.
+        for (const detail::MaterialExport& m : materials)
+            for (const detail::ModelExport& e : m.models) {
+                nlohmann::ordered_json consumers = nlohmann::ordered_json::object();
+                for (const ConsumerCurve& c : detail::consumer_curves(m, e, request))
+                    consumers[to_string(c.format)] = consumer_curve_record(c);
+                j["materials"][m.fit->material.id]["models"][std::string(e.written.model->id())]["export"]
+                 ["consumers"] = consumers;
             }
         record->contents = j.dump(2) + "\n";
     }

@@ -10,6 +10,7 @@
 
 #include <pugixml.hpp>
 
+#include "libfit/export/consumer_curve.hpp"
 #include "libfit/export/export.hpp"
 #include "libfit/io/layer_stack.hpp"
 
@@ -115,6 +116,22 @@ std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials,
 std::vector<ExportFile> export_mtlx(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials, const ExportContext& context);
+
+// The written parameters of every requested model of one fit (and the stand-in's where a format needs it); the
+// fit holds models_to_fit(request). No bare-metal export is attached (export_files does that).
+MaterialExport material_export(const MaterialFit& fit, const ExportRequest& request);
+
+// What each format's consumer evaluates for one exported model (consumer_curve.hpp; the registry's `consumer_curve`):
+// the model itself (JSON, GLSL, HLSL, C++), MaterialX's node, OpenPBR's F82-tint metal, Schlick from glTF's
+// baseColorFactor. `material` is bare, or layered in a format that evaluates the stack's fitted curve.
+ConsumerCurve own_model_curve(const MaterialExport& material, const ModelExport& model, GamutPolicy gamut);
+ConsumerCurve materialx_curve(const MaterialExport& material, const ModelExport& model, GamutPolicy gamut);
+ConsumerCurve openpbr_curve(const MaterialExport& material, const ModelExport& model, GamutPolicy gamut);
+ConsumerCurve gltf_curve(const MaterialExport& material, const ModelExport& model, GamutPolicy gamut);
+// The curve of each format of `request` for one model of `material` (a layered material's formats that layer
+// themselves: not evaluated).
+std::vector<ConsumerCurve> consumer_curves(const MaterialExport& material, const ModelExport& model,
+                                           const ExportRequest& request);
 
 // glTF's baseColorFactor of a written model: its curve at normal incidence (F0 = F(mu = 1)), with a channel outside
 // [0, 1] clipped, or the colour scaled by 1 / max under --gamut scale (glTF holds [0, 1] only); `adjustment` says

@@ -9,20 +9,20 @@ namespace {
 
 constexpr std::array kFormatEntries{
     ExportFormatEntry{ExportFormat::json, &export_json, "metalfit_export.json", &merge_json_index, StandInNeed::never,
-                      false, false, false},
+                      false, false, false, &own_model_curve},
     ExportFormatEntry{ExportFormat::glsl, &export_glsl, "glsl/<stem>.glsl, glsl/metalfit_models.glsl",
-                      &merge_glsl_index, StandInNeed::never, false, false, false},
+                      &merge_glsl_index, StandInNeed::never, false, false, false, &own_model_curve},
     ExportFormatEntry{ExportFormat::hlsl, &export_hlsl, "hlsl/<stem>.hlsl, hlsl/metalfit_models.hlsl",
-                      &merge_hlsl_index, StandInNeed::never, false, false, false},
+                      &merge_hlsl_index, StandInNeed::never, false, false, false, &own_model_curve},
     ExportFormatEntry{ExportFormat::mtlx, &export_mtlx, "mtlx/<stem>.mtlx", nullptr, StandInNeed::no_materialx_form,
-                      true, false, true},
+                      true, false, true, &materialx_curve},
     ExportFormatEntry{ExportFormat::openpbr, &export_openpbr, "openpbr/<stem>.json, openpbr/<stem>.mtlx", nullptr,
-                      StandInNeed::not_f82_tint_curve, true, false, true},
+                      StandInNeed::not_f82_tint_curve, true, false, true, &openpbr_curve},
     ExportFormatEntry{ExportFormat::cpp, &export_cpp,
                       "cpp/<stem>.hpp, cpp/metalfit_models.hpp, cpp/<prefix>_materials.hpp", &merge_cpp_index,
-                      StandInNeed::never, false, false, false},
+                      StandInNeed::never, false, false, false, &own_model_curve},
     ExportFormatEntry{ExportFormat::gltf, &export_gltf, "gltf/<stem>.gltf", nullptr, StandInNeed::never, false, true,
-                      true},
+                      true, &gltf_curve},
 };
 
 // The entries and the names table list the formats in one order (the order of `--format all` and of the files).

@@ -37,6 +37,8 @@ struct ExportFormatEntry {
     // A layered material is written as the format's own coat / thin film over the bare metal's constants (OpenPBR,
     // MaterialX, glTF), so the bare metal is fitted too (attach_bare_metal_fits); otherwise the stack's curve is.
     bool layers_over_bare_metal;
+    // The curve its consumer evaluates for one exported model, with that curve's error figures (consumer_curve.hpp).
+    ConsumerCurve (*consumer_curve)(const MaterialExport& material, const ModelExport& model, GamutPolicy gamut);
 };
 
 // Every format, in kExportFormatNames's order.

@@ -23,6 +23,10 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+// What a glTF viewer draws for a metal, whatever the extras say: the core metallic BRDF's Fresnel.
+constexpr const char* kGltfViewerCurve =
+    "Schlick from baseColorFactor to 1 (glTF 2.0's metallic BRDF): what a glTF viewer draws";
+
 static_assert(std::endian::native == std::endian::little,
               "glTF buffers are little-endian; the sphere is written as memory");
 
@@ -173,7 +177,19 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
                 "dielectric F0 only and leaves the metal BRDF (Schlick from baseColor to 1) as "
                 "it is, so glTF metals have no F82 tint";
             provenance["roughness"] = context.request.roughness;
-            provenance["metrics"] = metrics_record(mt);
+            // The error figures of what a viewer draws (the core BRDF's Schlick from baseColorFactor), next to those
+            // of the curve the params describe; a layered material's viewer curve is under glTF's own layers, which
+            // metalfit does not evaluate.
+            if (layers) {
+                provenance["metrics"] = nullptr;
+                provenance["metrics_of"] = "not evaluated: the viewer layers glTF's clearcoat and iridescence over "
+                                           "baseColorFactor";
+            } else {
+                provenance["metrics"] =
+                    metrics_record(gltf_curve(bare, bare.models[i], context.request.gamut).rendered->metrics);
+                provenance["metrics_of"] = kGltfViewerCurve;
+            }
+            provenance["model_metrics"] = metrics_record(mt);
             Json extensions = Json::object();
             Json used = Json::array();
             if (layers) {
@@ -242,6 +258,17 @@ std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials
             files.push_back({"gltf/" + stem + ".gltf", j.dump(2) + "\n"});
         }
     return files;
+}
+
+ConsumerCurve gltf_curve(const MaterialExport& material, const ModelExport& model, GamutPolicy gamut) {
+    const GltfBaseColor base = gltf_base_color(model.written, gamut);
+    WrittenParameters w;
+    w.model = &find_model("schlick");
+    w.origin = "baseColorFactor, the F0 of " + std::string(model.written.model->id()) + "'s curve";
+    for (int c = 0; c < 3; ++c) w.params[c] = {base.factor[c]};
+    if (!base.adjustment.empty()) w.gamut.push_back(base.adjustment);
+    w.metrics = compute_metrics(*w.model, w.params, *material.fit->reference);
+    return {ExportFormat::gltf, kGltfViewerCurve, std::move(w), ""};
 }
 
 }  // namespace metalfit::detail

@@ -236,4 +236,24 @@ std::vector<ExportFile> export_mtlx(const std::vector<MaterialExport>& materials
     return files;
 }
 
+ConsumerCurve materialx_curve(const MaterialExport& material, const ModelExport& model, GamutPolicy) {
+    std::string note;
+    WrittenParameters w = materialx_parameters(material, model, note);
+    std::string curve;
+    switch (model.written.model->materialx_form()) {
+        case MaterialxForm::generalized_schlick:
+            curve = "generalized_schlick_bsdf (color0 = F0, color82 = tint, exponent 5)";
+            break;
+        case MaterialxForm::stand_in:
+            curve = "generalized_schlick_bsdf of the stand-in " + std::string(w.model->id()) + " (" +
+                    std::string(model.written.model->id()) + " has no MaterialX form)";
+            break;
+        case MaterialxForm::artistic_ior:
+            curve = "artistic_ior feeding conductor_bsdf (reflectivity clamped to 0.99 by MaterialX)";
+            break;
+        case MaterialxForm::conductor_bsdf: curve = "conductor_bsdf (ior = n, extinction = k)"; break;
+    }
+    return {ExportFormat::mtlx, curve, std::move(w), ""};
+}
+
 }  // namespace metalfit::detail

@@ -118,4 +118,14 @@ std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materi
     return files;
 }
 
+ConsumerCurve openpbr_curve(const MaterialExport& material, const ModelExport& model, GamutPolicy) {
+    std::optional<WrittenParameters> f82 = as_f82_tint(model.written, *material.fit->reference);
+    const bool own = f82.has_value();
+    if (!own) f82 = *model.stand_in;
+    return {ExportFormat::openpbr,
+            std::string("open_pbr_surface's F82-tint metal (base_color = F0, specular_color = tint)") +
+                (own ? "" : " of the stand-in " + std::string(f82->model->id())),
+            std::move(f82), ""};
+}
+
 }  // namespace metalfit::detail
