@@ -77,5 +77,7 @@ EOF
   "$glpreview" "$dir/ring.json" -o "$dir/ring" > /dev/null
   files+=("$dir/ring/metrics.json")
 fi
+# The measured cost table in the repository (data/model-costs.json, scripts/measure-model-costs.sh).
+files+=("$schemas/../data/model-costs.json")
 "$node" "$here/json_schemas.mjs" "$modules" "$schemas" "${files[@]}"
 "$node" "$here/json_schemas.mjs" "$modules" "$schemas" --broken "${files[@]}"

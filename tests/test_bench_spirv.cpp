@@ -4,10 +4,15 @@
 
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
 
 #include "libfit/fit/model_cost.hpp"
 #include "metalfit_bench/spirv_cost.hpp"
 #include "metalfit_bench/subprocess.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -45,6 +50,7 @@ TEST(SpirvCost, CountsAHandAssembledModuleByCategory) {
     EXPECT_EQ(c.texture, 1);
     EXPECT_EQ(c.other, 3);  // load, store, return
     EXPECT_EQ(c.compute(), 5);
+    EXPECT_EQ(c.weighted, 1 + 1 + 4 + 1 + 4);  // FMul, FAdd, Sqrt, FMax (scalar lanes), the sample
 }
 
 TEST(SpirvCost, RejectsMalformedModules) {
@@ -109,21 +115,40 @@ TEST_F(CompiledSpirv, EveryModelCompilesAndCostsMoreThanTheWrapper) {
     EXPECT_LT(counts["conductor-rgb"].compute(), counts["gulbrandsen"].compute());  // n, k from r, g first
 }
 
-// libfit's built-in cost table (fit/model_cost, what `metalfit fit --budget` ranks by without --costs) holds exactly
-// the counts the bench computes for every registered model, so that a model's GLSL cannot change without it.
-TEST_F(CompiledSpirv, BuiltInCostTableIsTheBenchCount) {
-    const metalfit::CostTable table = metalfit::builtin_cost_table();
-    std::string actual;
+// The weighted count (SpirvCounts::weighted): lanes × class weight, from the documented weights: a vec3 pow is 3 × 9,
+// a vec3 × float multiply 3, a dot product of two vec3 3, a float division 5, a vec3 square root 3 × 4.
+TEST_F(CompiledSpirv, TheWeightedCountCountsLanesAndWeighsClasses) {
+    const auto weighted = [&](const std::string& expression) {
+        const std::string source =
+            "#version 450\nlayout(location = 0) in float mu;\nlayout(location = 0) out vec4 color;\n"
+            "layout(std140, binding = 0) uniform P { vec3 p; vec3 q; };\n"
+            "void main() { color = vec4(" +
+            expression + ", 1.0); }\n";
+        return count_spirv(compile_fragment_shader(*validator_, source)).weighted;
+    };
+    EXPECT_EQ(weighted("p"), 0);
+    EXPECT_EQ(weighted("pow(p, q)"), 27);
+    EXPECT_EQ(weighted("p * mu"), 3);
+    EXPECT_EQ(weighted("vec3(dot(p, q))"), 3);
+    EXPECT_EQ(weighted("vec3(p.x / mu)"), 5);
+    EXPECT_EQ(weighted("sqrt(p)"), 12);
+}
+
+// data/model-costs.json (libfit's built-in cost table) holds the counts the bench computes for every registered
+// model, plain and weighted, so that a model's GLSL cannot change without the table being measured again.
+TEST_F(CompiledSpirv, TheMeasuredCostTableHasTheBenchCounts) {
+    std::ifstream in(std::filesystem::path(metalfit::test::kDataDir) / "model-costs.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    std::map<std::string, std::pair<int, double>> file;
+    for (const auto& m : j["models"]) file[m["model"]] = {m["spirv_ops"].get<int>(), m["spirv_weighted"].get<double>()};
     for (const SpirvRow& r : spirv_costs(*validator_)) {
         ASSERT_TRUE(r.counts) << r.id << ": " << r.error;
         if (r.id == "wrapper" || r.id == "reference-lut") continue;
-        actual += "{\"" + r.id + "\", " + std::to_string(r.counts->compute()) + "}, ";
-        const auto cost = table.cost_of(r.id);
-        ASSERT_TRUE(cost) << r.id << " is missing from builtin_cost_table()";
-        EXPECT_EQ(*cost, r.counts->compute()) << r.id;
+        ASSERT_TRUE(file.count(r.id)) << r.id << " is missing from data/model-costs.json";
+        EXPECT_EQ(file[r.id].first, r.counts->compute()) << r.id << ": run scripts/measure-model-costs.sh";
+        EXPECT_EQ(file[r.id].second, r.counts->weighted) << r.id << ": run scripts/measure-model-costs.sh";
     }
-    EXPECT_EQ(table.costs.size(), metalfit::all_models().size()) << "bench counts: " << actual;
-    if (HasFailure()) std::printf("bench counts: %s\n", actual.c_str());
+    EXPECT_EQ(file.size(), metalfit::all_models().size());
 }
 
 }  // namespace

@@ -130,6 +130,9 @@ TEST(PreviewCli, WritesTheRequestedFilesAndMetrics) {
     EXPECT_EQ(read_file(dir.path() / "again" / "metrics.json"), read_file(dir.path() / "out" / "metrics.json"));
     EXPECT_GE(timings["frame_ms"].size(), 5u);
     EXPECT_GT(timings["ms_per_frame"].get<double>(), 0.0);
+    // The frame clock follows the renderer: CPU time of the process on llvmpipe (issue 29), wall on a hardware GPU.
+    const bool software = timings["renderer"].get<std::string>().find("llvmpipe") != std::string::npos;
+    EXPECT_EQ(timings["clock"], software ? "process-cpu" : "wall") << timings["renderer"];
     for (const auto& s : metrics["spheres"]) {
         EXPECT_GT(s["pixels"].get<int>(), 100);
         EXPECT_GE(s["rmse"].get<double>(), s["mean_abs"].get<double>());  // RMS ≥ mean of |·|

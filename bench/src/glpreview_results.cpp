@@ -92,11 +92,20 @@ ShaderBench parse_shader_bench(const json& j) {
     size_field(j, b.width, b.height);
     b.frames = int_field(j, "", "frames");
     if (j.contains("evaluations_per_pixel")) b.evaluations_per_pixel = int_field(j, "", "evaluations_per_pixel");
+    if (j.contains("clock")) b.clock = string_field(j, "", "clock");
     const json& models = array_field(j, "", "models");
     for (std::size_t i = 0; i < models.size(); ++i) {
         const std::string path = "models[" + std::to_string(i) + "]";
-        b.models.push_back({string_field(models[i], path, "model"), number_field(models[i], path, "ms_per_frame"),
-                            number_field(models[i], path, "ratio_to_conductor_rgb")});
+        ShaderTiming t{string_field(models[i], path, "model"), number_field(models[i], path, "ms_per_frame"),
+                       number_field(models[i], path, "ratio_to_conductor_rgb"), std::nullopt, std::nullopt};
+        if (models[i].contains("ratio_noise")) t.ratio_noise = number_field(models[i], path, "ratio_noise");
+        if (models[i].contains("ratio_quartiles")) {
+            const json& q = models[i]["ratio_quartiles"];
+            if (!q.is_array() || q.size() != 2 || !q[0].is_number() || !q[1].is_number())
+                throw std::runtime_error(path + ".ratio_quartiles: expected [first, third]");
+            t.ratio_quartiles = std::array<double, 2>{q[0].get<double>(), q[1].get<double>()};
+        }
+        b.models.push_back(std::move(t));
     }
     return b;
 }
@@ -141,15 +150,20 @@ LocalizationBench parse_localization_bench(const json& j) {
 
 json to_json(const ShaderBench& b) {
     json models = json::array();
-    for (const ShaderTiming& t : b.models)
-        models.push_back({{"model", t.model},
-                          {"ms_per_frame", t.ms_per_frame},
-                          {"ratio_to_conductor_rgb", t.ratio_to_conductor_rgb}});
-    return {{"renderer", b.renderer},
-            {"size", {b.width, b.height}},
-            {"frames", b.frames},
-            {"evaluations_per_pixel", b.evaluations_per_pixel},
-            {"models", models}};
+    for (const ShaderTiming& t : b.models) {
+        json m = {
+            {"model", t.model}, {"ms_per_frame", t.ms_per_frame}, {"ratio_to_conductor_rgb", t.ratio_to_conductor_rgb}};
+        if (t.ratio_noise) m["ratio_noise"] = *t.ratio_noise;
+        if (t.ratio_quartiles) m["ratio_quartiles"] = *t.ratio_quartiles;
+        models.push_back(std::move(m));
+    }
+    json j = {{"renderer", b.renderer},
+              {"size", {b.width, b.height}},
+              {"frames", b.frames},
+              {"evaluations_per_pixel", b.evaluations_per_pixel},
+              {"models", models}};
+    if (!b.clock.empty()) j["clock"] = b.clock;
+    return j;
 }
 
 json to_json(const LocalizationBench& b) {

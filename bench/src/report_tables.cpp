@@ -42,9 +42,9 @@ std::string front_text(const CostRow::Front& f) {
 std::string run_line(const BenchReport& r) {
     return std::string(r.quick ? "quick run" : "full run") + ": evaluation of " + r.material +
            "'s fitted parameters, " + std::to_string(r.timing.rounds) + " interleaved rounds of " +
-           fixed(1e3 * r.timing.seconds_per_sample, 0) + " ms per kernel; accuracy over " +
-           std::to_string(r.catalog_materials) + " catalog materials (worst channel rel_rms, 128 nodes); wall " +
-           fixed(r.seconds, 1) + " s";
+           fixed(1e3 * r.timing.seconds_per_sample, 0) + " ms per kernel (" + clock_name(r.timing.clock) +
+           " clock); accuracy over " + std::to_string(r.catalog_materials) +
+           " catalog materials (worst channel rel_rms, 128 nodes); wall " + fixed(r.seconds, 1) + " s";
 }
 
 std::vector<std::string> skipped_lines(const BenchReport& r) {

@@ -17,6 +17,14 @@ constexpr std::uint32_t kMagic = 0x07230203;
 
 enum Op : std::uint32_t {
     OpNop = 0,
+    OpTypeBool = 20,
+    OpTypeInt = 21,
+    OpTypeFloat = 22,
+    OpTypeVector = 23,
+    OpFDiv = 136,
+    OpFRem = 140,
+    OpFMod = 141,
+    OpDot = 148,
     OpLine = 8,
     OpExtInstImport = 11,
     OpExtInst = 12,
@@ -53,6 +61,29 @@ bool is_transcendental_glsl450(std::uint32_t instruction) {
            instruction == 72;
 }
 
+// The weight of one lane of an instruction (SpirvCounts::weighted, docs/fitting.md "Costs"): a GPU's special-function
+// unit runs at a quarter of the FMA rate (NVIDIA: 4 special-function lanes per 16 FP32 lanes; AMD RDNA: quarter
+// rate), so an instruction on it weighs 4; a division is a reciprocal there and a multiply (5), exp and log a base-2 one and a
+// multiply (5), pow a log2, a multiply and an exp2 (9), the inverse trigonometry about two (8).
+double glsl450_weight(std::uint32_t instruction) {
+    switch (instruction) {
+        case 26: return 9;  // Pow
+        case 27:            // Exp
+        case 28: return 5;  // Log
+        case 29:            // Exp2
+        case 30:            // Log2
+        case 31:            // Sqrt
+        case 32:            // InverseSqrt
+        case 13:            // Sin
+        case 14: return 4;  // Cos
+        case 66:            // Length
+        case 67:            // Distance
+        case 69:            // Normalize
+        case 72: return 4;  // Refract: a root (the dot product is counted by its lanes below)
+        default: return is_transcendental_glsl450(instruction) ? 8 : 1;
+    }
+}
+
 std::string literal_string(std::span<const std::uint32_t> words) {
     std::string s;
     for (std::uint32_t w : words)
@@ -81,6 +112,8 @@ std::string uniform_block(std::size_t count) {
 SpirvCounts count_spirv(std::span<const std::uint32_t> words) {
     if (words.size() < 5 || words[0] != kMagic) throw std::runtime_error("not a SPIR-V module (bad header)");
     std::map<std::uint32_t, std::string> ext_sets;
+    std::map<std::uint32_t, int> type_lanes;   // scalar and vector type id -> components
+    std::map<std::uint32_t, int> value_lanes;  // result id -> components of its type
     SpirvCounts counts;
     bool in_function = false;
     for (std::size_t i = 5; i < words.size();) {
@@ -90,6 +123,21 @@ SpirvCounts count_spirv(std::span<const std::uint32_t> words) {
         const std::span<const std::uint32_t> inst = words.subspan(i, length);
         i += length;
         if (op == OpExtInstImport && length >= 3) ext_sets[inst[1]] = literal_string(inst.subspan(2));
+        if ((op == OpTypeBool || op == OpTypeInt || op == OpTypeFloat) && length >= 2) type_lanes[inst[1]] = 1;
+        if (op == OpTypeVector && length >= 4) type_lanes[inst[1]] = static_cast<int>(inst[3]);
+        // Lanes of the result (1 for untyped or non-arithmetic types); a dot product works on its operands' lanes.
+        int lanes = 1;
+        if (length >= 3) {
+            const auto t = type_lanes.find(inst[1]);
+            if (t != type_lanes.end()) {
+                lanes = t->second;
+                value_lanes[inst[2]] = lanes;
+            }
+        }
+        if (op == OpDot && length >= 4) {
+            const auto v = value_lanes.find(inst[3]);
+            lanes = v != value_lanes.end() ? v->second : 1;
+        }
         if (op == OpFunction) in_function = true;
         if (op == OpFunctionEnd) in_function = false;
         if (!in_function || is_structural(op)) continue;
@@ -102,10 +150,19 @@ SpirvCounts count_spirv(std::span<const std::uint32_t> words) {
                 ++counts.transcendental;
             else
                 ++counts.arithmetic;
+            if (set != ext_sets.end() && set->second == "GLSL.std.450") {
+                const auto operand = length >= 6 ? value_lanes.find(inst[5]) : value_lanes.end();
+                const int operand_lanes = operand != value_lanes.end() ? operand->second : lanes;
+                // Length, Distance, Normalize, Refract: a dot product over the operand's lanes, then the root.
+                const bool reduces = inst[4] == 66 || inst[4] == 67 || inst[4] == 69 || inst[4] == 72;
+                counts.weighted += reduces ? operand_lanes + glsl450_weight(inst[4]) : lanes * glsl450_weight(inst[4]);
+            }
         } else if (is_arithmetic(op)) {
             ++counts.arithmetic;
+            counts.weighted += lanes * (op == OpFDiv || op == OpFRem || op == OpFMod ? 5 : 1);
         } else if (is_texture(op)) {
             ++counts.texture;
+            counts.weighted += 4;
         } else {
             ++counts.other;
         }

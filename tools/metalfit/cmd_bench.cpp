@@ -8,8 +8,10 @@
 
 #include "commands.hpp"
 #include "libfit/base/atomic_file.hpp"
+#include "libfit/base/errors.hpp"
 #include "metalfit_bench/bench_report.hpp"
 #include "metalfit_bench/environment.hpp"
+#include "metalfit_bench/model_costs.hpp"
 #include "metalfit_bench/scaling.hpp"
 #include "metalfit_bench/subprocess.hpp"
 
@@ -24,6 +26,8 @@ struct BenchCommandOptions {
     std::string material = "Au";
     std::optional<std::filesystem::path> glpreview;
     // --scaling: the scaling table instead of the report.
+    // --model-costs: the measured cost table instead of the report.
+    bool model_costs = false;
     bool scaling = false;
     std::vector<std::size_t> scaling_sizes;
     std::vector<int> scaling_threads;
@@ -70,8 +74,31 @@ std::string read_if_exists(const std::filesystem::path& file) {
     return text.str();
 }
 
+void run_model_costs_command(const BenchCommandOptions& o, const GlobalOptions& global) {
+    bench::ModelCostsOptions options;
+    options.material = o.material;
+    options.data_dir = global.data_dir;
+    options.ocio_config = global.ocio_config;
+    options.glpreview = o.glpreview ? *o.glpreview : bench::executable_dir() / "glpreview";
+    options.glslang = bench::find_on_path("glslangValidator");
+    if (o.quick) options.cpu_rounds = 9;
+    options.command_line = "metalfit bench --model-costs" + std::string(o.quick ? " --quick" : "") +
+                           (o.json ? " --json" : "") + (o.material != "Au" ? " --material " + o.material : "");
+    if (isatty(STDERR_FILENO))
+        options.progress = [](const std::string& line) { std::cerr << "metalfit bench: " << line << "\n"; };
+    bench::ModelCosts costs;
+    try {
+        costs = bench::measure_model_costs(options);
+    } catch (const std::runtime_error& e) {
+        throw UsageError(std::string("bench --model-costs: ") + e.what());
+    }
+    if (o.json) std::cerr << bench::to_text(costs);
+    emit(o.json ? bench::to_json(costs).dump(2) + "\n" : bench::to_text(costs), o.output);
+}
+
 void run_bench_command(const BenchCommandOptions& o, const GlobalOptions& global) {
     if (o.scaling || o.scaling_cell) return run_scaling_command(o, global);
+    if (o.model_costs) return run_model_costs_command(o, global);
     bench::BenchOptions options;
     options.quick = o.quick;
     options.material = o.material;
@@ -103,6 +130,9 @@ std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions& glob
     app.add_option("--glpreview", o->glpreview,
                    "The glpreview executable for the GPU sections (default: next to metalfit)");
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout (- for stdout)");
+    app.add_flag("--model-costs", o->model_costs,
+                 "Only the measured cost table (data/model-costs.json): each model on llvmpipe and in the CPU "
+                 "array loop as ratios to conductor-rgb, SPIR-V counts, rank correlations");
     app.add_flag(
         "--scaling", o->scaling,
         "Only the scaling table: fit on 1, 29, 300, 3000 synthetic materials (catalog tables, n and k perturbed) on "

@@ -113,9 +113,9 @@ std::function<void()> add_export_command(CLI::App& app, const GlobalOptions& glo
         ->required();
     app.add_option("--budget-metric", o->budget_metric,
                    "Metric of --model best:BUDGET: rel_rms, max_rel, f0_err or de2000_max");
-    app.add_option(
-        "--costs", o->costs,
-        "Cost table for --model best:BUDGET: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");
+    app.add_option("--costs", o->costs,
+                   "Cost table for --model best:BUDGET: a `metalfit bench --json` report (default: built-in llvmpipe "
+                   "ratios)");
     // --params and --gamut are checked by libfit's parsers: one line naming the value, like every other error.
     app.add_option("--params", o->params, "Parameters written: fit (Ceres) or closed (best closed form)");
     app.add_option("--format", o->formats, "Formats, comma-separated, or all: " + export_format_list())->required();

@@ -273,10 +273,9 @@ std::function<void()> add_fit_command(CLI::App& app, const GlobalOptions& global
         "Per material, the cheapest model whose fit meets this error in every channel (0.5% or 0.005; a Delta E for de2000_max)");
     app.add_option("--budget-metric", o->budget_metric,
                    "Metric of --budget: rel_rms, max_rel, f0_err or de2000_max (default: rel_rms)");
-    app.add_option(
-        "--costs", o->costs,
-        "Cost table for --budget and --recommend: a `metalfit bench --json` report (default: built-in SPIR-V "
-        "op counts)");
+    app.add_option("--costs", o->costs,
+                   "Cost table for --budget and --recommend: a `metalfit bench --json` report (default: built-in "
+                   "llvmpipe ratios, data/model-costs.json)");
     add_recommend_options(app, o->recommend);
     return [o, &global] { run_fit(*o, global); };
 }

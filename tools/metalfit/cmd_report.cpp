@@ -147,7 +147,7 @@ std::function<void()> add_report_command(CLI::App& app, const GlobalOptions& glo
                    "Mark per material the cheapest model whose fit meets this error in every channel (0.5% or 0.005)");
     app.add_option("--budget-metric", o->budget_metric, "Metric of --budget: rel_rms, max_rel, f0_err or de2000_max");
     app.add_option("--costs", o->costs,
-                   "Cost table: a `metalfit bench --json` report (default: the built-in SPIR-V op counts)");
+                   "Cost table: a `metalfit bench --json` report (default: the built-in llvmpipe ratios)");
     add_recommend_options(app, o->recommend, false);
     app.add_option("-o,--output", o->output, "Report folder (written as a whole; replaced if it exists)")->required();
     return [o, &global] { run_report(*o, global); };

@@ -116,7 +116,7 @@ std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& glob
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
     add_recommend_options(app, o->recommend);
     app.add_option("--costs", o->costs,
-                   "Cost table of --recommend: a `metalfit bench --json` report (default: built-in SPIR-V op counts)");
+                   "Cost table of --recommend: a `metalfit bench --json` report (default: built-in llvmpipe ratios)");
     return [o, &global] {
         const Catalog catalog = Catalog::load(global.data_dir);
         const ColourSetup setup = resolve_colour_options(o->colour, global);

@@ -4,6 +4,7 @@
 // Parsing is strict: a missing key or a wrong type is an error naming the field.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -17,6 +18,8 @@ struct ShaderTiming {
     std::string model;  // a model id or "reference-lut"
     double ms_per_frame = 0;
     double ratio_to_conductor_rgb = 0;
+    std::optional<double> ratio_noise;                     // half the interquartile range of the per-round ratios
+    std::optional<std::array<double, 2>> ratio_quartiles;  // their first and third quartiles
 };
 
 struct ShaderBench {
@@ -24,6 +27,7 @@ struct ShaderBench {
     int width = 0, height = 0;
     int frames = 0;
     int evaluations_per_pixel = 1;  // model evaluations per pixel of the pass (optional in the JSON)
+    std::string clock;              // the clock of the frame timer ("process-cpu", "wall"; optional in the JSON)
     std::vector<ShaderTiming> models;
     const ShaderTiming* find(std::string_view model) const;
 };

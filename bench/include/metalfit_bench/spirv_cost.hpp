@@ -4,7 +4,8 @@
 //
 // Categories (docs/accuracy-vs-cost.md): only instructions inside function bodies count, and not the structural ones
 // (OpFunction, OpFunctionParameter, OpFunctionEnd, OpLabel, OpVariable, OpLine, OpNoLine, OpNop, OpSelectionMerge,
-// OpLoopMerge). One instruction is one count whatever its vector width (a vec3 multiply is 1).
+// OpLoopMerge). One instruction is one count whatever its vector width (a vec3 multiply is 1); the weighted count
+// (SpirvCounts::weighted) counts lanes and weighs the classes.
 // - arithmetic: OpSNegate … OpSMulExtended (126–152: add, sub, mul, div, mod, negate, vector × scalar, dot), the bit
 //   operations (194–205), and every GLSL.std.450 extended instruction that is not transcendental (min, max, clamp,
 //   mix, fma, abs, floor, step, …);
@@ -31,6 +32,10 @@ struct SpirvCounts {
     int transcendental = 0;
     int texture = 0;
     int other = 0;
+    // Arithmetic, transcendental and texture instructions weighted by class and counted per vector lane (the
+    // weights: spirv_cost.cpp, glsl450_weight; docs/fitting.md "Costs"): 1 per lane of an add, multiply, min, mix…,
+    // 5 of a division, 4 of a square root, exp2, log2, sin, cos, 5 of exp and log, 9 of pow, 4 of a texture read.
+    double weighted = 0;
     int compute() const { return arithmetic + transcendental + texture; }  // the table's "SPIR-V ops"
     int total() const { return compute() + other; }
     bool operator==(const SpirvCounts&) const = default;

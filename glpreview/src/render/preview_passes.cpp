@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "frame_timing.hpp"
 #include "glpreview/effects/registry.hpp"
 #include "glpreview/io/image_text.hpp"
 #include "glpreview/render/environment.hpp"
@@ -80,6 +81,7 @@ Json timings_json(const PreviewRun& run, const FrameTimes& frame_ms) {
     j["scene"] = run.scene.file.filename().string();
     j["renderer"] = run.renderer_name;
     j["size"] = {run.scene.width, run.scene.height};
+    j["clock"] = clock_name(clock_for_renderer(run.renderer_name));
     j["ms_per_frame"] = frame_ms.empty() ? 0.0 : median(frame_ms);
     j["frame_ms"] = frame_ms;
     return j;

@@ -67,6 +67,7 @@ using CostPrograms = std::vector<CostProgram>;
 struct ShaderRounds {
     std::vector<std::string> names;
     RoundTimes ms;
+    TimingClock clock = TimingClock::wall;
 };
 
 // One model's program (model null: the reference LUT's), assembled like the spheres' Fresnel (ShaderBuilder).
@@ -101,11 +102,19 @@ Json shader_record(const GpuBenchRun& run, int rounds, const ShaderRounds& timed
     j["size"] = {kShaderBenchSize, kShaderBenchSize};
     j["frames"] = rounds;
     j["evaluations_per_pixel"] = kShaderBenchEvaluationsPerPixel;
+    j["clock"] = clock_name(timed.clock);
     j["models"] = Json::array();
-    for (std::size_t i = 0; i < timed.names.size(); ++i)
+    for (std::size_t i = 0; i < timed.names.size(); ++i) {
+        std::vector<double> per_round;
+        for (std::size_t k = 0; k < timed.ms[i].size() && k < timed.ms[exact].size(); ++k)
+            per_round.push_back(timed.ms[i][k] / timed.ms[exact][k]);
+        const Ratio ratio = paired_ratio(timed.ms[i], timed.ms[exact]);
         j["models"].push_back({{"model", timed.names[i]},
                                {"ms_per_frame", median(timed.ms[i])},
-                               {"ratio_to_conductor_rgb", paired_ratio(timed.ms[i], timed.ms[exact]).median}});
+                               {"ratio_to_conductor_rgb", ratio.median},
+                               {"ratio_noise", ratio.noise},
+                               {"ratio_quartiles", {quantile(per_round, 0.25), quantile(per_round, 0.75)}}});
+    }
     return j;
 }
 
@@ -167,6 +176,7 @@ Handle<Json> add_shader_cost_passes(PassGraph& graph, GpuBenchRun& run) {
                             glDrawArrays(GL_TRIANGLES, 0, 3);
                         });
                     }
+                    timed.clock = frame_clock();
                     timed.ms = interleaved_rounds(variants, rounds);
                     check_gl("shader benchmark");
                     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -7,26 +7,42 @@
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/record_path.hpp"
+#include "model_costs_table.hpp"
 
 namespace metalfit {
 
 namespace {
 
-// SPIR-V arithmetic + transcendental instructions per model (metalfit bench's "SPIR-V ops": glslangValidator -V -Os on
-// the bench's fragment shader around Model::glsl_source()). Regenerate with `build/bin/metalfit bench --quick --json`
-// (rows[].spirv_ops); test_bench_spirv.cpp (BuiltInCostTableIsTheBenchCount) recounts them.
-const ModelCost kSpirvOps[] = {
-    {"schlick", 7},
-    {"lazanyi", 13},
-    {"lazanyi-comp", 18},
-    {"f82-tint", 19},
-    {"conductor-rgb", 35},
-    {"gulbrandsen", 51},
-    {"schlick-comp-linear", 12},
-    {"schlick-comp", 11},
-    {"schlick-comp-general", 8},
-    {"rational", 9},
-};
+// The cost column of a `metalfit bench --model-costs --json` document (schema metalfit.model-costs/1): its `cost`
+// names the column ("llvmpipe" or "cpu_array"), each model row's `<column>.ratio` is the model's cost.
+CostTable from_model_costs(const nlohmann::json& j, const std::filesystem::path& file, const std::string& name) {
+    const auto where = [&](const std::string& field) { return InputLocation{file, 0, field}; };
+    const auto cost = j.find("cost");
+    if (cost == j.end() || !cost->is_string() || (*cost != "llvmpipe" && *cost != "cpu_array"))
+        throw InputError(where("cost"), "expected \"llvmpipe\" or \"cpu_array\"");
+    const std::string column = cost->get<std::string>();
+    const auto models = j.find("models");
+    if (models == j.end() || !models->is_array() || models->empty())
+        throw InputError(where("models"), "expected a non-empty list");
+    CostTable table;
+    table.source =
+        name + (column == "llvmpipe"
+                    ? ": measured shader cost on llvmpipe, ratio to conductor-rgb (metalfit bench --model-costs)"
+                    : ": measured CPU array-loop cost, ratio to conductor-rgb (metalfit bench --model-costs)");
+    table.unit = column == "llvmpipe" ? "x conductor-rgb (llvmpipe)" : "x conductor-rgb (CPU array)";
+    for (std::size_t i = 0; i < models->size(); ++i) {
+        const auto& m = (*models)[i];
+        const std::string at = "models[" + std::to_string(i) + "]";
+        if (!m.is_object() || !m.contains("model") || !m["model"].is_string())
+            throw InputError(where(at + ".model"), "expected a model id");
+        const auto c = m.find(column);
+        if (c == m.end() || !c->is_object() || !c->contains("ratio") || !(*c)["ratio"].is_number() ||
+            !((*c)["ratio"].get<double>() > 0))
+            throw InputError(where(at + "." + column + ".ratio"), "expected a positive number");
+        table.costs.push_back({m["model"].get<std::string>(), (*c)["ratio"].get<double>()});
+    }
+    return table;
+}
 
 }  // namespace
 
@@ -37,9 +53,10 @@ std::optional<double> CostTable::cost_of(std::string_view model) const {
 }
 
 CostTable builtin_cost_table() {
-    CostTable table{
-        "built-in: SPIR-V ops per model (glslangValidator -V -Os, as metalfit bench counts them)", "SPIR-V ops", {}};
-    for (const ModelCost& c : kSpirvOps) table.costs.push_back(c);
+    static const CostTable table = [] {
+        const nlohmann::json j = nlohmann::json::parse(detail::kModelCostsTable);
+        return from_model_costs(j, "data/model-costs.json", "built-in (data/model-costs.json)");
+    }();
     return table;
 }
 
@@ -52,9 +69,11 @@ CostTable cost_table_from_bench_json(const std::filesystem::path& file, const st
     } catch (const nlohmann::json::parse_error& e) {
         throw InputError({file}, std::string("invalid JSON: ") + e.what());
     }
+    if (j.is_object() && j.contains("schema") && j["schema"] == "metalfit.model-costs/1")
+        return from_model_costs(j, file, record_path(file, data_dir));
     if (!j.is_object() || !j.contains("schema") || j["schema"] != "metalfit.bench/1")
-        throw InputError({file, 0, "schema"},
-                         "not a metalfit bench report (expected \"metalfit.bench/1\" from `metalfit bench --json`)");
+        throw InputError({file, 0, "schema"}, "not a metalfit bench report (expected \"metalfit.bench/1\" from "
+                                              "`metalfit bench --json` or \"metalfit.model-costs/1\")");
     const auto rows = j.find("rows");
     if (rows == j.end() || !rows->is_array()) throw InputError({file, 0, "rows"}, "expected a list");
     struct Row {

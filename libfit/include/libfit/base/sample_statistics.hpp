@@ -16,4 +16,9 @@ struct Ratio {
 // a[r] / b[r] over the rounds both have.
 Ratio paired_ratio(const std::vector<double>& a, const std::vector<double>& b);
 
+// Spearman's rank correlation of two series of the same length (the Pearson correlation of their ranks, tied values
+// sharing the mean of their ranks): 1 when b orders the items as a does, −1 when reversed. NaN for fewer than two
+// items, different lengths or a constant series.
+double spearman(const std::vector<double>& a, const std::vector<double>& b);
+
 }  // namespace metalfit

@@ -6,6 +6,8 @@
 
   const CHANNELS = ['red', 'green', 'blue'];
   const pct = (v, digits = 3) => (v == null || Number.isNaN(v) ? '—' : (100 * v).toFixed(digits) + ' %');
+  // A cost as the table gives it, to 3 significant digits (measured ratios carry more digits than their noise).
+  const costText = (v) => (v == null ? '—' : String(Number(Number(v).toPrecision(3))));
   const num = (v, digits = 4) => (v == null || Number.isNaN(v) ? '—' : Number(v).toFixed(digits));
   const rgbText = (v, f = num) => (v == null ? '—' : v.map((x) => f(x)).join(' / '));
 
@@ -185,7 +187,7 @@
     const table = sortableTable('catalog-table', headers, rows);
     table.append(el('tfoot', {}, ...summaryRows));
     const tableSection = section('Worst-channel rel_rms of every fit (click a column to sort)', table,
-      el('p', { class: 'note', text: 'cost per model: ' + models.map((m) => `${m.id} ${m.cost == null ? '—' : m.cost}`).join(', ') }));
+      el('p', { class: 'note', text: 'cost per model: ' + models.map((m) => `${m.id} ${costText(m.cost)}`).join(', ') }));
     main.append(tableSection);
 
     if (charts.pareto) {
@@ -247,7 +249,7 @@
           cell(rgbText(x.max_abs, pct), Math.max(...x.max_abs)),
           cell(num(x.de2000_mean, 3), x.de2000_mean), cell(num(x.de2000_max, 3), x.de2000_max),
           cell(rgbText(x.albedo_err, pct), Math.max(...x.albedo_err.map(Math.abs))),
-          cell(m.cost == null ? '—' : String(m.cost), m.cost),
+          cell(costText(m.cost), m.cost),
           cell(which === 'fit' && chosen === m.id ? 'recommended' : '')));
       }
       if (!r.closed.form) rows.push(el('tr', { class: 'closed' }, cell(m.id, m.id), cell('closed'), cell('undefined: ' + r.closed.undefined),
