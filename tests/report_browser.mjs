@@ -1,7 +1,8 @@
 // The report in a real browser (docs/report.md): Debian's chromium, headless, driven by playwright-core, opens the
 // pages of a report folder from file:// with a new empty profile and no network. Every page must load with no
 // console error, no page error and no request other than file://; every chart container must hold an SVG with marks;
-// the heat map must have one cell per material × model; the render (or the "renders skipped" line) must be there.
+// the heat map must have one cell per material × model; the render (or the "renders skipped" line) must be there;
+// the interactive sphere (viewer.js) is driven and its canvas read back at known μ (checkViewer).
 // A screenshot of each page type goes into the output folder.
 //
 // Usage: node tests/report_browser.mjs REPORT_DIR SCREENSHOT_DIR [CHROMIUM]
