@@ -53,14 +53,15 @@ protected:
         data_ = fs::weakly_canonical(kData).string();
     }
 
-    // No string of `record` is an absolute path or holds the database's, the working folder's or the other folder's
+    // No string of `record` is an absolute path (but shader text) or holds the database's, the working folder's or the other folder's
     // absolute path; returns the strings for further checks.
     std::vector<std::pair<std::string, std::string>> expect_portable(const nlohmann::json& record,
                                                                      const std::string& what) const {
         std::vector<std::pair<std::string, std::string>> strings;
         strings_of(record, "", strings);
         for (const auto& [at, s] : strings) {
-            EXPECT_FALSE(s.starts_with("/")) << what << " " << at << ": " << s;
+            // The report's model GLSL (models/<i>/glsl/source) opens with a // comment, not a path.
+            EXPECT_FALSE(s.starts_with("/") && !at.ends_with("/glsl/source")) << what << " " << at << ": " << s;
             for (const std::string& absolute :
                  {data_, std::string(metalfit::test::kDataDir), temp_.path().string(), fs::current_path().string()})
                 EXPECT_EQ(s.find(absolute), std::string::npos) << what << " " << at << ": " << s;

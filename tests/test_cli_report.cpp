@@ -116,6 +116,37 @@ TEST_F(Report, CurvesAgreeWithIndependentForms) {
     EXPECT_EQ(sources[0]["F0"], show["F0"]);
 }
 
+// The viewer's inputs: the LUT (R_c at μ = i/255) ends at show's F0 and at 1 (grazing) and, interpolated linearly in
+// μ, matches the curve sampled in θ; each model's GLSL is the text the GLSL export writes for it.
+TEST_F(Report, ViewerLutAndShadersAreTheReferenceAndTheGlslExport) {
+    const fs::path dir = tmp_.path() / "r";
+    ASSERT_EQ(run("report Cu --model schlick,f82-tint,rational --renders off -o '" + dir.string() + "'").exit_code, 0);
+    const Json report = report_json(dir);
+    const Json& m = report["materials"][0];
+    const Json show = Json::parse(run("show Cu --json").out);
+    ASSERT_EQ(m["lut"].size(), 3u);
+    for (int ch = 0; ch < 3; ++ch) {
+        const Json& row = m["lut"][ch];
+        ASSERT_EQ(row.size(), 256u);
+        EXPECT_NEAR(row[255].get<double>(), show["F0"][ch].get<double>(), 1e-5);
+        EXPECT_NEAR(row[0].get<double>(), 1.0, 1e-5);
+        for (int theta = 0; theta <= 80; ++theta) {
+            const double x = std::cos(theta * std::numbers::pi / 180) * 255;
+            const int i = std::min(static_cast<int>(x), 254);
+            const double lerp = row[i].get<double>() + (x - i) * (row[i + 1].get<double>() - row[i].get<double>());
+            EXPECT_NEAR(lerp, m["curves"]["exact"][ch][theta].get<double>(), 1e-4) << theta;
+        }
+    }
+    ASSERT_EQ(report["models"].size(), 3u);
+    for (const Json& model : report["models"]) {
+        const std::string id = model["id"], function = model["glsl"]["function"], source = model["glsl"]["source"];
+        EXPECT_NE(source.find("vec3 " + function + "("), std::string::npos) << id;
+        const fs::path out = tmp_.path() / ("glsl-" + id);
+        ASSERT_EQ(run("export Cu --model " + id + " --format glsl -o '" + out.string() + "'").exit_code, 0) << id;
+        EXPECT_NE(read_file(out / "glsl" / "metalfit_models.glsl").find(source), std::string::npos) << id;
+    }
+}
+
 // --sources primary: the material's fit without the other measurements of the catalog; the fits are the same.
 TEST_F(Report, SourcesPrimaryLeavesOutTheOtherMeasurements) {
     const fs::path all = tmp_.path() / "all", primary = tmp_.path() / "primary";

@@ -6,6 +6,19 @@
 #include "report_assets.hpp"
 
 namespace metalfit {
+namespace {
+
+// three.js's ES modules as JSON strings in a classic script, which viewer.js imports through blob: URLs: Chromium
+// refuses a module script loaded from file:// (its origin is opaque), not one from a blob: URL of the page.
+std::string three_script() {
+    nlohmann::ordered_json modules = nlohmann::ordered_json::object();
+    for (const auto& [name, text] : report_detail::kThreeModules) modules[std::string(name)] = std::string(text);
+    return "// three.js (MIT licence: LICENSE.three.txt), its ES modules as text for viewer.js (docs/report.md)\n"
+           "metalfitThree(" +
+           modules.dump() + ");\n";
+}
+
+}  // namespace
 
 std::vector<ReportFile> report_files(const std::vector<MaterialFit>& fits, const ReportInputs& inputs) {
     if (!report_detail::kHasChartLibraries)
@@ -29,6 +42,7 @@ std::vector<ReportFile> report_files(const std::vector<MaterialFit>& fits, const
     files.push_back({"assets/report-data.js", "metalfitReport(" + record + ");\n"});
     for (const auto& [name, text] : report_detail::kReportAssets)
         files.push_back({"assets/" + std::string(name), std::string(text)});
+    files.push_back({"assets/three.js", three_script()});
     if (inputs.renders.sheet) files.push_back({"assets/renders/sheet.png", inputs.renders.sheet->png});
     return files;
 }

@@ -1,5 +1,7 @@
 #include "report/report_pages.hpp"
 
+#include <vector>
+
 #include "libfit/base/names.hpp"
 #include "libfit/base/text.hpp"
 
@@ -7,10 +9,13 @@ namespace metalfit::report_detail {
 namespace {
 
 // `root`: the path from the page to the report folder ("." or "..").
-std::string page(const std::string& title, const std::string& body_attributes, const std::string& root) {
+// A material page also loads the viewer (viewer.js, then three.js, which hands it three.js's modules).
+std::string page(const std::string& title, const std::string& body_attributes, const std::string& root, bool viewer) {
+    std::vector<const char*> names{"vega.min.js", "vega-lite.min.js", "vega-embed.min.js", "report.js"};
+    if (viewer) names.insert(names.end(), {"viewer.js", "three.js"});
+    names.push_back("report-data.js");
     std::string scripts;
-    for (const char* script : {"vega.min.js", "vega-lite.min.js", "vega-embed.min.js", "report.js", "report-data.js"})
-        scripts += "<script src=\"" + root + "/assets/" + script + "\"></script>\n";
+    for (const char* script : names) scripts += "<script src=\"" + root + "/assets/" + script + "\"></script>\n";
     return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + html_escaped(title) +
            "</title>\n<link rel=\"stylesheet\" href=\"" + root + "/assets/report.css\">\n</head>\n<body " +
            body_attributes + ">\n<main id=\"content\"></main>\n<noscript>This report is drawn by JavaScript from " +
@@ -20,11 +25,11 @@ std::string page(const std::string& title, const std::string& body_attributes, c
 
 }  // namespace
 
-std::string catalog_page() { return page("metalfit report", "data-page=\"catalog\"", "."); }
+std::string catalog_page() { return page("metalfit report", "data-page=\"catalog\"", ".", false); }
 
 std::string material_page(const Material& material) {
     return page("metalfit report: " + material.name + " (" + material.id + ")",
-                "data-page=\"material\" data-material=\"" + html_escaped(material.id) + "\"", "..");
+                "data-page=\"material\" data-material=\"" + html_escaped(material.id) + "\"", "..", true);
 }
 
 std::string material_page_file(const Material& material) {

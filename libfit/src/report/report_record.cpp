@@ -30,6 +30,7 @@ constexpr int kThetaSteps = 90;  // θ = 0, 1, …, 90 degrees
 constexpr double kVisibleMin = 360, kVisibleMax = 830;
 constexpr double kSpectralStep = 5;       // nm, R(λ) at 0°, 60°, 80°
 constexpr int kUntabulatedSamples = 200;  // n, k of formula materials over their range
+constexpr int kLutSize = 256;             // the viewer's reference: R_c at μ = i / 255
 const double kSpectralAngles[] = {0, 60, 80};
 
 // Plotted values keep 6 significant digits (the metrics keep all of theirs).
@@ -218,6 +219,9 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
     Json mu_json = Json::array();
     for (double m : mu) mu_json.push_back(plotted(m));
 
+    std::vector<RGB> lut;
+    for (int i = 0; i < kLutSize; ++i) lut.push_back(curve(double(i) / (kLutSize - 1)));
+
     const RGB f0 = curve(1.0), f82 = curve(kMuF82);
     const std::vector<std::string> swatch = swatches({f0, f82});
     Json models = Json::object();
@@ -263,6 +267,7 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
             {"spectral_reflectance", spectral_reflectance_json(material, in.fit.spectral)},
             {"curves",
              {{"theta_deg", theta}, {"mu", mu_json}, {"exact", channels_json(exact)}, {"stripe", swatches(exact)}}},
+            {"lut", channels_json(lut)},
             {"models", models},
             {"data_sources", sources_json(fit, in)},
             {"budget_choice", choice},
@@ -311,7 +316,9 @@ Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in)
              {"cost", std::isnan(cost[i]) ? Json(nullptr) : Json(cost[i])},
              {"pareto_front", in.cost.costs ? Json(bool(front[i])) : Json(nullptr)},
              {"fit_worst_rel_rms", {{"per_material", m.fit_worst}, {"median", m.fit.median}, {"worst", m.fit.worst}}},
-             {"closed_worst_rel_rms", m.closed_worst}});
+             {"closed_worst_rel_rms", m.closed_worst},
+             // The viewer's shader calls the model's GLSL, the text the GLSL export writes.
+             {"glsl", {{"function", m.model->glsl_function()}, {"source", m.model->glsl_source()}}}});
     }
 
     Json materials = Json::array();

@@ -329,6 +329,11 @@
     done.push(chart('de2000', charts.de2000, { de2000 }, curves));
     done.push(chart('stripes', charts.stripes, { stripes }, curves));
 
+    // The interactive sphere (viewer.js): the reference and each model under a sky and a movable light.
+    const viewer = el('div', { id: 'viewer' });
+    main.append(section('Interactive sphere (WebGL2)', viewer));
+    done.push(window.metalfitViewer(viewer, report, mat));
+
     const renders = section('Renders');
     main.append(renders);
     const skipped = rendersSkipped(report);
