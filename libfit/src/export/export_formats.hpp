@@ -115,6 +115,7 @@ std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials,
 std::vector<ExportFile> export_mtlx(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials, const ExportContext& context);
+std::vector<ExportFile> export_blender(const std::vector<MaterialExport>& materials, const ExportContext& context);
 
 // glTF's baseColorFactor of a written model: its curve at normal incidence (F0 = F(mu = 1)), with a channel outside
 // [0, 1] clipped, or the colour scaled by 1 / max under --gamut scale (glTF holds [0, 1] only); `adjustment` says

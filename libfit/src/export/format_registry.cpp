@@ -23,6 +23,8 @@ constexpr std::array kFormatEntries{
                       StandInNeed::never, false, false, false},
     ExportFormatEntry{ExportFormat::gltf, &export_gltf, "gltf/<stem>.gltf", nullptr, StandInNeed::never, false, true,
                       true},
+    ExportFormatEntry{ExportFormat::blender, &export_blender, "blender/<stem>.py", nullptr,
+                      StandInNeed::not_f82_tint_curve, false, false, false},
 };
 
 // The entries and the names table list the formats in one order (the order of `--format all` and of the files).
