@@ -27,6 +27,7 @@ PACKAGES=(
   clang-format                         # scripts/check-format.sh and the ctest format.check (.clang-format)
   python3-dev pybind11-dev python3-numpy # the Python module `metalfit` (python/; built when they are found)
   python3-pytest                       # its tests (ctest python.module)
+  blender                              # the Blender export's scripts run headless in the tests (ctest export.blender_headless)
 )
 # npm (from Debian's nodejs + npm unless a node with its own npm is already on PATH): installs the report's chart
 # libraries (vega, vega-lite, vega-embed), playwright-core and the export consumer of the tests (@needle-tools/materialx:

@@ -59,6 +59,16 @@ record = json.loads((out / "metalfit_export.json").read_text(encoding="utf-8"))
 names = {m["name"] for m in record["materials"]} if isinstance(record.get("materials"), list) else \
         {m["name"] for m in record["materials"].values()}
 assert expected in names, (expected, names)
+# The Blender scripts parse as Python, and their MATERIAL_NAME evaluates (Python itself reading the literal) to the name.
+import ast
+scripts = list(out.glob("blender/*.py"))
+assert scripts, "no Blender scripts"
+for f in scripts:
+    tree = ast.parse(f.read_text(encoding="utf-8"), str(f))
+    assigned = {t.targets[0].id: t.value for t in tree.body
+                if isinstance(t, ast.Assign) and isinstance(t.targets[0], ast.Name)}
+    name = eval(compile(ast.Expression(assigned["MATERIAL_NAME"]), str(f), "eval"), {"__builtins__": {}})
+    assert name.startswith(expected + " (metalfit "), (f, name)
 EOF
 }
 

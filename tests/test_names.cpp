@@ -11,6 +11,7 @@ namespace {
 using metalfit::c_string_literal;
 using metalfit::comment_text;
 using metalfit::path_component;
+using metalfit::python_string_expression;
 
 // An independent reader of the literals c_string_literal writes: the C escapes it may use, nothing else.
 std::string read_c_string_literal(const std::string& literal) {
@@ -78,6 +79,58 @@ TEST(Names, CStringLiteralsReadBackAsTheBytesGiven) {
         EXPECT_EQ(read_c_string_literal(c_string_literal(s)), s);
     }
     EXPECT_EQ(c_string_literal("Cu-Zn"), "\"Cu-Zn\"");  // catalog ids are written as before
+}
+
+// An independent reader of python_string_expression: the bytes of its '...' literal (plain), or of its b'...'
+// literal followed by .decode('utf-8', 'replace'); only the escapes \\, \' and \xNN, only printable ASCII.
+std::string read_python_string_expression(const std::string& expression) {
+    const std::string decode = ".decode('utf-8', 'replace')";
+    const bool bytes = expression.starts_with("b'");
+    std::string body = expression.substr(bytes ? 2 : 1);
+    if (bytes) {
+        EXPECT_TRUE(body.ends_with("'" + decode)) << expression;
+        body.resize(body.size() - decode.size() - 1);
+    } else {
+        EXPECT_EQ(expression.front(), '\'') << expression;
+        EXPECT_EQ(body.back(), '\'') << expression;
+        body.pop_back();
+    }
+    std::string value;
+    for (std::size_t i = 0; i < body.size(); ++i) {
+        const char c = body[i];
+        EXPECT_NE(c, '\'') << "an unescaped quote ends the literal early: " << expression;
+        EXPECT_TRUE(c >= 0x20 && c <= 0x7E) << "a byte outside printable ASCII in " << expression;
+        if (c != '\\') {
+            value += c;
+            continue;
+        }
+        const char next = body.at(++i);
+        if (next == '\'' || next == '\\') {
+            value += next;
+        } else {
+            EXPECT_TRUE(bytes && next == 'x') << "only b'' literals escape bytes: " << expression;
+            value += static_cast<char>(std::stoi(body.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        }
+    }
+    return value;
+}
+
+TEST(Names, PythonStringExpressionsReadBackAsTheBytesGiven) {
+    for (const std::string& s :
+         {std::string(""), std::string("gold"), std::string("it's \"gold\" \\ and"), std::string("line\nimport os"),
+          std::string("\u202E right-to-left"), std::string("\xff not UTF-8"), std::string("nul\0inside", 10)}) {
+        const std::string expression = python_string_expression(s);
+        EXPECT_EQ(read_python_string_expression(expression), s) << expression;
+    }
+    std::mt19937 random(13);
+    for (int i = 0; i < 500; ++i) {
+        const std::string s = random_bytes(random, static_cast<std::size_t>(i % 40));
+        EXPECT_EQ(read_python_string_expression(python_string_expression(s)), s);
+    }
+    // Printable ASCII stays a plain literal; anything else is the bytes form.
+    EXPECT_FALSE(python_string_expression("Cu-Zn (metalfit f82-tint)").starts_with("b'"));
+    EXPECT_TRUE(python_string_expression("Å").starts_with("b'"));
 }
 
 TEST(Names, PathComponentsStayInTheirFolder) {

@@ -1,5 +1,6 @@
 #include "libfit/base/names.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 
@@ -29,6 +30,28 @@ std::string c_string_literal(std::string_view text) {
         }
     }
     return out + "\"";
+}
+
+std::string python_string_expression(std::string_view text) {
+    const bool plain = std::all_of(text.begin(), text.end(), [](char ch) {
+        const auto byte = static_cast<unsigned char>(ch);
+        return byte >= 0x20 && byte <= 0x7E;
+    });
+    std::string out = plain ? "'" : "b'";
+    char hex[8];
+    for (const char ch : text) {
+        const auto byte = static_cast<unsigned char>(ch);
+        if (ch == '\'' || ch == '\\') {
+            out += '\\';
+            out += ch;
+        } else if (byte < 0x20 || byte > 0x7E) {
+            std::snprintf(hex, sizeof hex, "\\x%02x", static_cast<unsigned>(byte));
+            out += hex;
+        } else {
+            out += ch;
+        }
+    }
+    return out + (plain ? "'" : "'.decode('utf-8', 'replace')");
 }
 
 std::string path_component(std::string_view name) {

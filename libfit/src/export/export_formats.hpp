@@ -116,6 +116,7 @@ std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials,
 std::vector<ExportFile> export_mtlx(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials, const ExportContext& context);
+std::vector<ExportFile> export_blender(const std::vector<MaterialExport>& materials, const ExportContext& context);
 
 // The written parameters of every requested model of one fit (and the stand-in's where a format needs it); the
 // fit holds models_to_fit(request). No bare-metal export is attached (export_files does that).
@@ -128,6 +129,7 @@ ConsumerCurve own_model_curve(const MaterialExport& material, const ModelExport&
 ConsumerCurve materialx_curve(const MaterialExport& material, const ModelExport& model, GamutPolicy gamut);
 ConsumerCurve openpbr_curve(const MaterialExport& material, const ModelExport& model, GamutPolicy gamut);
 ConsumerCurve gltf_curve(const MaterialExport& material, const ModelExport& model, GamutPolicy gamut);
+ConsumerCurve blender_curve(const MaterialExport& material, const ModelExport& model, GamutPolicy gamut);
 // The curve of each format of `request` for one model of `material` (a layered material's formats that layer
 // themselves: not evaluated).
 std::vector<ConsumerCurve> consumer_curves(const MaterialExport& material, const ModelExport& model,

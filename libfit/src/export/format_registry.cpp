@@ -23,6 +23,8 @@ constexpr std::array kFormatEntries{
                       StandInNeed::never, false, false, false, &own_model_curve},
     ExportFormatEntry{ExportFormat::gltf, &export_gltf, "gltf/<stem>.gltf", nullptr, StandInNeed::never, false, true,
                       true, &gltf_curve},
+    ExportFormatEntry{ExportFormat::blender, &export_blender, "blender/<stem>.py", nullptr,
+                      StandInNeed::not_f82_tint_curve, false, false, false, &blender_curve},
 };
 
 // The entries and the names table list the formats in one order (the order of `--format all` and of the files).

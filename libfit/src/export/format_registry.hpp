@@ -17,7 +17,7 @@ namespace metalfit::detail {
 enum class StandInNeed {
     never,
     no_materialx_form,   // MaterialX: models whose MaterialxForm is stand_in (lazanyi-comp)
-    not_f82_tint_curve,  // OpenPBR: every model that is not an F82-tint curve
+    not_f82_tint_curve,  // OpenPBR, Blender (4.0 - 4.2): every model that is not an F82-tint curve
 };
 
 struct ExportFormatEntry {

@@ -37,7 +37,7 @@ std::string tolerance_text(const Tolerance& tolerance) {
 ExportFormat parse_recommend_target(const std::string& text) {
     for (const auto& entry : kExportFormatNames.names)
         if (entry.value != ExportFormat::json && entry.name == text) return entry.value;
-    throw UsageError("--target '" + text + "': one of glsl, hlsl, mtlx, openpbr, gltf, cpp");
+    throw UsageError("--target '" + text + "': one of glsl, hlsl, mtlx, openpbr, gltf, cpp, blender");
 }
 
 std::string target_refuses(ExportFormat target, const Model& model) {
@@ -117,6 +117,12 @@ std::string target_constants(ExportFormat target, const Model& model, const Mode
             text += "\"pbrMetallicRoughness\": {\"baseColorFactor\": [" + triple(params.parameter(0)) +
                     ", 1.0], \"metallicFactor\": 1.0}\n";
             break;
+        case ExportFormat::blender: {
+            const auto [F0, tint] = f82();
+            text += "Metallic BSDF (Blender >= 4.3), fresnel_type 'F82': Base Color = " + triple(F0) +
+                    ", Edge Tint = " + triple(tint) + "\n";
+            break;
+        }
         case ExportFormat::json: break;
     }
     return text;

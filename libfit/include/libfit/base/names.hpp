@@ -21,6 +21,12 @@ std::string comment_text(std::string_view text);
 // literal holds only printable ASCII and no character a compiler warns about (-Wbidi-chars).
 std::string c_string_literal(std::string_view text);
 
+// A Python 3 expression whose value is the str of `text`'s bytes read as UTF-8 (what Blender and every Python tool
+// name things with): a plain literal '...' when every byte is printable ASCII (the quote and the backslash escaped),
+// else b'...'.decode('utf-8', 'replace') with every other byte as \xNN, so the source holds only printable ASCII
+// whatever the text (a newline, a quote, U+202E, bytes that are not UTF-8, which become U+FFFD as Python reads them).
+std::string python_string_expression(std::string_view text);
+
 // `name` as one path component inside an output folder, also usable as it is in a relative URL: every ASCII byte but
 // letters, digits, '-', '_' and '.' becomes '_' (separators, control characters, spaces, '#', '?', '%', ':'), UTF-8
 // beyond ASCII is kept; never empty, "." or "..", never starting with a dot (a leading dot becomes '_'). A name that is
