@@ -23,6 +23,10 @@ constexpr std::array kFormatEntries{
                       StandInNeed::never, false, false, false},
     ExportFormatEntry{ExportFormat::gltf, &export_gltf, "gltf/<stem>.gltf", nullptr, StandInNeed::never, false, true,
                       true},
+    ExportFormatEntry{ExportFormat::msl, &export_msl, "msl/<stem>.metal, msl/metalfit_models.metal", &merge_msl_index,
+                      StandInNeed::never, false, false, false},
+    ExportFormatEntry{ExportFormat::wgsl, &export_wgsl, "wgsl/<stem>.wgsl, wgsl/metalfit_models.wgsl",
+                      &merge_wgsl_index, StandInNeed::never, false, false, false},
 };
 
 // The entries and the names table list the formats in one order (the order of `--format all` and of the files).
