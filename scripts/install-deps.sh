@@ -16,7 +16,8 @@ PACKAGES=(
   libcli11-dev                         # command line
   libssl-dev                           # SHA-256 of data files (OpenSSL libcrypto)
   libpugixml-dev                       # XML: MaterialX exports written and checked with pugixml
-  glslang-tools                        # glslangValidator: compiles the models' GLSL in the tests
+  glslang-tools                        # glslangValidator: the models' GLSL → SPIR-V for the MSL (build), tests
+  spirv-cross                          # SPIRV-Cross: the models' MSL, translated at build time (required)
   pngcheck                             # reads back the colour chunks of glpreview's PNGs (a test)
   libbenchmark-dev                     # Google Benchmark: bench/ (metalfit_benchmarks)
   libopengl-dev libegl-dev             # glpreview: GL 4.5 core through libglvnd, headless EGL

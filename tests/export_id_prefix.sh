@@ -30,7 +30,7 @@ done
 "$metalfit" export Au,Cu-Zn --model all --format all --id-prefix studio -o "$dir/studio" 2>/dev/null
 files=$(cd "$dir/default" && find . -type f | sort)
 # File for file the same layout, metalfit_ → studio_ except the shared files.
-expected=$(echo "$files" | sed -E '/metalfit_(models\.(glsl|hlsl|hpp)|export\.json)$/!s#/metalfit_#/studio_#' | sort)
+expected=$(echo "$files" | sed -E '/metalfit_(models\.(glsl|hlsl|hpp|metal|wgsl)|export\.json)$/!s#/metalfit_#/studio_#' | sort)
 actual=$(cd "$dir/studio" && find . -type f | sort)
 [ "$expected" = "$actual" ] || { diff <(echo "$expected") <(echo "$actual") | head; fail "the studio files are not the default ones renamed"; }
 # File for file the same text but for the per-material names (and the record's id_prefix): nothing else moved.
@@ -45,7 +45,7 @@ for f in default.rglob("*"):
     if f.name == "metalfit_export.json": want = want[:want.rindex("}")].rstrip() + ',\n  "id_prefix": "studio"\n}\n'
     if g.read_text() != want: sys.exit(f"{g} is not {f} renamed")
 PY
-for f in glsl/metalfit_models.glsl hlsl/metalfit_models.hlsl cpp/metalfit_models.hpp; do
+for f in glsl/metalfit_models.glsl hlsl/metalfit_models.hlsl cpp/metalfit_models.hpp msl/metalfit_models.metal wgsl/metalfit_models.wgsl; do
   cmp -s "$dir/default/$f" "$dir/studio/$f" || fail "$f differs between the default and the studio export"
 done
 # No per-material identifier keeps the default prefix; the shared model functions are still called.

@@ -250,7 +250,7 @@ TEST_F(Cli, ExportOptionValuesAndTheCommandListSayWhatIsWrong) {
     const Result format = run("export gold --model schlick --format glsl,nope" + out);
     EXPECT_EQ(format.exit_code, 2);
     expect_one_line_error(
-        format, "unknown export format 'nope' (known: json, glsl, hlsl, mtlx, openpbr, cpp, gltf, blender, or all)");
+        format, "unknown export format 'nope' (known: json, glsl, hlsl, mtlx, openpbr, cpp, gltf, blender, msl, wgsl, or all)");
     const Result roughness = run("export gold --model schlick --format json --roughness 1.5" + out);
     EXPECT_EQ(roughness.exit_code, 2);
     expect_one_line_error(roughness, "--roughness '1.5': expected a number in [0, 1] (OpenPBR's specular_roughness)");
@@ -805,7 +805,7 @@ TEST_F(Cli, CatalogCaveatAndReferenceReachEveryOutput) {
         EXPECT_NE(text.find("reference: " + reference), std::string::npos) << path;
         EXPECT_NE(text.find("sha256 "), std::string::npos) << path;
     }
-    EXPECT_GE(headers, 1 + 2 * 6) << "json + (glsl, hlsl, mtlx, openpbr .mtlx and .json, cpp) per model";
+    EXPECT_GE(headers, 1 + 2 * 8) << "json + (glsl, hlsl, mtlx, openpbr .mtlx and .json, cpp, msl, wgsl) per model";
 }
 
 // A user's instrument file: --name and --reference replace the file stem and the (absent) reference in show, fit

@@ -59,7 +59,7 @@ TEST(EnumNames, EveryValueOfEveryTableReadsBack) {
     expect_round_trip(kOutOfRangeNames, 2);
     expect_round_trip(kParameterSourceNames, 2);
     expect_round_trip(kGamutPolicyNames, 3);
-    expect_round_trip(kExportFormatNames, 8);
+    expect_round_trip(kExportFormatNames, 10);
 }
 
 TEST(EnumNames, ThePrintingFunctionsUseTheTables) {
@@ -101,7 +101,7 @@ TEST(EnumNames, AnUnknownNameGetsTheMessageItAlwaysGot) {
               "unknown chromatic adaptation 'cat16' (expected bradford, cat02, von-kries-xyz or none)");
     EXPECT_EQ(usage_message([] { parse_parameter_source("best"); }), "unknown parameter source 'best' (fit or closed)");
     EXPECT_EQ(usage_message([] { parse_gamut_policy("wrap"); }), "unknown gamut policy 'wrap' (keep, clip or scale)");
-    EXPECT_EQ(kExportFormatNames.known(), "known: json, glsl, hlsl, mtlx, openpbr, cpp, gltf, blender");
+    EXPECT_EQ(kExportFormatNames.known(), "known: json, glsl, hlsl, mtlx, openpbr, cpp, gltf, blender, msl, wgsl");
 }
 
 TEST(EnumNames, TheKnownNamesWordings) {

@@ -68,6 +68,15 @@ TYPED_TEST(EveryModel, TheRuntimeModelIsTheStruct) {
     EXPECT_THROW(model.evaluate(std::span<const double>(sample_parameters<M>()[0]), mu, short_out), std::logic_error);
     // Its GLSL defines the function the model names.
     EXPECT_NE(model.glsl_source().find("vec3 " + std::string(M::kGlslFunction) + "("), std::string::npos);
+    // Its WGSL (the .wgsl beside each of its GLSL files) defines it too, and every function the GLSL defines.
+    const Model* self = &model;
+    const std::string wgsl = wgsl_library(std::span<const Model* const>(&self, 1));
+    EXPECT_NE(wgsl.find("fn " + std::string(M::kGlslFunction) + "("), std::string::npos);
+    const std::string glsl = "\n" + model.glsl_source();
+    for (std::size_t at = glsl.find("\nvec3 "); at != std::string::npos; at = glsl.find("\nvec3 ", at + 1)) {
+        const std::string name = glsl.substr(at + 6, glsl.find('(', at) - at - 6);
+        EXPECT_NE(wgsl.find("fn " + name + "("), std::string::npos) << name << " has no WGSL";
+    }
 }
 
 // Where a model gives its gradient in closed form (AnalyticGradient), the fits use it as their Jacobian instead of

@@ -85,6 +85,9 @@ struct ShaderSyntax {
     std::string_view models_file;  // the shared file of model functions
     std::string_view language;     // what the files need: "GLSL >= 1.30 …" | "HLSL …"
     std::string_view extension;    // "GLSL" | "HLSL": include guards METALFIT_<MATERIAL>_<MODEL>_<extension>
+    // MSL: the function copies each constant into a local of the parameter's name before the call (the models take
+    // `thread const float3&`, which a `constant` object does not bind to).
+    bool copy_to_locals;
 };
 // The constants of one material and model, and `<vector> metalfit_<material>_<model>(float mu)` calling the model.
 std::string shader_constants(const MaterialExport& material, const ModelExport& model, const ExportContext& context,
@@ -94,6 +97,8 @@ std::string shader_constants(const MaterialExport& material, const ModelExport& 
 std::string glsl_models_file(const std::vector<const Model*>& models);
 std::string hlsl_models_file(const std::vector<const Model*>& models);
 std::string cpp_models_file(const std::vector<const Model*>& models);
+std::string msl_models_file(const std::vector<const Model*>& models);
+std::string wgsl_models_file(const std::vector<const Model*>& models);
 
 // cpp/metalfit_materials.hpp: one #include and one table row per material and model.
 struct CppIndexEntry {
@@ -116,6 +121,8 @@ std::vector<ExportFile> export_cpp(const std::vector<MaterialExport>& materials,
 std::vector<ExportFile> export_mtlx(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_openpbr(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_gltf(const std::vector<MaterialExport>& materials, const ExportContext& context);
+std::vector<ExportFile> export_msl(const std::vector<MaterialExport>& materials, const ExportContext& context);
+std::vector<ExportFile> export_wgsl(const std::vector<MaterialExport>& materials, const ExportContext& context);
 std::vector<ExportFile> export_blender(const std::vector<MaterialExport>& materials, const ExportContext& context);
 
 // The written parameters of every requested model of one fit (and the stand-in's where a format needs it); the

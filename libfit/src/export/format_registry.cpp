@@ -25,6 +25,10 @@ constexpr std::array kFormatEntries{
                       true, &gltf_curve},
     ExportFormatEntry{ExportFormat::blender, &export_blender, "blender/<stem>.py", nullptr,
                       StandInNeed::not_f82_tint_curve, false, false, false, &blender_curve},
+    ExportFormatEntry{ExportFormat::msl, &export_msl, "msl/<stem>.metal, msl/metalfit_models.metal", &merge_msl_index,
+                      StandInNeed::never, false, false, false, &own_model_curve},
+    ExportFormatEntry{ExportFormat::wgsl, &export_wgsl, "wgsl/<stem>.wgsl, wgsl/metalfit_models.wgsl",
+                      &merge_wgsl_index, StandInNeed::never, false, false, false, &own_model_curve},
 };
 
 // The entries and the names table list the formats in one order (the order of `--format all` and of the files).

@@ -55,6 +55,10 @@ std::optional<std::string> merge_glsl_index(const std::string& relative, const s
                                             const std::string& mine);
 std::optional<std::string> merge_hlsl_index(const std::string& relative, const std::string& existing,
                                             const std::string& mine);
+std::optional<std::string> merge_msl_index(const std::string& relative, const std::string& existing,
+                                           const std::string& mine);
+std::optional<std::string> merge_wgsl_index(const std::string& relative, const std::string& existing,
+                                            const std::string& mine);
 std::optional<std::string> merge_cpp_index(const std::string& relative, const std::string& existing,
                                            const std::string& mine);
 // A file of an export written into `dir` where a file of that name is: the merged index file, or `mine` for a file

@@ -22,6 +22,7 @@ std::string shader_constants(const MaterialExport& material, const ModelExport& 
     const std::string guard = id + "_" + std::string(syntax.extension);
     text += "#ifndef " + guard + "  // the file may be included more than once\n#define " + guard + "\n";
     std::string args;
+    std::string locals;
     const auto parameters = w.model->parameters();
     for (std::size_t i = 0; i < parameters.size(); ++i) {
         std::string name(parameters[i].name);
@@ -29,11 +30,17 @@ std::string shader_constants(const MaterialExport& material, const ModelExport& 
         const std::string constant = id + "_" + name;
         text += std::string(syntax.constant) + " " + constant + " = " + std::string(syntax.vector) + "(" +
                 shader_channel_list(w.params, i) + ");\n";
-        args += constant + ", ";
+        if (syntax.copy_to_locals) {
+            locals +=
+                "    " + std::string(syntax.vector) + " " + std::string(parameters[i].name) + " = " + constant + ";\n";
+            args += std::string(parameters[i].name) + ", ";
+        } else {
+            args += constant + ", ";
+        }
     }
     text += std::string(syntax.vector) + " " + file_stem(prefix, material.fit->material.id, w.model->id()) +
-            "(float mu) {\n    return " + std::string(w.model->glsl_function()) + "(" + args + "mu);\n}\n#endif  // " +
-            guard + "\n";
+            "(float mu) {\n" + locals + "    return " + std::string(w.model->glsl_function()) + "(" + args +
+            "mu);\n}\n#endif  // " + guard + "\n";
     return text;
 }
 
@@ -48,8 +55,12 @@ std::string glsl_models_file(const std::vector<const Model*>& models) {
 }
 
 std::vector<ExportFile> export_glsl(const std::vector<MaterialExport>& materials, const ExportContext& context) {
-    static constexpr ShaderSyntax kGlsl{"const vec3", "vec3", "metalfit_models.glsl",
-                                        "GLSL >= 1.30 (tested as 3.30 and 4.50) or GLSL ES 3.00 (WebGL 2)", "GLSL"};
+    static constexpr ShaderSyntax kGlsl{"const vec3",
+                                        "vec3",
+                                        "metalfit_models.glsl",
+                                        "GLSL >= 1.30 (tested as 3.30 and 4.50) or GLSL ES 3.00 (WebGL 2)",
+                                        "GLSL",
+                                        false};
     std::vector<ExportFile> files;
     files.push_back({"glsl/metalfit_models.glsl", glsl_models_file(context.request.models)});
     for (const MaterialExport& m : materials)

@@ -95,8 +95,12 @@ std::string hlsl_models_file(const std::vector<const Model*>& models) {
 }
 
 std::vector<ExportFile> export_hlsl(const std::vector<MaterialExport>& materials, const ExportContext& context) {
-    static constexpr ShaderSyntax kHlsl{"static const float3", "float3", "metalfit_models.hlsl",
-                                        "HLSL (tested with glslangValidator's HLSL front end, compute stage)", "HLSL"};
+    static constexpr ShaderSyntax kHlsl{"static const float3",
+                                        "float3",
+                                        "metalfit_models.hlsl",
+                                        "HLSL (tested with glslangValidator's HLSL front end, compute stage)",
+                                        "HLSL",
+                                        false};
     std::vector<ExportFile> files;
     files.push_back({"hlsl/metalfit_models.hlsl", hlsl_models_file(context.request.models)});
     for (const MaterialExport& m : materials)

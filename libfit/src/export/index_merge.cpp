@@ -11,13 +11,13 @@ namespace metalfit::detail {
 
 namespace {
 
-// The registered models whose functions a shared model file defines ("vec3 metalfit_schlick(", "float3 …").
+// The registered models whose functions a shared model file defines ("vec3 metalfit_schlick(", "float3 …", "fn …").
 std::vector<const Model*> models_defined_in(std::string_view text) {
     std::vector<const Model*> models;
     for (const Model* m : all_models()) {
         const std::string name = std::string(m->glsl_function()) + "(";
         if (text.find("vec3 " + name) != std::string_view::npos ||
-            text.find("float3 " + name) != std::string_view::npos)
+            text.find("float3 " + name) != std::string_view::npos || text.find("fn " + name) != std::string_view::npos)
             models.push_back(m);
     }
     return models;
@@ -58,6 +58,18 @@ std::optional<std::string> merge_hlsl_index(const std::string& relative, const s
                                             const std::string& mine) {
     if (relative != "hlsl/metalfit_models.hlsl") return std::nullopt;
     return merge_models_file(existing, mine, &hlsl_models_file);
+}
+
+std::optional<std::string> merge_msl_index(const std::string& relative, const std::string& existing,
+                                           const std::string& mine) {
+    if (relative != "msl/metalfit_models.metal") return std::nullopt;
+    return merge_models_file(existing, mine, &msl_models_file);
+}
+
+std::optional<std::string> merge_wgsl_index(const std::string& relative, const std::string& existing,
+                                            const std::string& mine) {
+    if (relative != "wgsl/metalfit_models.wgsl") return std::nullopt;
+    return merge_models_file(existing, mine, &wgsl_models_file);
 }
 
 std::optional<std::string> merge_cpp_index(const std::string& relative, const std::string& existing,

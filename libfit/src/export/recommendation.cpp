@@ -37,7 +37,7 @@ std::string tolerance_text(const Tolerance& tolerance) {
 ExportFormat parse_recommend_target(const std::string& text) {
     for (const auto& entry : kExportFormatNames.names)
         if (entry.value != ExportFormat::json && entry.name == text) return entry.value;
-    throw UsageError("--target '" + text + "': one of glsl, hlsl, mtlx, openpbr, gltf, cpp, blender");
+    throw UsageError("--target '" + text + "': one of glsl, hlsl, mtlx, openpbr, gltf, cpp, blender, msl, wgsl");
 }
 
 std::string target_refuses(ExportFormat target, const Model& model) {
@@ -81,6 +81,20 @@ std::string target_constants(ExportFormat target, const Model& model, const Mode
             text += "// F = " + std::string(model.glsl_function()) + "(";
             for (std::size_t i = 0; i < parameters.size(); ++i) text += std::string(parameters[i].name) + ", ";
             text += "mu);  // hlsl/metalfit_models.hlsl\n";
+            break;
+        case ExportFormat::msl:
+            each([](const std::string& n, const RGB& v) {
+                return "constant float3 " + n + " = float3(" + triple(v) + ");\n";
+            });
+            text += "// F = " + std::string(model.glsl_function()) + "(";
+            for (std::size_t i = 0; i < parameters.size(); ++i) text += std::string(parameters[i].name) + ", ";
+            text += "mu);  // msl/metalfit_models.metal (copy the constants into locals first)\n";
+            break;
+        case ExportFormat::wgsl:
+            each([](const std::string& n, const RGB& v) { return "const " + n + " = vec3f(" + triple(v) + ");\n"; });
+            text += "// F = " + std::string(model.glsl_function()) + "(";
+            for (std::size_t i = 0; i < parameters.size(); ++i) text += std::string(parameters[i].name) + ", ";
+            text += "mu);  // wgsl/metalfit_models.wgsl\n";
             break;
         case ExportFormat::cpp:
             each([](const std::string& n, const RGB& v) {

@@ -138,15 +138,31 @@ std::string_view shader_file(std::string_view file) {
     throw std::out_of_range("no embedded shader file '" + std::string(file) + "'");
 }
 
-std::string glsl_library(std::span<const Model* const> models) {
+std::vector<std::string_view> shader_file_names(std::span<const Model* const> models) {
     std::vector<std::string_view> files;
     for (const Model* m : models)
         for (std::string_view f : m->glsl_files())
             if (std::find(files.begin(), files.end(), f) == files.end()) files.push_back(f);
+    return files;
+}
+
+std::string glsl_library(std::span<const Model* const> models) {
     std::string text;
-    for (std::string_view f : files) {
+    for (std::string_view f : shader_file_names(models)) {
         if (!text.empty()) text += '\n';
         text += shader_file(f);
+    }
+    return text;
+}
+
+std::string wgsl_library(std::span<const Model* const> models) {
+    std::string text;
+    for (std::string_view f : shader_file_names(models)) {
+        const auto it = std::find_if(detail::kWgslFiles.begin(), detail::kWgslFiles.end(),
+                                     [&](const auto& file) { return file.first == f; });
+        if (it == detail::kWgslFiles.end()) throw std::out_of_range("no embedded WGSL file '" + std::string(f) + "'");
+        if (!text.empty()) text += '\n';
+        text += it->second;
     }
     return text;
 }

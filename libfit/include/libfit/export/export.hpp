@@ -20,14 +20,16 @@ namespace metalfit {
 
 // The formats, in the order `--format all` writes them (each format's writer, files and rules: the private
 // format registry, src/export/format_registry.hpp).
-enum class ExportFormat { json, glsl, hlsl, mtlx, openpbr, cpp, gltf, blender };
+enum class ExportFormat { json, glsl, hlsl, mtlx, openpbr, cpp, gltf, blender, msl, wgsl };
 inline constexpr EnumNames kExportFormatNames{
     "export format", KnownNamesWording::known,
     std::array{EnumName<ExportFormat>{ExportFormat::json, "json"}, EnumName<ExportFormat>{ExportFormat::glsl, "glsl"},
                EnumName<ExportFormat>{ExportFormat::hlsl, "hlsl"}, EnumName<ExportFormat>{ExportFormat::mtlx, "mtlx"},
                EnumName<ExportFormat>{ExportFormat::openpbr, "openpbr"},
                EnumName<ExportFormat>{ExportFormat::cpp, "cpp"}, EnumName<ExportFormat>{ExportFormat::gltf, "gltf"},
-               EnumName<ExportFormat>{ExportFormat::blender, "blender"}}};
+               EnumName<ExportFormat>{ExportFormat::blender, "blender"},
+               
+EnumName<ExportFormat>{ExportFormat::msl, "msl"}, EnumName<ExportFormat>{ExportFormat::wgsl, "wgsl"}}};
 std::string to_string(ExportFormat format);
 
 // What happens to colour parameters (F0, tint, r, g) outside [0, 1]: written as they are and flagged, clipped to

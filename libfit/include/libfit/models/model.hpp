@@ -196,5 +196,9 @@ std::vector<const Model*> parse_model_list(std::string_view list);
 std::string_view shader_file(std::string_view file);
 // The GLSL of several models with each shared function once, in dependency order.
 std::string glsl_library(std::span<const Model* const> models);
+// The same in WGSL: the <file>.wgsl beside each of those GLSL files, in the same order.
+std::string wgsl_library(std::span<const Model* const> models);
+// The GLSL files of several models, each once, in dependency order (what glsl_library and wgsl_library join).
+std::vector<std::string_view> shader_file_names(std::span<const Model* const> models);
 
 }  // namespace metalfit

@@ -1,0 +1,56 @@
+# metalfit_msl_from_glsl(<text-var> <work-dir> <glsl-file>...): the Metal Shading Language of the models' GLSL, made
+# by the Khronos tools as their users use them: glslangValidator compiles one GLSL 4.50 compute shader holding every
+# file (after a prototype of each function, so that the files' order does not matter) and calling each function once
+# (SPIRV-Cross keeps only what the entry point reaches), and SPIRV-Cross translates the SPIR-V to MSL 2.0.
+# <text-var> receives SPIRV-Cross's output, whole; libfit keeps its functions (libfit/src/export/msl.cpp).
+# Both tools are required (scripts/install-deps.sh installs glslang-tools and spirv-cross): the msl export is
+# available on every build.
+function(metalfit_msl_from_glsl text_var work_dir)
+  find_program(METALFIT_GLSLANG_VALIDATOR glslangValidator REQUIRED)
+  find_program(METALFIT_SPIRV_CROSS spirv-cross REQUIRED)
+  set(body "")
+  foreach(path IN LISTS ARGN)
+    file(READ ${path} text)
+    string(APPEND body "\n${text}")
+  endforeach()
+  string(REGEX MATCHALL "\nvec3 metalfit_[a-z0-9_]+\\([^)]*\\)" signatures "${body}")
+  set(prototypes "")
+  set(calls "")
+  set(index 1)
+  foreach(signature IN LISTS signatures)
+    string(STRIP "${signature}" signature)
+    string(APPEND prototypes "${signature};\n")
+    string(REGEX MATCH "metalfit_[a-z0-9_]+" name "${signature}")
+    string(REGEX REPLACE "^[^(]*\\(([^)]*)\\)$" "\\1" parameters "${signature}")
+    string(REPLACE "," ";" parameters "${parameters}")
+    set(arguments "")
+    foreach(parameter IN LISTS parameters)
+      string(STRIP "${parameter}" parameter)
+      if(parameter MATCHES "^vec3 ")
+        list(APPEND arguments "v[0].xyz")
+      elseif(parameter MATCHES "^float ")
+        list(APPEND arguments "v[0].w")
+      else()
+        message(FATAL_ERROR "MSL: parameter '${parameter}' of ${name} is neither vec3 nor float")
+      endif()
+    endforeach()
+    list(JOIN arguments ", " arguments)
+    string(APPEND calls "    v[${index}].xyz = ${name}(${arguments});\n")
+    math(EXPR index "${index} + 1")
+  endforeach()
+  file(MAKE_DIRECTORY ${work_dir})
+  file(WRITE ${work_dir}/models.comp "#version 450\n${prototypes}${body}\nlayout(local_size_x = 1) in;\n"
+       "layout(std430, binding = 0) buffer Values { vec4 v[]; };\nvoid main() {\n${calls}}\n")
+  execute_process(COMMAND ${METALFIT_GLSLANG_VALIDATOR} -V ${work_dir}/models.comp -o ${work_dir}/models.spv
+                  RESULT_VARIABLE result OUTPUT_VARIABLE log ERROR_VARIABLE log)
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "glslangValidator could not compile the models' GLSL (${work_dir}/models.comp):\n${log}")
+  endif()
+  execute_process(COMMAND ${METALFIT_SPIRV_CROSS} ${work_dir}/models.spv --msl --msl-version 20000
+                  --output ${work_dir}/models.metal RESULT_VARIABLE result OUTPUT_VARIABLE log ERROR_VARIABLE log)
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "spirv-cross could not translate the models' SPIR-V to MSL (${work_dir}/models.spv):\n${log}")
+  endif()
+  file(READ ${work_dir}/models.metal text)
+  set(${text_var} "${text}" PARENT_SCOPE)
+endfunction()
