@@ -250,7 +250,8 @@ TEST_F(Cli, ExportOptionValuesAndTheCommandListSayWhatIsWrong) {
     const Result format = run("export gold --model schlick --format glsl,nope" + out);
     EXPECT_EQ(format.exit_code, 2);
     expect_one_line_error(
-        format, "unknown export format 'nope' (known: json, glsl, hlsl, mtlx, openpbr, cpp, gltf, blender, msl, wgsl, or all)");
+        format,
+        "unknown export format 'nope' (known: json, glsl, hlsl, mtlx, openpbr, cpp, gltf, blender, msl, wgsl, or all)");
     const Result roughness = run("export gold --model schlick --format json --roughness 1.5" + out);
     EXPECT_EQ(roughness.exit_code, 2);
     expect_one_line_error(roughness, "--roughness '1.5': expected a number in [0, 1] (OpenPBR's specular_roughness)");

@@ -37,7 +37,8 @@ void add_recommend_options(CLI::App& app, RecommendOptions& o, bool with_flag) {
                      "Per material, the cheapest model for --target meeting every --max-* limit, its constants and why "
                      "the cheaper ones fail (fitted under --f0-tolerance = --max-f0-error)");
     app.add_option("--target", o.target,
-                   "Consumer of " + what + ": glsl, hlsl, mtlx, openpbr, gltf, cpp, blender, msl or wgsl (default: glsl)");
+                   "Consumer of " + what +
+                       ": glsl, hlsl, mtlx, openpbr, gltf, cpp, blender, msl or wgsl (default: glsl)");
     app.add_option("--max-rel-rms", o.max_rel_rms, what + ": worst-channel rel_rms limit (default: 0.5%)");
     app.add_option("--max-f0-error", o.max_f0_error,
                    what + ": worst-channel |F0 error| limit, also held by the fits (default: 0.5%)");

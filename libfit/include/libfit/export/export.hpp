@@ -28,8 +28,8 @@ inline constexpr EnumNames kExportFormatNames{
                EnumName<ExportFormat>{ExportFormat::openpbr, "openpbr"},
                EnumName<ExportFormat>{ExportFormat::cpp, "cpp"}, EnumName<ExportFormat>{ExportFormat::gltf, "gltf"},
                EnumName<ExportFormat>{ExportFormat::blender, "blender"},
-               
-EnumName<ExportFormat>{ExportFormat::msl, "msl"}, EnumName<ExportFormat>{ExportFormat::wgsl, "wgsl"}}};
+
+               EnumName<ExportFormat>{ExportFormat::msl, "msl"}, EnumName<ExportFormat>{ExportFormat::wgsl, "wgsl"}}};
 std::string to_string(ExportFormat format);
 
 // What happens to colour parameters (F0, tint, r, g) outside [0, 1]: written as they are and flagged, clipped to
