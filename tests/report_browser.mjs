@@ -271,6 +271,20 @@ for (const m of report.materials) {
   check(marks === bound, `${m.page}: ${marks} fits marked on a bound, report.json has ${bound}`);
   const modelRows = await page.evaluate(() => document.querySelectorAll('#models-table tbody tr.fit').length);
   check(modelRows === report.models.length, `${m.page}: ${modelRows} fitted rows in the model table`);
+  // What each consumer renders: one row per model; the glTF viewer's cell is Schlick's, and marked where it is not
+  // the fit's own figures.
+  const consumers = await page.evaluate(() => [...document.querySelectorAll('#consumers-table tbody tr')].map((tr) =>
+    [...tr.children].map((td) => ({ text: td.textContent, title: td.title, differs: td.classList.contains('consumer-differs') }))));
+  check(consumers.length === report.models.length, `${m.page}: ${consumers.length} rows in the consumers table`);
+  for (const row of consumers) {
+    const id = row[0].text, gltf = Object.keys(m.models[id].consumers).indexOf('gltf');
+    if (gltf < 0) continue;
+    const cellOf = row[2 + gltf];
+    check(/Schlick from baseColorFactor/.test(cellOf.title), `${m.page}: ${id}'s glTF cell is not Schlick's (${cellOf.title})`);
+    const expected = (100 * m.models[id].consumers.gltf.worst_rel_rms).toFixed(2) + ' %';
+    check(cellOf.text.startsWith(expected), `${m.page}: ${id}'s glTF cell "${cellOf.text}" does not start with ${expected}`);
+    check(cellOf.differs === (cellOf.text.split(' (')[0] !== row[1].text), `${m.page}: ${id}'s glTF cell marked wrongly`);
+  }
   if (report.renders.skipped === undefined && m.render_row != null) {
     const loaded = await page.evaluate(() => { const img = document.getElementById('render'); return img && img.complete && img.naturalWidth > 0; });
     check(loaded, `${m.page}: the render did not load`);

@@ -2,6 +2,7 @@
 // charts plot, every model's record (the same function as the fit record: the same numbers) and the colours of the
 // stripes and swatches; per model the cost when one is given; the catalog summary; the chart specs.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -11,6 +12,7 @@
 #include "libfit/base/number_text.hpp"
 #include "libfit/base/record_path.hpp"
 #include "libfit/base/version.hpp"
+#include "libfit/export/consumer_curve.hpp"
 #include "libfit/fit/catalog_summary.hpp"
 #include "libfit/io/layer_stack.hpp"
 #include "libfit/optics/fresnel.hpp"
@@ -202,6 +204,42 @@ Json provenance_json(const MaterialFit& fit, const ReportInputs& in) {
     return j;
 }
 
+// What the consumers that do not evaluate the model itself render for `model` of `fit` (docs/export.md, "What each
+// consumer renders"): per format, the curve in words, the model it is, worst-channel rel_rms, F0 error and ΔE2000
+// max. A format whose stand-in the report did not fit is left out.
+Json consumers_json(const MaterialFit& fit, const Model& model) {
+    static constexpr std::array kFormats{ExportFormat::mtlx, ExportFormat::openpbr, ExportFormat::gltf,
+                                         ExportFormat::blender};
+    ExportRequest request;
+    request.models = {&model};
+    for (ExportFormat format : kFormats) {
+        ExportRequest one = request;
+        one.formats = {format};
+        const auto needed = models_to_fit(one);
+        const bool fitted = std::all_of(needed.begin(), needed.end(), [&](const Model* m) {
+            return std::any_of(fit.models.begin(), fit.models.end(), [&](const ModelResult& r) { return r.model == m; });
+        });
+        if (fitted) request.formats.push_back(format);
+    }
+    Json out = Json::object();
+    for (const ConsumerCurve& c : consumer_curves(fit, model, request)) {
+        Json j = {{"curve", c.curve}};
+        if (c.rendered) {
+            const Metrics& m = c.rendered->metrics;
+            j["model"] = c.rendered->model->id();
+            j["worst_rel_rms"] = worst_channel(m.rel_rms);
+            double worst_f0 = 0;
+            for (int k = 0; k < 3; ++k) worst_f0 = std::max(worst_f0, std::abs(m.err_f0[k]));
+            j["worst_f0_err"] = worst_f0;
+            j["de2000_max"] = m.de2000_max;
+        } else {
+            j["not_evaluated"] = c.not_evaluated;
+        }
+        out[to_string(c.format)] = std::move(j);
+    }
+    return out;
+}
+
 Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatches& swatches,
                    std::optional<int> render_row) {
     const Material& material = fit.material;
@@ -241,6 +279,7 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
         j["curve"] = channels_json(values);
         j["de2000"] = de;
         j["stripe"] = swatches(values);
+        j["consumers"] = consumers_json(fit, model);
         models[std::string(model.id())] = std::move(j);
     }
     Json recommendation = nullptr;

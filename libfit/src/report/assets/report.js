@@ -258,6 +258,36 @@
     return sortableTable('models-table', headers, rows);
   }
 
+  // What each consumer renders (docs/export.md): the fit's worst-channel rel_rms, |F0 error| and ΔE2000 max (what
+  // GLSL, HLSL, C++, MSL, WGSL and JSON evaluate) next to those of the curve MaterialX, OpenPBR, a glTF viewer and
+  // Blender render for the same model; a cell that differs from the fit's is marked.
+  function consumersTable(report, mat) {
+    const formats = [];
+    for (const m of report.models) for (const f of Object.keys(mat.models[m.id].consumers || {})) if (!formats.includes(f)) formats.push(f);
+    const label = { mtlx: 'MaterialX', openpbr: 'OpenPBR', gltf: 'glTF viewer', blender: 'Blender ≥ 4.3' };
+    const figures = (worst, f0, de) => `${pct(worst, 2)} · ${pct(f0, 2)} · ${num(de, 2)}`;
+    const headers = ['model', 'the model (GLSL, HLSL, C++, MSL, WGSL, JSON)', ...formats.map((f) => label[f] || f)];
+    const rows = report.models.map((m) => {
+      const r = mat.models[m.id], x = r.fit.metrics;
+      const fitF0 = Math.max(...r.fit.err_f0.map((v) => (v == null ? Infinity : Math.abs(v))));
+      const own = figures(r.worst_rel_rms, fitF0, x.de2000_max);
+      return el('tr', {}, cell(m.id, m.id), cell(own, r.worst_rel_rms),
+        ...formats.map((f) => {
+          const c = (r.consumers || {})[f];
+          if (!c) return cell('—', null);
+          if (c.not_evaluated) return cell('not evaluated', null);
+          const text = figures(c.worst_rel_rms, c.worst_f0_err, c.de2000_max);
+          const td = cell(text + (c.model !== m.id ? ` (${c.model})` : ''), c.worst_rel_rms);
+          td.title = c.curve;
+          if (text !== own) td.classList.add('consumer-differs');
+          return td;
+        }));
+    });
+    return [el('p', { class: 'note', text: 'Worst-channel rel_rms · |F0 error| · ΔE2000 max of the curve each consumer renders for the model ' +
+      '(hover a cell for the curve; marked where it is not the fit\'s own curve: a stand-in, MaterialX\'s clamp, a glTF viewer\'s Schlick from baseColorFactor).' }),
+      sortableTable('consumers-table', headers, rows)];
+  }
+
   function sourcesTable(mat) {
     const ds = mat.data_sources;
     const headers = ['source', 'F0 (R / G / B)', 'F82 (R / G / B)'];
@@ -300,6 +330,7 @@
     done.push(chart('spectral', charts.spectral, { spectral }, data));
 
     main.append(section('Every model (fitted parameters and the best closed form; click a column to sort)', modelsTable(report, mat)));
+    main.append(section('What each consumer renders', ...consumersTable(report, mat)));
 
     const curves = section('Against the angle');
     main.append(curves);
