@@ -78,7 +78,8 @@ TEST_F(Report, NumbersAreTheFitRecordsForTheSameOptions) {
 TEST_F(Report, ConsumersAreTheExportRecordsForTheSameFits) {
     const fs::path report_dir = tmp_.path() / "r", export_dir = tmp_.path() / "e";
     ASSERT_EQ(run("report Al,Cu,Ni --renders off -o '" + report_dir.string() + "'").exit_code, 0);
-    const auto e = run("export Al,Cu,Ni --model all --format json,mtlx,openpbr,gltf,blender -o '" + export_dir.string() + "'");
+    const auto e =
+        run("export Al,Cu,Ni --model all --format json,mtlx,openpbr,gltf,blender -o '" + export_dir.string() + "'");
     ASSERT_EQ(e.exit_code, 0) << e.err;
     const Json report = report_json(report_dir);
     const Json record = Json::parse(read_file(export_dir / "metalfit_export.json"));
@@ -92,9 +93,9 @@ TEST_F(Report, ConsumersAreTheExportRecordsForTheSameFits) {
                 const Json& x = exported["export"]["consumers"][format];
                 // A stand-in's figures compare only where its fit is the export's too.
                 const std::string rendered = c["model"];
-                if (rendered != "schlick" && material["models"][rendered]["fit"]["params"] !=
-                                                 record["materials"][material["id"].get<std::string>()]["models"]
-                                                       [rendered]["fit"]["params"])
+                if (rendered != "schlick" &&
+                    material["models"][rendered]["fit"]["params"] !=
+                        record["materials"][material["id"].get<std::string>()]["models"][rendered]["fit"]["params"])
                     continue;
                 EXPECT_EQ(c["curve"], x["curve"]) << model << " " << format;
                 EXPECT_EQ(c["model"], x["model"]) << model << " " << format;

@@ -217,7 +217,8 @@ Json consumers_json(const MaterialFit& fit, const Model& model) {
         one.formats = {format};
         const auto needed = models_to_fit(one);
         const bool fitted = std::all_of(needed.begin(), needed.end(), [&](const Model* m) {
-            return std::any_of(fit.models.begin(), fit.models.end(), [&](const ModelResult& r) { return r.model == m; });
+            return std::any_of(fit.models.begin(), fit.models.end(),
+                               [&](const ModelResult& r) { return r.model == m; });
         });
         if (fitted) request.formats.push_back(format);
     }
