@@ -86,6 +86,40 @@ TEST_F(Cli, UserFilesWorkLikeCatalogNames) {
     }
 }
 
+TEST_F(Cli, UnphysicalInfraredRowsAreDroppedWithAWarningAndTheColourIsThatOfTheTrimmedFile) {
+    // drop-ir-negative-n.yml: n < 0 from line 52 (1.216 µm) on; the same file cut after line 51 is the reference.
+    const fs::path file = fs::path(kFixtures) / "drop-ir-negative-n.yml";
+    std::istringstream in(read_file(file));
+    std::string trimmed_text;
+    int number = 0;
+    for (std::string line; std::getline(in, line) && ++number <= 51;) trimmed_text += line + "\n";
+    const fs::path trimmed = dir_ / "drop-ir-negative-n.yml";
+    std::ofstream(trimmed) << trimmed_text;
+
+    const Result r = run("show '" + file.string() + "' --json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err, "metalfit: warning: " + file.string() +
+                         ":52: DATA[0].data: negative refractive index n = -0.35 at 1.216 \xc2\xb5m: rows from 1.216 "
+                         "\xc2\xb5m on are not used (colour needs 360\xe2\x80\x93"
+                         "830 nm; n and k kept over "
+                         "0.1879\xe2\x80\x93"
+                         "1.088 \xc2\xb5m)\n");
+    const Result reference = run("show '" + trimmed.string() + "' --json");
+    ASSERT_EQ(reference.exit_code, 0) << reference.err;
+    EXPECT_TRUE(reference.err.empty()) << reference.err;
+    auto a = nlohmann::json::parse(r.out), b = nlohmann::json::parse(reference.out);
+    // The record says what was dropped; everything but the file's digest and that warning is the trimmed file's.
+    ASSERT_EQ(a["warnings"].size(), 1u);
+    EXPECT_NE(a["warnings"][0].get<std::string>().find("rows from 1.216 \xc2\xb5m on are not used"), std::string::npos);
+    EXPECT_TRUE(b["warnings"].empty());
+    for (auto* j : {&a, &b}) {
+        j->erase("warnings");
+        (*j)["provenance"].erase("sha256");
+        (*j)["provenance"].erase("file");
+    }
+    EXPECT_EQ(a, b);
+}
+
 TEST_F(Cli, TwoRunsAreByteIdentical) {
     const Result a = run("show Au --json"), b = run("show Au --json");
     EXPECT_EQ(a.out, b.out);

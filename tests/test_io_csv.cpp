@@ -5,9 +5,11 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "libfit/base/errors.hpp"
@@ -276,7 +278,7 @@ TEST_P(IoTableMalformed, ThrowsOneLineNamingFileAndLine) {
 INSTANTIATE_TEST_SUITE_P(IoTable, IoTableMalformed,
                          ::testing::Values(BadTable{"bad-unit.tsv", 1, "unknown unit 'furlong'"},
                                            BadTable{"bad-missing-field.tsv", 9, "expected 3 fields"},
-                                           BadTable{"bad-negative-eps2.txt", 6, "negative"}),
+                                           BadTable{"bad-negative-eps2.txt", 10, "negative"}),
                          [](const ::testing::TestParamInfo<BadTable>& info) {
                              std::string name = info.param.file;
                              name = name.substr(0, name.find('.'));
@@ -300,6 +302,82 @@ TEST(IoTable, HeadersThatCannotBeReadSayWhatIsExpected) {
     EXPECT_TRUE(Contains(message("mixed.csv", "wavelength_nm,n,e2\n500,1,2\n"), "one pair"));
     EXPECT_TRUE(Contains(message("no-header.dat", "500 1 2\n"), ":1: a data row before any header line"));
     EXPECT_TRUE(Contains(message("two-x.csv", "wavelength_nm,energy (eV),n,k\n500,2.4,1,2\n"), "more than one"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Rows no material has, far outside the visible range (issue 29): dropped from there outward, with one warning
+
+// Lines `first`–`last` (1-based, inclusive) of `file`.
+std::string lines_of(const fs::path& file, int first, int last) {
+    std::istringstream in(read_file(file));
+    std::string out;
+    int number = 0;
+    for (std::string line; std::getline(in, line);)
+        if (++number >= first && number <= last) out += line + "\n";
+    return out;
+}
+
+// The index of `a` and `b` identical at every nm of 360–830 (linear and pchip): the same reflectance there.
+void expect_same_visible_index(const Material& a, const Material& b) {
+    for (Interpolation interpolation : {Interpolation::linear, Interpolation::pchip})
+        for (int nm = 360; nm <= 830; ++nm) {
+            ASSERT_EQ(a.index.n(nm, interpolation, OutOfRange::error), b.index.n(nm, interpolation, OutOfRange::error));
+            ASSERT_EQ(a.index.k(nm, interpolation, OutOfRange::error), b.index.k(nm, interpolation, OutOfRange::error));
+        }
+}
+
+TEST(IoCsvUnphysicalRows, InfraredNegativeNIsDroppedWithOneWarning) {
+    TempDir dir;
+    const fs::path file = kFixtures / "drop-ir-negative-n.csv";
+    const Material m = load_nk_csv(file);
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_EQ(m.warnings[0], file.string() +
+                                 ":48: negative refractive index n = -0.35 at 1216 nm: rows from 1216 nm on are not "
+                                 "used (colour needs 360\xe2\x80\x93"
+                                 "830 nm; n and k kept over 187.9\xe2\x80\x93"
+                                 "1088 nm)");
+    // The independent form: the file without its lines 48–51 (the rows from 1216 nm on).
+    const Material trimmed = load_nk_csv(dir.write("trimmed.csv", lines_of(file, 1, 47)));
+    EXPECT_TRUE(trimmed.warnings.empty());
+    EXPECT_TRUE(std::ranges::equal(tabulated(m.index.n).wavelengths(), tabulated(trimmed.index.n).wavelengths()));
+    EXPECT_TRUE(std::ranges::equal(tabulated(m.index.k).values(), tabulated(trimmed.index.k).values()));
+    expect_same_visible_index(m, trimmed);
+    // And the YAML form of the same rows (µm × 1000 is within an ulp of the nm written here).
+    const Material yaml = load_refractiveindex_yaml(kFixtures / "drop-ir-negative-n.yml");
+    for (int nm = 360; nm <= 830; ++nm) {
+        EXPECT_NEAR(m.index(nm).real(), yaml.index(nm).real(), 1e-12) << nm;
+        EXPECT_NEAR(m.index(nm).imag(), yaml.index(nm).imag(), 1e-12) << nm;
+    }
+}
+
+TEST(IoCsvUnphysicalRows, NegativeNInsideTheVisibleRangeIsRefusedAsBefore) {
+    TempDir dir;
+    std::string text = read_file(kFixtures / "drop-ir-negative-n.csv");
+    text.replace(text.find("548.6,0.43"), 10, "548.6,-0.43");
+    const fs::path file = dir.write("inside.csv", text);
+    try {
+        (void)load_nk_csv(file);
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), file.string() + ":38: negative refractive index n = -0.43");
+    }
+}
+
+TEST(IoCsvUnphysicalRows, UltravioletNegativeEps2IsDropped) {
+    // ε₂ < 0 at 3.62 eV (342.5 nm, line 6): the rows above 3.5 eV go; 354.2 nm brackets 360 nm.
+    TempDir dir;
+    const fs::path file = kFixtures / "drop-uv-negative-eps2.txt";
+    const Material m = load_nk_csv(file);
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_TRUE(StartsWith(m.warnings[0], file.string() + ":6: negative \xce\xb5\xe2\x82\x82 = -5.53816 (absorption "
+                                                          "must be >= 0) at 342.5 nm: rows up to 342.5 nm are not "
+                                                          "used (colour needs 360\xe2\x80\x93"
+                                                          "830 nm; n and k kept over 354.2\xe2\x80\x93"))
+        << m.warnings[0];
+    const Material trimmed = load_nk_csv(dir.write("trimmed.txt", lines_of(file, 1, 1) + lines_of(file, 7, 24)));
+    EXPECT_TRUE(trimmed.warnings.empty());
+    EXPECT_TRUE(std::ranges::equal(tabulated(m.index.n).wavelengths(), tabulated(trimmed.index.n).wavelengths()));
+    expect_same_visible_index(m, trimmed);
 }
 
 }  // namespace

@@ -5,9 +5,11 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -409,6 +411,100 @@ TEST(IoRefractiveIndexCatalog, EveryCatalogFileLoadsAndCoversTheVisible) {
         }
     }
     EXPECT_GE(files, static_cast<int>(catalog_material_count()));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Rows no material has, far outside the visible range (issue 29: Lu and Garcia-Cortes's n < 0 in the infrared)
+
+// Lines `first`–`last` (1-based, inclusive) of `file`: the same file with the rows after `last` deleted.
+std::string lines_of(const fs::path& file, int first, int last) {
+    std::istringstream in(read_file(file));
+    std::string out;
+    int number = 0;
+    for (std::string line; std::getline(in, line);)
+        if (++number >= first && number <= last) out += line + "\n";
+    return out;
+}
+
+// The index of `a` and `b` identical at every nm of 360–830 (linear and pchip): the same reflectance there.
+void expect_same_visible_index(const Material& a, const Material& b) {
+    for (Interpolation interpolation : {Interpolation::linear, Interpolation::pchip})
+        for (int nm = 360; nm <= 830; ++nm) {
+            ASSERT_EQ(a.index.n(nm, interpolation, OutOfRange::error), b.index.n(nm, interpolation, OutOfRange::error));
+            ASSERT_EQ(a.index.k(nm, interpolation, OutOfRange::error), b.index.k(nm, interpolation, OutOfRange::error));
+        }
+}
+
+TEST(IoRefractiveIndexUnphysicalRows, InfraredNegativeNIsDroppedWithOneWarning) {
+    TempDir dir;
+    const fs::path file = kFixtures / "drop-ir-negative-n.yml";
+    const Material m = load_refractiveindex_yaml(file);
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_EQ(m.warnings[0], file.string() +
+                                 ":52: DATA[0].data: negative refractive index n = -0.35 at 1.216 \xc2\xb5m: rows from "
+                                 "1.216 \xc2\xb5m on are not used (colour needs 360\xe2\x80\x93"
+                                 "830 nm; n and k kept "
+                                 "over 0.1879\xe2\x80\x93"
+                                 "1.088 \xc2\xb5m)");
+    // The independent form: the file without its lines 52–55 (the four rows from 1.216 µm on).
+    const Material trimmed = load_refractiveindex_yaml(dir.write("trimmed.yml", lines_of(file, 1, 51)));
+    EXPECT_TRUE(trimmed.warnings.empty());
+    EXPECT_TRUE(std::ranges::equal(tabulated(m.index.n).wavelengths(), tabulated(trimmed.index.n).wavelengths()));
+    EXPECT_TRUE(std::ranges::equal(tabulated(m.index.k).values(), tabulated(trimmed.index.k).values()));
+    EXPECT_DOUBLE_EQ(tabulated(m.index.n).range().max_nm, 1088.0);
+    expect_same_visible_index(m, trimmed);
+}
+
+TEST(IoRefractiveIndexUnphysicalRows, NegativeNInsideTheVisibleRangeIsRefusedAsBefore) {
+    TempDir dir;
+    std::string text = read_file(kFixtures / "drop-ir-negative-n.yml");
+    text.replace(text.find("0.5486 0.43"), 11, "0.5486 -0.43");  // line 42
+    const fs::path file = dir.write("inside.yml", text);
+    try {
+        (void)load_refractiveindex_yaml(file);
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), file.string() + ":42: DATA[0].data: negative refractive index n = -0.43");
+    }
+}
+
+TEST(IoRefractiveIndexUnphysicalRows, ABadRowBracketingTheRangeIsRefused) {
+    // n < 0 from 0.892 µm on: the last valid row is 0.8211 µm, so 830 nm would need the bad row to interpolate.
+    TempDir dir;
+    std::string text = read_file(kFixtures / "drop-ir-negative-n.yml");
+    text.replace(text.find("0.8920 0.17"), 11, "0.8920 -0.17");  // line 49
+    const fs::path file = dir.write("bracket.yml", text);
+    try {
+        (void)load_refractiveindex_yaml(file);
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), file.string() + ":49: DATA[0].data: negative refractive index n = -0.17");
+    }
+}
+
+TEST(IoRefractiveIndexUnphysicalRows, UltravioletRowsAreDroppedToo) {
+    // k < 0 at 0.2214 µm (line 15 of the fixture): rows up to it go, 0.2262 µm on stay.
+    TempDir dir;
+    std::string text = read_file(kFixtures / "drop-ir-negative-n.yml");
+    text.replace(text.find("0.2214 1.30 1.427"), 17, "0.2214 1.30 -1.427");
+    const fs::path file = dir.write("uv.yml", text);
+    const Material m = load_refractiveindex_yaml(file);
+    ASSERT_EQ(m.warnings.size(), 2u);
+    EXPECT_TRUE(StartsWith(m.warnings[0], file.string() + ":15: DATA[0].data: negative extinction coefficient k = "
+                                                          "-1.427 at 0.2214 \xc2\xb5m: rows up to 0.2214 \xc2\xb5m "
+                                                          "are not used"))
+        << m.warnings[0];
+    EXPECT_TRUE(Contains(m.warnings[0], "kept over 0.2262\xe2\x80\x93"
+                                        "1.088 \xc2\xb5m"))
+        << m.warnings[0];
+    EXPECT_TRUE(Contains(m.warnings[1], ":52: ")) << m.warnings[1];
+    // The independent form: lines 1–6 and 16–51 (the rows from 0.2262 to 1.088 µm).
+    const Material trimmed =
+        load_refractiveindex_yaml(dir.write("trimmed.yml", lines_of(file, 1, 6) + lines_of(file, 16, 51)));
+    EXPECT_TRUE(trimmed.warnings.empty());
+    EXPECT_TRUE(std::ranges::equal(tabulated(m.index.n).wavelengths(), tabulated(trimmed.index.n).wavelengths()));
+    EXPECT_DOUBLE_EQ(tabulated(m.index.n).range().min_nm, 226.2);
+    expect_same_visible_index(m, trimmed);
 }
 
 }  // namespace

@@ -49,6 +49,11 @@ Material load_nk_csv(const std::filesystem::path& file) {
         detail::add_table_row(line, *layout, here, samples);
     }
     if (!layout) throw InputError({file, 1}, "empty file (expected the header 'wavelength_nm,n,k')");
+    // Rows no material has, far outside the visible range: dropped from there outward (or refused: unphysical_rows.hpp).
+    const detail::UnphysicalTrim trim =
+        detail::drop_unphysical_ends(samples.unphysical, samples.n, samples.k, 1.0, "nm");
+    std::erase_if(samples.small_n, [&](const detail::SmallN& row) { return !trim.n.keeps(row.nm); });
+    notes.insert(notes.end(), trim.warnings.begin(), trim.warnings.end());
     if (samples.n.empty() && samples.k.empty()) throw InputError({file, line_number}, "no data rows");
     if (samples.n.empty()) throw InputError({file, line_number}, "no n data (only k)");
 

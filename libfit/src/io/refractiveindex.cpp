@@ -10,6 +10,7 @@
 
 #include "base/parse_number.hpp"
 #include "base/yaml_structure.hpp"
+#include "io/unphysical_rows.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/file_digest.hpp"
 #include "libfit/base/input_file.hpp"
@@ -41,6 +42,12 @@ std::vector<std::string> split_lines(const std::string& text) {
     return lines;
 }
 
+// The rows of a tabulated block (n or k) and the block's field, for messages.
+struct Rows {
+    std::vector<SpectrumSample> samples;
+    std::string field;
+};
+
 class Reader {
 public:
     explicit Reader(std::filesystem::path file)
@@ -71,7 +78,10 @@ public:
         if (!data.IsSequence() || data.size() == 0)
             throw InputError({file_, line_of(data), "DATA"}, "expected a non-empty list of data blocks");
 
+        // Tabulated blocks are read into rows first: rows no material has, far outside the visible range, are dropped
+        // from there outward before the curves are made (or refused: unphysical_rows.hpp).
         std::optional<SpectralCurve> n, k;
+        std::optional<Rows> n_rows, k_rows;
         std::vector<std::string> types;
         for (std::size_t i = 0; i < data.size(); ++i) {
             const std::string where = "DATA[" + std::to_string(i) + "]";
@@ -80,25 +90,50 @@ public:
                 throw InputError({file_, line_of(block), where + ".type"}, "missing data type");
             const std::string type = scalar(block["type"], where + ".type");
             types.push_back(type);
-            auto assign = [&](std::optional<SpectralCurve>& slot, SpectralCurve curve, const char* what) {
-                if (slot) throw InputError({file_, line_of(block), where}, std::string("second ") + what + " block");
-                slot.emplace(std::move(curve));
+            const auto claim = [&](bool taken, const char* what) {
+                if (taken) throw InputError({file_, line_of(block), where}, std::string("second ") + what + " block");
             };
             if (type == "tabulated nk") {
+                claim(n || n_rows, "n");
+                claim(k || k_rows, "k");
                 auto [nn, kk] = tabulated(block, where, 2);
-                assign(n, std::move(nn), "n");
-                assign(k, std::move(*kk), "k");
+                n_rows.emplace(std::move(nn));
+                k_rows.emplace(std::move(kk));
             } else if (type == "tabulated n") {
-                assign(n, tabulated(block, where, 1).first, "n");
+                claim(n || n_rows, "n");
+                n_rows.emplace(tabulated(block, where, 1).first);
             } else if (type == "tabulated k") {
-                assign(k, tabulated(block, where, 1, /*is_k=*/true).first, "k");
+                claim(k || k_rows, "k");
+                k_rows.emplace(tabulated(block, where, 1, /*is_k=*/true).first);
             } else if (type == "formula 1" || type == "formula 2") {
-                assign(n, formula(block, where, type == "formula 1"), "n");
+                claim(n || n_rows, "n");
+                n.emplace(formula(block, where, type == "formula 1"));
             } else {
                 throw InputError({file_, line_of(block["type"]), where + ".type"},
                                  "unsupported data type '" + type + "' (supported: " + kSupportedTypes + ")");
             }
         }
+        std::vector<SpectrumSample> no_rows;
+        const detail::UnphysicalTrim trim = detail::drop_unphysical_ends(
+            unphysical_, n_rows ? n_rows->samples : no_rows, k_rows ? k_rows->samples : no_rows, 1e-3, "\xc2\xb5m");
+        std::erase_if(small_n_, [&](const detail::SmallN& row) { return !trim.n.keeps(row.nm); });
+        m.warnings.insert(m.warnings.end(), trim.warnings.begin(), trim.warnings.end());
+        // Repeated wavelengths, one warning per block (a "tabulated nk" block: the larger count of its n and k).
+        std::vector<std::pair<std::string, std::size_t>> conflicts;
+        for (auto [rows, curve] : {std::pair{&n_rows, &n}, std::pair{&k_rows, &k}}) {
+            if (!*rows) continue;
+            Spectrum values(std::move((*rows)->samples));
+            const std::size_t count = values.conflicting_duplicates();
+            if (!conflicts.empty() && conflicts.back().first == (*rows)->field)
+                conflicts.back().second = std::max(conflicts.back().second, count);
+            else
+                conflicts.emplace_back((*rows)->field, count);
+            curve->emplace(std::move(values));
+        }
+        for (const auto& [field, count] : conflicts)
+            if (count > 0)
+                warnings_.push_back(file_.string() + ": " + field + ": " + std::to_string(count) +
+                                    " repeated wavelength(s) with different values: their mean is used");
         if (!n) throw InputError({file_, line_of(data), "DATA"}, "no n data (only k)");
         // A "tabulated n" row with n near 0 is |n + ik| near 0 where k is too there (no k data: k = 0 everywhere).
         detail::check_small_n(small_n_,
@@ -164,17 +199,17 @@ private:
         return mark.line + 1 + (block ? 1 : 0);
     }
 
-    // Rows "λ v1 [v2]" of a tabulated block; columns = number of values after λ.
-    std::pair<SpectralCurve, std::optional<SpectralCurve>> tabulated(const YAML::Node& block, const std::string& where,
-                                                                     int columns, bool is_k = false) {
+    // Rows "λ v1 [v2]" of a tabulated block; columns = number of values after λ. Rows with values outside the import
+    // range go to unphysical_.
+    std::pair<Rows, Rows> tabulated(const YAML::Node& block, const std::string& where, int columns, bool is_k = false) {
         const std::string field = where + ".data";
         const YAML::Node data = block["data"];
         if (!data) throw InputError({file_, line_of(block), field}, "missing");
         const std::string text = scalar(data, field);
         const int first_line = first_content_line(data);
-        std::vector<SpectrumSample> first, second;
+        Rows first{{}, field}, second{{}, field};
         std::istringstream in(text);
-        int row = 0;
+        int row = 0, rows = 0;
         for (std::string line; std::getline(in, line); ++row) {
             const auto fields = detail::split_whitespace(line);
             if (fields.empty()) continue;
@@ -183,31 +218,27 @@ private:
                 throw InputError(here, "expected " + std::to_string(columns + 1) + " numbers per row, found " +
                                            std::to_string(fields.size()));
             const std::vector<double> v = detail::parse_row(fields, here);
-            detail::check_optical_row(v, fields, columns == 2 ? "nk" : is_k ? "k" : "n", here);
+            if (v[0] <= 0.0) throw InputError(here, "wavelength must be positive");
             const double nm = detail::wavelength_nm(v[0], 1000.0, fields[0], here);  // µm → nm
-            for (int c = 1; c <= columns; ++c) detail::check_index_limit(v[c], is_k || c == 2, fields[c], here);
-            if (columns == 2) detail::check_index_modulus(v[1], v[2], here);
+            if (rows >= static_cast<int>(kMaxTableRows))
+                throw InputError(here, "more than " + std::to_string(kMaxTableRows) + " data rows (the limit)");
+            ++rows;
+            try {
+                detail::check_optical_row(v, fields, columns == 2 ? "nk" : is_k ? "k" : "n", here);
+                for (int c = 1; c <= columns; ++c) detail::check_index_limit(v[c], is_k || c == 2, fields[c], here);
+                if (columns == 2) detail::check_index_modulus(v[1], v[2], here);
+            } catch (const InputError& e) {
+                unphysical_.push_back({nm, e, columns == 2 ? 3u : is_k ? 2u : 1u});
+                continue;
+            }
             if (columns == 1 && !is_k && v[1] < detail::kMinIndexModulus) {
                 small_n_.push_back({here, nm, v[1]});
             }
-            if (first.size() >= kMaxTableRows)
-                throw InputError(here, "more than " + std::to_string(kMaxTableRows) + " data rows (the limit)");
-            first.push_back({nm, v[1]});
-            if (columns == 2) second.push_back({nm, v[2]});
+            first.samples.push_back({nm, v[1]});
+            if (columns == 2) second.samples.push_back({nm, v[2]});
         }
-        if (first.empty()) throw InputError({file_, line_of(data), field}, "no data rows");
-        Spectrum values(std::move(first));
-        std::optional<SpectralCurve> k;
-        std::size_t conflicts = values.conflicting_duplicates();
-        if (columns == 2) {
-            Spectrum k_values(std::move(second));
-            conflicts = std::max(conflicts, k_values.conflicting_duplicates());
-            k.emplace(std::move(k_values));
-        }
-        if (conflicts > 0)
-            warnings_.push_back(file_.string() + ": " + field + ": " + std::to_string(conflicts) +
-                                " repeated wavelength(s) with different values: their mean is used");
-        return {std::move(values), std::move(k)};
+        if (rows == 0) throw InputError({file_, line_of(data), field}, "no data rows");
+        return {std::move(first), std::move(second)};
     }
 
     SellmeierFormula formula(const YAML::Node& block, const std::string& where, bool squared) const {
@@ -247,7 +278,8 @@ private:
     std::string text_;
     std::vector<std::string> lines_;  // to tell block scalars from plain ones
     std::vector<std::string> warnings_;
-    std::vector<detail::SmallN> small_n_;  // rows of "tabulated n" blocks with n < 1e-6
+    std::vector<detail::SmallN> small_n_;            // rows of "tabulated n" blocks with n < 1e-6
+    std::vector<detail::UnphysicalRow> unphysical_;  // rows outside the import range (unphysical_rows.hpp)
 };
 
 }  // namespace

@@ -127,6 +127,35 @@ std::vector<std::string> header_fields(std::string_view line, FieldSeparator sep
     return out;
 }
 
+// n and k of a row (from ε₁, ε₂ when given) checked against the import range: InputError at `where` for a negative
+// n, k or ε₂, n or k above 1e6 or |n + ik| near 0 (a row giving n alone with n near 0 is checked once k is known).
+void physical_values(double& n, double& k, double e1, double e2, std::string_view n_text, std::string_view k_text,
+                     std::string_view e1_text, std::string_view e2_text, const InputLocation& where) {
+    if (!std::isnan(e1)) {
+        if (e2 < 0.0)
+            throw InputError(where,
+                             "negative \xce\xb5\xe2\x82\x82 = " + std::string(e2_text) + " (absorption must be >= 0)");
+        // |ε| = n² + k²: above 2e12, n or k is above the import limit (and near the double maximum (|ε| + ε₁)/2
+        // overflowed to inf). Halves first, so that the modulus itself stays finite (the same values otherwise).
+        const double half_modulus = std::hypot(e1 / 2.0, e2 / 2.0);
+        if (half_modulus > kMaxIndex * kMaxIndex)
+            throw InputError(where, "\xce\xb5\xe2\x82\x81 = " + std::string(e1_text) +
+                                        ", \xce\xb5\xe2\x82\x82 = " + std::string(e2_text) +
+                                        ": n or k would be above 1e6 (the largest n or k metalfit accepts)");
+        n = std::sqrt(std::max(0.0, half_modulus + e1 / 2.0));
+        k = std::sqrt(std::max(0.0, half_modulus - e1 / 2.0));
+        const std::string converted[2]{significant_text(n, 6) + " (from \xce\xb5)",
+                                       significant_text(k, 6) + " (from \xce\xb5)"};
+        check_index_limit(n, false, converted[0], where);
+        check_index_limit(k, true, converted[1], where);
+    }
+    if (n < 0.0) throw InputError(where, "negative refractive index n = " + std::string(n_text));
+    if (k < 0.0) throw InputError(where, "negative extinction coefficient k = " + std::string(k_text));
+    if (!std::isnan(n)) check_index_limit(n, false, n_text, where);
+    if (!std::isnan(k)) check_index_limit(k, true, k_text, where);
+    if (!std::isnan(n) && !std::isnan(k)) check_index_modulus(n, k, where);
+}
+
 }  // namespace
 
 bool TableLayout::has(ColumnQuantity q) const {
@@ -260,32 +289,16 @@ void add_table_row(std::string_view line, const TableLayout& layout, const Input
     if (!std::isfinite(nm) || nm <= 0.0)
         throw InputError(where, "wavelength " + std::string(x_text) + " (column '" + abscissa->header +
                                     "') is out of range after unit conversion to nm");
-    if (!std::isnan(e1)) {
-        if (e2 < 0.0)
-            throw InputError(where,
-                             "negative \xce\xb5\xe2\x82\x82 = " + std::string(e2_text) + " (absorption must be >= 0)");
-        // |ε| = n² + k²: above 2e12, n or k is above the import limit (and near the double maximum (|ε| + ε₁)/2
-        // overflowed to inf). Halves first, so that the modulus itself stays finite (the same values otherwise).
-        const double half_modulus = std::hypot(e1 / 2.0, e2 / 2.0);
-        if (half_modulus > kMaxIndex * kMaxIndex)
-            throw InputError(where, "\xce\xb5\xe2\x82\x81 = " + std::string(e1_text) +
-                                        ", \xce\xb5\xe2\x82\x82 = " + std::string(e2_text) +
-                                        ": n or k would be above 1e6 (the largest n or k metalfit accepts)");
-        n = std::sqrt(std::max(0.0, half_modulus + e1 / 2.0));
-        k = std::sqrt(std::max(0.0, half_modulus - e1 / 2.0));
-        const std::string converted[2]{significant_text(n, 6) + " (from \xce\xb5)",
-                                       significant_text(k, 6) + " (from \xce\xb5)"};
-        check_index_limit(n, false, converted[0], where);
-        check_index_limit(k, true, converted[1], where);
+    try {
+        physical_values(n, k, e1, e2, n_text, k_text, e1_text, e2_text, where);
+    } catch (const InputError& e) {
+        samples.unphysical.push_back(
+            {nm, e,
+             (layout.has(ColumnQuantity::n) || layout.has(ColumnQuantity::eps1) ? 1u : 0u) |
+                 (layout.has(ColumnQuantity::k) || layout.has(ColumnQuantity::eps2) ? 2u : 0u)});
+        return;
     }
-    if (n < 0.0) throw InputError(where, "negative refractive index n = " + std::string(n_text));
-    if (k < 0.0) throw InputError(where, "negative extinction coefficient k = " + std::string(k_text));
-    if (!std::isnan(n)) check_index_limit(n, false, n_text, where);
-    if (!std::isnan(k)) check_index_limit(k, true, k_text, where);
-    if (!std::isnan(n) && !std::isnan(k))
-        check_index_modulus(n, k, where);
-    else if (!std::isnan(n) && n < kMinIndexModulus)
-        samples.small_n.push_back({where, nm, n});
+    if (std::isnan(k) && !std::isnan(n) && n < kMinIndexModulus) samples.small_n.push_back({where, nm, n});
     if (!std::isnan(n)) samples.n.push_back({nm, n});
     if (!std::isnan(k)) samples.k.push_back({nm, k});
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "base/parse_number.hpp"
+#include "io/unphysical_rows.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/spectral/spectrum.hpp"
 
@@ -51,10 +52,12 @@ struct TableSamples {
     std::vector<SpectrumSample> n, k;
     std::vector<std::string> ignored_columns;  // headers of columns that were not read
     std::vector<SmallN> small_n;               // rows giving n < 1e-6 without k: checked once k is known
+    std::vector<UnphysicalRow> unphysical;     // rows refused by the import range: drop_unphysical_ends decides
 };
 
 // Adds one data row read under `layout` to `samples` (ε₁, ε₂ converted to n, k). Throws InputError at `where` for a
-// wrong field count, a non-number, a non-positive abscissa, a negative n or k (or ε₂).
+// wrong field count, a non-number, a non-positive abscissa; a row with a negative n or k (or ε₂), n or k above 1e6 or
+// |n + ik| near 0 goes to `samples.unphysical` (refused or dropped once the file is read: unphysical_rows.hpp).
 void add_table_row(std::string_view line, const TableLayout& layout, const InputLocation& where, TableSamples& samples);
 
 // "CSV" for comma-separated files (as before), else "table (tab-separated)" etc.: the provenance format name.
