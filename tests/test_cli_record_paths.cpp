@@ -15,6 +15,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using metalfit::test::kData;
+using metalfit::test::kFixturesDir;
 using metalfit::test::kMetalfitExe;
 using metalfit::test::read_file;
 using metalfit::test::TempDir;
@@ -149,6 +150,28 @@ TEST_F(RecordPaths, ReportRecordIsPortable) {
     const auto j = nlohmann::json::parse(read_file(work_ / "report" / "report.json"));
     expect_portable(j, "report.json");
     expect_data_file(j["provenance"]["ocio_config"]["file"], "ocio/config.ocio");
+}
+
+// A file whose far-infrared rows are dropped with a warning (the importer names the file as given): given by an
+// absolute path, outside and inside the working folder, its warning in fit, show and report records names it as the
+// records name files, never by the machine's path.
+TEST_F(RecordPaths, ImporterWarningsNameTheFileAsRecordsDo) {
+    fs::copy_file(fs::path(kFixturesDir) / "drop-ir-negative-n.yml", elsewhere_ / "ir.yml");
+    fs::copy_file(fs::path(kFixturesDir) / "drop-ir-negative-n.yml", work_ / "ir-here.yml");
+    const std::string far = (elsewhere_ / "ir.yml").string(), here = (work_ / "ir-here.yml").string();
+    const auto fit = json_of("fit '" + far + "' '" + here + "' --model schlick --json");
+    expect_portable(fit, "fit --json");
+    for (const auto& [id, expected] :
+         {std::pair<std::string, std::string>{"ir", "outside:ir.yml:"}, {"ir-here", "ir-here.yml:"}}) {
+        const auto& warnings = fit["materials"][id]["warnings"];
+        ASSERT_FALSE(warnings.empty()) << id << ": the fixture's dropped rows give no warning";
+        EXPECT_TRUE(warnings[0].get<std::string>().starts_with(expected)) << warnings[0];
+    }
+    expect_portable(json_of("show '" + far + "' --json"), "show --json");
+    const Result r = run_in(work_, "report '" + far + "' --model schlick --renders off -o report");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find(far), std::string::npos) << "stderr names the file as given: " << r.err;
+    expect_portable(nlohmann::json::parse(read_file(work_ / "report" / "report.json")), "report.json");
 }
 
 // The database, the OCIO config and a film file all given by absolute paths outside the working folder (a copy of

@@ -54,4 +54,22 @@ std::string record_path(const fs::path& file, const fs::path& data_dir) {
     return std::string(kOutsidePathMarker) + file.filename().string();
 }
 
+std::vector<std::string> record_messages(const std::vector<std::string>& messages, const fs::path& file,
+                                         const fs::path& data_dir) {
+    if (file.empty()) return messages;
+    const std::string written = record_path(file, data_dir);
+    std::vector<std::string> spellings;
+    for (const fs::path& p : {absolute_normal(file), file})
+        if (p.is_absolute() && p.string() != written) spellings.push_back(p.string());
+    std::vector<std::string> out;
+    for (std::string message : messages) {
+        for (const std::string& spelling : spellings)
+            for (std::size_t at = message.find(spelling); at != std::string::npos;
+                 at = message.find(spelling, at + written.size()))
+                message.replace(at, spelling.size(), written);
+        out.push_back(std::move(message));
+    }
+    return out;
+}
+
 }  // namespace metalfit

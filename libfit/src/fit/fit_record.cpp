@@ -170,7 +170,7 @@ Json material_record(const MaterialFit& m, const std::filesystem::path& data_dir
                    {"F0", rgb_json(m.F0)},
                    {"out_of_gamut_F0", out_of_gamut},
                    {"white_raw_rgb", rgb_json(m.raw_white)},
-                   {"warnings", m.material.warnings},
+                   {"warnings", record_messages(m.material.warnings, m.material.provenance.file, data_dir)},
                    {"models", models}};
     if (budget) record["budget"] = budget_record(*budget);
     if (recommendation) record["recommendation"] = *recommendation;

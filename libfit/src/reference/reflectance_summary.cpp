@@ -69,7 +69,7 @@ nlohmann::json reflectance_record(const Material& material, const ReferenceCurve
                        {"white_raw_rgb", rgb_json(curve.raw_white())},
                        {"metalfit_version", METALFIT_VERSION}};
     if (material.layers && !material.layers->empty()) j["provenance"]["stack"] = stack_record(material, data_dir);
-    std::vector<std::string> warnings = material.warnings;
+    std::vector<std::string> warnings = record_messages(material.warnings, material.provenance.file, data_dir);
     warnings.insert(warnings.end(), curve.held_constant().begin(), curve.held_constant().end());
     j["warnings"] = warnings;
     return j;

@@ -298,7 +298,7 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
             {"source", material.source},
             {"page", report_detail::material_page_file(material)},
             {"provenance", provenance_json(fit, in)},
-            {"warnings", material.warnings},
+            {"warnings", record_messages(material.warnings, material.provenance.file, in.fit.data_dir)},
             {"F0", rgb_json(f0)},
             {"F82", rgb_json(f82)},
             {"out_of_gamut_F0", out_of_gamut},

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace metalfit {
 
@@ -20,5 +21,12 @@ inline constexpr std::string_view kOutsidePathMarker = "outside:";
 // `file` (absolute or relative to the working folder) as records write it; "" for no file (an empty path). Never
 // throws; never starts with '/'.
 std::string record_path(const std::filesystem::path& file, const std::filesystem::path& data_dir);
+
+// Messages about `file` (importer warnings name it as the user gave it: "/home/me/gold.yml:22: …") as records write
+// them: each absolute spelling of `file` (as given, and its absolute normal form) replaced by record_path(file,
+// data_dir). A file given by a relative path is left as it is: it is its own record path or a path below the
+// working folder.
+std::vector<std::string> record_messages(const std::vector<std::string>& messages, const std::filesystem::path& file,
+                                         const std::filesystem::path& data_dir);
 
 }  // namespace metalfit
