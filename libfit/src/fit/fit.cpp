@@ -104,10 +104,16 @@ void FitConstraints::check_combination() const {
 }
 
 ModelResult fit_model(const Model& model, const SampledReference& reference, const ClosedFormInput& input,
-                      FitTimings* timings, const FitConstraints& constraints) {
+                      FitTimings* timings, const FitConstraints& constraints, const ModelResult* related) {
     constraints.check_combination();
     if ((constraints.pin_f0 || constraints.f0_tolerance) && !model.can_pin_f0())
         throw UsageError("--pin F0: model " + std::string(model.id()) + " cannot hold F(1) at a given value");
+    std::optional<ModelResult> own_related;
+    if (!model.starts_from().empty() && !(related && related->model && related->model->id() == model.starts_from())) {
+        own_related = fit_model(find_model(model.starts_from()), reference, input, timings, constraints);
+        related = &*own_related;
+    }
+    if (model.starts_from().empty()) related = nullptr;
     const RGB R1 = reference.dense().back().value;  // R(1): the dense grid ends at μ = 1
     const ErrorMetric metric = reference.settings().metric;
     FitTimings local;
@@ -143,6 +149,17 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
     for (int c = 0; c < 3; ++c) {
         const ChannelTarget target = reference.target(c);
         auto starts = starts_for_channel(model, result.closed_forms, c, target);
+        // The related model's optimum, mapped: where it lies strictly inside this model's bounds it is this model's
+        // optimum too (the same curve; any curve this model draws is one the related model can draw), so it is the
+        // only start (polished); else it is the first.
+        if (related && !related->fit.value.params[c].empty())
+            if (ChannelParameters start = model.start_from(related->fit.value.params[c]); !start.empty()) {
+                NamedStart mapped{"fit " + std::string(model.starts_from()), std::move(start)};
+                if (outside_bounds(model, mapped.params).empty() && at_bound(model, mapped.params).empty())
+                    starts = {std::move(mapped)};
+                else
+                    starts.insert(starts.begin(), std::move(mapped));
+            }
         ChannelConstraints channel_constraints;
         channel_constraints.unit_range = constraints.gamut_fit;
         std::optional<ChannelFit> unpinned;  // --pin F0: kept where the pin needs a parameter outside its bounds
@@ -322,8 +339,13 @@ MaterialFit fit_material(const Material& material, const Colorimetry& colorimetr
     result.material.warnings.insert(result.material.warnings.end(), curve.held_constant().begin(),
                                     curve.held_constant().end());
     const ClosedFormInput input = closed_form_input(curve, material, request.spectral);
-    for (const Model* model : request.models)
-        result.models.push_back(fit_model(*model, reference, input, &timings, request.constraints));
+    for (const Model* model : request.models) {
+        // A model that starts from another's fit takes it from this material's results where it was fitted already.
+        const ModelResult* related = nullptr;
+        for (const ModelResult& done : result.models)
+            if (!model->starts_from().empty() && done.model->id() == model->starts_from()) related = &done;
+        result.models.push_back(fit_model(*model, reference, input, &timings, request.constraints, related));
+    }
     result.timings = timings;
     return result;
 }

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "libfit/base/bounded_levenberg_marquardt.hpp"
 #include "libfit/base/line_minimum.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/models/model_math.hpp"
@@ -189,15 +190,80 @@ private:
 };
 
 // Models fitted by variable projection (M::Projection, e.g. LazanyiComp): the linear parameters are solved exactly
-// for given non-linear ones (Projection::kNonlinearParameters, none or one); with one, the projected cost is minimised
-// in it by line_minimum (Projection::at gives the cost and its derivative), and the Projection gives the full
-// parameters at its solution.
+// for given non-linear ones (Projection::kNonlinearParameters, none, one or two); with one, the projected cost is
+// minimised in it by line_minimum (Projection::at gives the cost and its derivative); with two, the projected
+// residuals by bounded_levenberg_marquardt (Projection(z, r, J) gives them and Kaufman's Jacobian). The Projection
+// gives the full parameters at its solution.
 template <class M>
-concept ProjectedFit = requires(const typename M::Projection& p, const double* z, const ChannelParameters& start) {
+concept ProjectedFit = requires(typename M::Projection& p, const double* z, const ChannelParameters& start) {
     { M::Projection::kNonlinearParameters.size() } -> std::convertible_to<std::size_t>;
     { p.residuals() } -> std::convertible_to<std::size_t>;
     { p.parameters(z, start) } -> std::same_as<ChannelParameters>;
 };
+
+// The plain fit of a model with two non-linear parameters left by its Projection: from each start, bounded
+// Levenberg–Marquardt on the projected residuals; the cost compared and kept is that of the full parameters
+// returned (ties keep the first). Starts with the same non-linear parameters take the same path: skipped; a start
+// whose path comes within kSameMinimum of an earlier start's minimum is ending there: abandoned. A start
+// whose cost at its first accepted step from iteration StartPruning::kIteration on is still above kFactor times the best final cost so far is
+// abandoned (StartPruning's rule).
+template <class M>
+ChannelFit fit_projected_pair(const ChannelTarget& target, std::span<const NamedStart> starts,
+                              typename M::Projection& projection) {
+    constexpr auto kNonlinear = M::Projection::kNonlinearParameters;
+    const std::array<double, 2> lower{M::kParameters[kNonlinear[0]].lower, M::kParameters[kNonlinear[1]].lower};
+    const std::array<double, 2> upper{M::kParameters[kNonlinear[0]].upper, M::kParameters[kNonlinear[1]].upper};
+    ChannelFit best;
+    best.solver.final_cost = std::numeric_limits<double>::infinity();
+    constexpr double kSameMinimum = 1e-6;
+    std::vector<std::array<double, 2>> tried, minima;  // the starts' non-linear parameters; the minima found
+    for (std::size_t s = 0; s < starts.size(); ++s) {
+        const ChannelParameters x = clamp_to_bounds<M>(starts[s].params);
+        const std::array<double, 2> z0{x[kNonlinear[0]], x[kNonlinear[1]]};
+        if (std::find(tried.begin(), tried.end(), z0) != tried.end()) continue;
+        tried.push_back(z0);
+        const double best_so_far = best.solver.final_cost;
+        const auto solve = bounded_levenberg_marquardt<2>(
+            [&projection](const double* z, double* r, double* J) { return projection(z, r, J); },
+            projection.residuals(), z0, lower, upper,
+            [best_so_far, &minima, &lower, &upper](int iteration, double cost, const std::array<double, 2>& z) {
+                if (iteration >= StartPruning::kIteration && std::isfinite(best_so_far) &&
+                    cost > StartPruning::kFactor * best_so_far)
+                    return false;
+                // Within kSameMinimum of an earlier start's minimum (relative to the bounds' widths): the same
+                // valley and minimum, and ties keep the first.
+                for (const auto& m : minima)
+                    if (std::abs(z[0] - m[0]) <= kSameMinimum * (upper[0] - lower[0]) &&
+                        std::abs(z[1] - m[1]) <= kSameMinimum * (upper[1] - lower[1]))
+                        return false;
+                return true;
+            });
+        if (solve.abandoned || !std::isfinite(solve.cost)) continue;
+        minima.push_back(solve.x);
+        const ChannelParameters full = clamp_to_bounds<M>(projection.parameters(solve.x.data(), x));
+        double final_cost = 0;
+        for (std::size_t i = 0; i < target.mu.size(); ++i) {
+            const double r = target.scale[i] * (M::evaluate(full.data(), target.mu[i]) - target.value[i]);
+            final_cost += 0.5 * r * r;
+        }
+        if (!std::isfinite(final_cost) || !(final_cost < best.solver.final_cost)) continue;
+        if constexpr (CheckedCurve<M>)
+            if (const std::string why = M::inadmissible(full.data()); !why.empty()) {
+                if (best.discarded++ == 0) best.discarded_why = why;
+                continue;
+            }
+        best.params = full;
+        best.solver.method = kProjectedLmSolve;
+        best.solver.start = starts[s].name;
+        best.solver.iterations = solve.iterations;
+        best.solver.termination =
+            ceres::TerminationTypeToString(solve.converged ? ceres::CONVERGENCE : ceres::NO_CONVERGENCE);
+        best.solver.initial_cost = solve.initial_cost;
+        best.solver.final_cost = final_cost;
+    }
+    best.solver.starts = static_cast<int>(starts.size());
+    return best;
+}
 
 // Fits from every start and keeps the lowest final cost (the first one on ties, so the result does not depend
 // on anything but the starts' order).
@@ -318,58 +384,62 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         // one ends there: both skipped, ties keep the first (docs/decisions.md).
         if (!constraints.unit_range && !constraints.pinned_f0 && !constraints.f0_range) {
             constexpr auto kNonlinear = M::Projection::kNonlinearParameters;
-            static_assert(kNonlinear.size() <= 1, "variable projection leaves at most one non-linear parameter");
+            static_assert(kNonlinear.size() <= 2, "variable projection leaves at most two non-linear parameters");
             typename M::Projection projection(target);
-            std::vector<double> tried, minima;  // the starts' non-linear parameter; the minima found from them
-            for (std::size_t s = 0; s < starts.size(); ++s) {
-                const ChannelParameters x = clamp_to_bounds<M>(starts[s].params);
-                std::array<double, kNonlinear.size()> z;
-                // Nothing non-linear: the projection is the solution (no iteration; the start's n is what differs).
-                int iterations = 0;
-                bool converged = true;
-                double initial_cost = 0;
-                if constexpr (kNonlinear.size() == 1) {
-                    z[0] = x[kNonlinear[0]];
-                    if (std::find(tried.begin(), tried.end(), z[0]) != tried.end()) continue;
-                    tried.push_back(z[0]);
-                    const Parameter& bounds = M::kParameters[kNonlinear[0]];
-                    const LineMinimum m = line_minimum(
-                        [&projection](double alpha) {
-                            const auto p = projection.at(alpha);
-                            return LinePoint{alpha, p.cost, p.slope};
-                        },
-                        z[0], bounds.lower, bounds.upper, minima);
-                    if (m.same_as >= 0)
-                        continue;  // the valley of an earlier start: its minimum, and ties keep the first
-                    z[0] = m.minimum.x;
-                    minima.push_back(z[0]);
-                    iterations = m.evaluations;
-                    converged = m.converged;
-                    initial_cost = m.start.value;
-                }
-                const ChannelParameters full = clamp_to_bounds<M>(projection.parameters(z.data(), x));
-                double final_cost = 0;
-                for (std::size_t i = 0; i < target.mu.size(); ++i) {
-                    const double r = target.scale[i] * (M::evaluate(full.data(), target.mu[i]) - target.value[i]);
-                    final_cost += 0.5 * r * r;
-                }
-                if (!std::isfinite(final_cost) || !(final_cost < best.solver.final_cost)) continue;
-                if constexpr (CheckedCurve<M>)
-                    if (const std::string why = M::inadmissible(full.data()); !why.empty()) {
-                        if (best.discarded++ == 0) best.discarded_why = why;
-                        continue;  // e.g. a pole in [0, 1]: never kept
+            if constexpr (kNonlinear.size() == 2) {
+                return fit_projected_pair<M>(target, starts, projection);
+            } else {
+                std::vector<double> tried, minima;  // the starts' non-linear parameter; the minima found from them
+                for (std::size_t s = 0; s < starts.size(); ++s) {
+                    const ChannelParameters x = clamp_to_bounds<M>(starts[s].params);
+                    std::array<double, kNonlinear.size()> z;
+                    // Nothing non-linear: the projection is the solution (no iteration; the start's n is what differs).
+                    int iterations = 0;
+                    bool converged = true;
+                    double initial_cost = 0;
+                    if constexpr (kNonlinear.size() == 1) {
+                        z[0] = x[kNonlinear[0]];
+                        if (std::find(tried.begin(), tried.end(), z[0]) != tried.end()) continue;
+                        tried.push_back(z[0]);
+                        const Parameter& bounds = M::kParameters[kNonlinear[0]];
+                        const LineMinimum m = line_minimum(
+                            [&projection](double alpha) {
+                                const auto p = projection.at(alpha);
+                                return LinePoint{alpha, p.cost, p.slope};
+                            },
+                            z[0], bounds.lower, bounds.upper, minima);
+                        if (m.same_as >= 0)
+                            continue;  // the valley of an earlier start: its minimum, and ties keep the first
+                        z[0] = m.minimum.x;
+                        minima.push_back(z[0]);
+                        iterations = m.evaluations;
+                        converged = m.converged;
+                        initial_cost = m.start.value;
                     }
-                best.params = full;
-                best.solver.method = kNonlinear.size() > 0 ? kProjectedLineSolve : kLinearSolve;
-                best.solver.start = starts[s].name;
-                best.solver.iterations = iterations;
-                best.solver.termination =
-                    ceres::TerminationTypeToString(converged ? ceres::CONVERGENCE : ceres::NO_CONVERGENCE);
-                best.solver.initial_cost = kNonlinear.size() > 0 ? initial_cost : final_cost;
-                best.solver.final_cost = final_cost;
+                    const ChannelParameters full = clamp_to_bounds<M>(projection.parameters(z.data(), x));
+                    double final_cost = 0;
+                    for (std::size_t i = 0; i < target.mu.size(); ++i) {
+                        const double r = target.scale[i] * (M::evaluate(full.data(), target.mu[i]) - target.value[i]);
+                        final_cost += 0.5 * r * r;
+                    }
+                    if (!std::isfinite(final_cost) || !(final_cost < best.solver.final_cost)) continue;
+                    if constexpr (CheckedCurve<M>)
+                        if (const std::string why = M::inadmissible(full.data()); !why.empty()) {
+                            if (best.discarded++ == 0) best.discarded_why = why;
+                            continue;  // e.g. a pole in [0, 1]: never kept
+                        }
+                    best.params = full;
+                    best.solver.method = kNonlinear.size() > 0 ? kProjectedLineSolve : kLinearSolve;
+                    best.solver.start = starts[s].name;
+                    best.solver.iterations = iterations;
+                    best.solver.termination =
+                        ceres::TerminationTypeToString(converged ? ceres::CONVERGENCE : ceres::NO_CONVERGENCE);
+                    best.solver.initial_cost = kNonlinear.size() > 0 ? initial_cost : final_cost;
+                    best.solver.final_cost = final_cost;
+                }
+                best.solver.starts = static_cast<int>(starts.size());
+                return best;
             }
-            best.solver.starts = static_cast<int>(starts.size());
-            return best;
         }
     }
     // A start equal to an earlier one (after clamping) takes the same path to the same cost, and ties keep the

@@ -36,6 +36,18 @@ public:
         else
             return {};
     }
+    std::string_view starts_from() const override {
+        if constexpr (requires { M::kStartsFrom; })
+            return M::kStartsFrom;
+        else
+            return {};
+    }
+    ChannelParameters start_from(const ChannelParameters& related) const override {
+        if constexpr (requires { M::start_from(related); })
+            return M::start_from(related);
+        else
+            return {};
+    }
     ChannelFit fit(const ChannelTarget& target, std::span<const NamedStart> starts,
                    const ChannelConstraints& constraints) const override {
         return detail::fit_channel<M>(target, starts, constraints);

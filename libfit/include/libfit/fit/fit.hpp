@@ -103,9 +103,13 @@ struct FitConstraints {
     void check_combination() const;
 };
 
-// Requires the chosen metric to be defined on the reference (see SampledReference::rel_undefined).
+// Requires the chosen metric to be defined on the reference (see SampledReference::rel_undefined). A model that
+// starts from another model's fit (Model::starts_from: gulbrandsen from conductor-rgb) takes `related` where it is
+// that model's result on the same reference and constraints, and fits that model itself otherwise (the result is the
+// same either way).
 ModelResult fit_model(const Model& model, const SampledReference& reference, const ClosedFormInput& input,
-                      FitTimings* timings = nullptr, const FitConstraints& constraints = {});
+                      FitTimings* timings = nullptr, const FitConstraints& constraints = {},
+                      const ModelResult* related = nullptr);
 
 struct MaterialFitRequest {
     SpectralOptions spectral;

@@ -104,6 +104,9 @@ inline constexpr const char* kCeresSolve = "Ceres Levenberg-Marquardt, dense QR,
 inline constexpr const char* kProjectedLineSolve =
     "bounded line minimisation of the non-linear parameter (bracketing, then Brent's root search on the derivative); "
     "the linear ones by variable projection";
+inline constexpr const char* kProjectedLmSolve =
+    "bounded Levenberg-Marquardt on the two non-linear parameters (Kaufman's Jacobian); the linear ones by variable "
+    "projection";
 inline constexpr const char* kLinearSolve = "linear least squares (variable projection): no iterative solve";
 
 struct ChannelFit {
@@ -153,6 +156,10 @@ public:
     // Starts computed from the target itself, where a model has parameters it is linear in (solved exactly for a grid
     // of the others: variable projection). Empty for most models.
     virtual std::vector<ChannelParameters> target_starts(const ChannelTarget& target) const = 0;
+    // The model whose fitted curve this model can also draw (the same curves in other coordinates: gulbrandsen's are
+    // conductor-rgb's), "" where none: the fit starts from that model's optimum, mapped by start_from, first.
+    virtual std::string_view starts_from() const { return {}; }
+    virtual ChannelParameters start_from(const ChannelParameters& /*related*/) const { return {}; }
     // Ceres fit of one channel from each start (clamped into the bounds); the best result wins.
     virtual ChannelFit fit(const ChannelTarget& target, std::span<const NamedStart> starts,
                            const ChannelConstraints& constraints) const = 0;

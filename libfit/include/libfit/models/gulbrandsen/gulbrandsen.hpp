@@ -94,6 +94,13 @@ struct Gulbrandsen {
     // "nk-650-550-450" and "nk-700-550-435": the data's n, k at three wavelengths mapped to r, g.
     static std::vector<ClosedForm> closed_forms(const ClosedFormInput& input);
     static std::vector<ChannelParameters> neutral_starts() { return {{0.5, 0.5}}; }
+    // The curves are conductor-rgb's: its fit (n, k) mapped to (r, g) is the first start (the optimum itself where it
+    // maps inside the bounds).
+    static constexpr std::string_view kStartsFrom = "conductor-rgb";
+    static ChannelParameters start_from(const ChannelParameters& nk) {
+        const auto rg = from_nk({nk[0], nk[1]});
+        return {rg[0], rg[1]};
+    }
 };
 
 }  // namespace metalfit::models

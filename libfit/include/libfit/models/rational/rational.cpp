@@ -44,4 +44,53 @@ std::string Rational::inadmissible(const double* p) {
            ") has a root in [0, 1]: a pole of the curve";
 }
 
+Rational::Projection::Projection(const ChannelTarget& t) {
+    for (std::size_t i = 0; i < t.mu.size(); ++i) {
+        mu_.push_back(model_math::clamp_mu(t.mu[i]));
+        scale_.push_back(t.scale[i]);
+        value_.push_back(t.value[i]);
+    }
+    const std::size_t n = mu_.size();
+    inverse_d_.resize(n), x1_.resize(n), x2_.resize(n), y_.resize(n), r_.resize(n);
+}
+
+bool Rational::Projection::solve(const double* z, detail::TwoColumnSolution& solution) {
+    const double c = z[0], d = z[1];
+    for (std::size_t i = 0; i < mu_.size(); ++i) {
+        const double mu = mu_[i], D = 1.0 + mu * (c + d * mu);
+        if (!(D > 0.0)) return false;
+        inverse_d_[i] = 1.0 / D;
+        x1_[i] = scale_[i] * mu * inverse_d_[i];
+        x2_[i] = x1_[i] * mu;
+        y_[i] = scale_[i] * (value_[i] - inverse_d_[i]);
+    }
+    solution = detail::two_column_fit(x1_, x2_, y_, {kParameters[0].lower, kParameters[1].lower},
+                                      {kParameters[0].upper, kParameters[1].upper}, r_.data());
+    return true;
+}
+
+bool Rational::Projection::operator()(const double* z, double* r, double* J) {
+    detail::TwoColumnSolution s;
+    if (!solve(z, s)) return false;
+    const double a = s.c[0], b = s.c[1];
+    // ∂r/∂c = −s N μ / D², ∂r/∂d = −s N μ² / D² at fixed (a, b), N = 1 + a μ + b μ².
+    for (std::size_t i = 0; i < mu_.size(); ++i) {
+        const double mu = mu_[i], N = 1.0 + mu * (a + b * mu);
+        const double dc = -scale_[i] * N * mu * inverse_d_[i] * inverse_d_[i];
+        J[2 * i] = dc, J[2 * i + 1] = dc * mu;
+    }
+    detail::project_out_free_columns(x1_, x2_, s.free, {0, 1}, 2, J);
+    for (std::size_t i = 0; i < mu_.size(); ++i) {
+        r[i] = r_[i];
+        if (!std::isfinite(r[i]) || !std::isfinite(J[2 * i]) || !std::isfinite(J[2 * i + 1])) return false;
+    }
+    return true;
+}
+
+ChannelParameters Rational::Projection::parameters(const double* z, const ChannelParameters& start) {
+    detail::TwoColumnSolution s;
+    if (!solve(z, s)) return start;
+    return {s.c[0], s.c[1], z[0], z[1]};
+}
+
 }  // namespace metalfit::models

@@ -14,6 +14,8 @@
 
 #include "libfit/models/model.hpp"
 #include "libfit/models/model_math.hpp"
+#include "libfit/models/two_column_projection.hpp"
+#include "libfit/reference/channel_target.hpp"
 
 namespace metalfit::models {
 
@@ -66,6 +68,22 @@ struct Rational {
     // Linearised least squares (Levy): R (1 + c μ + d μ²) − (1 + a μ + b μ²) ≈ 0 is linear in (a, b, c, d); then
     // Sanathanan–Koerner reweighting by the previous denominator (each iterate is a start).
     static std::vector<ChannelParameters> target_starts(const ChannelTarget& target);
+    // The fit by variable projection (ProjectedFit): for fixed (c, d) the curve is linear in a and b, solved exactly
+    // inside their bounds (columns s μ / D, s μ² / D, right-hand side s (R − 1 / D), D = 1 + c μ + d μ²); the
+    // projected residuals are minimised in (c, d) by bounded Levenberg–Marquardt with Kaufman's Jacobian. A (c, d)
+    // with D ≤ 0 at a node cannot be evaluated (a pole between the nodes before it: never a curve).
+    class Projection {
+    public:
+        static constexpr std::array<std::size_t, 2> kNonlinearParameters{2, 3};  // c, d
+        explicit Projection(const ChannelTarget& t);
+        std::size_t residuals() const { return mu_.size(); }
+        bool operator()(const double* z, double* r, double* J);  // rational.cpp
+        ChannelParameters parameters(const double* nonlinear, const ChannelParameters&);
+
+    private:
+        bool solve(const double* z, detail::TwoColumnSolution& solution);
+        std::vector<double> mu_, scale_, value_, inverse_d_, x1_, x2_, y_, r_;
+    };
 };
 
 }  // namespace metalfit::models

@@ -1,6 +1,6 @@
 #include "libfit/models/schlick_comp/schlick_comp.hpp"
 
-#include "models/compensation_projection.hpp"
+#include "libfit/models/compensation_projection.hpp"
 
 namespace metalfit::models {
 

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "libfit/models/compensation_projection.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/models/model_math.hpp"
 
@@ -56,6 +57,24 @@ struct SchlickComp {
     static std::vector<ChannelParameters> neutral_starts() { return {{0.5, 0.0, 6.0}, {0.9, 0.3, 2.0}}; }
     // Variable projection: for each α of a log grid over its bounds, (F0, a) solved exactly; the best few α.
     static std::vector<ChannelParameters> target_starts(const ChannelTarget& target);
+    // The fit by variable projection (ProjectedFit), as lazanyi-comp's: for fixed α the curve is linear in F0 and a,
+    // solved exactly inside their bounds, and the projected cost is minimised in α alone (detail::line_minimum).
+    class Projection {
+    public:
+        static constexpr std::array<std::size_t, 1> kNonlinearParameters{2};  // α
+        explicit Projection(const ChannelTarget& t)
+            : line_(t, 5.0, {kParameters[0].lower, kParameters[0].upper},
+                    {kParameters[1].lower, kParameters[1].upper}) {}
+        std::size_t residuals() const { return line_.residuals(); }
+        detail::CompensationLine::Point at(double alpha) { return line_.at(alpha); }
+        ChannelParameters parameters(const double* nonlinear, const ChannelParameters&) {
+            const auto [F0, a] = line_.linear(nonlinear[0]);
+            return {F0, a, nonlinear[0]};
+        }
+
+    private:
+        detail::CompensationLine line_;
+    };
 };
 
 }  // namespace metalfit::models

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "libfit/models/compensation_projection.hpp"
 #include "libfit/models/model.hpp"
 #include "libfit/models/model_math.hpp"
 
@@ -62,6 +63,24 @@ struct SchlickCompGeneral {
     // Variable projection: for p on a grid from 1.5 to 64 (18 values) and a log grid of α, (F0, a) solved exactly; the
     // best α of each p, then the 3 best p of the uncompensated curve (a = 0, F0 solved exactly, α = 1).
     static std::vector<ChannelParameters> target_starts(const ChannelTarget& target);
+    // The fit by variable projection (ProjectedFit): for fixed (p, α) the curve is linear in F0 and a, solved
+    // exactly inside their bounds; the projected residuals are minimised in (p, α) by bounded Levenberg–Marquardt
+    // with Kaufman's Jacobian (bounded_levenberg_marquardt).
+    class Projection {
+    public:
+        static constexpr std::array<std::size_t, 2> kNonlinearParameters{1, 3};  // p, α
+        explicit Projection(const ChannelTarget& t)
+            : surface_(t, {kParameters[0].lower, kParameters[0].upper}, {kParameters[2].lower, kParameters[2].upper}) {}
+        std::size_t residuals() const { return surface_.residuals(); }
+        bool operator()(const double* z, double* r, double* J) { return surface_(z, r, J); }
+        ChannelParameters parameters(const double* nonlinear, const ChannelParameters&) {
+            const auto [F0, a] = surface_.linear(nonlinear);
+            return {F0, nonlinear[0], a, nonlinear[1]};
+        }
+
+    private:
+        detail::CompensationSurface surface_;
+    };
 };
 
 }  // namespace metalfit::models
