@@ -1,0 +1,79 @@
+// What each renderer's thin-film approximation draws for a metal under a film, scored against the stack's spectral
+// reference curve with the fits' metrics (`metalfit table METAL --film FILM --thickness A:B:Cnm --renderers`).
+// The approximations are optics/renderer_thin_film.hpp's; docs/colour.md, "What renderers draw for a thin film".
+#pragma once
+
+#include <array>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "libfit/fit/metrics.hpp"
+#include "libfit/io/layer_stack.hpp"
+#include "libfit/optics/renderer_thin_film.hpp"
+#include "libfit/reference/reference_curve.hpp"
+#include "libfit/reference/sampled_reference.hpp"
+
+namespace metalfit {
+
+enum class FilmRenderer { materialx, belcour_barla, three_wavelength };
+inline constexpr std::array<FilmRenderer, 3> kFilmRenderers{FilmRenderer::materialx, FilmRenderer::belcour_barla,
+                                                            FilmRenderer::three_wavelength};
+std::string_view film_renderer_id(FilmRenderer r);     // "materialx", "belcour-barla", "airy-3"
+std::string_view film_renderer_title(FilmRenderer r);  // one line: what it evaluates
+
+// What the approximations are given, as a user of each renderer would give it.
+struct RendererFilmConstants {
+    // The metal per RGB channel for MaterialX and Belcour & Barla: the bare metal's fitted conductor-rgb n, k (what
+    // metalfit's MaterialX export writes into conductor_bsdf: MaterialX's own conductor Fresnel with them is the
+    // closest it draws the bare metal).
+    ChannelIndices metal{};
+    double film_ior = 1.0;  // their one film index: the film's n at kLayerIndexWavelengthNm (550 nm), k dropped
+};
+
+struct RendererScore {
+    FilmRenderer renderer{};
+    Metrics metrics;
+    RGB f0, f82;              // the approximation at μ = 1 and μ = 1/7
+    double shift_de2000 = 0;  // CIEDE2000 between its own F0 and F82 colours (the angle's colour shift it draws)
+};
+
+struct RendererScoreRow {
+    double thickness_nm = 0;
+    RGB truth_f0, truth_f82;
+    double truth_shift_de2000 = 0;      // CIEDE2000 between the truth's F0 and F82 colours
+    std::vector<RendererScore> scores;  // in kFilmRenderers' order
+};
+
+struct RendererFilmScores {
+    std::string description;  // "titanium under a TiO2 (Siefke) film of 0–300 nm"
+    std::string metal_id, space;
+    RendererFilmConstants constants;
+    std::vector<RendererScoreRow> rows;
+};
+
+struct RendererFilmInputs {
+    Material metal;  // bare (its layers are replaced)
+    LayerMaterial film;
+    std::vector<double> thicknesses_nm;
+    ErrorSettings error;  // the metrics' nodes, metric and weight (as fit's)
+};
+
+// The metal's constants (a conductor-rgb fit of the bare metal) and, per thickness, each approximation's metrics
+// against the stack's reference curve. Throws InputError as the oxide chart does (a film not covering the range).
+RendererFilmScores renderer_film_scores(const RendererFilmInputs& inputs, const Colorimetry& colorimetry,
+                                        const ColorSpaceConverter& working, SpectralOptions spectral);
+
+// One approximation's RGB curve at μ for a metal under `film` of `thickness_nm` (the stack's own optics at 650, 550
+// and 450 nm for airy-3).
+RGB renderer_film_curve(FilmRenderer renderer, const RendererFilmConstants& constants,
+                        const std::array<StackOptics<double>, 3>& three_wavelengths, double thickness_nm, double mu);
+
+// The scores of an RGB curve against a sampled reference: libfit's compute_metrics on the curve as a model.
+Metrics curve_metrics(const std::function<RGB(double)>& curve, const SampledReference& reference);
+
+std::string renderer_film_scores_markdown(const RendererFilmScores& scores);
+std::string renderer_film_scores_csv(const RendererFilmScores& scores);
+
+}  // namespace metalfit
