@@ -69,6 +69,22 @@ Material bare(const Material& metal) {
 
 std::string number(double v) { return significant_text(v, 6); }
 std::string fixed4(double v) { return fixed_text(v, 4); }
+std::string defined4(double v) { return std::isnan(v) ? "—" : fixed4(v); }
+
+// A mean over the defined values, saying over how many rows when some were not.
+struct Mean {
+    double sum = 0;
+    double count = 0;
+    void add(double v) {
+        if (!std::isnan(v)) sum += v, count += 1;
+    }
+    std::string text(std::size_t rows) const {
+        if (count == 0) return "—";
+        std::string t = fixed4(sum / count);
+        if (count < static_cast<double>(rows)) t += " (" + number(count) + " rows)";
+        return t;
+    }
+};
 
 // The channel with the largest |err_f0|, signed.
 double worst_signed(const PerChannel& v) {
@@ -186,30 +202,33 @@ std::string renderer_film_scores_markdown(const RendererFilmScores& s) {
       << "; airy-3 the stack's own indices at 650, 550 and 450 nm. rel_rms: worst channel; err_f0: the channel "
          "furthest from the truth, signed; shift: CIEDE2000 between the F0 and F82 colours (the truth's in the "
          "second column).\n\n";
-    o << "| d (nm) | truth shift | renderer | rel_rms | err_f0 | ΔE00 mean | ΔE00 max | shift |\n"
-         "|---|---|---|---|---|---|---|---|\n";
+    o << "| d (nm) | truth shift | renderer | rel_rms | abs_rms | err_f0 | ΔE00 mean | ΔE00 max | shift |\n"
+         "|---|---|---|---|---|---|---|---|---|\n";
     for (const RendererScoreRow& r : s.rows)
         for (const RendererScore& x : r.scores)
             o << "| " << number(r.thickness_nm) << " | " << fixed_text(r.truth_shift_de2000, 2) << " | "
-              << film_renderer_id(x.renderer) << " | " << fixed4(worst_channel(x.metrics.rel_rms)) << " | "
-              << fixed4(worst_signed(x.metrics.err_f0)) << " | " << fixed_text(x.metrics.de2000_mean, 2) << " | "
-              << fixed_text(x.metrics.de2000_max, 2) << " | " << fixed_text(x.shift_de2000, 2) << " |\n";
+              << film_renderer_id(x.renderer) << " | " << defined4(worst_channel(x.metrics.rel_rms)) << " | "
+              << fixed4(worst_channel(x.metrics.abs_rms)) << " | " << defined4(worst_signed(x.metrics.err_f0)) << " | "
+              << fixed_text(x.metrics.de2000_mean, 2) << " | " << fixed_text(x.metrics.de2000_max, 2) << " | "
+              << fixed_text(x.shift_de2000, 2) << " |\n";
     if (!s.rows.empty()) {
         o << "\nMean over the " << s.rows.size()
-          << " thicknesses:\n\n| renderer | rel_rms | mean abs err_f0 | ΔE00 mean | "
-          << "ΔE00 max |\n|---|---|---|---|---|\n";
+          << " thicknesses (rel_rms and err_f0 over the rows where they are defined: a channel of the truth ≤ 0 "
+             "somewhere, a colour outside the space's gamut, leaves them undefined, —):\n\n| renderer | rel_rms | "
+             "abs_rms | mean abs err_f0 | ΔE00 mean | ΔE00 max |\n|---|---|---|---|---|---|\n";
         for (std::size_t i = 0; i < kFilmRenderers.size(); ++i) {
-            double rel = 0, f0 = 0, de = 0, de_max = 0;
+            Mean rel, abs_rms, f0, de, de_max;
             for (const RendererScoreRow& r : s.rows) {
                 const Metrics& m = r.scores[i].metrics;
-                rel += worst_channel(m.rel_rms);
-                f0 += std::abs(worst_signed(m.err_f0));
-                de += m.de2000_mean;
-                de_max += m.de2000_max;
+                rel.add(worst_channel(m.rel_rms));
+                abs_rms.add(worst_channel(m.abs_rms));
+                f0.add(std::abs(worst_signed(m.err_f0)));
+                de.add(m.de2000_mean);
+                de_max.add(m.de2000_max);
             }
-            const double n = static_cast<double>(s.rows.size());
-            o << "| " << film_renderer_id(kFilmRenderers[i]) << " | " << fixed4(rel / n) << " | " << fixed4(f0 / n)
-              << " | " << fixed_text(de / n, 2) << " | " << fixed_text(de_max / n, 2) << " |\n";
+            o << "| " << film_renderer_id(kFilmRenderers[i]) << " | " << rel.text(s.rows.size()) << " | "
+              << abs_rms.text(s.rows.size()) << " | " << f0.text(s.rows.size()) << " | "
+              << fixed_text(de.sum / de.count, 2) << " | " << fixed_text(de_max.sum / de_max.count, 2) << " |\n";
         }
         o << "\n";
         for (const FilmRenderer r : kFilmRenderers)
@@ -220,7 +239,7 @@ std::string renderer_film_scores_markdown(const RendererFilmScores& s) {
 
 std::string renderer_film_scores_csv(const RendererFilmScores& s) {
     std::ostringstream o;
-    o << "thickness_nm,renderer,rel_rms_r,rel_rms_g,rel_rms_b,err_f0_r,err_f0_g,err_f0_b,de2000_mean,de2000_max,"
+    o << "thickness_nm,renderer,rel_rms_r,rel_rms_g,rel_rms_b,abs_rms_r,abs_rms_g,abs_rms_b,err_f0_r,err_f0_g,err_f0_b,de2000_mean,de2000_max,"
          "de2000_max_mu,f0_r,f0_g,f0_b,f82_r,f82_g,f82_b,shift_de2000,truth_f0_r,truth_f0_g,truth_f0_b,"
          "truth_f82_r,truth_f82_g,truth_f82_b,truth_shift_de2000\n";
     const auto g = [](double v) { return significant_text(v, 8); };
@@ -229,6 +248,7 @@ std::string renderer_film_scores_csv(const RendererFilmScores& s) {
             const Metrics& m = x.metrics;
             o << number(r.thickness_nm) << ',' << film_renderer_id(x.renderer);
             for (double v : m.rel_rms) o << ',' << g(v);
+            for (double v : m.abs_rms) o << ',' << g(v);
             for (double v : m.err_f0) o << ',' << g(v);
             o << ',' << g(m.de2000_mean) << ',' << g(m.de2000_max) << ',' << g(m.de2000_max_mu);
             for (const RGB* v : {&x.f0, &x.f82}) o << ',' << g(v->r) << ',' << g(v->g) << ',' << g(v->b);
