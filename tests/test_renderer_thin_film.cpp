@@ -140,6 +140,16 @@ TEST(RendererThinFilm, MaterialxPhasesAreThoseOfTheComplexCoefficients) {
         };
         EXPECT_LT(same_angle(static_cast<double>(phiS), std::arg(rs) + std::numbers::pi), 1e-9);
         EXPECT_LT(same_angle(static_cast<double>(phiP), std::arg(rp)), 1e-9);
+        // The round trip: MaterialX's φ21 (s: π; p: 0 below Brewster's angle, π above) plus φ23, against the exact
+        // arg(r10 r12) = arg(−r01) + arg(r12), r01 from air into the film.
+        const double u0 = mu_air;
+        const double r01s = (u0 - n1 * cos_f) / (u0 + n1 * cos_f),
+                     r01p = (n1 * n1 * u0 - n1 * cos_f) / (n1 * n1 * u0 + n1 * cos_f);
+        const double phi21p = mu_air < std::cos(std::atan(n1)) ? 0.0 : std::numbers::pi, phi21s = std::numbers::pi;
+        EXPECT_LT(same_angle(phi21s + static_cast<double>(phiS), std::arg(std::complex<double>(-r01s)) + std::arg(rs)),
+                  1e-9);
+        EXPECT_LT(same_angle(phi21p + static_cast<double>(phiP), std::arg(std::complex<double>(-r01p)) + std::arg(rp)),
+                  1e-9);
     }
 }
 
