@@ -50,11 +50,12 @@ TEST_F(CliRendererScores, ScoresEachRendererAgainstTheStackShowDescribes) {
         for (std::size_t i = 0; i < cells.size(); ++i) row[header[i]] = cells[i];
         rows.push_back(row);
     }
-    ASSERT_EQ(rows.size(), 6u);  // two thicknesses × three renderers
+    ASSERT_EQ(rows.size(), 8u);  // two thicknesses × four renderers
     EXPECT_EQ(rows[0]["renderer"], "materialx");
     EXPECT_EQ(rows[1]["renderer"], "belcour-barla");
-    EXPECT_EQ(rows[2]["renderer"], "airy-3");
-    for (const auto& [d, first] : {std::pair<const char*, std::size_t>{"0", 0}, {"80", 3}}) {
+    EXPECT_EQ(rows[2]["renderer"], "belcour-barla-working");
+    EXPECT_EQ(rows[3]["renderer"], "airy-3");
+    for (const auto& [d, first] : {std::pair<const char*, std::size_t>{"0", 0}, {"80", 4}}) {
         const auto shown = nlohmann::json::parse(run(std::string("show Ti --film TiO2:") + d + "nm --json").out);
         for (int c = 0; c < 3; ++c) {
             const char* channel[3] = {"r", "g", "b"};
@@ -64,7 +65,7 @@ TEST_F(CliRendererScores, ScoresEachRendererAgainstTheStackShowDescribes) {
     }
     // At d = 0 MaterialX draws the conductor-rgb fit: under 0.1 ΔE2000 where the film of 80 nm is several off.
     EXPECT_LT(std::stod(rows[0]["de2000_mean"]), 0.1);
-    for (std::size_t i = 3; i < 6; ++i) EXPECT_GT(std::stod(rows[i]["de2000_mean"]), 0.5) << rows[i]["renderer"];
+    for (std::size_t i = 4; i < 8; ++i) EXPECT_GT(std::stod(rows[i]["de2000_mean"]), 0.5) << rows[i]["renderer"];
 
     const Result md = run("table Ti --film TiO2 --thickness 0:80:80nm --renderers");
     ASSERT_EQ(md.exit_code, 0) << md.err;

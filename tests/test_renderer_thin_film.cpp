@@ -283,6 +283,17 @@ TEST(RendererFilmScores, AtZeroThicknessMaterialxScoresAsTheConductorRgbFit) {
     const Metrics self = curve_metrics([&](double mu) { return bare(mu); }, reference);
     for (int c = 0; c < 3; ++c) EXPECT_EQ(self.rel_rms[c], 0.0);
     EXPECT_LT(self.de2000_max, 1e-9);
+    // The working space's matrix is the converter's, each row balanced so that XYZ (1, 1, 1) is white.
+    const RGB white = data().converter(XYZ{1, 1, 1});
+    for (const XYZ xyz : {XYZ{0.3, 0.5, 0.2}, XYZ{0.9, 0.1, 0.4}}) {
+        const RGB want_rgb = data().converter(xyz);
+        const XyzToRgbMatrix& m = scores.constants.xyz_to_working;
+        for (int i = 0; i < 3; ++i)
+            EXPECT_NEAR(m[i][0] * xyz.X + m[i][1] * xyz.Y + m[i][2] * xyz.Z, want_rgb[i] / white[i], 1e-6);
+    }
+    ASSERT_EQ(scores.rows[0].scores[2].renderer, FilmRenderer::belcour_barla_working);
+    // At d = 0 it is the conductor-rgb metal times its sensitivities' normalisation in that space: within 2e-3.
+    for (double e : scores.rows[0].scores[2].metrics.err_f0) EXPECT_LT(std::abs(e), 2e-3);
     // Under a film the approximations are not the truth.
     for (const RendererScore& s : scores.rows[1].scores) EXPECT_GT(s.metrics.de2000_mean, 0.1);
 }

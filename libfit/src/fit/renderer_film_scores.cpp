@@ -100,6 +100,7 @@ std::string_view film_renderer_id(FilmRenderer r) {
     switch (r) {
         case FilmRenderer::materialx: return "materialx";
         case FilmRenderer::belcour_barla: return "belcour-barla";
+        case FilmRenderer::belcour_barla_working: return "belcour-barla-working";
         case FilmRenderer::three_wavelength: return "airy-3";
     }
     return {};
@@ -111,6 +112,8 @@ std::string_view film_renderer_title(FilmRenderer r) {
             return "MaterialX 1.39.4 mx_fresnel_airy (conductor-rgb n, k; film n(550 nm); CIE 1931 RGB)";
         case FilmRenderer::belcour_barla:
             return "Belcour & Barla 2017, per channel (conductor-rgb n, k; film n(550 nm); CIE 1931 RGB)";
+        case FilmRenderer::belcour_barla_working:
+            return "Belcour & Barla 2017 as above, XYZ into the working space (white E balanced) for CIE 1931 RGB";
         case FilmRenderer::three_wavelength: return "exact Airy at 650, 550, 450 nm (the stack's own n, k there)";
     }
     return {};
@@ -122,6 +125,9 @@ RGB renderer_film_curve(FilmRenderer renderer, const RendererFilmConstants& k,
     switch (renderer) {
         case FilmRenderer::materialx: r = materialx_thin_film(mu, k.metal, k.film_ior, thickness_nm); break;
         case FilmRenderer::belcour_barla: r = belcour_barla_thin_film(mu, k.metal, k.film_ior, thickness_nm); break;
+        case FilmRenderer::belcour_barla_working:
+            r = belcour_barla_thin_film(mu, k.metal, k.film_ior, thickness_nm, k.xyz_to_working);
+            break;
         case FilmRenderer::three_wavelength: r = three_wavelength_airy(mu, three); break;
     }
     return {r[0], r[1], r[2]};
@@ -155,6 +161,14 @@ RendererFilmScores renderer_film_scores(const RendererFilmInputs& in, const Colo
         out.constants.metal[static_cast<std::size_t>(c)] = {conductor.fit.value.params[c][0],
                                                             conductor.fit.value.params[c][1]};
     out.constants.film_ior = layer_index_summary(in.film).n;
+    for (int j = 0; j < 3; ++j) {
+        const RGB column = working(XYZ{j == 0 ? 1.0 : 0.0, j == 1 ? 1.0 : 0.0, j == 2 ? 1.0 : 0.0});
+        for (int i = 0; i < 3; ++i) out.constants.xyz_to_working[i][j] = column[i];
+    }
+    for (auto& row : out.constants.xyz_to_working) {
+        const double white = row[0] + row[1] + row[2];
+        for (double& v : row) v /= white;
+    }
 
     for (const double d : in.thicknesses_nm) {
         RendererScoreRow row;

@@ -13,12 +13,13 @@ constexpr double kPi = std::numbers::pi;
 
 double square(double x) { return x * x; }
 
-std::array<double, 3> to_cie_rgb(const std::array<double, 3>& xyz) {
+std::array<double, 3> times(const XyzToRgbMatrix& m, const std::array<double, 3>& xyz) {
     std::array<double, 3> rgb{};
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) rgb[i] += kXyzToCie1931Rgb[i][j] * xyz[j];
+        for (int j = 0; j < 3; ++j) rgb[i] += m[i][j] * xyz[j];
     return rgb;
 }
+std::array<double, 3> to_cie_rgb(const std::array<double, 3>& xyz) { return times(kXyzToCie1931Rgb, xyz); }
 
 // mx_fresnel_dielectric_polarized(cosTheta, ior): (Rp, Rs).
 std::array<double, 2> mx_fresnel_dielectric_polarized(double cos_theta, double ior) {
@@ -127,6 +128,11 @@ ChannelReflectance materialx_thin_film(double mu, const ChannelIndices& metal, d
 
 ChannelReflectance belcour_barla_thin_film(double mu, const ChannelIndices& metal, double film_ior,
                                            double thickness_nm) {
+    return belcour_barla_thin_film(mu, metal, film_ior, thickness_nm, kXyzToCie1931Rgb);
+}
+
+ChannelReflectance belcour_barla_thin_film(double mu, const ChannelIndices& metal, double film_ior, double thickness_nm,
+                                           const XyzToRgbMatrix& xyz_to_rgb) {
     using C = std::complex<double>;
     using stack_detail::normal_component;
     using stack_detail::quotient_or_zero;
@@ -159,7 +165,7 @@ ChannelReflectance belcour_barla_thin_film(double mu, const ChannelIndices& meta
                 for (int i = 0; i < 3; ++i) xyz[i] += 0.5 * Cm * 2.0 * S[i];
             }
         }
-        out[c] = std::clamp(to_cie_rgb(xyz)[c], 0.0, 1.0);
+        out[c] = std::clamp(times(xyz_to_rgb, xyz)[c], 0.0, 1.0);
     }
     return out;
 }

@@ -17,10 +17,14 @@
 
 namespace metalfit {
 
-enum class FilmRenderer { materialx, belcour_barla, three_wavelength };
-inline constexpr std::array<FilmRenderer, 3> kFilmRenderers{FilmRenderer::materialx, FilmRenderer::belcour_barla,
+// belcour_barla_working: Belcour & Barla with XYZ converted into the working space (white E balanced to 1) instead
+// of CIE 1931 RGB: what the hard-coded CIE 1931 RGB of the other two costs.
+enum class FilmRenderer { materialx, belcour_barla, belcour_barla_working, three_wavelength };
+inline constexpr std::array<FilmRenderer, 4> kFilmRenderers{FilmRenderer::materialx, FilmRenderer::belcour_barla,
+                                                            FilmRenderer::belcour_barla_working,
                                                             FilmRenderer::three_wavelength};
-std::string_view film_renderer_id(FilmRenderer r);     // "materialx", "belcour-barla", "airy-3"
+// "materialx", "belcour-barla", "belcour-barla-working", "airy-3"
+std::string_view film_renderer_id(FilmRenderer r);
 std::string_view film_renderer_title(FilmRenderer r);  // one line: what it evaluates
 
 // What the approximations are given, as a user of each renderer would give it.
@@ -30,6 +34,9 @@ struct RendererFilmConstants {
     // closest it draws the bare metal).
     ChannelIndices metal{};
     double film_ior = 1.0;  // their one film index: the film's n at kLayerIndexWavelengthNm (550 nm), k dropped
+    // XYZ (white E) → the working space's RGB, each row scaled so that XYZ (1, 1, 1) gives (1, 1, 1): the working
+    // space as belcour_barla_working's output (the converter's matrix, probed with the unit vectors).
+    XyzToRgbMatrix xyz_to_working = kXyzToCie1931Rgb;
 };
 
 struct RendererScore {

@@ -11,8 +11,8 @@
 //   Modeling of Varying Iridescence" (2017): the Airy series' Fourier terms integrated against Gaussian fits of the
 //   CIE 1931 colour matching functions (the paper's "spectral antialiasing"), the DC term weighted by the
 //   sensitivity at zero path difference, the series to m = 3, the film index ramped from 1 over the first 30 nm as
-//   the authors' code does, CIE 1931 RGB out; each RGB channel of the metal is integrated on its own and keeps its
-//   own channel of the result (the paper's conductor is one index).
+//   the authors' code does, CIE 1931 RGB out (or another matrix: the working space's); each RGB channel of the metal
+//   is integrated on its own and keeps its own channel of the result (the paper's conductor is one index).
 // - three_wavelength_airy: the exact Airy at one wavelength per channel (Adobe's and Cycles' scheme): the stack's
 //   optics at 650, 550 and 450 nm, each channel that wavelength's exact reflectance.
 #pragma once
@@ -36,11 +36,15 @@ inline constexpr std::array<double, 3> kThreeWavelengthsNm{650.0, 550.0, 450.0};
 std::array<double, 3> thin_film_sensitivity(double opd_m, const std::array<double, 3>& shift);
 
 // Belcour & Barla's and MaterialX's XYZ (white E) → CIE 1931 RGB matrix, rows.
-inline constexpr std::array<std::array<double, 3>, 3> kXyzToCie1931Rgb{
+using XyzToRgbMatrix = std::array<std::array<double, 3>, 3>;
+inline constexpr XyzToRgbMatrix kXyzToCie1931Rgb{
     {{2.3706743, -0.9000405, -0.4706338}, {-0.5138850, 1.4253036, 0.0885814}, {0.0052982, -0.0146949, 1.0093968}}};
 
 // μ = cos θ in air; film_ior real (MaterialX's tf_ior), thickness in nm.
 ChannelReflectance materialx_thin_film(double mu, const ChannelIndices& metal, double film_ior, double thickness_nm);
+// xyz_to_rgb: the paper's CIE 1931 RGB by default, or another XYZ (white E) → RGB matrix (rows).
+ChannelReflectance belcour_barla_thin_film(double mu, const ChannelIndices& metal, double film_ior, double thickness_nm,
+                                           const XyzToRgbMatrix& xyz_to_rgb);
 ChannelReflectance belcour_barla_thin_film(double mu, const ChannelIndices& metal, double film_ior,
                                            double thickness_nm);
 // optics[c]: the stack at kThreeWavelengthsNm[c].
