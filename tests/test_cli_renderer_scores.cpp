@@ -50,12 +50,13 @@ TEST_F(CliRendererScores, ScoresEachRendererAgainstTheStackShowDescribes) {
         for (std::size_t i = 0; i < cells.size(); ++i) row[header[i]] = cells[i];
         rows.push_back(row);
     }
-    ASSERT_EQ(rows.size(), 8u);  // two thicknesses × four renderers
+    ASSERT_EQ(rows.size(), 10u);  // two thicknesses × five renderers
     EXPECT_EQ(rows[0]["renderer"], "materialx");
-    EXPECT_EQ(rows[1]["renderer"], "belcour-barla");
-    EXPECT_EQ(rows[2]["renderer"], "belcour-barla-working");
-    EXPECT_EQ(rows[3]["renderer"], "airy-3");
-    for (const auto& [d, first] : {std::pair<const char*, std::size_t>{"0", 0}, {"80", 4}}) {
+    EXPECT_EQ(rows[1]["renderer"], "materialx-nk");
+    EXPECT_EQ(rows[2]["renderer"], "belcour-barla");
+    EXPECT_EQ(rows[3]["renderer"], "belcour-barla-working");
+    EXPECT_EQ(rows[4]["renderer"], "airy-3");
+    for (const auto& [d, first] : {std::pair<const char*, std::size_t>{"0", 0}, {"80", 5}}) {
         const auto shown = nlohmann::json::parse(run(std::string("show Ti --film TiO2:") + d + "nm --json").out);
         for (int c = 0; c < 3; ++c) {
             const char* channel[3] = {"r", "g", "b"};
@@ -65,7 +66,7 @@ TEST_F(CliRendererScores, ScoresEachRendererAgainstTheStackShowDescribes) {
     }
     // At d = 0 MaterialX draws the conductor-rgb fit: under 0.1 ΔE2000 where the film of 80 nm is several off.
     EXPECT_LT(std::stod(rows[0]["de2000_mean"]), 0.1);
-    for (std::size_t i = 4; i < 8; ++i) EXPECT_GT(std::stod(rows[i]["de2000_mean"]), 0.5) << rows[i]["renderer"];
+    for (std::size_t i = 5; i < 10; ++i) EXPECT_GT(std::stod(rows[i]["de2000_mean"]), 0.5) << rows[i]["renderer"];
 
     const Result md = run("table Ti --film TiO2 --thickness 0:80:80nm --renderers");
     ASSERT_EQ(md.exit_code, 0) << md.err;
@@ -76,7 +77,7 @@ TEST_F(CliRendererScores, BadCombinationsAreOneLineAndExit2) {
     for (const char* args :
          {"table Ti --film TiO2 --renderers", "table Ti --film TiO2 --thickness 80nm --renderers --coat 1.5",
           "table Ti --film TiO2 --thickness 80nm --renderers --versus 2.488",
-          "table Ti --film TiO2 --thickness 80nm --renderers --format json"}) {
+          "table Ti --film TiO2 --thickness 80nm --renderers --format html"}) {
         const Result r = run(args);
         EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

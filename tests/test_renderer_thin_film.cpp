@@ -291,9 +291,18 @@ TEST(RendererFilmScores, AtZeroThicknessMaterialxScoresAsTheConductorRgbFit) {
         for (int i = 0; i < 3; ++i)
             EXPECT_NEAR(m[i][0] * xyz.X + m[i][1] * xyz.Y + m[i][2] * xyz.Z, want_rgb[i] / white[i], 1e-6);
     }
-    ASSERT_EQ(scores.rows[0].scores[2].renderer, FilmRenderer::belcour_barla_working);
+    ASSERT_EQ(scores.rows[0].scores[3].renderer, FilmRenderer::belcour_barla_working);
     // At d = 0 it is the conductor-rgb metal times its sensitivities' normalisation in that space: within 2e-3.
-    for (double e : scores.rows[0].scores[2].metrics.err_f0) EXPECT_LT(std::abs(e), 2e-3);
+    for (double e : scores.rows[0].scores[3].metrics.err_f0) EXPECT_LT(std::abs(e), 2e-3);
+    // MaterialX given the measured n, k at 650, 550, 450 nm draws at d = 0 the bare Fresnel of those indices, which
+    // is airy-3's at d = 0 (computed by the stack kernel): the same scores.
+    ASSERT_EQ(scores.rows[0].scores[1].renderer, FilmRenderer::materialx_nk);
+    ASSERT_EQ(scores.rows[0].scores[4].renderer, FilmRenderer::three_wavelength);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(scores.constants.metal_at_wavelengths[c].real(), ti.index(kThreeWavelengthsNm[c]).real(), 0);
+        EXPECT_NEAR(scores.rows[0].scores[1].metrics.rel_rms[c], scores.rows[0].scores[4].metrics.rel_rms[c], 1e-12);
+    }
+    EXPECT_NEAR(scores.rows[0].scores[1].metrics.de2000_mean, scores.rows[0].scores[4].metrics.de2000_mean, 1e-10);
     // Under a film the approximations are not the truth.
     for (const RendererScore& s : scores.rows[1].scores) EXPECT_GT(s.metrics.de2000_mean, 0.1);
 }

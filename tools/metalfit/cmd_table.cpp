@@ -43,7 +43,8 @@ struct TableOptions {
 // scored against the stack's curve (libfit's renderer_film_scores).
 void run_renderer_scores(const TableOptions& o, const GlobalOptions& global, const Catalog& catalog,
                          const ColourSetup& setup) {
-    if (o.format != "md" && o.format != "csv") throw UsageError("--renderers: the scores' formats are md and csv");
+    if (o.format != "md" && o.format != "csv" && o.format != "json")
+        throw UsageError("--renderers: the scores' formats are md, csv and json");
     if (!o.versus.empty()) throw UsageError("--renderers scores the film itself: no --versus");
     if (!o.layers.coat.empty())
         throw UsageError("--renderers: a film in air (the renderers' film formulas take air above it): no --coat");
@@ -60,7 +61,12 @@ void run_renderer_scores(const TableOptions& o, const GlobalOptions& global, con
     const RendererFilmScores scores =
         renderer_film_scores({std::move(metal), layers.film, thicknesses, ErrorOptions{}.settings()}, setup.colorimetry,
                              setup.converter, setup.spectral);
-    emit(o.format == "csv" ? renderer_film_scores_csv(scores) : renderer_film_scores_markdown(scores), o.output);
+    if (o.format == "csv")
+        emit(renderer_film_scores_csv(scores), o.output);
+    else if (o.format == "json")
+        emit(renderer_film_scores_json(scores).dump(2) + "\n", o.output);
+    else
+        emit(renderer_film_scores_markdown(scores), o.output);
 }
 
 // `table METAL --film FILM --thickness 0:300:10nm [--versus 2.488]`: the oxide colour chart (libfit's oxide_chart).
@@ -141,7 +147,7 @@ std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& glob
                    "anodized titanium) and the CIEDE2000 between the two");
     app.add_flag("--renderers", o->renderers,
                  "With --thickness: score MaterialX's, Belcour & Barla's and a three-wavelength thin film against "
-                 "the stack (md, csv)");
+                 "the stack (md, csv, json)");
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
     add_recommend_options(app, o->recommend);
     app.add_option("--costs", o->costs,

@@ -8,7 +8,9 @@
 #include <stdexcept>
 
 #include "libfit/base/number_text.hpp"
+#include "libfit/base/version.hpp"
 #include "libfit/fit/fit.hpp"
+#include "libfit/fit/fit_record.hpp"
 #include "libfit/reference/stack_grid.hpp"
 
 namespace metalfit {
@@ -70,6 +72,7 @@ Material bare(const Material& metal) {
 std::string number(double v) { return significant_text(v, 6); }
 std::string fixed4(double v) { return fixed_text(v, 4); }
 std::string defined4(double v) { return std::isnan(v) ? "—" : fixed4(v); }
+std::string defined2(double v) { return std::isnan(v) ? "—" : fixed_text(v, 2); }
 
 // A mean over the defined values, saying over how many rows when some were not.
 struct Mean {
@@ -78,9 +81,9 @@ struct Mean {
     void add(double v) {
         if (!std::isnan(v)) sum += v, count += 1;
     }
-    std::string text(std::size_t rows) const {
+    std::string text(std::size_t rows, int decimals = 4) const {
         if (count == 0) return "—";
-        std::string t = fixed4(sum / count);
+        std::string t = fixed_text(sum / count, decimals);
         if (count < static_cast<double>(rows)) t += " (" + number(count) + " rows)";
         return t;
     }
@@ -99,6 +102,7 @@ double worst_signed(const PerChannel& v) {
 std::string_view film_renderer_id(FilmRenderer r) {
     switch (r) {
         case FilmRenderer::materialx: return "materialx";
+        case FilmRenderer::materialx_nk: return "materialx-nk";
         case FilmRenderer::belcour_barla: return "belcour-barla";
         case FilmRenderer::belcour_barla_working: return "belcour-barla-working";
         case FilmRenderer::three_wavelength: return "airy-3";
@@ -110,6 +114,8 @@ std::string_view film_renderer_title(FilmRenderer r) {
     switch (r) {
         case FilmRenderer::materialx:
             return "MaterialX 1.39.4 mx_fresnel_airy (conductor-rgb n, k; film n(550 nm); CIE 1931 RGB)";
+        case FilmRenderer::materialx_nk:
+            return "MaterialX 1.39.4 mx_fresnel_airy with the metal's n, k at 650, 550, 450 nm";
         case FilmRenderer::belcour_barla:
             return "Belcour & Barla 2017, per channel (conductor-rgb n, k; film n(550 nm); CIE 1931 RGB)";
         case FilmRenderer::belcour_barla_working:
@@ -124,6 +130,9 @@ RGB renderer_film_curve(FilmRenderer renderer, const RendererFilmConstants& k,
     ChannelReflectance r{};
     switch (renderer) {
         case FilmRenderer::materialx: r = materialx_thin_film(mu, k.metal, k.film_ior, thickness_nm); break;
+        case FilmRenderer::materialx_nk:
+            r = materialx_thin_film(mu, k.metal_at_wavelengths, k.film_ior, thickness_nm);
+            break;
         case FilmRenderer::belcour_barla: r = belcour_barla_thin_film(mu, k.metal, k.film_ior, thickness_nm); break;
         case FilmRenderer::belcour_barla_working:
             r = belcour_barla_thin_film(mu, k.metal, k.film_ior, thickness_nm, k.xyz_to_working);
@@ -142,6 +151,8 @@ RendererFilmScores renderer_film_scores(const RendererFilmInputs& in, const Colo
                                         const ColorSpaceConverter& working, SpectralOptions spectral) {
     RendererFilmScores out;
     out.metal_id = in.metal.id;
+    out.film_id = in.film.id;
+    out.film_name = in.film.name;
     out.space = working.space();
     const double first = in.thicknesses_nm.empty() ? 0 : in.thicknesses_nm.front();
     const double last = in.thicknesses_nm.empty() ? 0 : in.thicknesses_nm.back();
@@ -161,6 +172,9 @@ RendererFilmScores renderer_film_scores(const RendererFilmInputs& in, const Colo
         out.constants.metal[static_cast<std::size_t>(c)] = {conductor.fit.value.params[c][0],
                                                             conductor.fit.value.params[c][1]};
     out.constants.film_ior = layer_index_summary(in.film).n;
+    for (std::size_t c = 0; c < 3; ++c)
+        out.constants.metal_at_wavelengths[c] =
+            metal.index(kThreeWavelengthsNm[c], spectral.interpolation, spectral.out_of_range);
     for (int j = 0; j < 3; ++j) {
         const RGB column = working(XYZ{j == 0 ? 1.0 : 0.0, j == 1 ? 1.0 : 0.0, j == 2 ? 1.0 : 0.0});
         for (int i = 0; i < 3; ++i) out.constants.xyz_to_working[i][j] = column[i];
@@ -222,13 +236,13 @@ std::string renderer_film_scores_markdown(const RendererFilmScores& s) {
         for (const RendererScore& x : r.scores)
             o << "| " << number(r.thickness_nm) << " | " << fixed_text(r.truth_shift_de2000, 2) << " | "
               << film_renderer_id(x.renderer) << " | " << defined4(worst_channel(x.metrics.rel_rms)) << " | "
-              << fixed4(worst_channel(x.metrics.abs_rms)) << " | " << defined4(worst_signed(x.metrics.err_f0)) << " | "
-              << fixed_text(x.metrics.de2000_mean, 2) << " | " << fixed_text(x.metrics.de2000_max, 2) << " | "
-              << fixed_text(x.shift_de2000, 2) << " |\n";
+              << defined4(worst_channel(x.metrics.abs_rms)) << " | " << defined4(worst_signed(x.metrics.err_f0))
+              << " | " << defined2(x.metrics.de2000_mean) << " | " << defined2(x.metrics.de2000_max) << " | "
+              << defined2(x.shift_de2000) << " |\n";
     if (!s.rows.empty()) {
         o << "\nMean over the " << s.rows.size()
-          << " thicknesses (rel_rms and err_f0 over the rows where they are defined: a channel of the truth ≤ 0 "
-             "somewhere, a colour outside the space's gamut, leaves them undefined, —):\n\n| renderer | rel_rms | "
+          << " thicknesses (each over the rows where it is defined, —: rel_rms and err_f0 are undefined where a "
+             "channel of the truth is ≤ 0 somewhere, a colour outside the space's gamut):\n\n| renderer | rel_rms | "
              "abs_rms | mean abs err_f0 | ΔE00 mean | ΔE00 max |\n|---|---|---|---|---|---|\n";
         for (std::size_t i = 0; i < kFilmRenderers.size(); ++i) {
             Mean rel, abs_rms, f0, de, de_max;
@@ -241,8 +255,8 @@ std::string renderer_film_scores_markdown(const RendererFilmScores& s) {
                 de_max.add(m.de2000_max);
             }
             o << "| " << film_renderer_id(kFilmRenderers[i]) << " | " << rel.text(s.rows.size()) << " | "
-              << abs_rms.text(s.rows.size()) << " | " << f0.text(s.rows.size()) << " | "
-              << fixed_text(de.sum / de.count, 2) << " | " << fixed_text(de_max.sum / de_max.count, 2) << " |\n";
+              << abs_rms.text(s.rows.size()) << " | " << f0.text(s.rows.size()) << " | " << de.text(s.rows.size(), 2)
+              << " | " << de_max.text(s.rows.size(), 2) << " |\n";
         }
         o << "\n";
         for (const FilmRenderer r : kFilmRenderers)
@@ -271,6 +285,67 @@ std::string renderer_film_scores_csv(const RendererFilmScores& s) {
             o << ',' << g(r.truth_shift_de2000) << '\n';
         }
     return o.str();
+}
+
+nlohmann::ordered_json renderer_film_scores_json(const RendererFilmScores& s) {
+    using Json = nlohmann::ordered_json;
+    const auto triple = [](const auto& v) {
+        Json a = Json::array();
+        for (int c = 0; c < 3; ++c) {
+            const double x = v[c];
+            a.push_back(std::isfinite(x) ? Json(x) : Json(nullptr));
+        }
+        return a;
+    };
+    const auto colour = [](const RGB& v) { return Json::array({v.r, v.g, v.b}); };
+    const RendererFilmConstants& k = s.constants;
+    Json matrix = Json::array();
+    for (const auto& row : k.xyz_to_working) matrix.push_back(Json::array({row[0], row[1], row[2]}));
+    Json renderers = Json::array();
+    for (const FilmRenderer r : kFilmRenderers)
+        renderers.push_back({{"id", film_renderer_id(r)}, {"title", film_renderer_title(r)}});
+    Json rows = Json::array();
+    for (const RendererScoreRow& r : s.rows) {
+        Json scores = Json::array();
+        for (const RendererScore& x : r.scores)
+            scores.push_back({{"renderer", film_renderer_id(x.renderer)},
+                              {"metrics", metrics_record(x.metrics)},
+                              {"err_f0", triple(x.metrics.err_f0)},
+                              {"metrics_at_mu",
+                               {{"max_rel", triple(x.metrics.max_rel_mu)},
+                                {"max_abs", triple(x.metrics.max_abs_mu)},
+                                {"de2000_max", x.metrics.de2000_max_mu}}},
+                              {"F0", colour(x.f0)},
+                              {"F82", colour(x.f82)},
+                              {"shift_de2000", x.shift_de2000}});
+        rows.push_back(
+            {{"thickness_nm", r.thickness_nm},
+             {"truth",
+              {{"F0", colour(r.truth_f0)}, {"F82", colour(r.truth_f82)}, {"shift_de2000", r.truth_shift_de2000}}},
+             {"scores", std::move(scores)}});
+    }
+    return {
+        {"schema", "metalfit.renderer-film-scores/1"},
+        {"metalfit_version", METALFIT_VERSION},
+        {"description", s.description},
+        {"metal", s.metal_id},
+        {"film", {{"material", s.film_id}, {"name", s.film_name}}},
+        {"space", s.space},
+        {"mu_f82", kMuF82},
+        {"constants",
+         {{"conductor_n", Json::array({k.metal[0].real(), k.metal[1].real(), k.metal[2].real()})},
+          {"conductor_k", Json::array({k.metal[0].imag(), k.metal[1].imag(), k.metal[2].imag()})},
+          {"metal_n_at_wavelengths", Json::array({k.metal_at_wavelengths[0].real(), k.metal_at_wavelengths[1].real(),
+                                                  k.metal_at_wavelengths[2].real()})},
+          {"metal_k_at_wavelengths", Json::array({k.metal_at_wavelengths[0].imag(), k.metal_at_wavelengths[1].imag(),
+                                                  k.metal_at_wavelengths[2].imag()})},
+          {"film_ior", k.film_ior},
+          {"film_ior_at_nm", kLayerIndexWavelengthNm},
+          {"three_wavelengths_nm",
+           Json::array({kThreeWavelengthsNm[0], kThreeWavelengthsNm[1], kThreeWavelengthsNm[2]})},
+          {"xyz_to_working", std::move(matrix)}}},
+        {"renderers", std::move(renderers)},
+        {"rows", std::move(rows)}};
 }
 
 }  // namespace metalfit

@@ -3,6 +3,8 @@
 // The approximations are optics/renderer_thin_film.hpp's; docs/colour.md, "What renderers draw for a thin film".
 #pragma once
 
+#include <nlohmann/json.hpp>
+
 #include <array>
 #include <functional>
 #include <string>
@@ -19,11 +21,13 @@ namespace metalfit {
 
 // belcour_barla_working: Belcour & Barla with XYZ converted into the working space (white E balanced to 1) instead
 // of CIE 1931 RGB: what the hard-coded CIE 1931 RGB of the other two costs.
-enum class FilmRenderer { materialx, belcour_barla, belcour_barla_working, three_wavelength };
-inline constexpr std::array<FilmRenderer, 4> kFilmRenderers{FilmRenderer::materialx, FilmRenderer::belcour_barla,
-                                                            FilmRenderer::belcour_barla_working,
-                                                            FilmRenderer::three_wavelength};
-// "materialx", "belcour-barla", "belcour-barla-working", "airy-3"
+// materialx_nk: MaterialX given the metal's measured n, k at 650, 550 and 450 nm instead of the conductor-rgb fit
+// (whose n, k match the bare metal's reflectance, not its phase).
+enum class FilmRenderer { materialx, materialx_nk, belcour_barla, belcour_barla_working, three_wavelength };
+inline constexpr std::array<FilmRenderer, 5> kFilmRenderers{
+    FilmRenderer::materialx, FilmRenderer::materialx_nk, FilmRenderer::belcour_barla,
+    FilmRenderer::belcour_barla_working, FilmRenderer::three_wavelength};
+// "materialx", "materialx-nk", "belcour-barla", "belcour-barla-working", "airy-3"
 std::string_view film_renderer_id(FilmRenderer r);
 std::string_view film_renderer_title(FilmRenderer r);  // one line: what it evaluates
 
@@ -33,6 +37,7 @@ struct RendererFilmConstants {
     // metalfit's MaterialX export writes into conductor_bsdf: MaterialX's own conductor Fresnel with them is the
     // closest it draws the bare metal).
     ChannelIndices metal{};
+    ChannelIndices metal_at_wavelengths{};  // the metal's n, k at kThreeWavelengthsNm (materialx-nk's)
     double film_ior = 1.0;  // their one film index: the film's n at kLayerIndexWavelengthNm (550 nm), k dropped
     // XYZ (white E) → the working space's RGB, each row scaled so that XYZ (1, 1, 1) gives (1, 1, 1): the working
     // space as belcour_barla_working's output (the converter's matrix, probed with the unit vectors).
@@ -56,6 +61,7 @@ struct RendererScoreRow {
 struct RendererFilmScores {
     std::string description;  // "titanium under a TiO2 (Siefke) film of 0–300 nm"
     std::string metal_id, space;
+    std::string film_id, film_name;
     RendererFilmConstants constants;
     std::vector<RendererScoreRow> rows;
 };
@@ -82,5 +88,6 @@ Metrics curve_metrics(const std::function<RGB(double)>& curve, const SampledRefe
 
 std::string renderer_film_scores_markdown(const RendererFilmScores& scores);
 std::string renderer_film_scores_csv(const RendererFilmScores& scores);
+nlohmann::ordered_json renderer_film_scores_json(const RendererFilmScores& scores);  // schemas/renderer-film-scores
 
 }  // namespace metalfit
