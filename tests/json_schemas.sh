@@ -2,7 +2,7 @@
 # ctest json_schemas.records: writes every kind of JSON record
 # metalfit writes (fit --json plain, pinned, with a budget and of a layered material; metalfit_export.json of the catalog export and of two
 # exports merged into one folder, and of a coated metal; openpbr/*.json; the glTF extras; show --json (and of a named finish); table
-# --format json (bare and layered) and physicallybased; the oxide colour chart; report.json (bare and layered);
+# --format json (bare and layered) and physicallybased; the oxide colour chart and its renderer scores; report.json (bare and layered);
 # bench --json; glpreview's metrics.json when glpreview is given) and validates each against schemas/ with Ajv
 # (json_schemas.mjs); then has json_schemas.mjs --broken break each record in many ways and checks that every broken
 # copy is refused (the schemas can fail).
@@ -32,6 +32,7 @@ export OCIO=
 "$metalfit" show anodized-ti-80nm --json > "$dir/show-finish.json"
 "$metalfit" table Ti --film TiO2 --thickness 0:300:50nm --versus 2.488 --format json -o "$dir/oxide-chart.json"
 "$metalfit" table Fe --film Fe3O4 --coat 1.5 --thickness 20nm --format json -o "$dir/oxide-chart-single.json"
+"$metalfit" table Ti --film TiO2 --thickness 0:340:170nm --renderers --format json -o "$dir/renderer-film-scores.json"
 "$metalfit" table --format physicallybased -o "$dir/physicallybased.json"
 "$metalfit" report Au,Cu --renders off -o "$dir/report" > /dev/null
 "$metalfit" report Ti --film TiO2:80nm --model f82-tint --renders off -o "$dir/report-layered" > /dev/null

@@ -19,6 +19,7 @@
 #include "libfit/fit/model_cost.hpp"
 #include "libfit/fit/oxide_chart.hpp"
 #include "libfit/fit/physicallybased_table.hpp"
+#include "libfit/fit/renderer_film_scores.hpp"
 #include "material_selection.hpp"
 #include "recommend_options.hpp"
 
@@ -33,9 +34,40 @@ struct TableOptions {
     RecommendOptions recommend;   // --recommend: the recommended model per material instead of F0 and F82 tint
     std::filesystem::path costs;  // --costs of --recommend
     std::filesystem::path output;
-    std::string thickness;  // --thickness FIRST:LAST:STEP: the oxide chart
-    std::string versus;     // --versus INDEX
+    std::string thickness;   // --thickness FIRST:LAST:STEP: the oxide chart
+    std::string versus;      // --versus INDEX
+    bool renderers = false;  // --renderers: the renderers' thin films scored instead of the chart
 };
+
+// `table METAL --film FILM --thickness A:B:Cnm --renderers`: what each renderer's thin-film approximation draws,
+// scored against the stack's curve (libfit's renderer_film_scores).
+void run_renderer_scores(const TableOptions& o, const GlobalOptions& global, const Catalog& catalog,
+                         const ColourSetup& setup) {
+    if (o.format != "md" && o.format != "csv" && o.format != "json")
+        throw UsageError("--renderers: the scores' formats are md, csv and json");
+    if (!o.versus.empty()) throw UsageError("--renderers scores the film itself: no --versus");
+    if (!o.layers.coat.empty())
+        throw UsageError("--renderers: a film in air (the renderers' film formulas take air above it): no --coat");
+    const std::vector<double> thicknesses = parse_thickness_range(o.thickness);
+    const auto selected = o.selection.loaders(catalog, "table --thickness");
+    if (selected.size() != 1) throw UsageError("table --thickness: give one metal (Ti)");
+    const LayerOptions::ChartLayers layers = o.layers.chart_layers(global.data_dir);
+    Material metal = selected.front()();
+    if (metal.layers && !metal.layers->empty())
+        throw UsageError("table --thickness: " + metal.id +
+                         " is a named finish with layers of its own: give its metal");
+    for (const std::string& w : metal.warnings) warn(w);
+    for (const std::string& w : layers.film.warnings) warn("film " + layers.film.id + ": " + w);
+    const RendererFilmScores scores =
+        renderer_film_scores({std::move(metal), layers.film, thicknesses, ErrorOptions{}.settings()}, setup.colorimetry,
+                             setup.converter, setup.spectral);
+    if (o.format == "csv")
+        emit(renderer_film_scores_csv(scores), o.output);
+    else if (o.format == "json")
+        emit(renderer_film_scores_json(scores).dump(2) + "\n", o.output);
+    else
+        emit(renderer_film_scores_markdown(scores), o.output);
+}
 
 // `table METAL --film FILM --thickness 0:300:10nm [--versus 2.488]`: the oxide colour chart (libfit's oxide_chart).
 void run_chart(const TableOptions& o, const GlobalOptions& global, const Catalog& catalog, const ColourSetup& setup) {
@@ -113,6 +145,9 @@ std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& glob
     app.add_option("--versus", o->versus,
                    "With --thickness: beside each row a film of this constant index (2.488, physicallybased.info's "
                    "anodized titanium) and the CIEDE2000 between the two");
+    app.add_flag("--renderers", o->renderers,
+                 "With --thickness: score MaterialX's, Belcour & Barla's and a three-wavelength thin film against "
+                 "the stack (md, csv, json)");
     app.add_option("-o,--output", o->output, "Write to this file instead of stdout");
     add_recommend_options(app, o->recommend);
     app.add_option("--costs", o->costs,
@@ -120,6 +155,11 @@ std::function<void()> add_table_command(CLI::App& app, const GlobalOptions& glob
     return [o, &global] {
         const Catalog catalog = Catalog::load(global.data_dir);
         const ColourSetup setup = resolve_colour_options(o->colour, global);
+        if (o->renderers) {
+            if (o->thickness.empty()) throw UsageError("--renderers scores a film: give --film and --thickness");
+            run_renderer_scores(*o, global, catalog, setup);
+            return;
+        }
         if (!o->thickness.empty()) {
             run_chart(*o, global, catalog, setup);
             return;
