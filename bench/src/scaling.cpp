@@ -10,10 +10,13 @@
 #include <random>
 #include <stdexcept>
 
+#include "libfit/base/errors.hpp"
 #include "libfit/fit/fit_batch.hpp"
 #include "libfit/fit/fit_record_stream.hpp"
+#include "libfit/io/csv.hpp"
 #include "libfit/models/model.hpp"
 #include "metalfit_bench/machine.hpp"
+#include "metalfit_bench/nk_database.hpp"
 #include "metalfit_bench/subprocess.hpp"
 
 namespace metalfit::bench {
@@ -76,16 +79,19 @@ std::vector<std::function<Material()>> synthetic_materials(const Catalog& catalo
     return loaders;
 }
 
-ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, int threads,
-                                 const std::vector<std::string>& models) {
+namespace {
+
+// The fits of `loaders` as `metalfit fit --all --json` runs them, measured (the cell's size and threads set by the caller).
+ScalingCell measure_fits(const Environment& env, const std::vector<std::function<Material()>>& materials, int threads,
+                         const std::vector<std::string>& models) {
     std::vector<const Model*> chosen;
     for (const std::string& id : models) chosen.push_back(&find_model(id));
     // Each loader's thread CPU summed (the loaders run on every worker thread).
     std::mutex setup_mutex;
     double setup_cpu = 0;
     std::vector<std::function<Material()>> loaders;
-    for (std::function<Material()>& load : synthetic_materials(env.catalog, materials))
-        loaders.push_back([load = std::move(load), &setup_mutex, &setup_cpu] {
+    for (const std::function<Material()>& load : materials)
+        loaders.push_back([&load, &setup_mutex, &setup_cpu] {
             const double t0 = thread_cpu_seconds();
             Material m = load();
             const double spent = thread_cpu_seconds() - t0;
@@ -122,7 +128,7 @@ ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, 
     cell.window_wait_s = statistics.window_wait_s;
     cell.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
     cell.cpu_s = process_cpu_seconds() - cpu0;
-    cell.materials = materials;
+    cell.materials = materials.size();
     cell.threads = threads;
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
@@ -130,17 +136,59 @@ ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, 
     return cell;
 }
 
+}  // namespace
+
+ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, int threads,
+                                 const std::vector<std::string>& models) {
+    return measure_fits(env, synthetic_materials(env.catalog, materials), threads, models);
+}
+
+ScalingCell measure_database_cell(const Environment& env, const std::filesystem::path& folder, int threads,
+                                  const std::vector<std::string>& models) {
+    const NkDatabaseScan scan = scan_nk_database(folder);
+    // Each file loaded again when its fit comes (as `fit` loads its files): the scan keeps none of them.
+    std::vector<std::function<Material()>> loaders;
+    for (const std::filesystem::path& file : scan.metal_files)
+        loaders.push_back([file, folder] {
+            Material m = load_nk_file(file);
+            m.id = std::filesystem::relative(file, folder).replace_extension().generic_string();
+            return m;
+        });
+    ScalingCell cell = measure_fits(env, loaders, threads, models);
+    cell.source = "database";
+    cell.folder = folder;
+    cell.files = scan.files;
+    cell.skipped_not_nk = scan.not_nk;
+    cell.skipped_unreadable = scan.unreadable;
+    cell.skipped_outside_visible = scan.outside_visible;
+    cell.skipped_not_metal = scan.not_metal;
+    cell.scan_cpu_s = scan.cpu_s;
+    return cell;
+}
+
 nlohmann::json to_json(const ScalingCell& c) {
-    return {{"materials", c.materials},
-            {"threads", c.threads},
-            {"fits", c.fits},
-            {"wall_s", c.wall_s},
-            {"cpu_s", c.cpu_s},
-            {"peak_mib", c.peak_mib},
-            {"setup_cpu_s", c.setup_cpu_s},
-            {"record_cpu_s", c.record_cpu_s},
-            {"record_mib", c.record_mib},
-            {"window_wait_s", c.window_wait_s}};
+    nlohmann::json j{{"materials", c.materials},
+                     {"threads", c.threads},
+                     {"fits", c.fits},
+                     {"wall_s", c.wall_s},
+                     {"cpu_s", c.cpu_s},
+                     {"peak_mib", c.peak_mib},
+                     {"setup_cpu_s", c.setup_cpu_s},
+                     {"record_cpu_s", c.record_cpu_s},
+                     {"record_mib", c.record_mib},
+                     {"window_wait_s", c.window_wait_s},
+                     {"source", c.source}};
+    if (c.source == "database")
+        j["database"] = {{"folder", c.folder.string()},
+                         {"files", c.files},
+                         {"fitted", c.materials},
+                         {"skipped",
+                          {{"not_nk", c.skipped_not_nk},
+                           {"unreadable", c.skipped_unreadable},
+                           {"outside_visible", c.skipped_outside_visible},
+                           {"not_metal", c.skipped_not_metal}}},
+                         {"scan_cpu_s", c.scan_cpu_s}};
+    return j;
 }
 
 ScalingCell scaling_cell_from_json(const nlohmann::json& j) {
@@ -155,6 +203,17 @@ ScalingCell scaling_cell_from_json(const nlohmann::json& j) {
     c.record_cpu_s = j.at("record_cpu_s").get<double>();
     c.record_mib = j.at("record_mib").get<double>();
     c.window_wait_s = j.at("window_wait_s").get<double>();
+    c.source = j.value("source", "synthetic");
+    if (const auto d = j.find("database"); d != j.end()) {
+        c.folder = d->at("folder").get<std::string>();
+        c.files = d->at("files").get<std::size_t>();
+        const nlohmann::json& skipped = d->at("skipped");
+        c.skipped_not_nk = skipped.at("not_nk").get<std::size_t>();
+        c.skipped_unreadable = skipped.at("unreadable").get<std::size_t>();
+        c.skipped_outside_visible = skipped.at("outside_visible").get<std::size_t>();
+        c.skipped_not_metal = skipped.at("not_metal").get<std::size_t>();
+        c.scan_cpu_s = d->at("scan_cpu_s").get<double>();
+    }
     return c;
 }
 
@@ -171,22 +230,28 @@ ScalingTable run_scaling(const ScalingOptions& o) {
     table.models = o.models;
     table.machine = Machine::describe().one_line();
     table.command_line = o.command_line;
-    for (std::size_t size : o.sizes)
-        for (int threads : o.threads) {
-            std::vector<std::string> args{"--data-dir", o.data_dir.string()};
-            if (o.ocio_config) args.insert(args.end(), {"--ocio-config", o.ocio_config->string()});
-            args.insert(args.end(), {"bench", "--scaling-cell", std::to_string(size), "--threads",
-                                     std::to_string(threads), "--scaling-models", join_models(o.models)});
-            const std::string cell = std::to_string(size) + " materials on " + std::to_string(threads) + " threads";
-            if (o.progress) o.progress("scaling: " + cell);
-            const ProcessResult r = run_process(o.metalfit, args);
-            if (r.exit_code != 0) throw std::runtime_error("scaling cell " + cell + " failed: " + last_line(r.err));
-            try {
-                table.cells.push_back(scaling_cell_from_json(nlohmann::json::parse(r.out)));
-            } catch (const nlohmann::json::exception& e) {
-                throw std::runtime_error("scaling cell " + cell + ": unreadable output (" + e.what() + ")");
-            }
+    const auto run_cell = [&](const std::vector<std::string>& cell_args, int threads, const std::string& what) {
+        std::vector<std::string> args{"--data-dir", o.data_dir.string()};
+        if (o.ocio_config) args.insert(args.end(), {"--ocio-config", o.ocio_config->string()});
+        args.insert(args.end(), cell_args.begin(), cell_args.end());
+        args.insert(args.end(), {"--threads", std::to_string(threads), "--scaling-models", join_models(o.models)});
+        const std::string cell = what + " on " + std::to_string(threads) + " threads";
+        if (o.progress) o.progress("scaling: " + cell);
+        const ProcessResult r = run_process(o.metalfit, args);
+        if (r.exit_code != 0) throw std::runtime_error("scaling cell " + cell + " failed: " + last_line(r.err));
+        try {
+            table.cells.push_back(scaling_cell_from_json(nlohmann::json::parse(r.out)));
+        } catch (const nlohmann::json::exception& e) {
+            throw std::runtime_error("scaling cell " + cell + ": unreadable output (" + e.what() + ")");
         }
+    };
+    for (std::size_t size : o.sizes)
+        for (int threads : o.threads)
+            run_cell({"bench", "--scaling-cell", std::to_string(size)}, threads, std::to_string(size) + " materials");
+    if (o.database)
+        for (int threads : o.threads)
+            run_cell({"bench", "--scaling-database-cell", o.database->string()}, threads,
+                     "the database " + o.database->string());
     return table;
 }
 
@@ -203,9 +268,14 @@ nlohmann::json to_json(const ScalingTable& t) {
 }
 
 std::string to_text(const ScalingTable& t) {
+    bool synthetic = false;
+    for (const ScalingCell& c : t.cells) synthetic = synthetic || c.source != "database";
     std::string text =
-        "metalfit bench --scaling: fit on synthetic materials (catalog tables, n and k scaled by 1 ± 0.1, seed " +
-        std::to_string(t.seed) + "), models " + join_models(t.models) + "\n" + t.machine + "\n";
+        (synthetic ? "metalfit bench --scaling: fit on synthetic materials (catalog tables, n and k scaled by 1 ± 0.1, "
+                     "seed " +
+                         std::to_string(t.seed) + ")"
+                   : std::string("metalfit bench --scaling-database: fit every metal nk file of a database folder")) +
+        ", models " + join_models(t.models) + "\n" + t.machine + "\n";
     char line[256];
     std::snprintf(line, sizeof line, "| %9s | %7s | %9s | %9s | %9s | %13s | %11s | %11s | %12s | %10s | %13s |\n",
                   "materials", "threads", "wall s", "CPU s", "peak MiB", "fits / CPU s", "wall / mat", "set-up CPU s",
@@ -226,6 +296,16 @@ std::string to_text(const ScalingTable& t) {
     std::snprintf(line, sizeof line, "fit throughput: %.1f materials x models per CPU second (largest 1-thread cell)\n",
                   t.fits_per_cpu_second());
     text += line;
+    for (const ScalingCell& c : t.cells)
+        if (c.source == "database") {
+            std::snprintf(line, sizeof line,
+                          "database (%d thread%s): %zu files: %zu fitted; skipped %zu not nk, %zu unreadable, %zu not "
+                          "covering 360-830 nm, %zu not metal; scan %.3f s CPU\n",
+                          c.threads, c.threads == 1 ? "" : "s", c.files, c.materials, c.skipped_not_nk,
+                          c.skipped_unreadable, c.skipped_outside_visible, c.skipped_not_metal, c.scan_cpu_s);
+            text += "database " + c.folder.string() + "\n";
+            text += line;
+        }
     return text;
 }
 

@@ -32,8 +32,11 @@ struct BenchCommandOptions {
     std::vector<std::size_t> scaling_sizes;
     std::vector<int> scaling_threads;
     std::string scaling_models;
-    // The hidden child of --scaling: one cell measured in this process.
+    // --scaling-database: the database's cells (alone, or after the synthetic ones with --scaling).
+    std::optional<std::filesystem::path> scaling_database;
+    // The hidden children of --scaling and --scaling-database: one cell measured in this process.
     std::optional<std::size_t> scaling_cell;
+    std::optional<std::filesystem::path> scaling_database_cell;
     int threads = 1;
 };
 
@@ -53,6 +56,15 @@ void run_scaling_command(const BenchCommandOptions& o, const GlobalOptions& glob
             o.output);
         return;
     }
+    if (o.scaling_database_cell) {
+        const bench::Environment env = bench::Environment::load(global.data_dir, global.ocio_config);
+        emit(bench::to_json(
+                 bench::measure_database_cell(env, *o.scaling_database_cell, o.threads, split_models(o.scaling_models)))
+                     .dump() +
+                 "\n",
+             o.output);
+        return;
+    }
     bench::ScalingOptions options;
     options.metalfit = std::filesystem::read_symlink("/proc/self/exe");
     options.data_dir = global.data_dir;
@@ -61,6 +73,16 @@ void run_scaling_command(const BenchCommandOptions& o, const GlobalOptions& glob
     if (!o.scaling_threads.empty()) options.threads = o.scaling_threads;
     if (!o.scaling_models.empty()) options.models = split_models(o.scaling_models);
     options.command_line = "metalfit bench --scaling";
+    if (o.scaling_database) {
+        std::error_code error;
+        if (!std::filesystem::is_directory(*o.scaling_database, error))
+            throw UsageError("--scaling-database: " + o.scaling_database->string() +
+                             " is not a folder (a refractiveindex.info database folder, such as data/nk)");
+        options.database = o.scaling_database;
+        options.command_line = o.scaling ? "metalfit bench --scaling --scaling-database " + o.scaling_database->string()
+                                         : "metalfit bench --scaling-database " + o.scaling_database->string();
+        if (!o.scaling) options.sizes.clear();  // the database alone
+    }
     if (isatty(STDERR_FILENO))
         options.progress = [](const std::string& line) { std::cerr << "metalfit bench: " << line << "\n"; };
     const bench::ScalingTable table = bench::run_scaling(options);
@@ -97,7 +119,8 @@ void run_model_costs_command(const BenchCommandOptions& o, const GlobalOptions& 
 }
 
 void run_bench_command(const BenchCommandOptions& o, const GlobalOptions& global) {
-    if (o.scaling || o.scaling_cell) return run_scaling_command(o, global);
+    if (o.scaling || o.scaling_cell || o.scaling_database || o.scaling_database_cell)
+        return run_scaling_command(o, global);
     if (o.model_costs) return run_model_costs_command(o, global);
     bench::BenchOptions options;
     options.quick = o.quick;
@@ -146,7 +169,12 @@ std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions& glob
     app.add_option("--scaling-models", o->scaling_models,
                    "Models of --scaling, comma-separated, or all (default: the first six, "
                    "schlick,lazanyi,lazanyi-comp,f82-tint,conductor-rgb,gulbrandsen)");
-    app.add_option("--scaling-cell", o->scaling_cell)->group("");  // the child of --scaling
+    app.add_option("--scaling-database", o->scaling_database,
+                   "Fit every metal nk file of a refractiveindex.info database folder (data/nk, a clone's "
+                   "database/data): one cell per thread count; alone, or after --scaling's")
+        ->type_name("FOLDER");
+    app.add_option("--scaling-cell", o->scaling_cell)->group("");                    // the child of --scaling
+    app.add_option("--scaling-database-cell", o->scaling_database_cell)->group("");  // the child of --scaling-database
     app.add_option("--threads", o->threads)->group("")->check(CLI::PositiveNumber);
     return [o, &global] { run_bench_command(*o, global); };
 }

@@ -1,6 +1,7 @@
 // The scaling table of `metalfit bench --scaling`: `fit` on synthetic material sets of growing size (the catalog's
 // tables with n and k perturbed, deterministic) on 1 and 2 threads: wall, CPU and peak memory, each cell in a
-// process of its own (peak resident memory is a process's), and the fit throughput (materials × models per CPU second).
+// process of its own (peak resident memory is a process's), and the fit throughput (materials × models per CPU second);
+// and the whole database: every metal nk file of a refractiveindex.info database folder (nk_database.hpp).
 #pragma once
 
 #include <cstddef>
@@ -42,12 +43,24 @@ struct ScalingCell {
     double record_cpu_s = 0;
     double record_mib = 0;
     double window_wait_s = 0;
+    // A database cell (`source` "database"): the folder's scan, the files fitted being `materials`; set-up CPU is then
+    // the files' loading during the fits, and the scan's own CPU (every file read and classified once before) apart.
+    std::string source = "synthetic";
+    std::filesystem::path folder;
+    std::size_t files = 0, skipped_not_nk = 0, skipped_unreadable = 0, skipped_outside_visible = 0,
+                skipped_not_metal = 0;
+    double scan_cpu_s = 0;
 };
 
 // Fits `materials` synthetic materials with `models` on `threads` threads in this process and measures it
 // (`metalfit bench --scaling-cell`, the child of run_scaling).
 ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, int threads,
                                  const std::vector<std::string>& models);
+// Fits every metal nk file of `folder` (scan_nk_database) with `models` on `threads` threads in this process and
+// measures it (`metalfit bench --scaling-database-cell`, the child of run_scaling). Throws InputError for a folder
+// that is not one.
+ScalingCell measure_database_cell(const Environment& env, const std::filesystem::path& folder, int threads,
+                                  const std::vector<std::string>& models);
 nlohmann::json to_json(const ScalingCell& cell);
 ScalingCell scaling_cell_from_json(const nlohmann::json& j);
 
@@ -55,7 +68,8 @@ struct ScalingOptions {
     std::filesystem::path metalfit;  // the executable the cells run in (this one)
     std::filesystem::path data_dir;
     std::optional<std::filesystem::path> ocio_config;
-    std::vector<std::size_t> sizes{1, 29, 300, 3000};
+    std::vector<std::size_t> sizes{1, 29, 300, 3000};  // none: no synthetic cells
+    std::optional<std::filesystem::path> database;     // a database folder: one more cell per thread count
     std::vector<int> threads{1, 2};
     std::vector<std::string> models{"schlick", "lazanyi", "lazanyi-comp", "f82-tint", "conductor-rgb", "gulbrandsen"};
     std::string command_line;
@@ -65,7 +79,7 @@ struct ScalingOptions {
 struct ScalingTable {
     std::vector<std::string> models;
     std::uint64_t seed = kScalingSeed;
-    std::vector<ScalingCell> cells;  // sizes × threads, in that order
+    std::vector<ScalingCell> cells;  // sizes × threads, in that order, then the database's cells (threads)
     std::string machine;             // CPU model, cores
     std::string command_line;
     // Fit throughput, materials × models per CPU second, of the largest 1-thread cell (its CPU time includes the
@@ -73,8 +87,8 @@ struct ScalingTable {
     double fits_per_cpu_second() const;
 };
 
-// Runs every cell as `metalfit bench --scaling-cell N --threads T --scaling-models LIST` and collects them. Throws
-// std::runtime_error naming the cell when a child fails.
+// Runs every cell as `metalfit bench --scaling-cell N --threads T --scaling-models LIST` (a database's as
+// `--scaling-database-cell FOLDER`) and collects them. Throws std::runtime_error naming the cell when a child fails.
 ScalingTable run_scaling(const ScalingOptions& options);
 
 nlohmann::json to_json(const ScalingTable& table);  // schema metalfit.bench-scaling/1 (docs/cli.md)

@@ -6,6 +6,7 @@
 #include <EGL/eglext.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace metalfit::glpreview {
@@ -94,20 +95,38 @@ struct GlContext::Impl {
     }
 };
 
+bool is_software_renderer(std::string_view renderer) {
+    for (const char* software : {"llvmpipe", "softpipe", "SwiftShader", "swrast"})
+        if (renderer.find(software) != std::string_view::npos) return true;
+    return false;
+}
+
 GlContext GlContext::create() {
     auto get_platform_display = egl_proc<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
     if (!get_platform_display) throw GlError("EGL: eglGetPlatformDisplayEXT is not available (EGL_EXT_platform_base)");
+    const char* chosen = std::getenv("GLPREVIEW_EGL_PLATFORM");
+    const std::string platform = chosen ? chosen : "";
+    if (!platform.empty() && platform != "device" && platform != "surfaceless")
+        throw GlError("GLPREVIEW_EGL_PLATFORM=" + platform + ": not a platform (device or surfaceless)");
+    const bool gpu_only = platform == "device";
     std::ostringstream failures;
 
-    auto impl = std::make_unique<Impl>();
-    const std::string surfaceless =
-        impl->make_current(get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr));
-    if (surfaceless.empty()) {
-        impl->platform = "EGL surfaceless (Mesa)";
-        return GlContext(std::move(impl));
+    if (!gpu_only) {
+        auto impl = std::make_unique<Impl>();
+        const std::string surfaceless =
+            impl->make_current(get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr));
+        if (surfaceless.empty()) {
+            impl->platform = "EGL surfaceless (Mesa)";
+            return GlContext(std::move(impl));
+        }
+        failures << "surfaceless Mesa platform: " << surfaceless;
+        impl->release();
+        if (platform == "surfaceless")
+            throw GlError("EGL: no headless OpenGL 4.5 core context (GLPREVIEW_EGL_PLATFORM=surfaceless): " +
+                          failures.str());
+    } else {
+        failures << "surfaceless Mesa platform: skipped (GLPREVIEW_EGL_PLATFORM=device)";
     }
-    failures << "surfaceless Mesa platform: " << surfaceless;
-    impl->release();
 
     auto query_devices = egl_proc<PFNEGLQUERYDEVICESEXTPROC>("eglQueryDevicesEXT");
     if (!query_devices) {
@@ -121,6 +140,12 @@ GlContext GlContext::create() {
         auto candidate = std::make_unique<Impl>();
         const std::string why =
             candidate->make_current(get_platform_display(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr));
+        const auto* renderer = why.empty() ? reinterpret_cast<const char*>(glGetString(GL_RENDERER)) : nullptr;
+        if (why.empty() && gpu_only && is_software_renderer(renderer ? renderer : "")) {
+            failures << "; device " << i << ": " << renderer << " is a software rasteriser";
+            candidate->release();
+            continue;
+        }
         if (why.empty()) {
             candidate->platform = "EGL device";
             return GlContext(std::move(candidate));
@@ -129,7 +154,8 @@ GlContext GlContext::create() {
         candidate->release();
     }
     if (device_count == 0) failures << "; device platform: no EGL device";
-    throw GlError("EGL: no headless OpenGL 4.5 core context: " + failures.str());
+    throw GlError(std::string("EGL: no headless OpenGL 4.5 core context") +
+                  (gpu_only ? " on a GPU (GLPREVIEW_EGL_PLATFORM=device)" : "") + ": " + failures.str());
 }
 
 GlContext::GlContext(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}

@@ -259,6 +259,7 @@ Handle<Json> add_glossy_cost_passes(PassGraph& graph, GpuBenchRun& run) {
                 j["renderer"] = run.context->renderer();
                 j["size"] = {base.width, base.height};
                 j["frames"] = rounds;
+                j["clock"] = frame_timer_name(frame_timer());
                 j["reference_samples"] = base.outputs.reference_samples;
                 j["material"] = base.spheres.at(0).material;
                 j["rows"] = r.get(timing.rows);

@@ -197,6 +197,7 @@ Handle<Json> add_localization_cost_passes(PassGraph& graph, GpuBenchRun& run) {
                 j["renderer"] = run.context->renderer();
                 j["size"] = {scene.width, scene.height};
                 j["frames"] = rounds;
+                j["clock"] = frame_timer_name(frame_timer());
                 j["rooms"] = Json::array();
                 for (std::size_t i = 0; i < run.rooms.size(); ++i)
                     j["rooms"].push_back({{"room", run.rooms[i].name}, {"rows", r.get(room_rows[i])}});

@@ -67,7 +67,7 @@ using CostPrograms = std::vector<CostProgram>;
 struct ShaderRounds {
     std::vector<std::string> names;
     RoundTimes ms;
-    TimingClock clock = TimingClock::wall;
+    FrameTimer timer = FrameTimer::wall;
 };
 
 // One model's program (model null: the reference LUT's), assembled like the spheres' Fresnel (ShaderBuilder).
@@ -102,7 +102,7 @@ Json shader_record(const GpuBenchRun& run, int rounds, const ShaderRounds& timed
     j["size"] = {kShaderBenchSize, kShaderBenchSize};
     j["frames"] = rounds;
     j["evaluations_per_pixel"] = kShaderBenchEvaluationsPerPixel;
-    j["clock"] = clock_name(timed.clock);
+    j["clock"] = frame_timer_name(timed.timer);
     j["models"] = Json::array();
     for (std::size_t i = 0; i < timed.names.size(); ++i) {
         std::vector<double> per_round;
@@ -176,7 +176,7 @@ Handle<Json> add_shader_cost_passes(PassGraph& graph, GpuBenchRun& run) {
                             glDrawArrays(GL_TRIANGLES, 0, 3);
                         });
                     }
-                    timed.clock = frame_clock();
+                    timed.timer = frame_timer();
                     timed.ms = interleaved_rounds(variants, rounds);
                     check_gl("shader benchmark");
                     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -5,15 +5,19 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <mutex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "base/yaml_structure.hpp"
+#include "color/shipped_ocio_config.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/input_file.hpp"
 #include "libfit/base/text.hpp"
 #include "libfit/base/utf8.hpp"
+#include "libfit/color/ocio_config_loads.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -101,6 +105,18 @@ std::string lut_problem(const OCIO::Config& config, const char* src, std::string
     return {};
 }
 
+// The configs made in this process, by absolute path, with the bytes they were made from.
+struct LoadedConfigs {
+    std::mutex mutex;
+    std::map<std::filesystem::path, std::pair<std::string, OCIO::ConstConfigRcPtr>> by_path;
+    OcioConfigLoads counts;
+};
+
+LoadedConfigs& loaded_configs() {
+    static LoadedConfigs loaded;
+    return loaded;
+}
+
 }  // namespace
 
 std::string describe_ocio_config(const OcioConfigChoice& choice) {
@@ -120,6 +136,28 @@ OCIO::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice, const st
     if (const auto problem = find_invalid_utf8(text))
         throw ColorConfigError(described + ": line " + std::to_string(problem->line) + ": " + problem->reason +
                                " (an OCIO config is UTF-8 text)");
+    // Once per process and file: the same bytes at the same path give the Config already made (its processors, which
+    // OCIO caches inside it, included). A file changed since is made again.
+    std::error_code absolute_error;
+    std::filesystem::path key = std::filesystem::absolute(choice.path, absolute_error);
+    if (absolute_error) key = choice.path;
+    LoadedConfigs& loaded = loaded_configs();
+    {
+        const std::lock_guard lock(loaded.mutex);
+        if (const auto found = loaded.by_path.find(key); found != loaded.by_path.end() && found->second.first == text) {
+            ++loaded.counts.reused;
+            return found->second.second;
+        }
+    }
+    // metalfit's own config, byte for byte: built through OCIO's API, without YAML. The same Config as the parse, which
+    // passes every check below (test OcioConfigLoads.ShippedConfigBuiltEqualsParsed).
+    if (text == shipped_ocio_config_text()) {
+        OCIO::ConstConfigRcPtr config = build_shipped_ocio_config(key.parent_path());
+        const std::lock_guard lock(loaded.mutex);
+        ++loaded.counts.shipped_built;
+        loaded.by_path[key] = {std::move(text), config};
+        return config;
+    }
     // The YAML's shape (depth, nodes, aliases: base/yaml_structure) and the number of entries, before OCIO reads it.
     // OCIO then opens the path again (so that its working folder and search path are the file's): the file could be
     // swapped in between only by someone who can write it anyway.
@@ -187,7 +225,26 @@ OCIO::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice, const st
                 throw ColorConfigError(described + ": " + holder + ": file transform " + resolved + ": " + problem);
         });
     });
+    const std::lock_guard lock(loaded.mutex);
+    ++loaded.counts.parsed;
+    loaded.by_path[key] = {std::move(text), config};
     return config;
 }
 
 }  // namespace metalfit::detail
+
+namespace metalfit {
+
+OcioConfigLoads ocio_config_loads() {
+    detail::LoadedConfigs& loaded = detail::loaded_configs();
+    const std::lock_guard lock(loaded.mutex);
+    return loaded.counts;
+}
+
+std::string serialized_ocio_config(const OcioConfigChoice& choice) {
+    std::ostringstream out;
+    detail::load_ocio_config(choice)->serialize(out);
+    return out.str();
+}
+
+}  // namespace metalfit

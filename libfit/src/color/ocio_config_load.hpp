@@ -25,7 +25,9 @@ std::string describe_ocio_config(const OcioConfigChoice& choice);
 // getProcessor. ColorConfigError naming the config and the spaces of the cycle; and refuses a file transform (a LUT)
 // that the search path does not find as a regular file of at most the input size limit (naming the LUT); a config OCIO
 // cannot load is "cannot be loaded: <OCIO's reason>". Messages start with `context`, by default "OCIO config <path>
-// (<origin>)".
+// (<origin>)". Once per process and file (libfit/color/ocio_config_loads.hpp): a later call for the same path whose
+// bytes are unchanged returns the same Config, and a file holding exactly data/ocio/config.ocio's bytes is built
+// through OCIO's API (shipped_ocio_config.hpp) instead of parsed.
 OCIO_NAMESPACE::ConstConfigRcPtr load_ocio_config(const OcioConfigChoice& choice, const std::string& context = {});
 
 }  // namespace metalfit::detail

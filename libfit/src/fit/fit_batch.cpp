@@ -123,8 +123,9 @@ void fit_materials_in_order(const std::vector<std::function<Material()>>& loader
             if (stopped) advanced.notify_all();
         }
     };
-    // One OCIO processor per thread: the calling thread uses the caller's; the others' are made here, before any thread
-    // starts, so that a failure is an ordinary error and not an exception inside a thread.
+    // One converter per thread: the calling thread uses the caller's; the others' are made here, before any thread
+    // starts, so that a failure is an ordinary error and not an exception inside a thread. They share the process's
+    // Config and OCIO's cached processors (libfit/color/ocio_config_loads.hpp; OCIO's CPU processors are thread-safe).
     std::vector<ColorSpaceConverter> converters;
     for (int t = 1; t < threads; ++t)
         converters.push_back(

@@ -1,6 +1,8 @@
 // A headless OpenGL 4.5 core context through EGL: no window system, no display server.
 // Platforms, in order: EGL_PLATFORM_SURFACELESS_MESA (Mesa; llvmpipe without a GPU), then EGL_PLATFORM_DEVICE_EXT
 // (the first EGL device that can make a GL 4.5 core context; GPU drivers). Rendering goes to framebuffer objects.
+// GLPREVIEW_EGL_PLATFORM=device skips the surfaceless platform and takes the first EGL device whose renderer is not a
+// software rasteriser (a GPU: scripts/gpu-bench.sh), or fails; =surfaceless takes that platform only.
 #pragma once
 
 #include <memory>
@@ -21,6 +23,9 @@ public:
 };
 
 class ProgramCache;
+
+// Whether GL_RENDERER names a software rasteriser (llvmpipe, softpipe, SwiftShader, swrast).
+bool is_software_renderer(std::string_view renderer);
 
 class GlContext {
 public:
