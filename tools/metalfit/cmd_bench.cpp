@@ -32,6 +32,7 @@ struct BenchCommandOptions {
     std::vector<std::size_t> scaling_sizes;
     std::vector<int> scaling_threads;
     std::string scaling_models;
+    std::string scaling_mode = "fit";
     // The hidden child of --scaling: one cell measured in this process.
     std::optional<std::size_t> scaling_cell;
     int threads = 1;
@@ -46,11 +47,11 @@ std::vector<std::string> split_models(const std::string& list) {
 void run_scaling_command(const BenchCommandOptions& o, const GlobalOptions& global) {
     if (o.scaling_cell) {
         const bench::Environment env = bench::Environment::load(global.data_dir, global.ocio_config);
-        emit(
-            bench::to_json(bench::measure_scaling_cell(env, *o.scaling_cell, o.threads, split_models(o.scaling_models)))
-                    .dump() +
-                "\n",
-            o.output);
+        emit(bench::to_json(bench::measure_scaling_cell(env, *o.scaling_cell, o.threads, split_models(o.scaling_models),
+                                                        bench::kScalingModeNames.parse(o.scaling_mode)))
+                     .dump() +
+                 "\n",
+             o.output);
         return;
     }
     bench::ScalingOptions options;
@@ -60,6 +61,7 @@ void run_scaling_command(const BenchCommandOptions& o, const GlobalOptions& glob
     if (!o.scaling_sizes.empty()) options.sizes = o.scaling_sizes;
     if (!o.scaling_threads.empty()) options.threads = o.scaling_threads;
     if (!o.scaling_models.empty()) options.models = split_models(o.scaling_models);
+    options.mode = bench::kScalingModeNames.parse(o.scaling_mode);
     options.command_line = "metalfit bench --scaling";
     if (isatty(STDERR_FILENO))
         options.progress = [](const std::string& line) { std::cerr << "metalfit bench: " << line << "\n"; };
@@ -146,6 +148,9 @@ std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions& glob
     app.add_option("--scaling-models", o->scaling_models,
                    "Models of --scaling, comma-separated, or all (default: the first six, "
                    "schlick,lazanyi,lazanyi-comp,f82-tint,conductor-rgb,gulbrandsen)");
+    app.add_option("--scaling-mode", o->scaling_mode,
+                   "What --scaling runs: fit (fit --all --json), export (export --all --format all) or report "
+                   "(report --all --renders off)");
     app.add_option("--scaling-cell", o->scaling_cell)->group("");  // the child of --scaling
     app.add_option("--threads", o->threads)->group("")->check(CLI::PositiveNumber);
     return [o, &global] { run_bench_command(*o, global); };

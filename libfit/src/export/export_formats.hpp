@@ -129,6 +129,14 @@ std::vector<ExportFile> export_blender(const std::vector<MaterialExport>& materi
 // fit holds models_to_fit(request). No bare-metal export is attached (export_files does that).
 MaterialExport material_export(const MaterialFit& fit, const ExportRequest& request);
 
+// Every file of an export, one list per format of the request (in its order), the record's out_of_range and
+// consumers filled in: what export_files joins (and checks for files two materials would share), and what
+// ExportStream makes for one material at a time.
+std::vector<std::vector<ExportFile>> export_files_by_format(const std::vector<MaterialFit>& fits,
+                                                            const FitRecordContext& context,
+                                                            const ExportRequest& request,
+                                                            const std::string& materialx_space);
+
 // What each format's consumer evaluates for one exported model (consumer_curve.hpp; the registry's `consumer_curve`):
 // the model itself (JSON, GLSL, HLSL, C++), MaterialX's node, OpenPBR's F82-tint metal, Schlick from glTF's
 // baseColorFactor. `material` is bare, or layered in a format that evaluates the stack's fitted curve.
