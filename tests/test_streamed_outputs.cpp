@@ -106,7 +106,9 @@ std::pair<std::vector<std::string>, std::vector<std::string>> export_both(const 
     ExportStream stream(streamed, context, request, space);
     fit_materials_for_export(loaders(names), env().colour(), fit_request, request, 2,
                              [&](std::size_t, MaterialFit&& fit) { stream.add(fit); });
-    return {out_of_range_lines(files), stream.finish()};
+    std::vector<std::string> streamed_lines;
+    stream.finish([&](const std::string& line) { streamed_lines.push_back(line); });
+    return {out_of_range_lines(files), streamed_lines};
 }
 
 TEST(ExportStream, WritesTheFolderExportFilesWritesWithALayeredFinish) {

@@ -158,7 +158,7 @@ ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, 
             fit_materials_for_export(loaders, colour, fit_request, export_request, threads,
                                      timed([&](const MaterialFit& fit) { stream.add(fit); }));
             const double t0 = thread_cpu_seconds();
-            stream.finish();
+            stream.finish([](const std::string&) {});
             record_cpu += thread_cpu_seconds() - t0;
         } else {
             // As `metalfit report --all --renders off --model LIST` runs (cmd_report.cpp): the recommendation's

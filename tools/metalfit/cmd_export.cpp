@@ -94,9 +94,8 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
             progress.callback());
         for (const std::string& w : warnings) warn(w);
         for (const std::string& w : export_warnings(context, request, materialx_space)) warn(w);
-        const std::vector<std::string> outside = stream.finish();
         // After the folder is in place: a refused or failed write stays one line, about what was not written.
-        for (const std::string& line : outside) warn(line);
+        stream.finish([](const std::string& line) { warn(line); });
         return;
     }
     std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), fit_request, jobs, progress.callback());

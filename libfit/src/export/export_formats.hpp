@@ -106,6 +106,10 @@ struct CppIndexEntry {
     std::string row;      // {"Au", "f82-tint", &<stem>::evaluate, …},
 };
 std::string cpp_materials_index(const std::vector<CppIndexEntry>& entries, std::string_view id_prefix);
+// Its parts, for ExportStream: the head, the includes (one line each), the middle, the rows (one line each), the tail.
+std::string cpp_materials_index_head();
+std::string cpp_materials_index_middle(std::string_view id_prefix, std::size_t count);
+std::string cpp_materials_index_tail(std::string_view id_prefix);
 // The entries of a file cpp_materials_index wrote; std::invalid_argument when it is not one.
 std::vector<CppIndexEntry> parse_cpp_materials_index(std::string_view text);
 

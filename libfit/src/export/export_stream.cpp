@@ -2,6 +2,7 @@
 // fit arrives, the shared ones (record, C++ index, model files) built as they go and written at the end.
 #include "libfit/export/export_stream.hpp"
 
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -34,6 +35,42 @@ std::string indented(const std::string& text, int levels) {
     return out;
 }
 
+// Lines kept on disk until the end (an anonymous temporary, gone with the process): what a stream would otherwise
+// hold for every material.
+class SpillFile {
+public:
+    SpillFile() : file_(std::tmpfile()) {
+        if (!file_) throw std::runtime_error("export: cannot make a temporary file");
+    }
+    ~SpillFile() { std::fclose(file_); }
+    SpillFile(const SpillFile&) = delete;
+    SpillFile& operator=(const SpillFile&) = delete;
+
+    void line(std::string_view text) {
+        if (std::fwrite(text.data(), 1, text.size(), file_) != text.size() || std::fputc('\n', file_) == EOF)
+            throw std::runtime_error("export: cannot write a temporary file");
+        ++lines_;
+    }
+    std::size_t lines() const { return lines_; }
+    // Every line in order, without its newline.
+    void each(const std::function<void(const std::string&)>& take) {
+        std::rewind(file_);
+        std::string line;
+        for (int c; (c = std::fgetc(file_)) != EOF;)
+            if (c == '\n') {
+                take(line);
+                line.clear();
+            } else {
+                line += static_cast<char>(c);
+            }
+        if (std::ferror(file_)) throw std::runtime_error("export: cannot read a temporary file");
+    }
+
+private:
+    std::FILE* file_;
+    std::size_t lines_ = 0;
+};
+
 // The shared model files of the shader formats (glsl/metalfit_models.glsl, …): one per format, the same stem.
 bool is_models_file(const std::filesystem::path& path) { return path.stem() == "metalfit_models"; }
 
@@ -51,9 +88,9 @@ struct ExportStream::State {
     std::unordered_set<std::string> record_ids;
     // Each material's file stem without its model: two materials with one stem would write the same files.
     std::unordered_set<std::string> stems;
-    std::vector<detail::CppIndexEntry> cpp_index;
-    std::map<std::filesystem::path, std::string> shared;  // the model files, merged as they come
-    std::vector<std::vector<std::string>> out_of_range;   // per format of the request
+    SpillFile cpp_includes, cpp_rows;                      // the C++ index's two lists, one line per entry
+    std::map<std::filesystem::path, std::string> shared;   // the model files, merged as they come
+    std::vector<std::unique_ptr<SpillFile>> out_of_range;  // stderr's lines, per format of the request
     std::size_t materials = 0;
     bool finished = false;
 
@@ -66,7 +103,9 @@ struct ExportStream::State {
                  [d](const std::filesystem::path& relative, const std::string& existing, const std::string& mine) {
                      return detail::merge_index(d, relative, existing, mine);
                  }),
-          out_of_range(request.formats.size()) {}
+          out_of_range(request.formats.size()) {
+        for (auto& lines : out_of_range) lines = std::make_unique<SpillFile>();
+    }
 
     void write_record(std::string_view text) {
         if (!record.is_open()) record.open(folder.file(std::string(kRecordPath)), std::ios::binary);
@@ -107,21 +146,17 @@ struct ExportStream::State {
         bool stem_checked = fits.empty();
         for (std::size_t k = 0; k < by_format.size(); ++k)
             for (const ExportFile& f : by_format[k]) {
-                for (std::string& line : out_of_range_lines({f})) out_of_range[k].push_back(std::move(line));
+                for (const std::string& line : out_of_range_lines({f})) out_of_range[k]->line(line);
                 if (f.path == kRecordPath) {
                     if (fits.empty())
                         folder.write(f.path, f.contents);
                     else
                         add_record(f.contents);
                 } else if (f.path == cpp_index_path) {
-                    for (detail::CppIndexEntry& e : detail::parse_cpp_materials_index(f.contents)) {
-                        const auto same =
-                            std::find_if(cpp_index.begin(), cpp_index.end(),
-                                         [&](const detail::CppIndexEntry& x) { return x.include == e.include; });
-                        if (same != cpp_index.end())
-                            *same = std::move(e);
-                        else
-                            cpp_index.push_back(std::move(e));
+                    // One material's entries: never one already listed (its files would be another's, refused).
+                    for (const detail::CppIndexEntry& e : detail::parse_cpp_materials_index(f.contents)) {
+                        cpp_includes.line(e.include);
+                        cpp_rows.line(e.row);
                     }
                 } else if (is_models_file(f.path)) {
                     const auto there = shared.find(f.path);
@@ -161,7 +196,7 @@ void ExportStream::add(const MaterialFit& fit) {
     ++state_->materials;
 }
 
-std::vector<std::string> ExportStream::finish() {
+void ExportStream::finish(const std::function<void(const std::string&)>& out_of_range_line) {
     State& s = *state_;
     if (s.finished) throw std::logic_error("ExportStream: finished twice");
     s.finished = true;
@@ -171,15 +206,24 @@ std::vector<std::string> ExportStream::finish() {
         s.record.close();
         if (!s.record) throw InputError({s.dir / kRecordPath}, "cannot write");
     }
-    if (!s.cpp_index.empty())
-        s.folder.write(detail::cpp_index_path(s.request.id_prefix),
-                       detail::cpp_materials_index(s.cpp_index, s.request.id_prefix));
+    if (s.cpp_rows.lines() > 0) {  // cpp_materials_index's text, its lists copied from the spill files
+        const std::string relative = detail::cpp_index_path(s.request.id_prefix);
+        std::ofstream index(s.folder.file(relative), std::ios::binary);
+        const auto put = [&](const std::string& text) {
+            index << text;
+            if (!index) throw InputError({s.dir / relative}, "cannot write");
+        };
+        put(detail::cpp_materials_index_head());
+        s.cpp_includes.each([&](const std::string& line) { put(line + "\n"); });
+        put(detail::cpp_materials_index_middle(s.request.id_prefix, s.cpp_rows.lines()));
+        s.cpp_rows.each([&](const std::string& line) { put(line + "\n"); });
+        put(detail::cpp_materials_index_tail(s.request.id_prefix));
+        index.close();
+        if (!index) throw InputError({s.dir / relative}, "cannot write");
+    }
     for (const auto& [path, contents] : s.shared) s.folder.write(path, contents);
     s.folder.commit();
-    std::vector<std::string> lines;
-    for (std::vector<std::string>& format : s.out_of_range)
-        for (std::string& line : format) lines.push_back(std::move(line));
-    return lines;
+    for (auto& lines : s.out_of_range) lines->each(out_of_range_line);
 }
 
 void fit_materials_for_export(const std::vector<std::function<Material()>>& loaders, const BatchColour& colour,

@@ -3,7 +3,7 @@
 // metalfit_export.json, the C++ index, the model files) are built as they go and written at the end. The folder is
 // byte for byte what export_files + write_export write for the same fits, and is switched in as one unit the same
 // way (StagedFolder, merged with an earlier export there); memory does not grow with the number of materials
-// beyond a short line per material (docs/decisions.md, "Streamed export and report").
+// beyond its id and file stem per material (docs/decisions.md, "Streamed export and report").
 #pragma once
 
 #include <filesystem>
@@ -29,9 +29,9 @@ public:
     // The next material, in the order of the export (a layered material with its bare_metal attached where
     // needs_bare_metal_fits). UsageError as export_files when it would write a file another material writes.
     void add(const MaterialFit& fit);
-    // Writes the shared files and switches the folder in; returns out_of_range_lines of every file, in the order
-    // export_files would list them.
-    std::vector<std::string> finish();
+    // Writes the shared files and switches the folder in; then hands on out_of_range_lines of every file, in the
+    // order export_files lists them (kept on disk meanwhile: a line per colour outside [0, 1] of every file).
+    void finish(const std::function<void(const std::string&)>& out_of_range_line);
 
 private:
     struct State;
