@@ -1,6 +1,7 @@
 #include "metalfit_bench/scaling.hpp"
 
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -11,10 +12,16 @@
 #include <stdexcept>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/color/display_transform.hpp"
+#include "libfit/export/export.hpp"
+#include "libfit/export/export_stream.hpp"
 #include "libfit/fit/fit_batch.hpp"
 #include "libfit/fit/fit_record_stream.hpp"
+#include "libfit/fit/model_cost.hpp"
 #include "libfit/io/csv.hpp"
 #include "libfit/models/model.hpp"
+#include "libfit/report/model_costs.hpp"
+#include "libfit/report/report_stream.hpp"
 #include "metalfit_bench/machine.hpp"
 #include "metalfit_bench/nk_database.hpp"
 #include "metalfit_bench/subprocess.hpp"
@@ -56,6 +63,24 @@ std::string join_models(const std::vector<std::string>& models) {
     return text;
 }
 
+// A folder of its own under $TMPDIR for an export or report cell's output, removed with everything in it.
+struct ScratchFolder {
+    std::filesystem::path path;
+    ScratchFolder() {
+        std::random_device random;
+        path = std::filesystem::temp_directory_path() /
+               ("metalfit-scaling-" + std::to_string(::getpid()) + "-" + std::to_string(random()));
+        if (!std::filesystem::create_directory(path))
+            throw std::runtime_error("scaling: cannot make the folder " + path.string());
+    }
+    ~ScratchFolder() {
+        std::error_code ec;
+        std::filesystem::remove_all(path, ec);
+    }
+    ScratchFolder(const ScratchFolder&) = delete;
+    ScratchFolder& operator=(const ScratchFolder&) = delete;
+};
+
 }  // namespace
 
 std::vector<std::function<Material()>> synthetic_materials(const Catalog& catalog, std::size_t count,
@@ -81,9 +106,10 @@ std::vector<std::function<Material()>> synthetic_materials(const Catalog& catalo
 
 namespace {
 
-// The fits of `loaders` as `metalfit fit --all --json` runs them, measured (the cell's size and threads set by the caller).
+// The fits of `loaders` as `metalfit fit|export|report --all` runs them (`mode`), measured (the cell's size and threads
+// set by the caller).
 ScalingCell measure_fits(const Environment& env, const std::vector<std::function<Material()>>& materials, int threads,
-                         const std::vector<std::string>& models) {
+                         const std::vector<std::string>& models, ScalingMode mode) {
     std::vector<const Model*> chosen;
     for (const std::string& id : models) chosen.push_back(&find_model(id));
     // Each loader's thread CPU summed (the loaders run on every worker thread).
@@ -106,22 +132,65 @@ ScalingCell measure_fits(const Environment& env, const std::vector<std::function
                                    Illuminant::D65, env.spectral,          env.error};
     std::size_t record_bytes = 0;
     double record_cpu = 0;
-    FitRecordStream record(context, [&record_bytes](std::string_view text) { record_bytes += text.size(); });
     ScalingCell cell;
     BatchStatistics statistics;
     const double cpu0 = process_cpu_seconds();
     const auto wall0 = std::chrono::steady_clock::now();
-    // Streamed, as `metalfit fit --all` runs: each fit counted, written and let go in input order.
-    fit_materials_in_order(
-        loaders, colour, request, threads,
-        [&](std::size_t, MaterialFit&& fit) {
+    // Each material handed on in input order, `hand` timed as the record's CPU.
+    const auto timed = [&](const std::function<void(const MaterialFit&)>& hand) {
+        return [&, hand](std::size_t, MaterialFit&& fit) {
             cell.fits += fit.models.size();
             const double t0 = thread_cpu_seconds();
-            record.add(fit);
+            hand(fit);
             record_cpu += thread_cpu_seconds() - t0;
-        },
-        {}, 0, &statistics);
-    record.finish();
+        };
+    };
+    if (mode == ScalingMode::fit) {
+        // Streamed, as `metalfit fit --all` runs: each fit counted, written and let go in input order.
+        FitRecordStream record(context, [&record_bytes](std::string_view text) { record_bytes += text.size(); });
+        fit_materials_in_order(loaders, colour, request, threads,
+                               timed([&](const MaterialFit& fit) { record.add(fit); }), {}, 0, &statistics);
+        record.finish();
+    } else {
+        const ScratchFolder scratch;
+        const std::filesystem::path out = scratch.path / "out";
+        if (mode == ScalingMode::export_) {
+            // As `metalfit export --all --format all --model LIST` runs (cmd_export.cpp).
+            ExportRequest export_request{{}, chosen};
+            for (const auto& format : kExportFormatNames.names) export_request.formats.push_back(format.value);
+            const std::string materialx_space = materialx_colorspace(context.config, context.space);
+            leave_out_formats_the_space_cannot_carry(export_request, context.space, materialx_space);
+            const MaterialFitRequest fit_request{env.spectral, env.error, models_to_fit(export_request)};
+            ExportStream stream(out, context, export_request, materialx_space);
+            fit_materials_for_export(loaders, colour, fit_request, export_request, threads,
+                                     timed([&](const MaterialFit& fit) { stream.add(fit); }));
+            const double t0 = thread_cpu_seconds();
+            stream.finish([](const std::string&) {});
+            record_cpu += thread_cpu_seconds() - t0;
+        } else {
+            // As `metalfit report --all --renders off --model LIST` runs (cmd_report.cpp): the recommendation's
+            // default tolerance and target, the built-in cost table.
+            const Tolerance tolerance;
+            MaterialFitRequest report_request = request;
+            report_request.constraints.f0_tolerance = tolerance.f0_err;
+            const DisplayTransform display = DisplayTransform::create(env.config);
+            const CostTable table = builtin_cost_table();
+            const CostAndBudget cost = report_costs({}, table, std::nullopt);
+            const SphereRenders renders{std::nullopt, "--renders off"};
+            FitRecordContext report_context = context;
+            report_context.constraints = report_request.constraints;
+            const ReportInputs inputs{report_context, env.colorimetry, env.converter, display, env.catalog,
+                                      cost,           renders,         true};
+            ReportStream stream(out, inputs, table, std::nullopt, tolerance, ExportFormat::glsl);
+            fit_materials_in_order(loaders, colour, report_request, threads,
+                                   timed([&](const MaterialFit& fit) { stream.add(fit); }));
+            const double t0 = thread_cpu_seconds();
+            stream.finish();
+            record_cpu += thread_cpu_seconds() - t0;
+        }
+        for (const auto& entry : std::filesystem::recursive_directory_iterator(out))
+            if (entry.is_regular_file()) record_bytes += entry.file_size();
+    }
     cell.setup_cpu_s = setup_cpu;
     cell.record_cpu_s = record_cpu;
     cell.record_mib = static_cast<double>(record_bytes) / (1024.0 * 1024.0);
@@ -139,8 +208,8 @@ ScalingCell measure_fits(const Environment& env, const std::vector<std::function
 }  // namespace
 
 ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, int threads,
-                                 const std::vector<std::string>& models) {
-    return measure_fits(env, synthetic_materials(env.catalog, materials), threads, models);
+                                 const std::vector<std::string>& models, ScalingMode mode) {
+    return measure_fits(env, synthetic_materials(env.catalog, materials), threads, models, mode);
 }
 
 ScalingCell measure_database_cell(const Environment& env, const std::filesystem::path& folder, int threads,
@@ -154,7 +223,7 @@ ScalingCell measure_database_cell(const Environment& env, const std::filesystem:
             m.id = std::filesystem::relative(file, folder).replace_extension().generic_string();
             return m;
         });
-    ScalingCell cell = measure_fits(env, loaders, threads, models);
+    ScalingCell cell = measure_fits(env, loaders, threads, models, ScalingMode::fit);
     cell.source = "database";
     cell.folder = folder;
     cell.files = scan.files;
@@ -228,6 +297,7 @@ double ScalingTable::fits_per_cpu_second() const {
 ScalingTable run_scaling(const ScalingOptions& o) {
     ScalingTable table;
     table.models = o.models;
+    table.mode = o.mode;
     table.machine = Machine::describe().one_line();
     table.command_line = o.command_line;
     const auto run_cell = [&](const std::vector<std::string>& cell_args, int threads, const std::string& what) {
@@ -247,7 +317,9 @@ ScalingTable run_scaling(const ScalingOptions& o) {
     };
     for (std::size_t size : o.sizes)
         for (int threads : o.threads)
-            run_cell({"bench", "--scaling-cell", std::to_string(size)}, threads, std::to_string(size) + " materials");
+            run_cell({"bench", "--scaling-cell", std::to_string(size), "--scaling-mode",
+                      std::string(kScalingModeNames.name(o.mode))},
+                     threads, std::to_string(size) + " materials");
     if (o.database)
         for (int threads : o.threads)
             run_cell({"bench", "--scaling-database-cell", o.database->string()}, threads,
@@ -261,6 +333,7 @@ nlohmann::json to_json(const ScalingTable& t) {
     return {{"schema", "metalfit.bench-scaling/1"},
             {"command", t.command_line},
             {"machine", t.machine},
+            {"mode", kScalingModeNames.name(t.mode)},
             {"models", t.models},
             {"seed", t.seed},
             {"cells", cells},
@@ -271,8 +344,8 @@ std::string to_text(const ScalingTable& t) {
     bool synthetic = false;
     for (const ScalingCell& c : t.cells) synthetic = synthetic || c.source != "database";
     std::string text =
-        (synthetic ? "metalfit bench --scaling: fit on synthetic materials (catalog tables, n and k scaled by 1 ± 0.1, "
-                     "seed " +
+        (synthetic ? "metalfit bench --scaling: " + std::string(kScalingModeNames.name(t.mode)) +
+                         " on synthetic materials (catalog tables, n and k scaled by 1 ± 0.1, seed " +
                          std::to_string(t.seed) + ")"
                    : std::string("metalfit bench --scaling-database: fit every metal nk file of a database folder")) +
         ", models " + join_models(t.models) + "\n" + t.machine + "\n";

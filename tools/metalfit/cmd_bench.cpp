@@ -34,6 +34,7 @@ struct BenchCommandOptions {
     std::string scaling_models;
     // --scaling-database: the database's cells (alone, or after the synthetic ones with --scaling).
     std::optional<std::filesystem::path> scaling_database;
+    std::string scaling_mode = "fit";
     // The hidden children of --scaling and --scaling-database: one cell measured in this process.
     std::optional<std::size_t> scaling_cell;
     std::optional<std::filesystem::path> scaling_database_cell;
@@ -49,11 +50,11 @@ std::vector<std::string> split_models(const std::string& list) {
 void run_scaling_command(const BenchCommandOptions& o, const GlobalOptions& global) {
     if (o.scaling_cell) {
         const bench::Environment env = bench::Environment::load(global.data_dir, global.ocio_config);
-        emit(
-            bench::to_json(bench::measure_scaling_cell(env, *o.scaling_cell, o.threads, split_models(o.scaling_models)))
-                    .dump() +
-                "\n",
-            o.output);
+        emit(bench::to_json(bench::measure_scaling_cell(env, *o.scaling_cell, o.threads, split_models(o.scaling_models),
+                                                        bench::kScalingModeNames.parse(o.scaling_mode)))
+                     .dump() +
+                 "\n",
+             o.output);
         return;
     }
     if (o.scaling_database_cell) {
@@ -72,6 +73,7 @@ void run_scaling_command(const BenchCommandOptions& o, const GlobalOptions& glob
     if (!o.scaling_sizes.empty()) options.sizes = o.scaling_sizes;
     if (!o.scaling_threads.empty()) options.threads = o.scaling_threads;
     if (!o.scaling_models.empty()) options.models = split_models(o.scaling_models);
+    options.mode = bench::kScalingModeNames.parse(o.scaling_mode);
     options.command_line = "metalfit bench --scaling";
     if (o.scaling_database) {
         std::error_code error;
@@ -173,6 +175,9 @@ std::function<void()> add_bench_command(CLI::App& app, const GlobalOptions& glob
                    "Fit every metal nk file of a refractiveindex.info database folder (data/nk, a clone's "
                    "database/data): one cell per thread count; alone, or after --scaling's")
         ->type_name("FOLDER");
+    app.add_option("--scaling-mode", o->scaling_mode,
+                   "What --scaling runs: fit (fit --all --json), export (export --all --format all) or report "
+                   "(report --all --renders off)");
     app.add_option("--scaling-cell", o->scaling_cell)->group("");                    // the child of --scaling
     app.add_option("--scaling-database-cell", o->scaling_database_cell)->group("");  // the child of --scaling-database
     app.add_option("--threads", o->threads)->group("")->check(CLI::PositiveNumber);

@@ -11,6 +11,7 @@
 #include "layer_options.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/export/export.hpp"
+#include "libfit/export/export_stream.hpp"
 #include "libfit/fit/budget.hpp"
 #include "libfit/fit/model_cost.hpp"
 #include "libfit/io/catalog.hpp"
@@ -78,6 +79,25 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
     require_export_space(request, context.space, materialx_space);  // glTF: Linear Rec.709 only, refused before fitting
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     TerminalProgress progress;
+    if (!budget) {
+        // Streamed: each material's files are staged as its fit arrives and the fit let go (docs/decisions.md,
+        // "Streamed export and report"); the folder is switched in as one unit at the end, as write_export does.
+        ExportStream stream(o.output, context, request, materialx_space);
+        std::vector<std::string> warnings;
+        fit_materials_for_export(
+            loaders, setup.batch(), fit_request, request, jobs,
+            [&](std::size_t, MaterialFit&& fit) {
+                for (const auto& w : fit.material.warnings) warnings.push_back(fit.material.id + ": " + w);
+                for (std::string& w : refusal_warnings(fit)) warnings.push_back(std::move(w));
+                stream.add(fit);
+            },
+            progress.callback());
+        for (const std::string& w : warnings) warn(w);
+        for (const std::string& w : export_warnings(context, request, materialx_space)) warn(w);
+        // After the folder is in place: a refused or failed write stays one line, about what was not written.
+        stream.finish([](const std::string& line) { warn(line); });
+        return;
+    }
     std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), fit_request, jobs, progress.callback());
     // OpenPBR, MaterialX and glTF write a layered material as their own coat / thin film over the bare metal.
     if (needs_bare_metal_fits(request)) attach_bare_metal_fits(fits, setup.batch(), fit_request, jobs);
@@ -86,15 +106,13 @@ void run_export(const ExportOptions& o, const GlobalOptions& global) {
         for (const std::string& w : refusal_warnings(f)) warn(w);
     }
     for (const std::string& w : export_warnings(context, request, materialx_space)) warn(w);
-    if (budget) {
-        const BudgetChoice choice = choose_model(fits.front().models, costs, *budget);
-        if (!choice.chosen)
-            throw UsageError(fits.front().material.id + ": no model meets " + budget_text(*budget) +
-                             " in every channel (" + choice.summary() + "; cost table: " + choice.cost_source + ")");
-        warn(fits.front().material.id + ": --model best:" + o.models.substr(kBest.size()) + " chose " +
-             choice.summary() + "; cost table: " + choice.cost_source);
-        request.models = {choice.chosen};
-    }
+    const BudgetChoice choice = choose_model(fits.front().models, costs, *budget);
+    if (!choice.chosen)
+        throw UsageError(fits.front().material.id + ": no model meets " + budget_text(*budget) + " in every channel (" +
+                         choice.summary() + "; cost table: " + choice.cost_source + ")");
+    warn(fits.front().material.id + ": --model best:" + o.models.substr(kBest.size()) + " chose " + choice.summary() +
+         "; cost table: " + choice.cost_source);
+    request.models = {choice.chosen};
     const std::vector<ExportFile> files = export_files(fits, context, request, materialx_space);
     write_export(o.output, files);
     // After the folder is in place: a refused or failed write stays one line, about what was not written.

@@ -20,6 +20,7 @@
 #include "libfit/report/fail_above.hpp"
 #include "libfit/report/model_costs.hpp"
 #include "libfit/report/report.hpp"
+#include "libfit/report/report_stream.hpp"
 #include "material_selection.hpp"
 #include "progress.hpp"
 #include "recommend_options.hpp"
@@ -66,57 +67,72 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
     o.recommend.constrain(constraints);  // the fits hold the recommendation's F0 error
     const MaterialFitRequest request{setup.spectral, error, parse_model_list(o.models), constraints};
     const int jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    TerminalProgress progress("metalfit report: fits");
-    const std::vector<MaterialFit> fits = fit_materials(loaders, setup.batch(), request, jobs, progress.callback());
-    for (const MaterialFit& f : fits)
-        for (const auto& w : f.material.warnings) warn(f.material.id + ": " + w);
-
-    // glpreview renders every material as the report fitted it — a catalog material from its primary source, a named
+    // glpreview renders every material as the report fits it — a catalog material from its primary source, a named
     // finish, a file of the user's (as they named it, relative to the current folder, where glpreview runs too),
     // with --film/--coat over each — a column group per model of the report. A catalog material fitted from another
-    // source (--source) is left out: the sheet renders primary sources.
-    SphereRenderRequest render_request{glpreview_beside_this_program(),
-                                       global.data_dir / "scenes" / "sheet.json",
-                                       {},
-                                       {},
-                                       o.layers.film,
-                                       o.layers.coat,
-                                       {},
-                                       global.data_dir,
-                                       setup.config};
-    for (const Model* m : request.models) render_request.models.emplace_back(m->id());
-    std::vector<std::string> names;
-    if (o.selection.all)
-        for (const CatalogEntry& e : catalog.entries()) names.push_back(e.id);
-    else
-        names = o.selection.materials();
-    for (std::size_t i = 0; i < fits.size() && i < names.size(); ++i) {
-        const CatalogEntry* e = catalog.find(names[i]);
-        if (!e || e->primary.file == fits[i].material.provenance.file) {
-            render_request.materials.push_back(names[i]);
-            render_request.ids.push_back(fits[i].material.id);
+    // source (--source) is left out: the sheet renders primary sources. The renders come first, each material
+    // loaded to see its id and source, so that each material's entry can be written as its fit arrives.
+    SphereRenders renders{std::nullopt, "--renders off"};
+    if (render_mode != RenderMode::off) {
+        SphereRenderRequest render_request{glpreview_beside_this_program(),
+                                           global.data_dir / "scenes" / "sheet.json",
+                                           {},
+                                           {},
+                                           o.layers.film,
+                                           o.layers.coat,
+                                           {},
+                                           global.data_dir,
+                                           setup.config};
+        for (const Model* m : request.models) render_request.models.emplace_back(m->id());
+        std::vector<std::string> names;
+        if (o.selection.all)
+            for (const CatalogEntry& e : catalog.entries()) names.push_back(e.id);
+        else
+            names = o.selection.materials();
+        for (std::size_t i = 0; i < loaders.size() && i < names.size(); ++i) {
+            const Material material = loaders[i]();
+            const CatalogEntry* e = catalog.find(names[i]);
+            if (!e || e->primary.file == material.provenance.file) {
+                render_request.materials.push_back(names[i]);
+                render_request.ids.push_back(material.id);
+            }
         }
-    }
-    std::optional<TerminalProgress> render_progress;
-    if (render_mode != RenderMode::off)
+        std::optional<TerminalProgress> render_progress;
         render_request.progress = render_progress.emplace("metalfit report: renders").callback();
-    const SphereRenders renders = render_spheres(render_request, render_mode);
-    render_progress.reset();  // the line cleared before anything else is printed
-    if (!renders.sheet && render_mode == RenderMode::auto_)
-        std::cerr << "metalfit: renders skipped: " << renders.skipped << "\n";
+        renders = render_spheres(render_request, render_mode);
+        render_progress.reset();  // the line cleared before anything else is printed
+        if (!renders.sheet && render_mode == RenderMode::auto_)
+            std::cerr << "metalfit: renders skipped: " << renders.skipped << "\n";
+    }
 
     FitRecordContext context = setup.record_context(error);
     context.constraints = constraints;
-    const CostAndBudget cost = report_costs(fits, cost_table, budget, tolerance, target);
+    // The costs and the budget; each material's choice and recommendation are made as its fit arrives.
+    const CostAndBudget cost = report_costs({}, cost_table, budget);
     const ReportInputs inputs{context, setup.colorimetry, setup.converter,   display, catalog,
                               cost,    renders,           o.sources == "all"};
-    std::vector<ReportFile> files = report_files(fits, inputs);
+    // Streamed: each material's page and record entry are written as its fit arrives and the fit let go
+    // (docs/decisions.md, "Streamed export and report"); the folder is switched in as one unit at the end.
+    ReportStream stream(o.output, inputs, cost_table, budget, tolerance, target);
+    std::vector<std::string> warnings, above;
+    {
+        TerminalProgress progress("metalfit report: fits");
+        fit_materials_in_order(
+            loaders, setup.batch(), request, jobs,
+            [&](std::size_t, MaterialFit&& fit) {
+                for (const auto& w : fit.material.warnings) warnings.push_back(fit.material.id + ": " + w);
+                if (fail_above > 0)
+                    for (std::string& line : channels_above(fit, fail_above)) above.push_back(std::move(line));
+                stream.add(fit);
+            },
+            progress.callback());
+    }
+    for (const std::string& w : warnings) warn(w);
     std::cout << (o.output / "index.html").string() << "\n";
     flush_standard_output();  // a stdout that fails: nothing written
-    write_report_folder(o.output, files);
+    stream.finish();
 
     if (fail_above > 0) {
-        const std::vector<std::string> above = channels_above(fits, fail_above);
         for (const std::string& line : above) std::cerr << "metalfit: above --fail-above: " << line << "\n";
         if (!above.empty()) throw FailAbove{above.size()};
     }

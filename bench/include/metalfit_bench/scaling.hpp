@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "libfit/base/enum_names.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/io/material.hpp"
 #include "metalfit_bench/environment.hpp"
@@ -28,6 +29,15 @@ inline constexpr std::uint64_t kScalingSeed = 20261201;
 std::vector<std::function<Material()>> synthetic_materials(const Catalog& catalog, std::size_t count,
                                                            std::uint64_t seed = kScalingSeed);
 
+// What a cell runs on the synthetic materials: `fit --all --json` (the record streamed, its text counted), `export
+// --all --format all` (ExportStream into a scratch folder, removed after) or `report --all --renders off`
+// (ReportStream likewise).
+enum class ScalingMode { fit, export_, report };
+inline constexpr EnumNames kScalingModeNames{"--scaling-mode", KnownNamesWording::alternatives,
+                                             std::array{EnumName<ScalingMode>{ScalingMode::fit, "fit"},
+                                                        EnumName<ScalingMode>{ScalingMode::export_, "export"},
+                                                        EnumName<ScalingMode>{ScalingMode::report, "report"}}};
+
 // One cell: what the child process measured.
 struct ScalingCell {
     std::size_t materials = 0;
@@ -41,7 +51,7 @@ struct ScalingCell {
     // its text counted, not kept), and the wall time threads waited at the reorder window (summed over the threads).
     double setup_cpu_s = 0;
     double record_cpu_s = 0;
-    double record_mib = 0;
+    double record_mib = 0;  // fit: the record's size; export, report: the folder's
     double window_wait_s = 0;
     // A database cell (`source` "database"): the folder's scan, the files fitted being `materials`; set-up CPU is then
     // the files' loading during the fits, and the scan's own CPU (every file read and classified once before) apart.
@@ -55,7 +65,7 @@ struct ScalingCell {
 // Fits `materials` synthetic materials with `models` on `threads` threads in this process and measures it
 // (`metalfit bench --scaling-cell`, the child of run_scaling).
 ScalingCell measure_scaling_cell(const Environment& env, std::size_t materials, int threads,
-                                 const std::vector<std::string>& models);
+                                 const std::vector<std::string>& models, ScalingMode mode = ScalingMode::fit);
 // Fits every metal nk file of `folder` (scan_nk_database) with `models` on `threads` threads in this process and
 // measures it (`metalfit bench --scaling-database-cell`, the child of run_scaling). Throws InputError for a folder
 // that is not one.
@@ -72,12 +82,14 @@ struct ScalingOptions {
     std::optional<std::filesystem::path> database;     // a database folder: one more cell per thread count
     std::vector<int> threads{1, 2};
     std::vector<std::string> models{"schlick", "lazanyi", "lazanyi-comp", "f82-tint", "conductor-rgb", "gulbrandsen"};
+    ScalingMode mode = ScalingMode::fit;
     std::string command_line;
     std::function<void(const std::string&)> progress;
 };
 
 struct ScalingTable {
     std::vector<std::string> models;
+    ScalingMode mode = ScalingMode::fit;
     std::uint64_t seed = kScalingSeed;
     std::vector<ScalingCell> cells;  // sizes × threads, in that order, then the database's cells (threads)
     std::string machine;             // CPU model, cores

@@ -118,24 +118,34 @@ std::string_view cpp_glsl_prelude() { return kCppPrelude; }
 
 namespace detail {
 
-std::string cpp_materials_index(const std::vector<CppIndexEntry>& entries, std::string_view id_prefix) {
+std::string cpp_materials_index_head() {
+    return "// metalfit " METALFIT_VERSION " exports: every material and model of this export, and one table of them.\n"
+           "#pragma once\n\n#include <array>\n\n";
+}
+
+std::string cpp_materials_index_middle(std::string_view id_prefix, std::size_t count) {
     const std::string name = cpp_index_name(id_prefix);
-    std::string umbrella =
-        "// metalfit " METALFIT_VERSION " exports: every material and model of this export, and one table of them.\n"
-        "#pragma once\n\n#include <array>\n\n";
+    return "\nnamespace " + name +
+           " {\n\nstruct Entry {\n    const char* material;\n    const char* model;\n"
+           "    metalfit_shader::vec3 (*evaluate)(float mu);\n    int parameter_count;\n"
+           "    std::array<const std::array<double, 3>*, 4> parameters;  // in the order of `metalfit models`\n};\n\n"
+           "inline const std::array<Entry, " +
+           std::to_string(count) + "> all{{\n";
+}
+
+std::string cpp_materials_index_tail(std::string_view id_prefix) {
+    return "}};\n\n}  // namespace " + cpp_index_name(id_prefix) + "\n";
+}
+
+std::string cpp_materials_index(const std::vector<CppIndexEntry>& entries, std::string_view id_prefix) {
+    std::string umbrella = cpp_materials_index_head();
     std::string table;
     for (const CppIndexEntry& e : entries) {
         umbrella += e.include + "\n";
         table += e.row + "\n";
     }
-    umbrella +=
-        "\nnamespace " + name +
-        " {\n\nstruct Entry {\n    const char* material;\n    const char* model;\n"
-        "    metalfit_shader::vec3 (*evaluate)(float mu);\n    int parameter_count;\n"
-        "    std::array<const std::array<double, 3>*, 4> parameters;  // in the order of `metalfit models`\n};\n\n"
-        "inline const std::array<Entry, " +
-        std::to_string(entries.size()) + "> all{{\n" + table + "}};\n\n}  // namespace " + name + "\n";
-    return umbrella;
+    return umbrella + cpp_materials_index_middle(id_prefix, entries.size()) + table +
+           cpp_materials_index_tail(id_prefix);
 }
 
 std::vector<CppIndexEntry> parse_cpp_materials_index(std::string_view text) {

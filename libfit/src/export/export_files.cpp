@@ -129,8 +129,10 @@ std::vector<std::string> out_of_range_lines(const std::vector<ExportFile>& files
     return lines;
 }
 
-std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
-                                     const ExportRequest& request, const std::string& materialx_space) {
+std::vector<std::vector<ExportFile>> detail::export_files_by_format(const std::vector<MaterialFit>& fits,
+                                                                    const FitRecordContext& context,
+                                                                    const ExportRequest& request,
+                                                                    const std::string& materialx_space) {
     require_export_space(request, context.space, materialx_space);
     std::vector<detail::MaterialExport> materials;
     for (const MaterialFit& fit : fits) {
@@ -145,27 +147,27 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
         materials.push_back(std::move(m));
     }
     const detail::ExportContext ctx{context, request, materialx_space};
-    std::vector<ExportFile> files;
-    for (ExportFormat format : request.formats) {
-        std::vector<ExportFile> more = detail::format_entry(format).write(materials, ctx);
-        for (ExportFile& f : more) files.push_back(std::move(f));
-    }
+    std::vector<std::vector<ExportFile>> by_format;
+    for (ExportFormat format : request.formats) by_format.push_back(detail::format_entry(format).write(materials, ctx));
     // Every colour written outside [0, 1], by any format: in the export record, per material and model, each with the
     // file that writes it (the header of each text file says the same; out_of_range_lines gives stderr's lines).
-    const auto record =
-        std::find_if(files.begin(), files.end(), [](const ExportFile& f) { return f.path == "metalfit_export.json"; });
-    if (record != files.end()) {
+    ExportFile* record = nullptr;
+    for (std::vector<ExportFile>& files : by_format)
+        for (ExportFile& f : files)
+            if (f.path == "metalfit_export.json") record = &f;
+    if (record) {
         nlohmann::ordered_json j = nlohmann::ordered_json::parse(record->contents);
         for (const MaterialFit& fit : fits)
             for (const Model* model : request.models) {
                 nlohmann::ordered_json list = nlohmann::ordered_json::array();
-                for (const ExportFile& f : files)
-                    for (const ColourOutOfRange& o : f.out_of_range)
-                        if (o.material == fit.material.id && o.model == model->id())
-                            list.push_back({{"file", f.path.generic_string()},
-                                            {"parameter", o.parameter},
-                                            {"channel", kChannelNames[o.channel]},
-                                            {"value", o.value}});
+                for (const std::vector<ExportFile>& files : by_format)
+                    for (const ExportFile& f : files)
+                        for (const ColourOutOfRange& o : f.out_of_range)
+                            if (o.material == fit.material.id && o.model == model->id())
+                                list.push_back({{"file", f.path.generic_string()},
+                                                {"parameter", o.parameter},
+                                                {"channel", kChannelNames[o.channel]},
+                                                {"value", o.value}});
                 j["materials"][fit.material.id]["models"][std::string(model->id())]["export"]["out_of_range"] = list;
             }
         // What each requested format's consumer renders for each model, with that curve's error figures.
@@ -179,6 +181,14 @@ std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const
             }
         record->contents = j.dump(2) + "\n";
     }
+    return by_format;
+}
+
+std::vector<ExportFile> export_files(const std::vector<MaterialFit>& fits, const FitRecordContext& context,
+                                     const ExportRequest& request, const std::string& materialx_space) {
+    std::vector<ExportFile> files;
+    for (std::vector<ExportFile>& more : detail::export_files_by_format(fits, context, request, materialx_space))
+        for (ExportFile& f : more) files.push_back(std::move(f));
     std::set<std::filesystem::path> seen;
     for (const ExportFile& f : files)
         if (!seen.insert(f.path).second)

@@ -106,6 +106,10 @@ struct CppIndexEntry {
     std::string row;      // {"Au", "f82-tint", &<stem>::evaluate, …},
 };
 std::string cpp_materials_index(const std::vector<CppIndexEntry>& entries, std::string_view id_prefix);
+// Its parts, for ExportStream: the head, the includes (one line each), the middle, the rows (one line each), the tail.
+std::string cpp_materials_index_head();
+std::string cpp_materials_index_middle(std::string_view id_prefix, std::size_t count);
+std::string cpp_materials_index_tail(std::string_view id_prefix);
 // The entries of a file cpp_materials_index wrote; std::invalid_argument when it is not one.
 std::vector<CppIndexEntry> parse_cpp_materials_index(std::string_view text);
 
@@ -128,6 +132,14 @@ std::vector<ExportFile> export_blender(const std::vector<MaterialExport>& materi
 // The written parameters of every requested model of one fit (and the stand-in's where a format needs it); the
 // fit holds models_to_fit(request). No bare-metal export is attached (export_files does that).
 MaterialExport material_export(const MaterialFit& fit, const ExportRequest& request);
+
+// Every file of an export, one list per format of the request (in its order), the record's out_of_range and
+// consumers filled in: what export_files joins (and checks for files two materials would share), and what
+// ExportStream makes for one material at a time.
+std::vector<std::vector<ExportFile>> export_files_by_format(const std::vector<MaterialFit>& fits,
+                                                            const FitRecordContext& context,
+                                                            const ExportRequest& request,
+                                                            const std::string& materialx_space);
 
 // What each format's consumer evaluates for one exported model (consumer_curve.hpp; the registry's `consumer_curve`):
 // the model itself (JSON, GLSL, HLSL, C++), MaterialX's node, OpenPBR's F82-tint metal, Schlick from glTF's

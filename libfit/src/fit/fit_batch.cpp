@@ -40,6 +40,17 @@ std::vector<std::function<Material()>> material_loaders(const Catalog& catalog, 
 void fit_materials_in_order(const std::vector<std::function<Material()>>& loaders, const BatchColour& colour,
                             const MaterialFitRequest& request, int jobs, const BatchSink& sink,
                             const BatchProgress& progress, std::size_t window, BatchStatistics* statistics) {
+    fit_materials_in_order(
+        loaders, colour,
+        [&](const Material& material, const ColorSpaceConverter& converter) {
+            return fit_material(material, colour.colorimetry, converter, request);
+        },
+        jobs, sink, progress, window, statistics);
+}
+
+void fit_materials_in_order(const std::vector<std::function<Material()>>& loaders, const BatchColour& colour,
+                            const BatchFit& fit, int jobs, const BatchSink& sink, const BatchProgress& progress,
+                            std::size_t window, BatchStatistics* statistics) {
     const std::size_t count = loaders.size();
     const int threads = std::max(1, std::min<int>(jobs, static_cast<int>(count)));
     if (window == 0) window = kBatchWindowPerThread * static_cast<std::size_t>(threads);
@@ -80,7 +91,7 @@ void fit_materials_in_order(const std::vector<std::function<Material()>>& loader
             Slot result;
             try {
                 const Material material = loaders[i]();
-                result.fit = fit_material(material, colour.colorimetry, converter, request);
+                result.fit = fit(material, converter);
             } catch (...) {
                 result.error = std::current_exception();
             }

@@ -28,14 +28,20 @@ double parse_relative_limit(const std::string& text, const std::string& option) 
 std::vector<std::string> channels_above(const std::vector<MaterialFit>& fits, double limit) {
     std::vector<std::string> lines;
     for (const MaterialFit& fit : fits)
-        for (const ModelResult& r : fit.models)
-            for (int c = 0; c < 3; ++c) {
-                const double v = r.fit.value.metrics.rel_rms[c];
-                if (std::isnan(v) || v > limit)
-                    lines.push_back(fit.material.id + ": " + std::string(r.model->id()) + ": " + kChannelNames[c] +
-                                    ": fitted rel_rms " + (std::isnan(v) ? std::string("undefined") : percent(v)) +
-                                    " > " + percent(limit));
-            }
+        for (std::string& line : channels_above(fit, limit)) lines.push_back(std::move(line));
+    return lines;
+}
+
+std::vector<std::string> channels_above(const MaterialFit& fit, double limit) {
+    std::vector<std::string> lines;
+    for (const ModelResult& r : fit.models)
+        for (int c = 0; c < 3; ++c) {
+            const double v = r.fit.value.metrics.rel_rms[c];
+            if (std::isnan(v) || v > limit)
+                lines.push_back(fit.material.id + ": " + std::string(r.model->id()) + ": " + kChannelNames[c] +
+                                ": fitted rel_rms " + (std::isnan(v) ? std::string("undefined") : percent(v)) + " > " +
+                                percent(limit));
+        }
     return lines;
 }
 

@@ -1,6 +1,18 @@
 #include "libfit/report/model_costs.hpp"
 
 namespace metalfit {
+namespace {
+
+BudgetMark budget_mark(const MaterialFit& fit, const CostTable& table, const Budget& budget) {
+    const BudgetChoice choice = choose_model(fit.models, table, budget);
+    BudgetMark mark;
+    if (choice.chosen) mark.model = std::string(choice.chosen->id());
+    mark.note = (choice.chosen ? "cheapest model meeting " + budget_text(budget) + ": " : budget_text(budget) + ": ") +
+                choice.summary();
+    return mark;
+}
+
+}  // namespace
 
 CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable& table,
                            const std::optional<Budget>& budget) {
@@ -11,13 +23,7 @@ CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable
     if (!budget) return out;
     out.budget = budget->limit;
     for (const MaterialFit& fit : fits) {
-        const BudgetChoice choice = choose_model(fit.models, table, *budget);
-        BudgetMark mark;
-        if (choice.chosen) mark.model = std::string(choice.chosen->id());
-        mark.note =
-            (choice.chosen ? "cheapest model meeting " + budget_text(*budget) + ": " : budget_text(*budget) + ": ") +
-            choice.summary();
-        out.choices[fit.material.id] = std::move(mark);
+        out.choices[fit.material.id] = budget_mark(fit, table, *budget);
     }
     return out;
 }
@@ -27,6 +33,16 @@ CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable
     CostAndBudget out = report_costs(fits, table, budget);
     for (const MaterialFit& fit : fits)
         out.recommendations.emplace(fit.material.id, recommend(fit, table, tolerance, target));
+    return out;
+}
+
+CostAndBudget report_costs_of(const MaterialFit& fit, const CostTable& table, const std::optional<Budget>& budget,
+                              const Tolerance& tolerance, ExportFormat target) {
+    CostAndBudget out = report_costs({}, table, budget);
+    if (budget) {
+        out.choices[fit.material.id] = budget_mark(fit, table, *budget);
+    }
+    out.recommendations.emplace(fit.material.id, recommend(fit, table, tolerance, target));
     return out;
 }
 

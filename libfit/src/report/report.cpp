@@ -3,6 +3,7 @@
 
 #include "libfit/base/errors.hpp"
 #include "report/report_pages.hpp"
+#include "report/report_parts.hpp"
 #include "report_assets.hpp"
 
 namespace metalfit {
@@ -20,10 +21,24 @@ std::string three_script() {
 
 }  // namespace
 
-std::vector<ReportFile> report_files(const std::vector<MaterialFit>& fits, const ReportInputs& inputs) {
+void report_detail::require_chart_libraries() {
     if (!report_detail::kHasChartLibraries)
         throw UsageError("report: this metalfit was built without the chart libraries (node_modules/ was missing when "
                          "it was configured): run scripts/install-deps.sh, then reconfigure and rebuild");
+}
+
+std::vector<ReportFile> report_detail::fixed_report_files(const ReportInputs& inputs) {
+    std::vector<ReportFile> files;
+    files.push_back({"index.html", report_detail::catalog_page()});
+    for (const auto& [name, text] : report_detail::kReportAssets)
+        files.push_back({"assets/" + std::string(name), std::string(text)});
+    files.push_back({"assets/three.js", three_script()});
+    if (inputs.renders.sheet) files.push_back({"assets/renders/sheet.png", inputs.renders.sheet->png});
+    return files;
+}
+
+std::vector<ReportFile> report_files(const std::vector<MaterialFit>& fits, const ReportInputs& inputs) {
+    report_detail::require_chart_libraries();
     for (std::size_t i = 0; i < fits.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
             if (fits[i].material.id == fits[j].material.id)
@@ -33,17 +48,12 @@ std::vector<ReportFile> report_files(const std::vector<MaterialFit>& fits, const
                 throw UsageError("report: materials " + fits[j].material.id + " and " + fits[i].material.id +
                                  " would share one page (" + report_detail::material_page_file(fits[i].material) + ")");
     const std::string record = report_record(fits, inputs).dump(1) + "\n";
-    std::vector<ReportFile> files;
-    files.push_back({"index.html", report_detail::catalog_page()});
+    std::vector<ReportFile> files = report_detail::fixed_report_files(inputs);
     for (const MaterialFit& fit : fits)
         files.push_back({report_detail::material_page_file(fit.material), report_detail::material_page(fit.material)});
     files.push_back({"report.json", record});
     // The same bytes as report.json, as a script: pages opened from file:// cannot fetch a JSON file.
     files.push_back({"assets/report-data.js", "metalfitReport(" + record + ");\n"});
-    for (const auto& [name, text] : report_detail::kReportAssets)
-        files.push_back({"assets/" + std::string(name), std::string(text)});
-    files.push_back({"assets/three.js", three_script()});
-    if (inputs.renders.sheet) files.push_back({"assets/renders/sheet.png", inputs.renders.sheet->png});
     return files;
 }
 

@@ -22,6 +22,7 @@
 #include "libfit/report/report.hpp"
 #include "report/report_charts.hpp"
 #include "report/report_pages.hpp"
+#include "report/report_parts.hpp"
 
 namespace metalfit {
 namespace {
@@ -332,10 +333,29 @@ std::vector<bool> pareto_front(const std::vector<double>& cost, const std::vecto
 
 }  // namespace
 
-Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in) {
+namespace report_detail {
+
+class ReportSwatches : public Swatches {
+public:
+    using Swatches::Swatches;
+};
+
+std::shared_ptr<const ReportSwatches> report_swatches(const ReportInputs& in) {
+    return std::make_shared<const ReportSwatches>(in);
+}
+
+Json material_record(const MaterialFit& fit, const ReportInputs& in, const ReportSwatches& swatches) {
+    std::optional<int> row;
+    if (in.renders.sheet) {
+        const auto& rows = in.renders.sheet->materials;
+        if (const auto it = std::find(rows.begin(), rows.end(), fit.material.id); it != rows.end())
+            row = static_cast<int>(it - rows.begin());
+    }
+    return material_json(fit, in, swatches, row);
+}
+
+Json report_record_without_materials(const CatalogSummary& summary, const ReportInputs& in) {
     const FitRecordContext& c = in.fit;
-    const CatalogSummary summary = summarize_catalog(fits);
-    const Swatches swatches(in);
 
     Json models = Json::array();
     std::vector<double> cost, median;
@@ -361,16 +381,7 @@ Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in)
              {"glsl", {{"function", m.model->glsl_function()}, {"source", m.model->glsl_source()}}}});
     }
 
-    Json materials = Json::array();
-    for (const MaterialFit& fit : fits) {
-        std::optional<int> row;
-        if (in.renders.sheet) {
-            const auto& rows = in.renders.sheet->materials;
-            if (const auto it = std::find(rows.begin(), rows.end(), fit.material.id); it != rows.end())
-                row = static_cast<int>(it - rows.begin());
-        }
-        materials.push_back(material_json(fit, in, swatches, row));
-    }
+    Json materials = Json::array();  // report_record fills them in, or ReportStream writes them one by one
 
     Json renders;
     if (in.renders.sheet) {
@@ -432,6 +443,17 @@ Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in)
             {"materials", materials},
             {"renders", renders},
             {"charts", report_detail::chart_specs(in.cost.costs.has_value())}};
+}
+
+}  // namespace report_detail
+
+Json report_record(const std::vector<MaterialFit>& fits, const ReportInputs& in) {
+    Json record = report_detail::report_record_without_materials(summarize_catalog(fits), in);
+    const auto swatches = report_detail::report_swatches(in);
+    Json materials = Json::array();
+    for (const MaterialFit& fit : fits) materials.push_back(report_detail::material_record(fit, in, *swatches));
+    record["materials"] = std::move(materials);
+    return record;
 }
 
 }  // namespace metalfit

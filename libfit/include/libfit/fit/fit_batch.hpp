@@ -56,6 +56,14 @@ void fit_materials_in_order(const std::vector<std::function<Material()>>& loader
                             const BatchProgress& progress = {}, std::size_t window = 0,
                             BatchStatistics* statistics = nullptr);
 
+// The work done for each material on a worker thread, with that thread's OCIO processor: fit_material by default.
+using BatchFit = std::function<MaterialFit(const Material& material, const ColorSpaceConverter& converter)>;
+
+// The same with another fit per material (export's, which fits a layered material's bare metal too).
+void fit_materials_in_order(const std::vector<std::function<Material()>>& loaders, const BatchColour& colour,
+                            const BatchFit& fit, int jobs, const BatchSink& sink, const BatchProgress& progress = {},
+                            std::size_t window = 0, BatchStatistics* statistics = nullptr);
+
 // fit_materials_in_order into a vector: every material's fit, in input order, for callers that need them all.
 std::vector<MaterialFit> fit_materials(const std::vector<std::function<Material()>>& loaders, const BatchColour& colour,
                                        const MaterialFitRequest& request, int jobs, const BatchProgress& progress = {});

@@ -15,5 +15,7 @@ double parse_relative_limit(const std::string& text, const std::string& option);
 // "Au: schlick: red: fitted rel_rms 1.234 % > 1 %" for each channel above `limit` (an undefined rel_rms is above
 // any limit: "undefined"), in material, model, channel order.
 std::vector<std::string> channels_above(const std::vector<MaterialFit>& fits, double limit);
+// The same for one material.
+std::vector<std::string> channels_above(const MaterialFit& fit, double limit);
 
 }  // namespace metalfit

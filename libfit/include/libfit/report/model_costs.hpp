@@ -54,4 +54,9 @@ CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable
 CostAndBudget report_costs(const std::vector<MaterialFit>& fits, const CostTable& table,
                            const std::optional<Budget>& budget, const Tolerance& tolerance, ExportFormat target);
 
+// The same for one material: the table's costs, and its own choice and recommendation (what its entry in the report
+// shows; the report written material by material, ReportStream, makes one per material).
+CostAndBudget report_costs_of(const MaterialFit& fit, const CostTable& table, const std::optional<Budget>& budget,
+                              const Tolerance& tolerance, ExportFormat target);
+
 }  // namespace metalfit
