@@ -108,7 +108,7 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
     constraints.check_combination();
     if ((constraints.pin_f0 || constraints.f0_tolerance) && !model.can_pin_f0())
         throw UsageError("--pin F0: model " + std::string(model.id()) + " cannot hold F(1) at a given value");
-    const RGB R1 = reference.dense().back().value;  // R(1): the dense grid ends at μ = 1
+    const RGB R1 = reference.normal().value;  // R(1)
     const ErrorMetric metric = reference.settings().metric;
     FitTimings local;
     FitTimings& t = timings ? *timings : local;
