@@ -114,7 +114,7 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
         related = &*own_related;
     }
     if (model.starts_from().empty()) related = nullptr;
-    const RGB R1 = reference.dense().back().value;  // R(1): the dense grid ends at μ = 1
+    const RGB R1 = reference.normal().value;  // R(1)
     const ErrorMetric metric = reference.settings().metric;
     FitTimings local;
     FitTimings& t = timings ? *timings : local;

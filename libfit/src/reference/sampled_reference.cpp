@@ -1,5 +1,6 @@
 #include "libfit/reference/sampled_reference.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -10,6 +11,12 @@
 
 namespace metalfit {
 
+namespace {
+// The grid is sampled in aligned blocks of this many points: as many μ as the reference curve integrates at once, for
+// the cost of one (ReferenceCurve's lanes).
+constexpr int kGridBlock = 8;
+}  // namespace
+
 std::string to_string(ErrorMetric m) { return std::string(kErrorMetricNames.name(m)); }
 std::string to_string(AngularWeight w) { return std::string(kAngularWeightNames.name(w)); }
 
@@ -18,7 +25,7 @@ ErrorMetric parse_error_metric(const std::string& text) { return kErrorMetricNam
 AngularWeight parse_angular_weight(const std::string& text) { return kAngularWeightNames.parse(text); }
 
 SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSettings& settings)
-    : converter_(curve.converter()), raw_white_(curve.raw_white()), settings_(settings) {
+    : curve_(curve), converter_(curve.converter()), raw_white_(curve.raw_white()), settings_(settings) {
     if (settings.nodes < 2 || settings.nodes > 4096)
         throw UsageError("the number of quadrature nodes must be in [2, 4096], got " + std::to_string(settings.nodes));
     white_ = converter_.to_xyz(raw_white_);
@@ -26,25 +33,68 @@ SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSetti
         const double w = settings.weight == AngularWeight::uniform ? 1.0 : 2.0 * q.mu;
         nodes_.push_back(Sample{q.mu, q.weight * w, q.weight * 2.0 * q.mu, {}, {}});
     }
-    for (int i = 0; i <= kDenseIntervals; ++i) dense_.push_back(Sample{double(i) / kDenseIntervals, 0.0, 0.0, {}, {}});
-    // Every μ in one batch (the curve evaluates them together, with the same values as one at a time).
-    for (const auto* samples : {&nodes_, &dense_})
-        for (const Sample& s : *samples) mu_.push_back(s.mu);
-    const std::vector<RGB> values = curve(std::span<const double>(mu_));
+    for (int i = 0; i <= kDenseIntervals; ++i) grid_.push_back(Sample{double(i) / kDenseIntervals, 0.0, 0.0, {}, {}});
+    grid_sampled_.assign(grid_.size(), 0);
+    // The nodes and both ends of the grid in one batch (the curve evaluates them together, with the same values as one
+    // at a time).
+    std::vector<double> mu;
+    for (const Sample& s : nodes_) mu.push_back(s.mu);
+    mu.push_back(grid_.front().mu);
+    mu.push_back(grid_.back().mu);
+    const std::vector<RGB> values = curve(std::span<const double>(mu));
     const std::vector<Lab> labs = lab(values);
-    std::size_t next = 0;
-    for (auto* samples : {&nodes_, &dense_})
-        for (Sample& s : *samples) {
-            s.value = values[next];
-            s.lab = labs[next++];
-        }
+    for (std::size_t i = 0; i < nodes_.size(); ++i) nodes_[i].value = values[i], nodes_[i].lab = labs[i];
+    for (const std::size_t i : {std::size_t{0}, grid_.size() - 1}) {
+        const std::size_t at = nodes_.size() + (i == 0 ? 0 : 1);
+        grid_[i].value = values[at];
+        grid_[i].lab = labs[at];
+        grid_sampled_[i] = 1;
+    }
 
-    for (const auto* samples : {&nodes_, &dense_})
-        for (const Sample& s : *samples)
+    const auto first_not_positive = [&](std::span<const Sample> samples) {
+        for (const Sample& s : samples)
             for (int c = 0; c < 3 && !rel_undefined_; ++c)
                 if (!(s.value[c] > 0.0))
                     rel_undefined_ = "the reference's " + std::string(kChannelNames[c]) + " channel is " +
                                      significant_text(s.value[c], 3) + " at mu = " + significant_text(s.mu, 4);
+    };
+    first_not_positive(nodes_);
+    // The grid is bracketed by the nodes unless they are few, or R comes near 0 (or below) at a node or an end; then
+    // it is sampled whole, and checked in its order as the nodes are.
+    whole_grid_ = settings.nodes < kFewestBracketingNodes;
+    for (std::size_t i = 0; i < values.size() && !whole_grid_; ++i)
+        for (int c = 0; c < 3; ++c)
+            if (!(values[i][c] >= kNearZeroReference)) whole_grid_ = true;
+    if (whole_grid_) {
+        std::vector<int> all(grid_.size());
+        for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+        sample_grid(all);
+        first_not_positive(grid_);
+    }
+}
+
+void SampledReference::sample_grid(std::span<const int> indices) const {
+    const std::lock_guard lock(grid_mutex_);
+    // Whole blocks of kGridBlock points: the neighbours of a point asked for come at no extra cost, for later calls.
+    std::vector<int> missing;
+    std::vector<double> mu;
+    const int size = static_cast<int>(grid_.size());
+    for (const int i : indices)
+        if (!grid_sampled_[static_cast<std::size_t>(i)])
+            for (int j = i - i % kGridBlock; j < std::min(i - i % kGridBlock + kGridBlock, size); ++j)
+                if (!grid_sampled_[static_cast<std::size_t>(j)]) {
+                    grid_sampled_[static_cast<std::size_t>(j)] = 1;  // once, even if listed twice
+                    missing.push_back(j);
+                    mu.push_back(grid_[static_cast<std::size_t>(j)].mu);
+                }
+    if (missing.empty()) return;
+    const std::vector<RGB> values = curve_(std::span<const double>(mu));
+    const std::vector<Lab> labs = lab(values);
+    for (std::size_t j = 0; j < missing.size(); ++j) {
+        Sample& s = grid_[static_cast<std::size_t>(missing[j])];
+        s.value = values[j];
+        s.lab = labs[j];
+    }
 }
 
 std::vector<Lab> SampledReference::lab(std::span<const RGB> balanced) const {

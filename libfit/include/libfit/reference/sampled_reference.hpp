@@ -1,7 +1,10 @@
-// A reference curve sampled once where the error integrals need it: at Gauss–Legendre nodes on [0, 1] (integrals)
-// and on a dense uniform grid (maxima), with the colour of every sample for ΔE2000.
+// A reference curve sampled where the error integrals and maxima need it: at Gauss–Legendre nodes on [0, 1]
+// (integrals) and on a uniform grid (maxima), with the colour of every sample for ΔE2000. The grid is sampled where it
+// is asked for (the maxima look at it only where the nodes' errors come near their largest, fit/metrics.cpp), each
+// point once.
 #pragma once
 
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -39,6 +42,11 @@ struct ErrorSettings {
 
 // Uniform grid for maxima: μ = i / kDenseIntervals, i = 0 … kDenseIntervals (both ends included).
 inline constexpr int kDenseIntervals = 1024;
+// Below this many nodes, or where a channel of R comes below kNearZeroReference at a node or an end of the grid, the
+// whole grid is sampled at once and the maxima scan all of it (the nodes too far apart to bracket the grid's maxima,
+// or the relative error too steep between them).
+inline constexpr int kFewestBracketingNodes = 64;
+inline constexpr double kNearZeroReference = 0.01;
 
 class SampledReference {
 public:
@@ -53,9 +61,15 @@ public:
     SampledReference(const ReferenceCurve& curve, const ErrorSettings& settings);
 
     std::span<const Sample> nodes() const { return nodes_; }
-    std::span<const Sample> dense() const { return dense_; }
-    // Every sample's μ: the nodes', then the dense grid's (one array for curves evaluated over all of them at once).
-    std::span<const double> mu() const { return mu_; }
+    // Grid point i (μ = i / kDenseIntervals). Sampled at construction: both ends (μ = 0 and 1), or every point where
+    // whole_grid(); any other only after sample_grid has been asked for it.
+    const Sample& grid(int i) const { return grid_[static_cast<std::size_t>(i)]; }
+    const Sample& normal() const { return grid_.back(); }  // μ = 1
+    // Samples the grid points among `indices` not sampled yet, in one batch (the values of one μ at a time, bit for
+    // bit). Safe to call from several threads at once.
+    void sample_grid(std::span<const int> indices) const;
+    // Every grid point sampled at construction (few nodes, or R near 0: kFewestBracketingNodes, kNearZeroReference).
+    bool whole_grid() const { return whole_grid_; }
     const ErrorSettings& settings() const { return settings_; }
 
     // L*a*b* of white-balanced RGBs of the curve's space (the perfect reflector (1, 1, 1) has L* = 100), through
@@ -69,13 +83,16 @@ public:
     ChannelTarget target(int channel) const;
 
 private:
+    ReferenceCurve curve_;  // for the grid points sampled later
     ColorSpaceConverter converter_;
     RGB raw_white_;
     XYZ white_;
     ErrorSettings settings_;
     std::vector<Sample> nodes_;
-    std::vector<Sample> dense_;
-    std::vector<double> mu_;
+    mutable std::vector<Sample> grid_;        // kDenseIntervals + 1 points; written under grid_mutex_ only
+    mutable std::vector<char> grid_sampled_;  // read and written under grid_mutex_ only
+    mutable std::mutex grid_mutex_;
+    bool whole_grid_ = false;
     std::optional<std::string> rel_undefined_;
 };
 
