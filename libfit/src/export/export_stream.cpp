@@ -12,6 +12,7 @@
 #include "export/export_formats.hpp"
 #include "export/format_registry.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/json_text.hpp"
 #include "libfit/base/staged_folder.hpp"
 
 namespace metalfit {
@@ -22,18 +23,6 @@ using Json = nlohmann::ordered_json;
 constexpr int kIndent = 2;                                          // as export_files dumps the record
 constexpr std::string_view kRecordPath = "metalfit_export.json";    // the json format's one file
 constexpr std::string_view kMaterialsKey = "\n  \"materials\": {";  // the record's top-level member
-
-// `text` (the dump of a value at the top level) as it appears `levels` deep: every line after the first indented.
-std::string indented(const std::string& text, int levels) {
-    const std::string margin(static_cast<std::size_t>(levels * kIndent), ' ');
-    std::string out;
-    out.reserve(text.size() + text.size() / 16);
-    for (char c : text) {
-        out += c;
-        if (c == '\n') out += margin;
-    }
-    return out;
-}
 
 // Lines kept on disk until the end (an anonymous temporary, gone with the process): what a stream would otherwise
 // hold for every material.
@@ -136,7 +125,7 @@ struct ExportStream::State {
         if (!record_ids.insert(id).second) return;  // the record's "materials" keeps one entry per id
         const std::string margin(2 * kIndent, ' ');
         write_record((record_ids.size() == 1 ? "\n" : ",\n") + margin + Json(id).dump() + ": " +
-                     indented(entry.dump(kIndent), 2));
+                     indented_json(entry.dump(kIndent), 2, kIndent));
     }
 
     void add(const std::vector<MaterialFit>& fits) {

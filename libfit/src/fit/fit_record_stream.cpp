@@ -1,4 +1,5 @@
 #include "libfit/fit/fit_record_stream.hpp"
+#include "libfit/base/json_text.hpp"
 
 #include <stdexcept>
 #include <utility>
@@ -7,19 +8,6 @@ namespace metalfit {
 namespace {
 
 constexpr int kIndent = 2;  // as `metalfit fit --json` dumps the record
-
-// `text` (the dump of a value at the top level) as it appears `levels` deep: every line after the first indented.
-// Raw newlines occur in a JSON dump only between tokens (strings hold them escaped).
-std::string indented(const std::string& text, int levels) {
-    const std::string margin(static_cast<std::size_t>(levels * kIndent), ' ');
-    std::string out;
-    out.reserve(text.size() + text.size() / 16);
-    for (char c : text) {
-        out += c;
-        if (c == '\n') out += margin;
-    }
-    return out;
-}
 
 }  // namespace
 
@@ -46,7 +34,7 @@ void FitRecordStream::add(const MaterialFit& fit, const BudgetChoice* budget,
     const nlohmann::ordered_json key = fit.material.id;
     const std::string margin(2 * kIndent, ' ');
     write_((ids_.size() == 1 ? "\n" : ",\n") + margin + key.dump() + ": " +
-           indented(material_record(fit, context_.data_dir, budget, recommendation).dump(kIndent), 2));
+           indented_json(material_record(fit, context_.data_dir, budget, recommendation).dump(kIndent), 2, kIndent));
 }
 
 void FitRecordStream::finish() {

@@ -201,6 +201,17 @@ concept ProjectedFit = requires(typename M::Projection& p, const double* z, cons
     { p.parameters(z, start) } -> std::same_as<ChannelParameters>;
 };
 
+// ½ Σ rᵢ² of the full parameters on the target: what the projected fits compare and keep.
+template <class M>
+double curve_cost(const ChannelTarget& target, const ChannelParameters& params) {
+    double cost = 0;
+    for (std::size_t i = 0; i < target.mu.size(); ++i) {
+        const double r = target.scale[i] * (M::evaluate(params.data(), target.mu[i]) - target.value[i]);
+        cost += 0.5 * r * r;
+    }
+    return cost;
+}
+
 // The plain fit of a model with two non-linear parameters left by its Projection: from each start, bounded
 // Levenberg–Marquardt on the projected residuals; the cost compared and kept is that of the full parameters
 // returned (ties keep the first). Starts with the same non-linear parameters take the same path: skipped; a start
@@ -241,11 +252,7 @@ ChannelFit fit_projected_pair(const ChannelTarget& target, std::span<const Named
         if (solve.abandoned || !std::isfinite(solve.cost)) continue;
         minima.push_back(solve.x);
         const ChannelParameters full = clamp_to_bounds<M>(projection.parameters(solve.x.data(), x));
-        double final_cost = 0;
-        for (std::size_t i = 0; i < target.mu.size(); ++i) {
-            const double r = target.scale[i] * (M::evaluate(full.data(), target.mu[i]) - target.value[i]);
-            final_cost += 0.5 * r * r;
-        }
+        const double final_cost = curve_cost<M>(target, full);
         if (!std::isfinite(final_cost) || !(final_cost < best.solver.final_cost)) continue;
         if constexpr (CheckedCurve<M>)
             if (const std::string why = M::inadmissible(full.data()); !why.empty()) {
@@ -417,11 +424,7 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                         initial_cost = m.start.value;
                     }
                     const ChannelParameters full = clamp_to_bounds<M>(projection.parameters(z.data(), x));
-                    double final_cost = 0;
-                    for (std::size_t i = 0; i < target.mu.size(); ++i) {
-                        const double r = target.scale[i] * (M::evaluate(full.data(), target.mu[i]) - target.value[i]);
-                        final_cost += 0.5 * r * r;
-                    }
+                    const double final_cost = curve_cost<M>(target, full);
                     if (!std::isfinite(final_cost) || !(final_cost < best.solver.final_cost)) continue;
                     if constexpr (CheckedCurve<M>)
                         if (const std::string why = M::inadmissible(full.data()); !why.empty()) {

@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/json_text.hpp"
 #include "libfit/base/staged_folder.hpp"
 #include "report/report_pages.hpp"
 #include "report/report_parts.hpp"
@@ -21,18 +22,6 @@ using Json = nlohmann::ordered_json;
 constexpr int kIndent = 1;  // as report_files dumps the record
 constexpr std::string_view kMaterialsKey = "\n \"materials\": [";
 constexpr std::string_view kScratch = "report.json.materials";  // in the staging only, removed before the switch
-
-// `text` (the dump of a value at the top level) as it appears `levels` deep: every line after the first indented.
-std::string indented(const std::string& text, int levels) {
-    const std::string margin(static_cast<std::size_t>(levels * kIndent), ' ');
-    std::string out;
-    out.reserve(text.size() + text.size() / 16);
-    for (char c : text) {
-        out += c;
-        if (c == '\n') out += margin;
-    }
-    return out;
-}
 
 void write_or_fail(std::ofstream& out, std::string_view text, const std::filesystem::path& named) {
     out.write(text.data(), static_cast<std::streamsize>(text.size()));
@@ -100,7 +89,8 @@ void ReportStream::add(const MaterialFit& fit) {
                               s.inputs.renders, s.inputs.compare_sources};
     const Json entry = report_detail::material_record(fit, inputs, *s.swatches);
     write_or_fail(s.scratch,
-                  (s.materials == 0 ? "\n" : ",\n") + std::string(2 * kIndent, ' ') + indented(entry.dump(kIndent), 2),
+                  (s.materials == 0 ? "\n" : ",\n") + std::string(2 * kIndent, ' ') +
+                      indented_json(entry.dump(kIndent), 2, kIndent),
                   s.dir / "report.json");
     ++s.materials;
     s.folder.write(page, report_detail::material_page(fit.material));
