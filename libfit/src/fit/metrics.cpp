@@ -21,7 +21,7 @@ std::vector<RGB> model_values(const Model& model, const ModelParameters& params,
     const std::size_t n = mu.size();
     std::vector<double> curves(3 * n);
     for (int c = 0; c < 3; ++c)
-        model.evaluate(std::span<const double>(params[c]), mu, std::span<double>(&curves[c * n], n));
+        model.evaluate(std::span<const double>(params[c]), mu, std::span<double>(curves.data() + c * n, n));
     std::vector<RGB> values;
     values.reserve(n);
     for (std::size_t i = 0; i < n; ++i) values.emplace_back(curves[i], curves[n + i], curves[2 * n + i]);
