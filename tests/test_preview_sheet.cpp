@@ -2,6 +2,8 @@
 // else), --sheet-models / --sheet-roughness / --sheet-labels on the command line.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <nlohmann/json.hpp>
 
 #include "glpreview/io/image_io.hpp"
@@ -420,6 +422,44 @@ TEST(PreviewSheet, SheetProgressIsALinePerRowInOrder) {
     EXPECT_FALSE(Contains(without.err, "rows"));
     EXPECT_EQ(read_file(dir.path() / "with" / "sheet.png"), read_file(dir.path() / "without" / "sheet.png"));
     EXPECT_EQ(glpreview(sheet_scene() + " --sheet-progress -o " + (dir.path() / "x").string(), dir).exit_code, 2);
+}
+
+// Issue 32 (metalfit report's renders): --sheet-rows writes each row as its own image, the row's Fresnel made for it
+// alone; each image is the sheet of that one material made by a run of its own (byte for byte: the same renders,
+// error views and labels), sheet.json is the whole sheet's record with the row numbers of the sheet, and no sheet
+// image is written.
+TEST(PreviewSheet, SheetRowsWritesEachRowAsTheSheetOfItsMaterialAlone) {
+    TempDir dir;
+    const std::string models = " --sheet-models schlick,conductor-rgb" + kSize;
+    const CommandResult rows = glpreview(sheet_scene() + " --sheet Au,Cu,Ti --sheet-rows --sheet-progress" + models +
+                                             " -o " + (dir.path() / "rows").string(),
+                                         dir);
+    ASSERT_EQ(rows.exit_code, 0) << rows.err;
+    EXPECT_TRUE(Contains(rows.out, "sheet-progress 3 3\n")) << rows.out;
+    EXPECT_FALSE(fs::exists(dir.path() / "rows" / "sheet.png"));
+    EXPECT_FALSE(fs::exists(dir.path() / "rows" / "sheet.exr"));
+    const Json record = Json::parse(read_file(dir.path() / "rows" / "sheet.json"));
+    ASSERT_EQ(record.size(), 3u * 2u);
+    const std::vector<std::string> materials{"Au", "Cu", "Ti"};
+    std::set<std::string> images;
+    for (std::size_t row = 0; row < materials.size(); ++row) {
+        const fs::path alone = dir.path() / ("alone-" + materials[row]);
+        const CommandResult one =
+            glpreview(sheet_scene() + " --sheet " + materials[row] + models + " -o " + alone.string(), dir);
+        ASSERT_EQ(one.exit_code, 0) << one.err;
+        const std::string image = read_file(dir.path() / "rows" / "rows" / (std::to_string(row) + ".png"));
+        EXPECT_EQ(image, read_file(alone / "sheet.png")) << materials[row];
+        images.insert(image);
+        const Json one_record = Json::parse(read_file(alone / "sheet.json"));
+        for (std::size_t m = 0; m < 2; ++m) {
+            Json entry = record[2 * row + m];
+            EXPECT_EQ(entry["row"], row);
+            entry["row"] = 0;
+            EXPECT_EQ(entry, one_record[m]) << materials[row];
+        }
+    }
+    EXPECT_EQ(images.size(), 3u) << "three materials, three different images";
+    EXPECT_EQ(glpreview(sheet_scene() + " --sheet-rows -o " + (dir.path() / "x").string(), dir).exit_code, 2);
 }
 
 }  // namespace

@@ -281,6 +281,10 @@ int run_glpreview(int argc, char** argv) {
     app.add_flag("--sheet-progress", sheet_progress,
                  "Sheet: a line `sheet-progress DONE TOTAL` on stdout after each row (for programs that run the "
                  "sheet: metalfit report); on a terminal stderr shows the rows done without it");
+    bool sheet_rows = false;
+    app.add_flag("--sheet-rows", sheet_rows,
+                 "Sheet: each row its own labelled image, rows/<row>.png (from 0), written as the row is done, and "
+                 "sheet.json; no sheet.exr or sheet.png (memory of one row, whatever the number of materials)");
     std::string sheet_film, sheet_coat;
     app.add_option("--sheet-film", sheet_film,
                    "Sheet: a thin film over every row's metal, as metalfit --film (TiO2:80nm, 2.2:120nm, a file)");
@@ -529,16 +533,18 @@ int run_glpreview(int argc, char** argv) {
                 else
                     std::fprintf(stderr, "\r%40s\r", "");  // the line cleared once the last row is done
             };
+        sheet_request.row_images = sheet_rows;
         sheet_request.film = layer(sheet_film, "--sheet-film");
         sheet_request.coat = layer(sheet_coat, "--sheet-coat");
         if (sheet_request.light && scene.environment.type != EnvironmentType::room)
             throw UsageError(
                 "--sheet-light: the light column needs a room environment (its surfaces receive the light)");
-        if (sheet.empty() && (sheet_models != "best" || !sheet_roughness.empty() || sheet_labels != "on" ||
-                              sheet_light != "off" || !sheet_film.empty() || !sheet_coat.empty() || sheet_progress))
+        if (sheet.empty() &&
+            (sheet_models != "best" || !sheet_roughness.empty() || sheet_labels != "on" || sheet_light != "off" ||
+             !sheet_film.empty() || !sheet_coat.empty() || sheet_progress || sheet_rows))
             throw UsageError(
-                "--sheet-models, --sheet-roughness, --sheet-labels, --sheet-light, --sheet-film, --sheet-coat and "
-                "--sheet-progress need --sheet");
+                "--sheet-models, --sheet-roughness, --sheet-labels, --sheet-light, --sheet-film, --sheet-coat, "
+                "--sheet-progress and --sheet-rows need --sheet");
         if (!sheet.empty()) check_sheet_request(sheet_request);
         if (explain_only) {
             std::cout << explain(sheet.empty() ? build_plan(scene) : build_sheet_plan(scene, sheet_request), scene);
@@ -559,7 +565,7 @@ int run_glpreview(int argc, char** argv) {
                         std::printf(" at roughness %g", row["roughness"].get<double>());
                     std::printf("\n");
                 }
-                std::cout << (output_dir / "sheet.png").string() << "\n";
+                std::cout << (output_dir / (sheet_request.row_images ? "rows" : "sheet.png")).string() << "\n";
                 flush_standard_output();  // a stdout that fails: nothing written
             };
             render_sphere_sheet(scene, sheet_request, options, nullptr, print_sheet);

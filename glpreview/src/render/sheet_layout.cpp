@@ -13,6 +13,8 @@ std::vector<std::string> sheet_model_groups(const SheetRequest& request) {
     return request.models.empty() ? std::vector<std::string>{kBestModel} : request.models;
 }
 
+std::string sheet_row_image(std::size_t row) { return "rows/" + std::to_string(row) + ".png"; }
+
 void check_sheet_request(const SheetRequest& request) {
     for (std::size_t i = 0; i < request.models.size(); ++i) {
         if (request.models[i] != kBestModel) try {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -9,6 +11,7 @@
 #include "effects/glossy_localized/glossy_localized_effect.hpp"
 #include "effects/glossy_prefiltered/glossy_prefiltered_effect.hpp"
 #include "effects/lights/light.hpp"
+#include "glpreview/io/image_io.hpp"
 #include "glpreview/render/error_view.hpp"
 #include "glpreview/render/gpu_renderer.hpp"
 #include "glpreview/render/preview_passes.hpp"
@@ -43,6 +46,28 @@ struct SheetRow {
 };
 using SheetRows = std::vector<SheetRow>;
 using SheetCells = std::vector<SheetCell>;
+
+// A row's Fresnel: the material `name` (with the request's layers) as the reference and each model group's.
+SheetRow make_sheet_row(FresnelLibrary& library, const Scene& base, const SheetRequest& request,
+                        const std::vector<std::string>& model_groups, const std::string& name) {
+    Sphere sphere = base.spheres[0];
+    sphere.material = name;
+    sphere.film = request.film;
+    sphere.coat = request.coat;
+    sphere.fresnel = ReferenceFresnel{};
+    SheetRow row{&library.get(sphere, "sheet material " + name), {}, {}};
+    for (const std::string& group : model_groups) {
+        const bool best = group == kBestModel;
+        sphere.fresnel =
+            ModelFresnel{best ? library.best_model(sphere, "sheet material " + name) : group, ParameterSource::fit};
+        row.models.push_back(&library.get(sphere, "sheet material " + name));
+        row.best.push_back(best);
+    }
+    return row;
+}
+
+// A new library with the settings of the sheet's own, for one row of a --sheet-rows sheet (let go after the row).
+using RowLibraries = std::function<std::unique_ptr<FresnelLibrary>()>;
 
 // The roughness of the columns: those asked for, else the scene sphere's own; then the lit column's, if asked for.
 std::vector<double> column_roughness(const Scene& base, const SheetRequest& request) {
@@ -117,11 +142,25 @@ ErrorScale paint_error_views(Image& out, const Image& renders, const std::vector
     return scale;
 }
 
+// A --sheet-rows row (`image`: its renders, `cells`: its labels, at row 0) as sheet.png draws a sheet — the exposure,
+// the error views on the row's own scale, the labels — written to rows/<row>.png.
+void write_row_image(const Image& image, const SheetCells& cells, std::size_t row, bool labels,
+                     const FresnelLibrary& library, PreviewRun& run) {
+    const int w = run.scene.width, h = run.scene.height;
+    Image out = exposed(image, run.exposure);
+    const ErrorScale scale = paint_error_views(out, image, cells, w, h, luminance_weights(library.converter()));
+    if (labels) draw_text(out, sheet_labels(cells, w, h, scale));
+    if (run.output_dir.empty()) return;
+    const std::filesystem::path file = run.output_file(sheet_row_image(row));  // sets run.display for a PNG
+    write_png(file, out, *run.display);
+}
+
 // The sheet's passes. `library` and `run` are null when the graph is only planned (--explain): nothing executes.
 // `scene` is the renderer's copy of `base` with the largest roughness asked for (what the environment passes plan
 // for); only its sphere's Fresnel kind and roughness change between cells.
 graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base, Scene& scene,
-                                     const SheetRequest& request, FresnelLibrary* library, PreviewRun* run) {
+                                     const SheetRequest& request, FresnelLibrary* library, PreviewRun* run,
+                                     const RowLibraries& row_libraries = {}) {
     using namespace graph;
     const std::vector<double> roughness = column_roughness(base, request);
     set_cell_roughness(scene.spheres[0], *std::max_element(roughness.begin(), roughness.end()));
@@ -146,22 +185,11 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                 },
                 [&base, &request, model_groups, library, run](const Out<SheetRows>& d, Resources& r) {
                     SheetRows& result = r.emplace(d.out);
+                    // --sheet-rows: the first row only (what the environment passes see); the others are made as
+                    // they are rendered.
                     for (const std::string& name : request.materials) {
-                        Sphere sphere = base.spheres[0];
-                        sphere.material = name;
-                        sphere.film = request.film;
-                        sphere.coat = request.coat;
-                        sphere.fresnel = ReferenceFresnel{};
-                        SheetRow row{&library->get(sphere, "sheet material " + name), {}, {}};
-                        for (const std::string& group : model_groups) {
-                            const bool best = group == kBestModel;
-                            sphere.fresnel =
-                                ModelFresnel{best ? library->best_model(sphere, "sheet material " + name) : group,
-                                             ParameterSource::fit};
-                            row.models.push_back(&library->get(sphere, "sheet material " + name));
-                            row.best.push_back(best);
-                        }
-                        result.push_back(row);
+                        result.push_back(make_sheet_row(*library, base, request, model_groups, name));
+                        if (request.row_images) break;
                     }
                     if (!result.empty()) run->fresnel = {result.front().reference};
                 })
@@ -187,7 +215,10 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
          "per material: reference | model | difference for " + std::to_string(groups) +
              " model group(s) at roughness " + roughness_list(roughness) +
              (request.light ? " (the last lit by a point light grazing the sphere)" : "") +
-             ", one GPU frame each (DFG tables of rough cells made on first use)",
+             ", one GPU frame each (DFG tables of rough cells made on first use)" +
+             (request.row_images ? "; each row labelled and written to rows/<row>.png as it is done (its Fresnel "
+                                   "made for it and let go after it)"
+                                 : ""),
          Processor::gpu},
         [&](Builder& b, Cells& d) {
             b.read(rows);
@@ -197,9 +228,12 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
             d.image = b.produce<Image>("sheet-image");
             d.record = b.produce<Json>("sheet-record");
             d.cells = b.produce<SheetCells>("sheet-cell-labels");
+            if (request.row_images) b.write_file(sheet_row_image(0).replace(5, 1, "<row>"));
         },
-        [&scene, rows, environment, prefiltered, downsampled, roughness, groups, run, request_light = request.light,
-         on_row = request.on_row](const Cells& d, Resources& r) {
+        [&scene, &base, &request, model_groups, rows, environment, prefiltered, downsampled, roughness, groups, run,
+         library, row_libraries](const Cells& d, Resources& r) {
+            const bool request_light = request.light, row_images = request.row_images;
+            const auto& on_row = request.on_row;
             GpuRenderer& gpu = run->renderer();
             environment.bind(gpu, r);
             if (prefiltered) gpu.frame().put(r.get(*prefiltered));
@@ -207,10 +241,13 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                 const DownsampledCube& cube = r.get(handle);
                 gpu.frame().put(cube, std::to_string(cube.m));
             }
-            const SheetRows& all = r.get(rows);
+            const SheetRows& made = r.get(rows);
+            const std::size_t n_rows = request.materials.size();
             const int n_roughness = static_cast<int>(roughness.size());
             const int n_columns = static_cast<int>(sheet_columns(groups, n_roughness).size());
-            Image& sheet = r.emplace(d.image, n_columns * scene.width, static_cast<int>(all.size()) * scene.height);
+            // --sheet-rows: an image of one row, drawn again for each row.
+            Image& sheet = r.emplace(d.image, n_columns * scene.width,
+                                     static_cast<int>(row_images ? std::size_t{1} : n_rows) * scene.height);
             Json& record = r.emplace(d.record, Json::array());
             SheetCells& labels = r.emplace(d.cells);
             const auto light_column = [&scene, lit_column = request_light ? n_roughness - 1 : -1](int k) {
@@ -220,23 +257,32 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                     scene.effects = {};
                 return k == lit_column;
             };
-            for (std::size_t row = 0; row < all.size(); ++row) {
-                const int y = static_cast<int>(row);
-                const std::string& material = all[row].reference->material;
+            for (std::size_t row = 0; row < n_rows; ++row) {
+                // A --sheet-rows row past the first: its Fresnel from a library of its own, let go after the row.
+                std::unique_ptr<FresnelLibrary> row_library;
+                std::optional<SheetRow> made_here;
+                if (row_images && row > 0) {
+                    row_library = row_libraries();
+                    made_here = make_sheet_row(*row_library, base, request, model_groups, request.materials[row]);
+                }
+                const SheetRow& this_row = made_here ? *made_here : made[row];
+                const int y = row_images ? 0 : static_cast<int>(row);
+                if (row_images) labels.clear();
+                const std::string& material = this_row.reference->material;
                 std::vector<Image> references;
                 for (int k = 0; k < n_roughness; ++k) {
                     set_cell_roughness(scene.spheres[0], roughness[k]);
                     scene.spheres[0].fresnel = ReferenceFresnel{};
                     const bool lit = light_column(k);
-                    gpu.set_fresnel(0, all[row].reference);
+                    gpu.set_fresnel(0, this_row.reference);
                     references.push_back(gpu.render());
                     const int column = sheet_column(SheetCellKind::reference, 0, k, n_roughness);
                     paste(sheet, references.back(), column, y);
                     labels.push_back({y, column, SheetCellKind::reference, material, {}, roughness[k], 0.0, lit});
                 }
                 for (int g = 1; g <= groups; ++g) {
-                    const SphereFresnel& model = *all[row].models[g - 1];
-                    const bool best = all[row].best[g - 1];
+                    const SphereFresnel& model = *this_row.models[g - 1];
+                    const bool best = this_row.best[g - 1];
                     for (int k = 0; k < n_roughness; ++k) {
                         set_cell_roughness(scene.spheres[0], roughness[k]);
                         scene.spheres[0].fresnel = ModelFresnel{model.fresnel, ParameterSource::fit};
@@ -271,9 +317,17 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                                 "a point light beside and behind the sphere (the highlight where the normal is 60 degrees from the view)";
                     }
                 }
-                if (on_row) on_row(row + 1, all.size());
+                if (row_images) write_row_image(sheet, labels, row, request.labels, *library, *run);
+                if (on_row) on_row(row + 1, n_rows);
             }
         });
+    if (request.row_images) {
+        for (const char* pass : {"write sheet.exr", "sheet-error-views", "sheet-labels", "write sheet.png"})
+            graph.skip(pass, "--sheet-rows: each row's image is written by sheet-cells");
+        add_json_file_pass(graph, "sheet.json", "the cells' record", cells.record, run);
+        graph.retain(cells.record);
+        return cells.record;
+    }
     add_image_file_pass(graph, "sheet.exr", cells.image, run);
     // sheet.png: the exposure on the renders, then the error views and their colour bars, then the labels, so that
     // neither changes with the exposure.
@@ -355,7 +409,10 @@ SphereSheet render_sphere_sheet(const Scene& base, const SheetRequest& request, 
     run.exposure = std::exp2(options.exposure_ev);
     run.exr_colour = ExrColour{chromaticities_of(library.converter()), library.converter().space()};
     graph::PassGraph graph;
-    const graph::Handle<Json> record = add_sheet_passes(graph, base, scene, request, &library, &run);
+    const RowLibraries row_libraries = [&options, &base] {
+        return std::make_unique<FresnelLibrary>(options.data_dir, options.ocio, base.space, base.file);
+    };
+    const graph::Handle<Json> record = add_sheet_passes(graph, base, scene, request, &library, &run, row_libraries);
     graph.before_first_gpu_pass([&run] { run.open_gl(); });
     graph.compile();
     graph.execute();

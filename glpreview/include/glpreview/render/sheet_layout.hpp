@@ -23,7 +23,15 @@ struct SheetRequest {
     std::string film = {}, coat = {};  // layers over every row's metal, as metalfit's --film/--coat ("" = none)
     // Called after each row is rendered (rows done, rows in all): `--sheet-progress`, metalfit report's progress.
     std::function<void(std::size_t, std::size_t)> on_row = {};
+    // `--sheet-rows`: each row its own labelled image, rows/<row>.png (row counted from 0), written as the row is done
+    // (its error views on the row's own scale), with sheet.json; no sheet.exr or sheet.png. The sheet's memory is then
+    // one row's, whatever the number of materials: each row's Fresnel is made when the row is rendered and let go after
+    // it (metalfit report's renders).
+    bool row_images = false;
 };
+
+// The image of row `row` in a --sheet-rows sheet's folder: "rows/<row>.png".
+std::string sheet_row_image(std::size_t row);
 
 inline constexpr const char* kBestModel = "best";
 // The model groups a request shows: its models, or {kBestModel} when it names none.
