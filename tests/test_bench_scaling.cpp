@@ -122,6 +122,35 @@ TEST(BenchScaling, ExportAndReportPeakMemoryDoesNotGrowWithTheMaterials) {
               2);
 }
 
+// Issue 32 item 4: with renders on, one glpreview renders every material a row at a time (--sheet-rows) and the
+// report copies each image as its material comes: neither process's peak grows with the materials, and every
+// material's image is in the folder.
+TEST(BenchScaling, ReportRendersPeakMemoryDoesNotGrowWithTheMaterials) {
+    if (!std::filesystem::exists(std::filesystem::path(kMetalfitExe).parent_path() / "glpreview"))
+        GTEST_SKIP() << "glpreview not built";
+    metalfit::test::TempDir dir;
+    const auto r = metalfit::test::run_command(kMetalfitExe,
+                                               "bench --scaling --scaling-sizes 2,24 --scaling-threads 1 "
+                                               "--scaling-models schlick --json --scaling-mode report-renders",
+                                               dir.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const json j = json::parse(r.out);
+    EXPECT_EQ(j.at("mode"), "report-renders");
+    const json& cells = j.at("cells");
+    ASSERT_EQ(cells.size(), 2u);
+    for (const json& c : cells) ASSERT_TRUE(c.contains("renders")) << c;
+    const double small = cells[0].at("peak_mib").get<double>(), large = cells[1].at("peak_mib").get<double>();
+    const double small_renders = cells[0].at("renders").at("peak_mib").get<double>(),
+                 large_renders = cells[1].at("renders").at("peak_mib").get<double>();
+    if (!kAddressSanitizer) {
+        EXPECT_LT(large - small, 3.0) << small << " MiB at 2 materials, " << large << " MiB at 24";
+        EXPECT_LT(large_renders - small_renders, 3.0)
+            << "glpreview: " << small_renders << " MiB at 2 materials, " << large_renders << " MiB at 24";
+    }
+    // 22 more materials, each with its page, its record entry and a 3 × 160 × 160-pixel PNG of tens of kB.
+    EXPECT_GT(cells[1].at("record_mib").get<double>(), cells[0].at("record_mib").get<double>() + 22 * 0.07);
+}
+
 TEST(BenchScaling, BadSizesAndModelsAreUsageErrors) {
     metalfit::test::TempDir dir;
     EXPECT_EQ(metalfit::test::run_command(kMetalfitExe, "bench --scaling --scaling-sizes 0", dir.path()).exit_code, 2);

@@ -316,11 +316,18 @@ TEST_F(Report, RendersOneColumnGroupPerModelOfTheReport) {
     ASSERT_FALSE(renders.contains("skipped")) << renders;
     EXPECT_EQ(renders["models"], Json({"f82-tint", "schlick", "conductor-rgb"}));
     ASSERT_EQ(renders["rows"].size(), 2u);
-    const auto [width, height] = png_size(read_file(dir / "assets" / "renders" / "sheet.png"));
+    // Issue 32: one image per material (glpreview --sheet-rows), named as its page, one row of cells; no sheet.
+    EXPECT_FALSE(fs::exists(dir / "assets" / "renders" / "sheet.png"));
     const int cell = renders["cell"][0].get<int>();
-    EXPECT_EQ(width, (1 + 2 * 3) * cell);
-    EXPECT_EQ(height, 2 * cell);
+    std::set<std::string> images;
     for (std::size_t row = 0; row < 2; ++row) {
+        const std::string material = renders["rows"][row]["material"].get<std::string>();
+        EXPECT_EQ(renders["rows"][row]["image"], "assets/renders/" + material + ".png");
+        const std::string png = read_file(dir / renders["rows"][row]["image"].get<std::string>());
+        images.insert(png);
+        const auto [width, height] = png_size(png);
+        EXPECT_EQ(width, (1 + 2 * 3) * cell) << material;
+        EXPECT_EQ(height, cell) << material;
         const Json& models = renders["rows"][row]["models"];
         ASSERT_EQ(models.size(), 3u);
         std::set<int> columns;
@@ -336,6 +343,8 @@ TEST_F(Report, RendersOneColumnGroupPerModelOfTheReport) {
         }
         EXPECT_EQ(columns.size(), 6u) << "each model's cells have columns of their own";
     }
+    EXPECT_EQ(images.size(), 2u) << "gold's and zinc's renders differ";
+    EXPECT_EQ(files_below(dir / "assets" / "renders").size(), 2u) << "nothing but the materials' images";
     // Each material page finds its row.
     for (const Json& m : report["materials"])
         EXPECT_EQ(renders["rows"][m["render_row"].get<int>()]["material"], m["id"]);
@@ -364,15 +373,16 @@ TEST_F(Report, UserFilesFinishesAndLayersAreRendered) {
         ASSERT_TRUE(m["render_row"].is_number()) << m["id"];
         EXPECT_EQ(report["renders"]["rows"][m["render_row"].get<int>()]["material"], m["id"]);
     }
-    const std::string bare_sheet = read_file(dir / "assets" / "renders" / "sheet.png");
+    for (const Json& row : report["renders"]["rows"])
+        EXPECT_FALSE(read_file(dir / row["image"].get<std::string>()).empty()) << row["material"];
     const fs::path bare = tmp_.path() / "bare", filmed = tmp_.path() / "filmed";
     ASSERT_EQ(run("report Ti --model schlick --renders on -o '" + bare.string() + "'").exit_code, 0);
     r = run("report Ti --film TiO2:50nm --model schlick --renders on -o '" + filmed.string() + "'");
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    ASSERT_EQ(report_json(filmed)["renders"]["rows"].size(), 1u);
-    EXPECT_NE(read_file(bare / "assets" / "renders" / "sheet.png"),
-              read_file(filmed / "assets" / "renders" / "sheet.png"));
-    EXPECT_FALSE(bare_sheet.empty());
+    const Json filmed_rows = report_json(filmed)["renders"]["rows"];
+    ASSERT_EQ(filmed_rows.size(), 1u);
+    EXPECT_NE(read_file(bare / report_json(bare)["renders"]["rows"][0]["image"].get<std::string>()),
+              read_file(filmed / filmed_rows[0]["image"].get<std::string>()));
 }
 
 // Issue 29 item 6: on a terminal the report shows its fits' and renders' progress per material on stderr (the line

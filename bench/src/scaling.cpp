@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -22,6 +23,7 @@
 #include "libfit/models/model.hpp"
 #include "libfit/report/model_costs.hpp"
 #include "libfit/report/report_stream.hpp"
+#include "libfit/report/sphere_renders.hpp"
 #include "metalfit_bench/machine.hpp"
 #include "metalfit_bench/nk_database.hpp"
 #include "metalfit_bench/subprocess.hpp"
@@ -80,6 +82,21 @@ struct ScratchFolder {
     ScratchFolder(const ScratchFolder&) = delete;
     ScratchFolder& operator=(const ScratchFolder&) = delete;
 };
+
+// A material's n and k at its tabulated wavelengths as a CSV table `metalfit` reads back (wavelength in µm, n, k;
+// 17 significant digits: the same doubles). The n and k of a synthetic material share the base table's wavelengths.
+void write_nk_table(const std::filesystem::path& file, const Material& m) {
+    const Spectrum* n = m.index.n.tabulated();
+    const Spectrum* k = m.index.k.tabulated();
+    if (!n || !k || !std::ranges::equal(n->wavelengths(), k->wavelengths()))
+        throw std::runtime_error("scaling: " + m.id + ": n and k are not one table");
+    std::FILE* out = std::fopen(file.c_str(), "w");
+    if (!out) throw std::runtime_error("scaling: cannot write " + file.string());
+    std::fprintf(out, "wl,n,k\n");
+    for (std::size_t i = 0; i < n->size(); ++i)
+        std::fprintf(out, "%.17g,%.17g,%.17g\n", n->wavelengths()[i] / 1000.0, n->values()[i], k->values()[i]);
+    if (std::fclose(out) != 0) throw std::runtime_error("scaling: cannot write " + file.string());
+}
 
 }  // namespace
 
@@ -169,14 +186,42 @@ ScalingCell measure_fits(const Environment& env, const std::vector<std::function
             record_cpu += thread_cpu_seconds() - t0;
         } else {
             // As `metalfit report --all --renders off --model LIST` runs (cmd_report.cpp): the recommendation's
-            // default tolerance and target, the built-in cost table.
+            // default tolerance and target, the built-in cost table. report-renders: `--renders on`, the materials
+            // rendered first by one glpreview (as cmd_report.cpp runs it), from CSV tables of them (glpreview reads
+            // files, not the synthetic materials in this process).
             const Tolerance tolerance;
             MaterialFitRequest report_request = request;
             report_request.constraints.f0_tolerance = tolerance.f0_err;
             const DisplayTransform display = DisplayTransform::create(env.config);
             const CostTable table = builtin_cost_table();
             const CostAndBudget cost = report_costs({}, table, std::nullopt);
-            const SphereRenders renders{std::nullopt, "--renders off"};
+            SphereRenders renders{std::nullopt, "--renders off"};
+            if (mode == ScalingMode::report_renders) {
+                SphereRenderRequest render{glpreview_beside_this_program(),
+                                           env.catalog.data_dir() / "scenes" / "sheet.json",
+                                           {},
+                                           {},
+                                           {},
+                                           {},
+                                           models,
+                                           env.catalog.data_dir(),
+                                           env.config};
+                const std::filesystem::path tables = scratch.path / "tables";
+                std::filesystem::create_directory(tables);
+                for (const std::function<Material()>& load : materials) {
+                    const Material m = load();
+                    render.materials.push_back((tables / (m.id + ".csv")).string());
+                    render.ids.push_back(m.id);
+                    write_nk_table(render.materials.back(), m);
+                }
+                const auto renders0 = std::chrono::steady_clock::now();
+                renders = render_spheres(render, RenderMode::on);
+                cell.renders_wall_s =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - renders0).count();
+                rusage children{};
+                getrusage(RUSAGE_CHILDREN, &children);
+                cell.renders_peak_mib = static_cast<double>(children.ru_maxrss) / 1024.0;  // kB on Linux
+            }
             FitRecordContext report_context = context;
             report_context.constraints = report_request.constraints;
             const ReportInputs inputs{report_context, env.colorimetry, env.converter, display, env.catalog,
@@ -247,6 +292,7 @@ nlohmann::json to_json(const ScalingCell& c) {
                      {"record_mib", c.record_mib},
                      {"window_wait_s", c.window_wait_s},
                      {"source", c.source}};
+    if (c.renders_wall_s > 0) j["renders"] = {{"wall_s", c.renders_wall_s}, {"peak_mib", c.renders_peak_mib}};
     if (c.source == "database")
         j["database"] = {{"folder", c.folder.string()},
                          {"files", c.files},
@@ -273,6 +319,10 @@ ScalingCell scaling_cell_from_json(const nlohmann::json& j) {
     c.record_mib = j.at("record_mib").get<double>();
     c.window_wait_s = j.at("window_wait_s").get<double>();
     c.source = j.value("source", "synthetic");
+    if (const auto r = j.find("renders"); r != j.end()) {
+        c.renders_wall_s = r->at("wall_s").get<double>();
+        c.renders_peak_mib = r->at("peak_mib").get<double>();
+    }
     if (const auto d = j.find("database"); d != j.end()) {
         c.folder = d->at("folder").get<std::string>();
         c.files = d->at("files").get<std::size_t>();
@@ -369,6 +419,13 @@ std::string to_text(const ScalingTable& t) {
     std::snprintf(line, sizeof line, "fit throughput: %.1f materials x models per CPU second (largest 1-thread cell)\n",
                   t.fits_per_cpu_second());
     text += line;
+    for (const ScalingCell& c : t.cells)
+        if (c.renders_wall_s > 0) {
+            std::snprintf(line, sizeof line,
+                          "renders (%zu materials, %d thread%s): glpreview --sheet-rows %.1f s wall, peak %.1f MiB\n",
+                          c.materials, c.threads, c.threads == 1 ? "" : "s", c.renders_wall_s, c.renders_peak_mib);
+            text += line;
+        }
     for (const ScalingCell& c : t.cells)
         if (c.source == "database") {
             std::snprintf(line, sizeof line,

@@ -101,7 +101,7 @@ void run_report(const ReportOptions& o, const GlobalOptions& global) {
         render_request.progress = render_progress.emplace("metalfit report: renders").callback();
         renders = render_spheres(render_request, render_mode);
         render_progress.reset();  // the line cleared before anything else is printed
-        if (!renders.sheet && render_mode == RenderMode::auto_)
+        if (!renders.rows && render_mode == RenderMode::auto_)
             std::cerr << "metalfit: renders skipped: " << renders.skipped << "\n";
     }
 

@@ -30,13 +30,15 @@ std::vector<std::function<Material()>> synthetic_materials(const Catalog& catalo
                                                            std::uint64_t seed = kScalingSeed);
 
 // What a cell runs on the synthetic materials: `fit --all --json` (the record streamed, its text counted), `export
-// --all --format all` (ExportStream into a scratch folder, removed after) or `report --all --renders off`
-// (ReportStream likewise).
-enum class ScalingMode { fit, export_, report };
-inline constexpr EnumNames kScalingModeNames{"--scaling-mode", KnownNamesWording::alternatives,
-                                             std::array{EnumName<ScalingMode>{ScalingMode::fit, "fit"},
-                                                        EnumName<ScalingMode>{ScalingMode::export_, "export"},
-                                                        EnumName<ScalingMode>{ScalingMode::report, "report"}}};
+// --all --format all` (ExportStream into a scratch folder, removed after), `report --all --renders off`
+// (ReportStream likewise) or `report --renders on` (the same, the materials written as CSV tables for glpreview,
+// which renders them first as metalfit report runs it: render_spheres).
+enum class ScalingMode { fit, export_, report, report_renders };
+inline constexpr EnumNames kScalingModeNames{
+    "--scaling-mode", KnownNamesWording::alternatives,
+    std::array{EnumName<ScalingMode>{ScalingMode::fit, "fit"}, EnumName<ScalingMode>{ScalingMode::export_, "export"},
+               EnumName<ScalingMode>{ScalingMode::report, "report"},
+               EnumName<ScalingMode>{ScalingMode::report_renders, "report-renders"}}};
 
 // One cell: what the child process measured.
 struct ScalingCell {
@@ -60,6 +62,10 @@ struct ScalingCell {
     std::size_t files = 0, skipped_not_nk = 0, skipped_unreadable = 0, skipped_outside_visible = 0,
                 skipped_not_metal = 0;
     double scan_cpu_s = 0;
+    // report-renders: glpreview's run (the child process render_spheres starts), wall clock and peak resident memory
+    // (the cell's children's ru_maxrss); peak_mib stays the cell's own process.
+    double renders_wall_s = 0;
+    double renders_peak_mib = 0;
 };
 
 // Fits `materials` synthetic materials with `models` on `threads` threads in this process and measures it

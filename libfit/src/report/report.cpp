@@ -27,14 +27,20 @@ void report_detail::require_chart_libraries() {
                          "it was configured): run scripts/install-deps.sh, then reconfigure and rebuild");
 }
 
-std::vector<ReportFile> report_detail::fixed_report_files(const ReportInputs& inputs) {
+std::vector<ReportFile> report_detail::fixed_report_files() {
     std::vector<ReportFile> files;
     files.push_back({"index.html", report_detail::catalog_page()});
     for (const auto& [name, text] : report_detail::kReportAssets)
         files.push_back({"assets/" + std::string(name), std::string(text)});
     files.push_back({"assets/three.js", three_script()});
-    if (inputs.renders.sheet) files.push_back({"assets/renders/sheet.png", inputs.renders.sheet->png});
     return files;
+}
+
+std::optional<ReportFile> report_detail::render_file(const MaterialFit& fit, const ReportInputs& inputs) {
+    if (!inputs.renders.rows) return std::nullopt;
+    const std::optional<std::size_t> row = inputs.renders.rows->row_of(fit.material.id);
+    if (!row) return std::nullopt;
+    return ReportFile{report_detail::render_image_file(fit.material.id), inputs.renders.rows->image_bytes(*row)};
 }
 
 std::vector<ReportFile> report_files(const std::vector<MaterialFit>& fits, const ReportInputs& inputs) {
@@ -48,9 +54,11 @@ std::vector<ReportFile> report_files(const std::vector<MaterialFit>& fits, const
                 throw UsageError("report: materials " + fits[j].material.id + " and " + fits[i].material.id +
                                  " would share one page (" + report_detail::material_page_file(fits[i].material) + ")");
     const std::string record = report_record(fits, inputs).dump(1) + "\n";
-    std::vector<ReportFile> files = report_detail::fixed_report_files(inputs);
-    for (const MaterialFit& fit : fits)
+    std::vector<ReportFile> files = report_detail::fixed_report_files();
+    for (const MaterialFit& fit : fits) {
         files.push_back({report_detail::material_page_file(fit.material), report_detail::material_page(fit.material)});
+        if (auto render = report_detail::render_file(fit, inputs)) files.push_back(std::move(*render));
+    }
     files.push_back({"report.json", record});
     // The same bytes as report.json, as a script: pages opened from file:// cannot fetch a JSON file.
     files.push_back({"assets/report-data.js", "metalfitReport(" + record + ");\n"});

@@ -36,4 +36,8 @@ std::string material_page_file(const Material& material) {
     return "materials/" + path_component(material.id) + ".html";
 }
 
+std::string render_image_file(const std::string& material_id) {
+    return "assets/renders/" + path_component(material_id) + ".png";
+}
+
 }  // namespace metalfit::report_detail

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -25,8 +26,10 @@ nlohmann::ordered_json report_record_without_materials(const CatalogSummary& sum
 
 // UsageError when this libfit was built without the chart libraries.
 void require_chart_libraries();
-// index.html, the chart libraries, the page script and style, three.js and the renders' sheet: every file but the
-// material pages, report.json and assets/report-data.js.
-std::vector<ReportFile> fixed_report_files(const ReportInputs& inputs);
+// index.html, the chart libraries, the page script and style and three.js: every file but the material pages, their
+// renders, report.json and assets/report-data.js.
+std::vector<ReportFile> fixed_report_files();
+// A material's renders (its row of glpreview's sheet, render_image_file), when glpreview rendered it.
+std::optional<ReportFile> render_file(const MaterialFit& fit, const ReportInputs& inputs);
 
 }  // namespace metalfit::report_detail

@@ -346,11 +346,8 @@ std::shared_ptr<const ReportSwatches> report_swatches(const ReportInputs& in) {
 
 Json material_record(const MaterialFit& fit, const ReportInputs& in, const ReportSwatches& swatches) {
     std::optional<int> row;
-    if (in.renders.sheet) {
-        const auto& rows = in.renders.sheet->materials;
-        if (const auto it = std::find(rows.begin(), rows.end(), fit.material.id); it != rows.end())
-            row = static_cast<int>(it - rows.begin());
-    }
+    if (in.renders.rows)
+        if (const auto r = in.renders.rows->row_of(fit.material.id)) row = static_cast<int>(*r);
     return material_json(fit, in, swatches, row);
 }
 
@@ -384,12 +381,11 @@ Json report_record_without_materials(const CatalogSummary& summary, const Report
     Json materials = Json::array();  // report_record fills them in, or ReportStream writes them one by one
 
     Json renders;
-    if (in.renders.sheet) {
-        const SphereSheetImage& s = *in.renders.sheet;
+    if (in.renders.rows) {
+        const SphereRowImages& s = *in.renders.rows;
         renders = {
-            {"image", "assets/renders/sheet.png"},
-            {"by", "glpreview --sheet --sheet-models (data/scenes/sheet.json): distance impostor in a procedural room, "
-                   "mirror spheres; labels drawn by glpreview"},
+            {"by", "glpreview --sheet --sheet-models --sheet-rows (data/scenes/sheet.json): distance impostor in a "
+                   "procedural room, mirror spheres; one image per material, labels drawn by glpreview"},
             {"cell", {s.cell_width, s.cell_height}},
             {"columns", {"reference (exact Fresnel)", "model", "model / reference − 1 (false colour, log scale)"}},
             {"models", s.models},
@@ -406,7 +402,8 @@ Json report_record_without_materials(const CatalogSummary& summary, const Report
                                      {"image_rmse", c.image_rmse}});
                 models.push_back({{"model", s.models[m]}, {"cells", cells}});
             }
-            renders["rows"].push_back({{"material", s.materials[r]}, {"models", models}});
+            renders["rows"].push_back(
+                {{"material", s.materials[r]}, {"image", render_image_file(s.materials[r])}, {"models", models}});
         }
     } else {
         renders = {{"skipped", in.renders.skipped}};

@@ -94,6 +94,7 @@ void ReportStream::add(const MaterialFit& fit) {
                   s.dir / "report.json");
     ++s.materials;
     s.folder.write(page, report_detail::material_page(fit.material));
+    if (const auto render = report_detail::render_file(fit, inputs)) s.folder.write(render->path, render->contents);
 }
 
 void ReportStream::finish() {
@@ -124,7 +125,7 @@ void ReportStream::finish() {
     join("report.json", head, tail);
     join("assets/report-data.js", "metalfitReport(" + head, tail + ");\n");
     std::filesystem::remove(s.scratch_path);
-    for (const ReportFile& f : report_detail::fixed_report_files(s.inputs)) s.folder.write(f.path, f.contents);
+    for (const ReportFile& f : report_detail::fixed_report_files()) s.folder.write(f.path, f.contents);
     s.folder.commit();
 }
 

@@ -1,5 +1,5 @@
-// The report's sphere renders: glpreview --sheet run as a program (posix_spawn), its sheet.png and sheet.json read
-// back from a temporary folder.
+// The report's sphere renders: glpreview --sheet --sheet-rows run as a program (posix_spawn), its sheet.json read
+// back and its row images left in a temporary folder until the report copies them.
 #include "libfit/report/sphere_renders.hpp"
 
 #include <fcntl.h>
@@ -41,12 +41,15 @@ std::string last_line(const std::string& text) {
     return last;
 }
 
+}  // namespace
+
 // glpreview's scratch folder under $TMPDIR, named and locked as the writers' staging folders are
 // (".metalfit-renders.metalfit-staging.<pid>.<random>"), so that one a killed report left is removed by the next.
-struct TemporaryFolder {
+class RenderScratchFolder {
+public:
     fs::path path;
     int fd = -1;
-    TemporaryFolder() {
+    RenderScratchFolder() {
         const fs::path beside = fs::temp_directory_path() / "metalfit-renders";
         int error = 0;
         const std::optional<fs::path> made = detail::make_staging_folder_beside(beside, error);
@@ -54,14 +57,16 @@ struct TemporaryFolder {
         path = *made;
         fd = detail::lock_staging_folder(path);
     }
-    ~TemporaryFolder() {
+    ~RenderScratchFolder() {
         std::error_code ec;
         fs::remove_all(path, ec);
         if (fd >= 0) ::close(fd);
     }
-    TemporaryFolder(const TemporaryFolder&) = delete;
-    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+    RenderScratchFolder(const RenderScratchFolder&) = delete;
+    RenderScratchFolder& operator=(const RenderScratchFolder&) = delete;
 };
+
+namespace {
 
 // Reads glpreview's stdout until it ends, passing each "sheet-progress DONE TOTAL" line on; closes `fd`.
 void relay_progress(int fd, const std::function<void(std::size_t, std::size_t)>& progress) {
@@ -81,19 +86,20 @@ void relay_progress(int fd, const std::function<void(std::size_t, std::size_t)>&
     ::close(fd);
 }
 
-// The sheet, or throws std::runtime_error with the reason.
-SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
+// The row images, or throws std::runtime_error with the reason.
+SphereRowImages run_glpreview(const SphereRenderRequest& r) {
     if (r.glpreview.empty() || !fs::exists(r.glpreview))
         throw std::runtime_error("glpreview was not built beside metalfit");
     if (r.materials.empty()) throw std::runtime_error("no material to render");
     if (r.models.empty()) throw std::runtime_error("no model to render");
-    const TemporaryFolder folder;
+    auto scratch = std::make_shared<const RenderScratchFolder>();
+    const RenderScratchFolder& folder = *scratch;
     const std::string size = std::to_string(r.cell_size) + "x" + std::to_string(r.cell_size);
     std::vector<std::string> args{r.glpreview.string(), r.scene.string(), "--sheet", join(r.materials, ","),
                                   "--sheet-models", join(r.models, ","), "--size", size,
                                   // a folder inside the scratch folder: glpreview's own staging then lives there too
                                   "-o", (folder.path / "sheet").string(), "--data-dir", r.data_dir.string(),
-                                  "--ocio-config", r.ocio.path.string()};
+                                  "--ocio-config", r.ocio.path.string(), "--sheet-rows"};
     if (!r.film.empty()) args.insert(args.end(), {"--sheet-film", r.film});
     if (!r.coat.empty()) args.insert(args.end(), {"--sheet-coat", r.coat});
     if (r.progress) args.emplace_back("--sheet-progress");
@@ -128,8 +134,10 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
         const std::string why = last_line(read_bytes(log));
         throw std::runtime_error(why.empty() ? "glpreview failed" : why);
     }
-    SphereSheetImage sheet;
-    sheet.png = read_bytes(folder.path / "sheet" / "sheet.png");
+    SphereRowImages sheet;
+    sheet.scratch = scratch;
+    for (std::size_t row = 0; row < r.materials.size(); ++row)
+        sheet.images.push_back(folder.path / "sheet" / "rows" / (std::to_string(row) + ".png"));
     const auto record = nlohmann::json::parse(read_bytes(folder.path / "sheet" / "sheet.json"));
     // Row r is the r-th material asked for (glpreview names it by its catalog name); its entries go by model, then
     // roughness.
@@ -146,9 +154,12 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
             {entry.at("roughness").get<double>(), columns.at("reference").get<int>(), columns.at("model").get<int>(),
              columns.at("difference").get<int>(), entry.at("image_rmse_model_vs_reference").get<double>()});
     }
-    bool complete = !sheet.png.empty();
-    for (const auto& row : sheet.cells)
-        for (const auto& model : row) complete = complete && !model.empty();
+    bool complete = true;
+    for (std::size_t row = 0; row < sheet.cells.size(); ++row) {
+        std::error_code ec;
+        complete = complete && fs::is_regular_file(sheet.images[row], ec);
+        for (const auto& model : sheet.cells[row]) complete = complete && !model.empty();
+    }
     if (!complete) throw std::runtime_error("glpreview wrote no complete sheet");
     sheet.cell_width = sheet.cell_height = r.cell_size;
     return sheet;
@@ -157,6 +168,21 @@ SphereSheetImage run_glpreview(const SphereRenderRequest& r) {
 }  // namespace
 
 RenderMode parse_render_mode(const std::string& text) { return kRenderModeNames.parse(text); }
+
+std::optional<std::size_t> SphereRowImages::row_of(const std::string& material) const {
+    const auto it = std::find(materials.begin(), materials.end(), material);
+    if (it == materials.end()) return std::nullopt;
+    return static_cast<std::size_t>(it - materials.begin());
+}
+
+std::string SphereRowImages::image_bytes(std::size_t row) const {
+    const fs::path& file = images.at(row);
+    std::ifstream in(file, std::ios::binary);
+    std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (!in.good() && !in.eof()) throw InputError(InputLocation(file), "cannot read glpreview's render");
+    if (bytes.empty()) throw InputError(InputLocation(file), "glpreview's render is empty");
+    return bytes;
+}
 
 fs::path glpreview_beside_this_program() {
     std::error_code ec;

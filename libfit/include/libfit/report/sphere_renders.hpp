@@ -1,10 +1,11 @@
-// The sphere renders of a report: glpreview's sphere sheet (one row per material; per model of the report a column
-// group: reference | model | its signed error view), made by running the glpreview executable, so that libfit and the
-// metalfit CLI never link OpenGL (docs/decisions.md).
+// The sphere renders of a report: glpreview's sphere sheet, one image per material (glpreview --sheet --sheet-rows: a
+// row reference | model | its signed error view per model of the report), made by running the glpreview executable
+// once for every material, so that libfit and the metalfit CLI never link OpenGL (docs/decisions.md).
 #pragma once
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,17 +29,27 @@ struct SphereSheetCells {
     double image_rmse = 0;  // of the model cell against the reference cell (linear radiance)
 };
 
-struct SphereSheetImage {
-    std::string png;                                                // the bytes of glpreview's sheet.png (labelled)
+// Where glpreview left the row images until the report is written (removed when the last copy of the renders goes).
+class RenderScratchFolder;
+
+// The renders: row r shows materials[r], in its own image.
+struct SphereRowImages {
+    std::shared_ptr<const RenderScratchFolder> scratch;
+    std::vector<std::filesystem::path> images;                      // images[r]: row r's labelled PNG, in `scratch`
     std::vector<std::string> materials;                             // row r shows materials[r] ...
     std::vector<std::string> models;                                // ... with a column group per model, in this order
     std::vector<std::vector<std::vector<SphereSheetCells>>> cells;  // cells[r][m]: row r, models[m], per roughness
     int cell_width = 0, cell_height = 0;
+
+    // The row of a material (by its id), if it has one.
+    std::optional<std::size_t> row_of(const std::string& material) const;
+    // The bytes of row r's PNG (InputError naming the file when it cannot be read).
+    std::string image_bytes(std::size_t row) const;
 };
 
-// The sheet, or why there is none ("renders skipped: <reason>" on the pages).
+// The row images, or why there are none ("renders skipped: <reason>" on the pages).
 struct SphereRenders {
-    std::optional<SphereSheetImage> sheet;
+    std::optional<SphereRowImages> rows;
     std::string skipped;
 };
 
@@ -59,7 +70,9 @@ struct SphereRenderRequest {
 // glpreview in the directory of the running executable (empty when it is not there).
 std::filesystem::path glpreview_beside_this_program();
 
-// Runs glpreview --sheet MATERIALS --sheet-models MODELS (the scene sphere's roughness: the mirror of sheet.json) in a temporary folder (removed afterwards). `off`: skipped ("--renders off"); `auto`:
+// Runs glpreview --sheet MATERIALS --sheet-models MODELS --sheet-rows (the scene sphere's roughness: the mirror of
+// sheet.json) in a temporary folder, removed when the renders go (the row images stay on disk, not in memory, until
+// the report copies each into its folder). `off`: skipped ("--renders off"); `auto`:
 // any failure (no glpreview, no EGL context, ...) becomes the skipped reason; `on`: a failure throws InputError
 // naming glpreview and its last line of error output.
 SphereRenders render_spheres(const SphereRenderRequest& request, RenderMode mode);

@@ -372,12 +372,12 @@
     else if (mat.render_row == null) renders.append(el('p', { class: 'renders-skipped', text: 'renders skipped: glpreview rendered no row for ' + mat.id }));
     else {
       // Per model of the report one render: reference | model | its signed error (false colour), one line per roughness, each cell
-      // cropped from the one sheet image (glpreview drew its labels in it).
+      // cropped from the material's row image (glpreview drew its labels in it).
       const r = report.renders, row = r.rows[mat.render_row];
       const [w, h] = r.cell;
       const crop = (column, alt, id) => el('div', { class: 'sheet-crop', style: `width:${w}px;height:${h}px` },
-        el('img', { class: 'render-cell', ...(id ? { id } : {}), src: '../' + r.image, alt,
-          style: `margin-left:${-column * w}px;margin-top:${-mat.render_row * h}px` }));
+        el('img', { class: 'render-cell', ...(id ? { id } : {}), src: '../' + row.image, alt,
+          style: `margin-left:${-column * w}px` }));
       let first = true;
       for (const m of row.models) {
         const labels = [r.columns[0], m.model, r.columns[2]];
