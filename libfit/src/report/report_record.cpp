@@ -14,6 +14,7 @@
 #include "libfit/base/version.hpp"
 #include "libfit/export/consumer_curve.hpp"
 #include "libfit/fit/catalog_summary.hpp"
+#include "libfit/fit/renderer_film_scores.hpp"
 #include "libfit/io/layer_stack.hpp"
 #include "libfit/optics/fresnel.hpp"
 #include "libfit/optics/stack_reflectance.hpp"
@@ -242,6 +243,18 @@ Json consumers_json(const MaterialFit& fit, const Model& model) {
     return out;
 }
 
+// What each renderer's thin film draws for a filmed material at its thickness against the stack: the record `metalfit
+// table METAL --film FILM --thickness D --renderers --format json` writes (the same function, with the report's
+// colour and error settings); under a coat, why it is not scored (docs/colour.md, "What renderers draw for a thin
+// film").
+Json renderer_film_json(const Material& material, const ReportInputs& in) {
+    const LayerStack& layers = *material.layers;
+    if (layers.coat) return {{"not_scored", std::string(kRendererFilmUnderCoat)}};
+    return renderer_film_scores_json(
+        renderer_film_scores({material, layers.film->material, {layers.film->thickness_nm}, in.fit.error},
+                             in.colorimetry, in.converter, in.fit.spectral));
+}
+
 Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatches& swatches,
                    std::optional<int> render_row) {
     const Material& material = fit.material;
@@ -294,26 +307,29 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
     Json out_of_gamut = Json::array();
     for (int c = 0; c < 3; ++c)
         if (fit.F0[c] > 1.0 || fit.F0[c] < 0.0) out_of_gamut.push_back(kChannelNames[c]);
-    return {{"id", material.id},
-            {"name", material.name},
-            {"source", material.source},
-            {"page", report_detail::material_page_file(material)},
-            {"provenance", provenance_json(fit, in)},
-            {"warnings", record_messages(material.warnings, material.provenance.file, in.fit.data_dir)},
-            {"F0", rgb_json(f0)},
-            {"F82", rgb_json(f82)},
-            {"out_of_gamut_F0", out_of_gamut},
-            {"swatch", {{"F0", swatch[0]}, {"F82", swatch[1]}}},
-            {"nk", nk_json(material, in.fit.spectral)},
-            {"spectral_reflectance", spectral_reflectance_json(material, in.fit.spectral)},
-            {"curves",
-             {{"theta_deg", theta}, {"mu", mu_json}, {"exact", channels_json(exact)}, {"stripe", swatches(exact)}}},
-            {"lut", channels_json(lut)},
-            {"models", models},
-            {"data_sources", sources_json(fit, in)},
-            {"budget_choice", choice},
-            {"recommendation", recommendation},
-            {"render_row", render_row ? Json(*render_row) : Json(nullptr)}};
+    Json entry = {
+        {"id", material.id},
+        {"name", material.name},
+        {"source", material.source},
+        {"page", report_detail::material_page_file(material)},
+        {"provenance", provenance_json(fit, in)},
+        {"warnings", record_messages(material.warnings, material.provenance.file, in.fit.data_dir)},
+        {"F0", rgb_json(f0)},
+        {"F82", rgb_json(f82)},
+        {"out_of_gamut_F0", out_of_gamut},
+        {"swatch", {{"F0", swatch[0]}, {"F82", swatch[1]}}},
+        {"nk", nk_json(material, in.fit.spectral)},
+        {"spectral_reflectance", spectral_reflectance_json(material, in.fit.spectral)},
+        {"curves",
+         {{"theta_deg", theta}, {"mu", mu_json}, {"exact", channels_json(exact)}, {"stripe", swatches(exact)}}},
+        {"lut", channels_json(lut)},
+        {"models", models},
+        {"data_sources", sources_json(fit, in)},
+        {"budget_choice", choice},
+        {"recommendation", recommendation},
+        {"render_row", render_row ? Json(*render_row) : Json(nullptr)}};
+    if (material.layers && material.layers->film) entry["renderer_film"] = renderer_film_json(material, in);
+    return entry;
 }
 
 // The models not dominated in (cost, median worst-channel rel_rms): no other model is at most as costly and at
