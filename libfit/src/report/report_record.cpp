@@ -307,29 +307,26 @@ Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatche
     Json out_of_gamut = Json::array();
     for (int c = 0; c < 3; ++c)
         if (fit.F0[c] > 1.0 || fit.F0[c] < 0.0) out_of_gamut.push_back(kChannelNames[c]);
-    Json entry = {
-        {"id", material.id},
-        {"name", material.name},
-        {"source", material.source},
-        {"page", report_detail::material_page_file(material)},
-        {"provenance", provenance_json(fit, in)},
-        {"warnings", record_messages(material.warnings, material.provenance.file, in.fit.data_dir)},
-        {"F0", rgb_json(f0)},
-        {"F82", rgb_json(f82)},
-        {"out_of_gamut_F0", out_of_gamut},
-        {"swatch", {{"F0", swatch[0]}, {"F82", swatch[1]}}},
-        {"nk", nk_json(material, in.fit.spectral)},
-        {"spectral_reflectance", spectral_reflectance_json(material, in.fit.spectral)},
-        {"curves",
-         {{"theta_deg", theta}, {"mu", mu_json}, {"exact", channels_json(exact)}, {"stripe", swatches(exact)}}},
-        {"lut", channels_json(lut)},
-        {"models", models},
-        {"data_sources", sources_json(fit, in)},
-        {"budget_choice", choice},
-        {"recommendation", recommendation},
-        {"render_row", render_row ? Json(*render_row) : Json(nullptr)}};
-    if (material.layers && material.layers->film) entry["renderer_film"] = renderer_film_json(material, in);
-    return entry;
+    return {{"id", material.id},
+            {"name", material.name},
+            {"source", material.source},
+            {"page", report_detail::material_page_file(material)},
+            {"provenance", provenance_json(fit, in)},
+            {"warnings", record_messages(material.warnings, material.provenance.file, in.fit.data_dir)},
+            {"F0", rgb_json(f0)},
+            {"F82", rgb_json(f82)},
+            {"out_of_gamut_F0", out_of_gamut},
+            {"swatch", {{"F0", swatch[0]}, {"F82", swatch[1]}}},
+            {"nk", nk_json(material, in.fit.spectral)},
+            {"spectral_reflectance", spectral_reflectance_json(material, in.fit.spectral)},
+            {"curves",
+             {{"theta_deg", theta}, {"mu", mu_json}, {"exact", channels_json(exact)}, {"stripe", swatches(exact)}}},
+            {"lut", channels_json(lut)},
+            {"models", models},
+            {"data_sources", sources_json(fit, in)},
+            {"budget_choice", choice},
+            {"recommendation", recommendation},
+            {"render_row", render_row ? Json(*render_row) : Json(nullptr)}};
 }
 
 // The models not dominated in (cost, median worst-channel rel_rms): no other model is at most as costly and at
@@ -367,7 +364,9 @@ Json material_record(const MaterialFit& fit, const ReportInputs& in, const Repor
         if (const auto it = std::find(rows.begin(), rows.end(), fit.material.id); it != rows.end())
             row = static_cast<int>(it - rows.begin());
     }
-    return material_json(fit, in, swatches, row);
+    Json entry = material_json(fit, in, swatches, row);
+    if (fit.material.layers && fit.material.layers->film) entry["renderer_film"] = renderer_film_json(fit.material, in);
+    return entry;
 }
 
 Json report_record_without_materials(const CatalogSummary& summary, const ReportInputs& in) {
