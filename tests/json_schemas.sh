@@ -2,7 +2,7 @@
 # ctest json_schemas.records: writes every kind of JSON record
 # metalfit writes (fit --json plain, pinned, with a budget and of a layered material; metalfit_export.json of the catalog export and of two
 # exports merged into one folder, and of a coated metal; openpbr/*.json; the glTF extras; show --json (and of a named finish); table
-# --format json (bare and layered) and physicallybased; the oxide colour chart and its renderer scores; report.json (bare and layered);
+# --format json (bare and layered) and physicallybased; the oxide colour chart and its renderer scores; report.json (bare, filmed with the renderers' scores, a film under a coat);
 # bench --json; glpreview's metrics.json when glpreview is given) and validates each against schemas/ with Ajv
 # (json_schemas.mjs); then has json_schemas.mjs --broken break each record in many ways and checks that every broken
 # copy is refused (the schemas can fail).
@@ -36,12 +36,14 @@ export OCIO=
 "$metalfit" table --format physicallybased -o "$dir/physicallybased.json"
 "$metalfit" report Au,Cu --renders off -o "$dir/report" > /dev/null
 "$metalfit" report Ti --film TiO2:80nm --model f82-tint --renders off -o "$dir/report-layered" > /dev/null
+# A film under a coat: the renderers' scores replaced by why they are not scored.
+"$metalfit" report Ti --film TiO2:80nm --coat 1.5 --model schlick --renders off -o "$dir/report-coated-film" > /dev/null
 "$metalfit" export Au --coat 1.5 --model f82-tint --format json,openpbr,gltf -o "$dir/ex-layered" 2>/dev/null
 # The GPU sections of bench need glpreview: without one they are skipped, which the schema describes too.
 "$metalfit" bench --quick --json --glpreview "$dir/no-glpreview" -o "$dir/bench.json" 2>/dev/null
 # The catalog export of the build (every material and model) and its OpenPBR and glTF files of the materials a…
 files=("$dir"/*.json "$dir/ex/metalfit_export.json" "$dir"/ex/openpbr/*.json "$dir"/ex/gltf/*.gltf "$dir/report/report.json"
-       "$dir/report-layered/report.json" "$dir/ex-layered/metalfit_export.json" "$dir"/ex-layered/openpbr/*.json
+       "$dir/report-layered/report.json" "$dir/report-coated-film/report.json" "$dir/ex-layered/metalfit_export.json" "$dir"/ex-layered/openpbr/*.json
        "$dir/ex-studio/metalfit_export.json" "$dir"/ex-studio/openpbr/*.json "$dir"/ex-studio/gltf/*.gltf
        "$catalog_export/metalfit_export.json" "$catalog_export"/openpbr/metalfit_a*.json "$catalog_export"/gltf/metalfit_a*.gltf)
 if [ "$glpreview" != - ]; then

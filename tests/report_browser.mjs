@@ -5,14 +5,17 @@
 // the interactive sphere (viewer.js) is driven and its canvas read back at known μ (checkViewer).
 // A screenshot of each page type goes into the output folder.
 //
-// Usage: node tests/report_browser.mjs REPORT_DIR SCREENSHOT_DIR [CHROMIUM]
+// Reports of a filmed material given after CHROMIUM: its page shows, beside its stack, what each renderer's thin film
+// draws (report.json's renderer_film), or why it is not scored (checkFilmedPages).
+//
+// Usage: node tests/report_browser.mjs REPORT_DIR SCREENSHOT_DIR [CHROMIUM [FILMED_REPORT_DIR…]]
 import { chromium } from 'playwright-core';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 
-const [reportDir, shotDir, executable = '/usr/bin/chromium'] = process.argv.slice(2);
+const [reportDir, shotDir, executable = '/usr/bin/chromium', ...filmedDirs] = process.argv.slice(2);
 if (!reportDir || !shotDir) {
   console.error('usage: node tests/report_browser.mjs REPORT_DIR SCREENSHOT_DIR [CHROMIUM]');
   process.exit(2);
@@ -38,7 +41,7 @@ const context = await chromium.launchPersistentContext(profile, {
   offline: true,
 });
 
-async function openPage(relative, label) {
+async function openPage(relative, label, dir = reportDir) {
   const page = await context.newPage();
   const errors = [];
   const network = [];
@@ -46,7 +49,7 @@ async function openPage(relative, label) {
   page.on('pageerror', (e) => errors.push(String(e)));
   page.on('request', (r) => { if (!r.url().startsWith('file://')) network.push(r.url()); });
   await page.route((url) => url.protocol !== 'file:', (route) => route.abort());
-  const url = pathToFileURL(path.join(reportDir, relative)).href;
+  const url = pathToFileURL(path.join(dir, relative)).href;
   await page.goto(url, { waitUntil: 'load' });
   await page.waitForFunction(() => document.body.dataset.rendered !== undefined, null, { timeout: 60000 });
   check(await page.evaluate(() => document.body.dataset.rendered) === 'true', `${label}: the page script did not finish`);
@@ -301,6 +304,41 @@ for (const m of report.materials) {
   await checkViewer(page, m);
   await page.screenshot({ path: path.join(shotDir, `material-${m.id}.png`), fullPage: true });
   await page.close();
+}
+
+// A filmed material's page: beside its stack, the table of what each renderer's thin film draws, one row per renderer
+// after the exact stack's with report.json's figures (ΔE2000 mean and max to 2 decimals, in its order); under a coat
+// the reason in its place and no table.
+for (const dir of filmedDirs) {
+  const filmed = JSON.parse(fs.readFileSync(path.join(dir, 'report.json'), 'utf8'));
+  for (const m of filmed.materials) {
+    const label = `${path.basename(dir)}/${m.page}`;
+    const r = m.renderer_film;
+    check(r !== undefined, `${label}: report.json has no renderer_film for a filmed material`);
+    if (r === undefined) continue;
+    const { page } = await openPage(m.page, label, dir);
+    const shown = await page.evaluate(() => ({
+      rows: [...document.querySelectorAll('#renderer-film-table tbody tr')].map((tr) => [...tr.children].map((td) => td.textContent)),
+      reason: document.querySelector('.renderer-film-not-scored')?.textContent ?? null,
+      headings: [...document.querySelectorAll('main section h2')].map((h) => h.textContent),
+    }));
+    const at = shown.headings.indexOf('What renderers draw for this film');
+    check(at > shown.headings.indexOf('Provenance'), `${label}: no renderers' section after the provenance (the stack): ${shown.headings.join(' | ')}`);
+    if (r.not_scored) {
+      check(shown.reason === r.not_scored && shown.rows.length === 0, `${label}: not "${r.not_scored}" alone but ${JSON.stringify(shown)}`);
+    } else {
+      const scores = r.rows[0].scores;
+      check(shown.rows.length === scores.length + 1 && shown.rows[0][0] === 'exact stack', `${label}: ${shown.rows.length} rows, not the stack's and ${scores.length} renderers'`);
+      scores.forEach((s, i) => {
+        const row = shown.rows[i + 1] || [];
+        const expected = [s.renderer, s.metrics.de2000_mean.toFixed(2), s.metrics.de2000_max.toFixed(2)];
+        const got = [row[0], row[4], row[5]];
+        check(JSON.stringify(got) === JSON.stringify(expected), `${label}: row ${i + 1} shows ${got}, report.json ${expected}`);
+      });
+    }
+    await page.screenshot({ path: path.join(shotDir, `filmed-${path.basename(dir)}-${m.id}.png`), fullPage: true });
+    await page.close();
+  }
 }
 
 // The model checks are not vacuous: some model's error shows in the viewer.

@@ -1,7 +1,7 @@
 // End-to-end tests of `metalfit table METAL --film FILM --thickness … --renderers` (docs/cli.md, the oxide colour
 // chart; docs/colour.md, "What renderers draw for a thin film"): the truth it scores against is `show --film`'s stack,
-// the rows are one per thickness and renderer, d = 0 is the bare metal's conductor-rgb fit for MaterialX, and bad
-// combinations are one line, exit 2, nothing written.
+// the rows are one per thickness and renderer, d = 0 is the bare metal's conductor-rgb fit for MaterialX, bad
+// combinations are one line, exit 2, nothing written, and `report --film` carries the same scores per material.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -83,6 +83,46 @@ TEST_F(CliRendererScores, BadCombinationsAreOneLineAndExit2) {
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
         EXPECT_TRUE(Contains(r.err, "--renderers")) << r.err;
         EXPECT_TRUE(r.out.empty()) << r.out;
+    }
+}
+
+// A filmed material's report carries, beside its stack, what `table --renderers` scores at the film's thickness: the
+// record the table writes for that metal and thickness, value for value (each material its own, not the first's);
+// under a coat the reason instead of scores; a bare or only coated material none.
+TEST_F(CliRendererScores, AFilmedMaterialsReportCarriesTheTablesScoresAtItsThickness) {
+    const auto folder = [this](const char* name) { return "'" + (scratch_.path() / name).string() + "'"; };
+    const Result report = run("report Ti,Au --film TiO2:80nm --model schlick --renders off -o " + folder("filmed"));
+    ASSERT_EQ(report.exit_code, 0) << report.err;
+    const auto record = nlohmann::json::parse(metalfit::test::read_file(scratch_.path() / "filmed/report.json"));
+    ASSERT_EQ(record["materials"].size(), 2u);
+    for (const auto& material : record["materials"]) {
+        const std::string id = material["id"].get<std::string>();
+        const Result table = run("table " + id + " --film TiO2 --thickness 80nm --renderers --format json");
+        ASSERT_EQ(table.exit_code, 0) << table.err;
+        const auto scores = nlohmann::json::parse(table.out);
+        ASSERT_TRUE(material.contains("renderer_film")) << id;
+        const auto& shown = material["renderer_film"];
+        EXPECT_EQ(shown["metal"], id);
+        ASSERT_EQ(shown["rows"].size(), 1u) << id;
+        EXPECT_EQ(shown["rows"][0]["thickness_nm"].get<double>(), 80.0);
+        EXPECT_EQ(shown, scores) << id << ": the report's scores are not the table's";
+    }
+    EXPECT_NE(record["materials"][0]["renderer_film"]["rows"], record["materials"][1]["renderer_film"]["rows"]);
+
+    const Result coated =
+        run("report Ti --film TiO2:80nm --coat 1.5 --model schlick --renders off -o " + folder("coated"));
+    ASSERT_EQ(coated.exit_code, 0) << coated.err;
+    const auto under_coat = nlohmann::json::parse(metalfit::test::read_file(scratch_.path() / "coated/report.json"));
+    const auto& not_scored = under_coat["materials"][0]["renderer_film"];
+    ASSERT_EQ(not_scored.size(), 1u) << not_scored;
+    EXPECT_TRUE(Contains(not_scored["not_scored"].get<std::string>(), "coat")) << not_scored;
+
+    for (const std::string layers : {"--coat 1.5", ""}) {
+        const std::string args = "report Ti " + layers + " --model schlick --renders off -o " + folder("other");
+        const Result r = run(args);
+        ASSERT_EQ(r.exit_code, 0) << args << ": " << r.err;
+        const auto other = nlohmann::json::parse(metalfit::test::read_file(scratch_.path() / "other/report.json"));
+        EXPECT_FALSE(other["materials"][0].contains("renderer_film")) << args;
     }
 }
 

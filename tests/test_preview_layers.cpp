@@ -4,8 +4,12 @@
 // renderer's own CPU reference.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "glpreview/gl/gl_context.hpp"
@@ -101,14 +105,88 @@ TEST(PreviewLayers, BadLayersNameTheirKey) {
     };
     EXPECT_TRUE(test::Contains(parse_error(R"({"center": [0, 1, 0], "film": "TiO2:80"})"),
                                "bad.json: spheres[0].film: --film TiO2:80: give the thickness's unit"));
-    EXPECT_TRUE(test::Contains(parse_error(R"({"center": [0, 1, 0], "film": "oxide.csv:80nm"})"),
-                               "bad.json: spheres[0].film: a file is not read from a scene"));
     EXPECT_TRUE(test::Contains(parse_error(R"({"center": [0, 1, 0], "coat": 1.5})"),
                                "bad.json: spheres[0].coat: expected a string"));
     const Scene good =
         parse_scene(R"({"spheres": [{"center": [0, 1, 0], "film": "2.2:120nm", "coat": "1.5"}]})", "s.json");
     EXPECT_EQ(good.spheres[0].film, "2.2:120nm");
     EXPECT_EQ(good.spheres[0].coat, "1.5");
+}
+
+// A film's or coat's file, beside the scene: read through metalfit's --film FILE importer, so a copy of a database film
+// gives the named film's LUT bit for bit; its provenance names the file as the scene gave it, not the private link it
+// is read through; a missing file, a link leading out of the scene's folder and a FIFO are refused naming the key.
+TEST(PreviewLayers, FilmAndCoatFilesBesideTheSceneAreTheDatabasesLayers) {
+    namespace fs = std::filesystem;
+    test::TempDir top;
+    const fs::path folder = top.path() / "scene", outside = top.path() / "outside";
+    fs::create_directories(folder);
+    fs::create_directories(outside);
+    const fs::path scene_file = folder / "scene.json";
+    fs::copy_file(kData / "films/TiO2/Siefke.yml", folder / "my-oxide.yml");
+    fs::create_directories(folder / "coats");
+    fs::copy_file(kData / "films/SiO2/Malitson.yml", folder / "coats/glass.yml");
+    FresnelLibrary lib(kData, choose_ocio_config(std::nullopt, kData), "", scene_file, PathPolicy{kData, false});
+    const auto same_lut = [](const SphereFresnel& a, const SphereFresnel& b) {
+        EXPECT_EQ(a.lut.size(), b.lut.size());
+        for (std::size_t i = 0; i < std::min(a.lut.size(), b.lut.size()); ++i)
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(a.lut[i][c], b.lut[i][c]) << "texel " << i << " channel " << c;
+    };
+    const SphereFresnel& from_file = lib.get(titanium("my-oxide.yml:60nm"), "spheres[1]");
+    same_lut(from_file, lib.get(titanium("TiO2:60nm"), "spheres[1]"));
+    EXPECT_GT(largest_difference(from_file, lib.get(titanium(), "spheres[1]")), 0.05) << "the film is there";
+    same_lut(lib.get(titanium("my-oxide.yml:60nm", "coats/glass.yml"), "spheres[1]"),
+             lib.get(titanium("TiO2:60nm", "SiO2"), "spheres[1]"));
+    const Material layered = lib.material(titanium("my-oxide.yml:60nm", "coats/glass.yml"), "spheres[1]");
+    ASSERT_TRUE(layered.layers && layered.layers->film && layered.layers->coat);
+    EXPECT_EQ(layered.layers->film->material.provenance.file, folder / "my-oxide.yml");
+    EXPECT_EQ(layered.layers->coat->material.provenance.file, folder / "coats/glass.yml");
+
+    auto load_error = [&lib](const Sphere& s) -> std::string {
+        try {
+            lib.get(s, "spheres[1]");
+        } catch (const InputError& e) {
+            return e.what();
+        }
+        return "no error";
+    };
+    EXPECT_TRUE(test::Contains(load_error(titanium("missing.csv:60nm")), "scene.json: spheres[1].film: "))
+        << load_error(titanium("missing.csv:60nm"));
+    EXPECT_TRUE(test::Contains(load_error(titanium("missing.csv:60nm")), "missing.csv: cannot open it"));
+    EXPECT_TRUE(test::Contains(load_error(titanium("", "missing.yml")), "scene.json: spheres[1].coat: "));
+    // A link to a file in another folder, neither the scene's nor the database.
+    fs::copy_file(kData / "films/TiO2/Siefke.yml", outside / "elsewhere.yml");
+    fs::create_symlink(outside / "elsewhere.yml", folder / "link.yml");
+    EXPECT_TRUE(test::Contains(load_error(titanium("link.yml:60nm")),
+                               "scene.json: spheres[1].film: a path outside the scene's folder"))
+        << load_error(titanium("link.yml:60nm"));
+    ASSERT_EQ(::mkfifo((folder / "fifo.yml").c_str(), 0600), 0);
+    EXPECT_TRUE(test::Contains(load_error(titanium("fifo.yml:60nm")), "spheres[1].film: "));
+    EXPECT_TRUE(test::Contains(load_error(titanium("fifo.yml:60nm")), "not a regular file"));
+    // A bad table in a file: the importer's message, naming the key and the file as the scene gave it.
+    std::ofstream(folder / "broken.csv") << "wl,n,k\n0.5,2.0\n";
+    const std::string broken = load_error(titanium("broken.csv:60nm"));
+    EXPECT_TRUE(test::Contains(broken, "spheres[1].film: ")) << broken;
+    EXPECT_TRUE(test::Contains(broken, (folder / "broken.csv").string())) << broken;
+    EXPECT_FALSE(test::Contains(broken, "glpreview-file-")) << broken;
+
+    // The scene's path check before any work names the key too.
+    Scene scene = parse_scene(R"({"spheres": [{"center": [0, 1, 0], "material": "Ti", "film": "../oxide.yml:80nm"},
+        {"center": [1, 1, 0], "material": "Ti", "coat": "/etc/coat.yml"}]})",
+                              scene_file);
+    try {
+        confine_scene_paths(scene, PathPolicy{kData, false});
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(test::Contains(e.what(), "spheres[0].film: a path outside the scene's folder")) << e.what();
+    }
+    scene.spheres[0].film = "my-oxide.yml:80nm";
+    try {
+        confine_scene_paths(scene, PathPolicy{kData, false});
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(test::Contains(e.what(), "spheres[1].coat: a path outside the scene's folder")) << e.what();
+    }
 }
 
 // The GPU image of filmed and coated spheres agrees with the CPU reference as a bare sphere's does, and metrics.json

@@ -9,6 +9,7 @@
 
 #include "glpreview/render/scene_colour.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/text.hpp"
 #include "libfit/fit/fit.hpp"
 #include "libfit/fit/parameter_source.hpp"
 #include "libfit/io/finishes.hpp"
@@ -163,21 +164,44 @@ void FresnelLibrary::put_layers(Material& material, const Sphere& sphere, const 
                          material.id + " is a named finish with layers of its own: give its metal with film and coat, "
                                        "or the finish alone");
     if (!films_) films_ = FilmCatalog::load(catalog_.data_dir());
-    // Each layer loaded and checked on its own, so that an error names its key.
-    const auto checked = [&](const std::string& key, const auto& load) {
+    // Each layer loaded and checked on its own, so that an error names its key. A layer's file is opened once beside
+    // the scene under its path policy and read through that descriptor (ConfinedFile, as a material file), by the
+    // importer and limits of metalfit's --film FILE; its messages and provenance name the file as the scene gave it.
+    const auto checked = [&](const std::string& key, const std::string& text) {
+        std::optional<ConfinedFile> file;
+        const auto in_original_terms = [&](const std::exception& e) {
+            return InputError(InputLocation(scene_file_, 0, field + "." + key),
+                              file ? file->in_original_terms(e.what()) : e.what());
+        };
+        std::string argument = text;
         try {
-            LayerStack one = load();
+            const LayerArgument a = parse_layer_argument("--" + key, text);
+            if (const std::string name(trim(a.material)); looks_like_path(name)) {
+                // Its errors name the scene, the key and the file already.
+                file.emplace(ConfinedFile::open(scene_file_, paths_, name, field + "." + key));
+                argument = file->path().string() + text.substr(a.material.size());
+            }
+        } catch (const UsageError& e) {
+            throw in_original_terms(e);
+        }
+        try {
+            LayerStack one = key == "film" ? load_layers(*films_, argument, "") : load_layers(*films_, "", argument);
             require_layer_coverage(one, kVisibleRange, spectral);
+            if (file) {
+                LayerMaterial& layer = one.film ? one.film->material : one.coat->material;
+                layer.provenance.file = file->original();
+                for (std::string& warning : layer.warnings) warning = file->in_original_terms(warning);
+            }
             return one;
         } catch (const UsageError& e) {
-            throw InputError(InputLocation(scene_file_, 0, field + key), e.what());
+            throw in_original_terms(e);
         } catch (const InputError& e) {
-            throw InputError(InputLocation(scene_file_, 0, field + key), e.what());
+            throw in_original_terms(e);
         }
     };
     LayerStack stack;
-    if (!sphere.film.empty()) stack.film = checked(".film", [&] { return load_layers(*films_, sphere.film, ""); }).film;
-    if (!sphere.coat.empty()) stack.coat = checked(".coat", [&] { return load_layers(*films_, "", sphere.coat); }).coat;
+    if (!sphere.film.empty()) stack.film = checked("film", sphere.film).film;
+    if (!sphere.coat.empty()) stack.coat = checked("coat", sphere.coat).coat;
     const std::vector<std::string> warnings = layer_warnings(stack);
     material.warnings.insert(material.warnings.end(), warnings.begin(), warnings.end());
     material.layers = std::make_shared<const LayerStack>(std::move(stack));

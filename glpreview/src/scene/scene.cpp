@@ -14,7 +14,9 @@
 
 #include "glpreview/scene/scene_keys.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/text.hpp"
 #include "libfit/io/catalog.hpp"
+#include "libfit/io/layer_materials.hpp"
 
 namespace metalfit::glpreview {
 namespace {
@@ -165,10 +167,20 @@ void confine_scene_paths(const Scene& scene, const PathPolicy& policy) {
                 InputLocation(scene.file, 0, field),
                 "a path outside the scene's folder and the database (glpreview --allow-paths-outside to allow it)");
     };
-    for (std::size_t i = 0; i < scene.spheres.size(); ++i)
-        if (const fs::path written = scene.spheres[i].material; looks_like_path(scene.spheres[i].material))
-            check(written.is_absolute() ? written : scene.file.parent_path() / written,
-                  "spheres[" + std::to_string(i) + "].material");
+    const auto check_written = [&](const std::string& text, const std::string& field) {
+        if (const fs::path written = text; looks_like_path(text))
+            check(written.is_absolute() ? written : scene.file.parent_path() / written, field);
+    };
+    for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+        const Sphere& s = scene.spheres[i];
+        const std::string field = "spheres[" + std::to_string(i) + "]";
+        check_written(s.material, field + ".material");
+        // A film's or coat's file (the key's text before its thickness).
+        for (const auto& [key, text] : {std::pair{".film", &s.film}, std::pair{".coat", &s.coat}})
+            if (!text->empty())
+                check_written(std::string(trim(parse_layer_argument("--" + std::string(key + 1), *text).material)),
+                              field + key);
+    }
     if (scene.environment.type == EnvironmentType::equirect) check(scene.environment.equirect.file, "environment.file");
 }
 

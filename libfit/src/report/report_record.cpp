@@ -14,6 +14,7 @@
 #include "libfit/base/version.hpp"
 #include "libfit/export/consumer_curve.hpp"
 #include "libfit/fit/catalog_summary.hpp"
+#include "libfit/fit/renderer_film_scores.hpp"
 #include "libfit/io/layer_stack.hpp"
 #include "libfit/optics/fresnel.hpp"
 #include "libfit/optics/stack_reflectance.hpp"
@@ -242,6 +243,18 @@ Json consumers_json(const MaterialFit& fit, const Model& model) {
     return out;
 }
 
+// What each renderer's thin film draws for a filmed material at its thickness against the stack: the record `metalfit
+// table METAL --film FILM --thickness D --renderers --format json` writes (the same function, with the report's
+// colour and error settings); under a coat, why it is not scored (docs/colour.md, "What renderers draw for a thin
+// film").
+Json renderer_film_json(const Material& material, const ReportInputs& in) {
+    const LayerStack& layers = *material.layers;
+    if (layers.coat) return {{"not_scored", std::string(kRendererFilmUnderCoat)}};
+    return renderer_film_scores_json(
+        renderer_film_scores({material, layers.film->material, {layers.film->thickness_nm}, in.fit.error},
+                             in.colorimetry, in.converter, in.fit.spectral));
+}
+
 Json material_json(const MaterialFit& fit, const ReportInputs& in, const Swatches& swatches,
                    std::optional<int> render_row) {
     const Material& material = fit.material;
@@ -348,7 +361,9 @@ Json material_record(const MaterialFit& fit, const ReportInputs& in, const Repor
     std::optional<int> row;
     if (in.renders.rows)
         if (const auto r = in.renders.rows->row_of(fit.material.id)) row = static_cast<int>(*r);
-    return material_json(fit, in, swatches, row);
+    Json entry = material_json(fit, in, swatches, row);
+    if (fit.material.layers && fit.material.layers->film) entry["renderer_film"] = renderer_film_json(fit.material, in);
+    return entry;
 }
 
 Json report_record_without_materials(const CatalogSummary& summary, const ReportInputs& in) {

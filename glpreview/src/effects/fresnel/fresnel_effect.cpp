@@ -47,17 +47,15 @@ public:
     void read_sphere(const SceneReader& r, Sphere& s, Scene& /*scene*/) const override {
         r.read("material", s.material);
         r.read("source", s.source);
-        // The layers over the metal: an index or a film/coat of the database with its thickness, as the command
-        // line's --film and --coat (the reference curve and every fit are then the stack's). Their tables are
-        // loaded with the sphere's Fresnel (FresnelLibrary): here the argument's form only.
+        // The layers over the metal: an index, a film/coat of the database or a file beside the scene, with its
+        // thickness, as the command line's --film and --coat (the reference curve and every fit are then the
+        // stack's). Their tables are loaded with the sphere's Fresnel (FresnelLibrary, a file under the scene's path
+        // policy): here the argument's form only.
         for (auto [key, out] : {std::pair{"film", &s.film}, std::pair{"coat", &s.coat}}) {
             r.read(key, *out);
             if (out->empty()) continue;
             try {
-                if (looks_like_path(parse_layer_argument(std::string("--") + key, *out).material))
-                    r.fail(r.field(key), "a file is not read from a scene: give an index or a film or coat of the "
-                                         "database (data/films.json), as `metalfit --" +
-                                             std::string(key) + "` takes them");
+                parse_layer_argument(std::string("--") + key, *out);
             } catch (const UsageError& e) {
                 r.fail(r.field(key), e.what());
             }

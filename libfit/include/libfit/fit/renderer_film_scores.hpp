@@ -31,6 +31,12 @@ inline constexpr std::array<FilmRenderer, 5> kFilmRenderers{
 std::string_view film_renderer_id(FilmRenderer r);
 std::string_view film_renderer_title(FilmRenderer r);  // one line: what it evaluates
 
+// Why a film under a coat is not scored (the report says it where the scores would be; `table --renderers` refuses
+// --coat): the formulas put air above the film.
+inline constexpr std::string_view kRendererFilmUnderCoat =
+    "not scored: a coat lies over the film, and MaterialX's and Belcour & Barla's thin-film formulas take air above "
+    "the film (as metalfit table --renderers, which refuses --coat)";
+
 // What the approximations are given, as a user of each renderer would give it.
 struct RendererFilmConstants {
     // The metal per RGB channel for MaterialX and Belcour & Barla: the bare metal's fitted conductor-rgb n, k (what

@@ -288,6 +288,30 @@
       sortableTable('consumers-table', headers, rows)];
   }
 
+  // A filmed material: what each renderer's thin film draws at the film's thickness against the exact stack
+  // (report.json's renderer_film, the record of `metalfit table METAL --film FILM --thickness D --renderers`), or why
+  // it is not scored (a coat over the film).
+  function rendererFilmSection(r) {
+    if (r.not_scored) return [el('p', { class: 'renderer-film-not-scored', text: r.not_scored })];
+    const k = r.constants, row = r.rows[0];
+    const worstSigned = (v) => v.reduce((w, x) => (x == null || w == null ? null : Math.abs(x) > Math.abs(w) ? x : w));
+    const headers = ['renderer', 'what it evaluates', 'worst rel_rms', 'err_f0 (furthest channel)', 'ΔE2000 mean', 'ΔE2000 max', 'F0 (R / G / B)', 'F0 → F82 ΔE2000'];
+    const title = Object.fromEntries(r.renderers.map((x) => [x.id, x.title]));
+    const rows = [el('tr', { class: 'truth' }, cell('exact stack'), cell('the spectral reference curve'), cell('—', null), cell('—', null),
+      cell('—', null), cell('—', null), cell(rgbText(row.truth.F0)), cell(num(row.truth.shift_de2000, 2), row.truth.shift_de2000))];
+    for (const s of row.scores) {
+      const rel = worstOf(s.metrics.rel_rms), f0 = worstSigned(s.err_f0);
+      rows.push(el('tr', {}, cell(s.renderer), cell(title[s.renderer] || ''), cell(pct(rel, 2), rel), cell(pct(f0, 2), f0),
+        cell(num(s.metrics.de2000_mean, 2), s.metrics.de2000_mean), cell(num(s.metrics.de2000_max, 2), s.metrics.de2000_max),
+        cell(rgbText(s.F0)), cell(num(s.shift_de2000, 2), s.shift_de2000)));
+    }
+    return [el('p', { class: 'note', text: `${r.description}: each renderer's thin film against the stack's ` +
+        `spectral curve (${r.space}), scored as the fits are. MaterialX and Belcour & Barla are given the bare metal's conductor-rgb fit ` +
+        `(n ${rgbText(k.conductor_n)}, k ${rgbText(k.conductor_k)}) and the film's n(${k.film_ior_at_nm} nm) = ${num(k.film_ior)}; ` +
+        `airy-3 the stack's own indices at ${k.three_wavelengths_nm.join(', ')} nm. The same figures as metalfit table --renderers.` }),
+      sortableTable('renderer-film-table', headers, rows)];
+  }
+
   function sourcesTable(mat) {
     const ds = mat.data_sources;
     const headers = ['source', 'F0 (R / G / B)', 'F82 (R / G / B)'];
@@ -319,6 +343,7 @@
         mat.out_of_gamut_F0.length ? ` (out of gamut in ${mat.out_of_gamut_F0.join(', ')}, kept)` : '',
         ';  F82 ', el('span', { class: 'swatch', style: `background:${mat.swatch.F82}`, title: mat.swatch.F82 }), ` = ${rgbText(mat.F82)}`));
     main.append(colours);
+    if (mat.renderer_film) main.append(section('What renderers draw for this film', ...rendererFilmSection(mat.renderer_film)));
 
     const data = section('The data');
     main.append(data);
