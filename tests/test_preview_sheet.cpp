@@ -427,7 +427,7 @@ TEST(PreviewSheet, SheetProgressIsALinePerRowInOrder) {
 // Issue 32 (metalfit report's renders): --sheet-rows writes each row as its own image, the row's Fresnel made for it
 // alone; each image is the sheet of that one material made by a run of its own (byte for byte: the same renders,
 // error views and labels), sheet.json is the whole sheet's record with the row numbers of the sheet, and no sheet
-// image is written.
+// image is written; stdout names the folder, not every cell (nothing of a row is kept).
 TEST(PreviewSheet, SheetRowsWritesEachRowAsTheSheetOfItsMaterialAlone) {
     TempDir dir;
     const std::string models = " --sheet-models schlick,conductor-rgb" + kSize;
@@ -459,6 +459,11 @@ TEST(PreviewSheet, SheetRowsWritesEachRowAsTheSheetOfItsMaterialAlone) {
         }
     }
     EXPECT_EQ(images.size(), 3u) << "three materials, three different images";
+    // sheet.json, written a row at a time, is the bytes the whole sheet's run writes for the same rows.
+    const CommandResult whole =
+        glpreview(sheet_scene() + " --sheet Au,Cu,Ti" + models + " -o " + (dir.path() / "whole").string(), dir);
+    ASSERT_EQ(whole.exit_code, 0) << whole.err;
+    EXPECT_EQ(read_file(dir.path() / "rows" / "sheet.json"), read_file(dir.path() / "whole" / "sheet.json"));
     EXPECT_EQ(glpreview(sheet_scene() + " --sheet-rows -o " + (dir.path() / "x").string(), dir).exit_code, 2);
 }
 

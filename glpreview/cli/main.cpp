@@ -553,7 +553,8 @@ int run_glpreview(int argc, char** argv) {
         PreviewOptions options{data_dir, choose_ocio_config(ocio_config, data_dir, "--ocio-config"), output_dir, 0,
                                exposure_ev};
         if (!sheet.empty()) {
-            // Printed before the sheet is switched in: a stdout that fails writes nothing.
+            // Printed before the sheet is switched in: a stdout that fails writes nothing. With --sheet-rows the
+            // record is in sheet.json only (nothing of a row is kept): the folder alone is printed.
             const auto print_sheet = [&](const SphereSheet& result) {
                 for (const auto& row : result.record) {
                     std::printf(

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <numbers>
@@ -19,6 +20,7 @@
 #include "glpreview/render/sphere_metrics.hpp"
 #include "glpreview/scene/glossy_choice.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/json_text.hpp"
 #include "libfit/base/text.hpp"
 
 namespace metalfit::glpreview {
@@ -228,7 +230,10 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
             d.image = b.produce<Image>("sheet-image");
             d.record = b.produce<Json>("sheet-record");
             d.cells = b.produce<SheetCells>("sheet-cell-labels");
-            if (request.row_images) b.write_file(sheet_row_image(0).replace(5, 1, "<row>"));
+            if (request.row_images) {
+                b.write_file(sheet_row_image(0).replace(5, 1, "<row>"));
+                b.write_file("sheet.json");
+            }
         },
         [&scene, &base, &request, model_groups, rows, environment, prefiltered, downsampled, roughness, groups, run,
          library, row_libraries](const Cells& d, Resources& r) {
@@ -249,6 +254,13 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
             Image& sheet = r.emplace(d.image, n_columns * scene.width,
                                      static_cast<int>(row_images ? std::size_t{1} : n_rows) * scene.height);
             Json& record = r.emplace(d.record, Json::array());
+            // --sheet-rows: sheet.json written a row at a time (the bytes of the whole record's dump(2)), the record
+            // itself left empty, so that nothing of a row outlives it.
+            std::ofstream record_file;
+            const std::filesystem::path record_path =
+                row_images && !run->output_dir.empty() ? run->output_file("sheet.json") : std::filesystem::path{};
+            if (!record_path.empty()) record_file.open(record_path, std::ios::binary);
+            std::size_t entries_written = 0;
             SheetCells& labels = r.emplace(d.cells);
             const auto light_column = [&scene, lit_column = request_light ? n_roughness - 1 : -1](int k) {
                 if (k == lit_column)
@@ -268,6 +280,8 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                 const SheetRow& this_row = made_here ? *made_here : made[row];
                 const int y = row_images ? 0 : static_cast<int>(row);
                 if (row_images) labels.clear();
+                Json row_record = Json::array();
+                Json& entries = row_images ? row_record : record;
                 const std::string& material = this_row.reference->material;
                 std::vector<Image> references;
                 for (int k = 0; k < n_roughness; ++k) {
@@ -300,31 +314,41 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                                           model.worst_rel_rms, lit, best});
                         labels.push_back({y, difference_column, SheetCellKind::difference, material, model.fresnel,
                                           roughness[k], rmse, lit, best, model_column, reference_column});
-                        record.push_back({{"row", row},
-                                          {"material", model.material},
-                                          {"source", model.source},
-                                          {"model", model.fresnel},
-                                          {"asked_for", best ? kBestModel : model.fresnel},
-                                          {"model_worst_rel_rms", model.worst_rel_rms},
-                                          {"image_rmse_model_vs_reference", rmse},
-                                          {"roughness", roughness[k]},
-                                          {"columns",
-                                           {{"reference", reference_column},
-                                            {"model", model_column},
-                                            {"difference", difference_column}}}});
+                        entries.push_back({{"row", row},
+                                           {"material", model.material},
+                                           {"source", model.source},
+                                           {"model", model.fresnel},
+                                           {"asked_for", best ? kBestModel : model.fresnel},
+                                           {"model_worst_rel_rms", model.worst_rel_rms},
+                                           {"image_rmse_model_vs_reference", rmse},
+                                           {"roughness", roughness[k]},
+                                           {"columns",
+                                            {{"reference", reference_column},
+                                             {"model", model_column},
+                                             {"difference", difference_column}}}});
                         if (lit)
-                            record.back()["light"] =
+                            entries.back()["light"] =
                                 "a point light beside and behind the sphere (the highlight where the normal is 60 degrees from the view)";
                     }
                 }
-                if (row_images) write_row_image(sheet, labels, row, request.labels, *library, *run);
+                if (row_images) {
+                    write_row_image(sheet, labels, row, request.labels, *library, *run);
+                    for (const Json& entry : row_record)
+                        record_file << (entries_written++ == 0 ? "[\n  " : ",\n  ")
+                                    << indented_json(entry.dump(2), 1, 2);
+                }
                 if (on_row) on_row(row + 1, n_rows);
+            }
+            if (!record_path.empty()) {
+                record_file << (entries_written == 0 ? "[]\n" : "\n]\n");
+                record_file.close();
+                if (!record_file) throw InputError(InputLocation(run->output_dir / "sheet.json"), "cannot write");
             }
         });
     if (request.row_images) {
         for (const char* pass : {"write sheet.exr", "sheet-error-views", "sheet-labels", "write sheet.png"})
             graph.skip(pass, "--sheet-rows: each row's image is written by sheet-cells");
-        add_json_file_pass(graph, "sheet.json", "the cells' record", cells.record, run);
+        graph.skip("write sheet.json", "--sheet-rows: sheet-cells writes it a row at a time");
         graph.retain(cells.record);
         return cells.record;
     }

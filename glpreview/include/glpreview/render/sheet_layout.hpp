@@ -24,9 +24,10 @@ struct SheetRequest {
     // Called after each row is rendered (rows done, rows in all): `--sheet-progress`, metalfit report's progress.
     std::function<void(std::size_t, std::size_t)> on_row = {};
     // `--sheet-rows`: each row its own labelled image, rows/<row>.png (row counted from 0), written as the row is done
-    // (its error views on the row's own scale), with sheet.json; no sheet.exr or sheet.png. The sheet's memory is then
-    // one row's, whatever the number of materials: each row's Fresnel is made when the row is rendered and let go after
-    // it (metalfit report's renders).
+    // (its error views on the row's own scale), and its entries appended to sheet.json; no sheet.exr or sheet.png,
+    // and the returned record (SphereSheet::record) is empty. The sheet's memory is then one row's, whatever the
+    // number of materials: each row's Fresnel is made when the row is rendered and let go after it (metalfit report's
+    // renders).
     bool row_images = false;
 };
 
