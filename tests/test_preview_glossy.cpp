@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <map>
 #include <numbers>
+#include <optional>
 
 #include "glpreview/gl/gl_context.hpp"
 #include "glpreview/io/image_io.hpp"
@@ -269,6 +270,36 @@ TEST(PreviewGlossy, FurnaceEqualsTheDfgTablesOwnIntegral) {
         EXPECT_GT(checked, 500);
         EXPECT_LT(worst, 1e-3) << "roughness " << roughness;
         EXPECT_LT(table(0.9, roughness).r, 1.0);  // a rough lobe loses energy (single scattering): not the trivial 1
+    }
+}
+
+// Issue 32 (glpreview --sheet-rows: each row's Fresnel made and let go): what effects keep for a Fresnel (the mirror's
+// reference LUT, a rough sphere's DFG table) is keyed by its address. After GpuRenderer::forget_fresnel a new Fresnel
+// made at that address is drawn with its own curve, as a fresh renderer draws it, not with the old one's textures.
+TEST(PreviewGlossy, AFresnelMadeWhereAForgottenOneWasIsDrawnWithItsOwnCurve) {
+    gl();
+    const auto constant = [](double value) {
+        SphereFresnel f;
+        f.lut.assign(2, RGB{value, value, value});
+        return f;
+    };
+    for (double roughness : {0.0, 0.5}) {
+        SCOPED_TRACE(roughness);
+        const Scene scene = furnace_scene(roughness);
+        std::optional<SphereFresnel> slot;
+        slot.emplace(constant(1.0));
+        const SphereFresnel* address = &*slot;
+        GpuRenderer gpu(scene, plan_features(scene), {address}, nullptr);
+        gpu.capture_environment();
+        const Image white = gpu.render();
+        gpu.forget_fresnel(*slot);
+        slot.emplace(constant(0.5));
+        ASSERT_EQ(&*slot, address);
+        const Image half = gpu.render();
+        GpuRenderer fresh(scene, plan_features(scene), {&*slot}, nullptr);
+        fresh.capture_environment();
+        EXPECT_EQ(half.rgb, fresh.render().rgb);
+        EXPECT_NE(half.rgb, white.rgb);
     }
 }
 

@@ -39,6 +39,10 @@ GpuRenderer::GpuRenderer(const Scene& scene, const Features& features, std::vect
 
 void GpuRenderer::set_fresnel(std::size_t sphere, const SphereFresnel* fresnel) { fresnel_.at(sphere) = fresnel; }
 
+void GpuRenderer::forget_fresnel(const SphereFresnel& fresnel) {
+    for (const Effect* effect : all_effects()) effect->forget_fresnel(*this, fresnel);
+}
+
 const BuiltProgram& GpuRenderer::program(const ShaderBuilder& builder) {
     const std::string key = builder.key();
     if (auto it = programs_.find(key); it != programs_.end()) return it->second;

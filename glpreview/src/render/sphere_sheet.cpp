@@ -332,6 +332,10 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                     }
                 }
                 if (row_images) {
+                    // The row's Fresnel is let go with its library: what the frame keeps for it goes first (its
+                    // textures are keyed by address, which the next row's Fresnel may reuse).
+                    gpu.forget_fresnel(*this_row.reference);
+                    for (const SphereFresnel* model : this_row.models) gpu.forget_fresnel(*model);
                     write_row_image(sheet, labels, row, request.labels, *library, *run);
                     for (const Json& entry : row_record)
                         record_file << (entries_written++ == 0 ? "[\n  " : ",\n  ")

@@ -114,6 +114,9 @@ public:
     virtual void resolve_materials(Scene& /*scene*/, FresnelLibrary& /*library*/) const {}
     // Without a graph: derives this effect's inputs from the renderer's own captured cube (GpuRenderer::capture_environment()).
     virtual void derive_from_environment(GpuRenderer&, const EnvironmentCube&) const {}
+    // Lets go of what this effect's frame state keeps for a Fresnel (textures uploaded for it, keyed by its address),
+    // before that Fresnel is destroyed (GpuRenderer::forget_fresnel: the sheet's rows, each made and let go).
+    virtual void forget_fresnel(GpuRenderer&, const SphereFresnel&) const {}
 };
 
 }  // namespace metalfit::glpreview

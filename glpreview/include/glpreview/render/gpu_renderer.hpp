@@ -43,6 +43,9 @@ public:
 
     // Replaces sphere i's Fresnel (the scene's sphere must show the same Fresnel: the reference or that model).
     void set_fresnel(std::size_t sphere, const SphereFresnel* fresnel);
+    // What every effect keeps for `fresnel` let go (Effect::forget_fresnel), before the caller destroys it: the
+    // textures are keyed by its address, which a later Fresnel may reuse.
+    void forget_fresnel(const SphereFresnel& fresnel);
 
     // Ray-casts the environment into `cube` (once; spheres may move afterwards) and reflects it from then on.
     void capture_environment(const EnvironmentCube& cube);

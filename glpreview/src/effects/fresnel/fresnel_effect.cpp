@@ -101,6 +101,10 @@ public:
         else
             draw.program.bind("u_fresnel_lut", draw.renderer.frame().state<ReferenceLuts>().texture(draw.fresnel));
     }
+
+    void forget_fresnel(GpuRenderer& renderer, const SphereFresnel& fresnel) const override {
+        renderer.frame().state<ReferenceLuts>().textures.erase(&fresnel);
+    }
 };
 
 }  // namespace

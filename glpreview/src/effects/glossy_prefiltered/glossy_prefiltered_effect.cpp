@@ -144,6 +144,10 @@ public:
         if (!own.cube) own.cube = PrefilteredCube::create({size, PrefilteredCube::levels_for(size)});
         prefilter_environment(renderer, cube, *own.cube);
     }
+
+    void forget_fresnel(GpuRenderer& renderer, const SphereFresnel& fresnel) const override {
+        renderer.frame().state<DfgTextures>().textures.erase(&fresnel);
+    }
 };
 
 }  // namespace
