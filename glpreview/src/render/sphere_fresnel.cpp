@@ -155,6 +155,12 @@ const SphereFresnel& FresnelLibrary::get(const Sphere& sphere, const std::string
     return *cache_.emplace(key, std::move(result)).first->second;
 }
 
+void FresnelLibrary::keep_only(const std::vector<const SphereFresnel*>& keep) {
+    std::erase_if(cache_, [&keep](const auto& entry) {
+        return std::find(keep.begin(), keep.end(), entry.second.get()) == keep.end();
+    });
+}
+
 void FresnelLibrary::put_layers(Material& material, const Sphere& sphere, const std::string& field,
                                 const SpectralOptions& spectral) {
     if (sphere.film.empty() && sphere.coat.empty()) return;

@@ -68,9 +68,6 @@ SheetRow make_sheet_row(FresnelLibrary& library, const Scene& base, const SheetR
     return row;
 }
 
-// A new library with the settings of the sheet's own, for one row of a --sheet-rows sheet (let go after the row).
-using RowLibraries = std::function<std::unique_ptr<FresnelLibrary>()>;
-
 // The roughness of the columns: those asked for, else the scene sphere's own; then the lit column's, if asked for.
 std::vector<double> column_roughness(const Scene& base, const SheetRequest& request) {
     std::vector<double> roughness =
@@ -161,8 +158,7 @@ void write_row_image(const Image& image, const SheetCells& cells, std::size_t ro
 // `scene` is the renderer's copy of `base` with the largest roughness asked for (what the environment passes plan
 // for); only its sphere's Fresnel kind and roughness change between cells.
 graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base, Scene& scene,
-                                     const SheetRequest& request, FresnelLibrary* library, PreviewRun* run,
-                                     const RowLibraries& row_libraries = {}) {
+                                     const SheetRequest& request, FresnelLibrary* library, PreviewRun* run) {
     using namespace graph;
     const std::vector<double> roughness = column_roughness(base, request);
     set_cell_roughness(scene.spheres[0], *std::max_element(roughness.begin(), roughness.end()));
@@ -236,7 +232,7 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
             }
         },
         [&scene, &base, &request, model_groups, rows, environment, prefiltered, downsampled, roughness, groups, run,
-         library, row_libraries](const Cells& d, Resources& r) {
+         library](const Cells& d, Resources& r) {
             const bool request_light = request.light, row_images = request.row_images;
             const auto& on_row = request.on_row;
             GpuRenderer& gpu = run->renderer();
@@ -270,13 +266,11 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                 return k == lit_column;
             };
             for (std::size_t row = 0; row < n_rows; ++row) {
-                // A --sheet-rows row past the first: its Fresnel from a library of its own, let go after the row.
-                std::unique_ptr<FresnelLibrary> row_library;
+                // A --sheet-rows row past the first: its Fresnel made now and let go after the row (the first row's
+                // stays: the environment passes were planned with it).
                 std::optional<SheetRow> made_here;
-                if (row_images && row > 0) {
-                    row_library = row_libraries();
-                    made_here = make_sheet_row(*row_library, base, request, model_groups, request.materials[row]);
-                }
+                if (row_images && row > 0)
+                    made_here = make_sheet_row(*library, base, request, model_groups, request.materials[row]);
                 const SheetRow& this_row = made_here ? *made_here : made[row];
                 const int y = row_images ? 0 : static_cast<int>(row);
                 if (row_images) labels.clear();
@@ -334,9 +328,14 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                 if (row_images) {
                     // The row's Fresnel is let go with its library: what the frame keeps for it goes first (its
                     // textures are keyed by address, which the next row's Fresnel may reuse).
-                    gpu.forget_fresnel(*this_row.reference);
-                    for (const SphereFresnel* model : this_row.models) gpu.forget_fresnel(*model);
                     write_row_image(sheet, labels, row, request.labels, *library, *run);
+                    if (made_here) {
+                        gpu.forget_fresnel(*made_here->reference);
+                        for (const SphereFresnel* model : made_here->models) gpu.forget_fresnel(*model);
+                        std::vector<const SphereFresnel*> first_row{made[0].reference};
+                        first_row.insert(first_row.end(), made[0].models.begin(), made[0].models.end());
+                        library->keep_only(first_row);
+                    }
                     for (const Json& entry : row_record)
                         record_file << (entries_written++ == 0 ? "[\n  " : ",\n  ")
                                     << indented_json(entry.dump(2), 1, 2);
@@ -437,10 +436,7 @@ SphereSheet render_sphere_sheet(const Scene& base, const SheetRequest& request, 
     run.exposure = std::exp2(options.exposure_ev);
     run.exr_colour = ExrColour{chromaticities_of(library.converter()), library.converter().space()};
     graph::PassGraph graph;
-    const RowLibraries row_libraries = [&options, &base] {
-        return std::make_unique<FresnelLibrary>(options.data_dir, options.ocio, base.space, base.file);
-    };
-    const graph::Handle<Json> record = add_sheet_passes(graph, base, scene, request, &library, &run, row_libraries);
+    const graph::Handle<Json> record = add_sheet_passes(graph, base, scene, request, &library, &run);
     graph.before_first_gpu_pass([&run] { run.open_gl(); });
     graph.compile();
     graph.execute();

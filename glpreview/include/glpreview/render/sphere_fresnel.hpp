@@ -57,6 +57,9 @@ public:
 
     // Throws InputError naming the field (`field`, e.g. "spheres[2].material") for unknown materials/models.
     const SphereFresnel& get(const Sphere& sphere, const std::string& field);
+    // Lets go of every Fresnel get() and best_model() made but those in `keep` (the sheet's rows, one at a time):
+    // references to them are dangling afterwards.
+    void keep_only(const std::vector<const SphereFresnel*>& keep);
 
     // The model with the lowest worst-channel fitted rel_rms of the sphere's material (and layers), for the sphere
     // sheet (every model's fit is cached for get()).
