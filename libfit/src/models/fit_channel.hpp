@@ -208,7 +208,7 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
     options.num_threads = 1;
     options.logging_type = ceres::SILENT;
 
-    const ConstraintSet<M> active(constraints);
+    const ConstraintSet active = constraint_set<M>(constraints);
     const int held = active.held_parameter();  // held by the solver, computed inside the residual
     // One solve from x with the parameters in `fixed` held at their values (besides the held one); x is updated.
     // Returns the cost of the parameters returned (NaN when not finite, or where the start cannot hold a constraint).

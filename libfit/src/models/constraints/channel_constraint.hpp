@@ -1,5 +1,5 @@
 // A constraint of one channel's solve (internal: fit_channel.hpp composes the active ones, ConstraintSet): what it
-// does to the Ceres problem of a model M — the residual block of the curve it replaces, residual blocks of its own,
+// does to the Ceres problem of a model — the residual block of the curve it replaces, residual blocks of its own,
 // the bounds of a parameter, the parameter it holds — whether the plain fit's shortcuts (the variable projection,
 // the start pruning) still apply under it, how a start is moved into it, what it does after a solve (drive the
 // solution into it and say whether it holds) and how a solution's parameters are read back. docs/fitting.md,
@@ -15,7 +15,8 @@
 
 namespace metalfit::detail {
 
-template <class M>
+// Not a template: what a constraint does is said in terms every model shares (the problem, the parameter block);
+// only the kinds that need the model's type (their residual functors) are templates over it.
 class ChannelConstraint {
 public:
     virtual ~ChannelConstraint() = default;

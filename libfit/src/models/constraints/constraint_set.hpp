@@ -3,8 +3,10 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "libfit/models/registry.hpp"
@@ -15,19 +17,12 @@
 
 namespace metalfit::detail {
 
-template <class M>
+// Not a template (the model enters through its parameters' bounds and the kinds made for it by constraint_set<M>),
+// so that its code is compiled once, not once per model.
 class ConstraintSet {
 public:
-    explicit ConstraintSet(const ChannelConstraints& constraints) {
-        if (constraints.unit_range) active_.push_back(std::make_unique<UnitRange<M>>());
-        if constexpr (PinnableF0<M>) {
-            if (constraints.pinned_f0) active_.push_back(std::make_unique<PinnedF0<M>>(*constraints.pinned_f0));
-            if (constraints.f0_range) active_.push_back(std::make_unique<F0Range<M>>(*constraints.f0_range));
-        } else {
-            if (constraints.pinned_f0) throw std::logic_error(std::string(M::kId) + " cannot pin F0");
-            if (constraints.f0_range) throw std::logic_error(std::string(M::kId) + " cannot bound F0");
-        }
-    }
+    ConstraintSet(std::vector<std::unique_ptr<const ChannelConstraint>> active, std::span<const Parameter> parameters)
+        : active_(std::move(active)), parameters_(parameters) {}
 
     // No constraint at all: the plain fit.
     bool empty() const { return active_.empty(); }
@@ -43,12 +38,12 @@ public:
     double lower(int i) const {
         for (const auto& c : active_)
             if (const auto b = c->bounds(i)) return (*b)[0];
-        return M::kParameters[static_cast<std::size_t>(i)].lower;
+        return parameters_[static_cast<std::size_t>(i)].lower;
     }
     double upper(int i) const {
         for (const auto& c : active_)
             if (const auto b = c->bounds(i)) return (*b)[1];
-        return M::kParameters[static_cast<std::size_t>(i)].upper;
+        return parameters_[static_cast<std::size_t>(i)].upper;
     }
     int held_parameter() const {
         for (const auto& c : active_)
@@ -79,7 +74,23 @@ public:
     }
 
 private:
-    std::vector<std::unique_ptr<const ChannelConstraint<M>>> active_;
+    std::vector<std::unique_ptr<const ChannelConstraint>> active_;
+    std::span<const Parameter> parameters_;
 };
+
+// The active constraints of `constraints` for the model M.
+template <class M>
+ConstraintSet constraint_set(const ChannelConstraints& constraints) {
+    std::vector<std::unique_ptr<const ChannelConstraint>> active;
+    if (constraints.unit_range) active.push_back(std::make_unique<UnitRange<M>>());
+    if constexpr (PinnableF0<M>) {
+        if (constraints.pinned_f0) active.push_back(std::make_unique<PinnedF0<M>>(*constraints.pinned_f0));
+        if (constraints.f0_range) active.push_back(std::make_unique<F0Range<M>>(*constraints.f0_range));
+    } else {
+        if (constraints.pinned_f0) throw std::logic_error(std::string(M::kId) + " cannot pin F0");
+        if (constraints.f0_range) throw std::logic_error(std::string(M::kId) + " cannot bound F0");
+    }
+    return ConstraintSet(std::move(active), M::kParameters);
+}
 
 }  // namespace metalfit::detail

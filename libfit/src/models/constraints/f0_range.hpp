@@ -32,7 +32,7 @@ struct F0RangeResidual {
 };
 
 template <class M>
-class F0Range final : public ChannelConstraint<M> {
+class F0Range final : public ChannelConstraint {
 public:
     static constexpr int kCount = static_cast<int>(M::kParameters.size());
     static constexpr int kSlot = static_cast<int>(M::kPinnedParameter);  // holds F(1) during the solves

@@ -28,7 +28,7 @@ struct PinnedCurveResidual {
 
 // The model's pinned parameter (kPinnedParameter) held by the solver and computed from the others and F0.
 template <class M>
-class PinnedF0 final : public ChannelConstraint<M> {
+class PinnedF0 final : public ChannelConstraint {
 public:
     static constexpr int kCount = static_cast<int>(M::kParameters.size());
     explicit PinnedF0(double F0) : F0_(F0) {}

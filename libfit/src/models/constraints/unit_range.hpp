@@ -56,7 +56,7 @@ double gamut_excess(const ChannelParameters& p) {
 // outside until the 4097-point grid holds the curve. The cost a start is compared on is the penalty-free curve cost
 // (the weight is 0 again at the end).
 template <class M>
-class UnitRange final : public ChannelConstraint<M> {
+class UnitRange final : public ChannelConstraint {
 public:
     static constexpr int kCount = static_cast<int>(M::kParameters.size());
 
