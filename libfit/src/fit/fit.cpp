@@ -8,8 +8,10 @@
 #include <memory>
 #include <span>
 
+#include "fit/constraints/fit_constraint.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/number_text.hpp"
+#include "libfit/fit/material_target.hpp"
 
 namespace metalfit {
 
@@ -29,9 +31,6 @@ std::vector<NamedStart> starts_for_channel(const Model& model, const std::vector
 }
 
 std::string number(double x) { return significant_text(x, 6); }
-
-// err_f0 of docs/fitting.md: F(1) / R(1) − 1, NaN where R(1) ≤ 0.
-double f0_error(double F1, double R1) { return R1 > 0 ? F1 / R1 - 1 : std::numeric_limits<double>::quiet_NaN(); }
 
 }  // namespace
 
@@ -106,8 +105,8 @@ void FitConstraints::check_combination() const {
 ModelResult fit_model(const Model& model, const SampledReference& reference, const ClosedFormInput& input,
                       FitTimings* timings, const FitConstraints& constraints, const ModelResult* related) {
     constraints.check_combination();
-    if ((constraints.pin_f0 || constraints.f0_tolerance) && !model.can_pin_f0())
-        throw UsageError("--pin F0: model " + std::string(model.id()) + " cannot hold F(1) at a given value");
+    const std::unique_ptr<const detail::FitConstraint> constraint = detail::make_fit_constraint(constraints);
+    constraint->require(model);
     std::optional<ModelResult> own_related;
     if (!model.starts_from().empty() && !(related && related->model && related->model->id() == model.starts_from())) {
         own_related = fit_model(find_model(model.starts_from()), reference, input, timings, constraints);
@@ -144,8 +143,8 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
 
     clock.charge(t.metrics);
     FitResult& fit = result.fit;
-    // --f0-tolerance: per channel, why the constrained fit was not kept (it needs a parameter outside its bounds).
-    std::array<std::string, 3> f0_refused;
+    // Per channel, why the constrained solution was not kept (--f0-tolerance: it needs a parameter outside its bounds).
+    std::array<std::string, 3> unmet;
     for (int c = 0; c < 3; ++c) {
         const ChannelTarget target = reference.target(c);
         auto starts = starts_for_channel(model, result.closed_forms, c, target);
@@ -160,77 +159,13 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
                 else
                     starts.insert(starts.begin(), std::move(mapped));
             }
-        ChannelConstraints channel_constraints;
-        channel_constraints.unit_range = constraints.gamut_fit;
-        std::optional<ChannelFit> unpinned;  // --pin F0: kept where the pin needs a parameter outside its bounds
-        if (constraints.pin_f0) {
-            // The unconstrained optimum is the best start of the pinned fit (from the others alone LM stops in local
-            // minima: rational on zinc, 19 % instead of 1.3 %).
-            channel_constraints.pinned_f0 = R1[c];
-            ChannelFit free = model.fit(target, starts);
-            if (!free.params.empty()) {
-                starts.insert(starts.begin(), NamedStart{"unpinned optimum", free.params});
-                unpinned = std::move(free);
-            }
-        }
-        std::optional<ChannelFit> kept, free_fit;
-        if (constraints.f0_tolerance && R1[c] > 0) {
-            // A channel whose unconstrained optimum meets the tolerance keeps it (the constrained optimum cannot be
-            // lower); else F(1) is a bounded unknown, from the unconstrained optimum first and every start.
-            const double T = *constraints.f0_tolerance;
-            ChannelFit free = model.fit(target, starts);
-            if (!free.params.empty() &&
-                std::abs(f0_error(model.evaluate(std::span<const double>(free.params), 1.0), R1[c])) <= T)
-                kept = std::move(free);
-            else {
-                if (!free.params.empty()) {
-                    starts.insert(starts.begin(), NamedStart{"unconstrained optimum", free.params});
-                    free_fit = std::move(free);
-                }
-                // A hair inside the interval, so that the F(1) computed back from the parameters stays within T.
-                const double t = T * (1 - 1e-9);
-                channel_constraints.f0_range = std::array<double, 2>{R1[c] * (1 - t), R1[c] * (1 + t)};
-            }
-        }
-        ChannelFit channel = kept ? std::move(*kept) : model.fit(target, starts, channel_constraints);
-        // The parameter computed from F(1) may need a value outside its bounds (gold's red R(1) = 1.038 in Linear
-        // Rec.709 asks Gulbrandsen's r > 1): such parameters are never kept; the unconstrained fit stays, and the
-        // record says that the model cannot meet the tolerance.
-        if (channel_constraints.f0_range && free_fit) {
-            if (channel.params.empty()) {
-                f0_refused[c] = "a parameter outside its bounds from every start";
-                channel = std::move(*free_fit);
-            } else if (const std::string out = outside_bounds(model, channel.params); !out.empty()) {
-                f0_refused[c] = out;
-                channel = std::move(*free_fit);
-            } else if (!(std::abs(f0_error(model.evaluate(std::span<const double>(channel.params), 1.0), R1[c])) <=
-                         *constraints.f0_tolerance * (1 + 1e-9))) {
-                f0_refused[c] = "an F(1) the model cannot take";  // lazanyi's k from n where R(1) > 1
-                channel = std::move(*free_fit);
-            }
-        }
-        // --pin F0 where F(1) = R(1) needs a parameter outside its bounds (gold's red R(1) = 1.038 asks Gulbrandsen's
-        // r > 0.99999) or no start holds it: the pin is refused for this channel and the unpinned fit kept, said in
-        // fit.refused and on stderr (an export must never carry parameters outside the model's own bounds).
-        if (channel_constraints.pinned_f0) {
-            std::string needs;
-            if (channel.params.empty())
-                needs = "parameters no start reaches inside the bounds";
-            else if (const std::string out = outside_bounds(model, channel.params); !out.empty())
-                needs = out;
-            else if (const double F1 = model.evaluate(std::span<const double>(channel.params), 1.0);
-                     !(std::abs(F1 - R1[c]) <= 1e-9))
-                needs = "a value the model cannot take (F(1) = " + number(F1) + ")";
-            if (!needs.empty() && unpinned) {
-                fit.refused[c] = "--pin F0 refused: F(1) = R(1) = " + number(R1[c]) + " needs " + needs +
-                                 "; the unpinned fit is kept (F(1) = " +
-                                 number(model.evaluate(std::span<const double>(unpinned->params), 1.0)) + ")";
-                channel = std::move(*unpinned);
-            }
-        }
+        detail::ConstrainedChannel constrained = constraint->fit_channel(model, target, starts, R1[c]);
+        ChannelFit channel = std::move(constrained.fit);
+        fit.refused[c] = std::move(constrained.refused);
+        unmet[c] = std::move(constrained.unmet);
         // Every start ended on parameters that are no curve (rational: a pole in [0, 1]): the first start that is
         // a curve inside the bounds is kept as it is, and the channel is reported as unrepresentable.
-        if (channel.params.empty() && !constraints.gamut_fit)
+        if (channel.params.empty() && constraint->keeps_a_start_as_is())
             for (const NamedStart& start : starts)
                 if (start.params.size() == model.parameters().size() && model.inadmissible(start.params).empty() &&
                     outside_bounds(model, start.params).empty()) {
@@ -247,7 +182,7 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
                 }
         if (channel.params.empty())
             throw std::runtime_error(std::string(model.id()) + ": no start of the " + kChannelNames[c] +
-                                     " fit converged" + (constraints.gamut_fit ? " inside [0, 1] (--gamut-fit)" : ""));
+                                     " fit converged" + constraint->unsolved_qualifier());
         fit.value.params[c] = channel.params;
         fit.solver[c] = channel.solver;
     }
@@ -257,16 +192,9 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
     // Never worse than a closed form inside the bounds, channel by channel (a start clamped into the bounds can end up
     // worse). A closed form outside the bounds that fits better is not kept (exports would carry parameters the model
     // does not allow, issue 13 item 11): the record says that the model cannot represent the data.
-    // Under --pin F0 only closed forms that meet the pin compete.
+    // Only closed forms that meet the active constraint compete (--pin F0: the pin, unless refused for the channel).
     const auto competes = [&](const ClosedFormResult& form, int c) {
-        if (!form.value) return false;
-        if (constraints.gamut_fit) return curve_excess_outside_unit_range(model, form.value->params[c]) == 0;
-        if (constraints.f0_tolerance)
-            return R1[c] > 0 ? std::abs(f0_error(model.evaluate(std::span<const double>(form.value->params[c]), 1.0),
-                                                 R1[c])) <= *constraints.f0_tolerance
-                             : true;
-        if (!constraints.pin_f0 || !fit.refused[c].empty()) return true;  // a refused pin: the unpinned fit competes
-        return std::abs(model.evaluate(std::span<const double>(form.value->params[c]), 1.0) - R1[c]) <= 1e-12;
+        return form.value && constraint->admits(model, form.value->params[c], R1[c], !fit.refused[c].empty());
     };
     bool replaced = false;
     for (int c = 0; c < 3; ++c) {
@@ -293,59 +221,47 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
                                      number(best) + " against " + number(fitted) + ") but " + out +
                                      ": the model cannot represent these data within its bounds";
         }
-        // The pin computes a parameter, which the data may push out of its bounds (F0 ≥ 1 for n, k models).
-        if (!fit.refused[c].empty()) {
-            fit.unrepresentable[c] = fit.refused[c] + ": the model cannot represent these data" +
-                                     (constraints.pin_f0 ? " with F0 pinned" : "");
-        } else if (constraints.pin_f0) {
-            const std::string out = outside_bounds(model, fit.value.params[c]);
-            const double F1 = model.evaluate(std::span<const double>(fit.value.params[c]), 1.0);
-            if (!out.empty() || !(std::abs(F1 - R1[c]) <= 1e-9))
-                fit.unrepresentable[c] =
-                    "--pin F0: F(1) = R(1) = " + number(R1[c]) + " needs " +
-                    (out.empty() ? "a value the model cannot take (F(1) = " + number(F1) + ")" : out) +
-                    ": the model cannot represent these data with F0 pinned";
-        }
-        // The F(1) within the tolerance computes a parameter too, which may need a value outside its bounds.
-        if (constraints.f0_tolerance) {
-            const double err = fit.value.metrics.err_f0[c];
-            if (!f0_refused[c].empty() || std::abs(err) > *constraints.f0_tolerance)
-                fit.unrepresentable[c] =
-                    "--f0-tolerance " + number(*constraints.f0_tolerance) + ": err_f0 = " + number(err) +
-                    (f0_refused[c].empty()
-                         ? std::string()
-                         : " (the constrained fit needs " + f0_refused[c] + "; the unconstrained fit is kept)") +
-                    ": the model cannot represent these data within the F0 tolerance";
-        }
+        // A refused constraint, or parameters that do not meet it (the constraint says).
+        if (!fit.refused[c].empty())
+            fit.unrepresentable[c] =
+                fit.refused[c] + ": the model cannot represent these data" + constraint->refused_qualifier();
+        constraint->explain(fit.unrepresentable[c], model, fit.value.params[c], fit.value.metrics.err_f0[c], R1[c],
+                            !fit.refused[c].empty(), unmet[c]);
     }
     clock.charge(t.metrics);
     return result;
+}
+
+std::vector<ModelResult> fit_models(const FitTarget& target, std::span<const Model* const> models,
+                                    const FitConstraints& constraints, FitTimings* timings) {
+    const SampledReference& reference = *target.reference();
+    if (reference.settings().metric == ErrorMetric::rel && reference.rel_undefined())
+        throw InputError(target.location(), "relative error undefined for " + target.id() + ": " +
+                                                *reference.rel_undefined() + " (use the abs error metric)");
+    const ClosedFormInput input = target.closed_form_input();
+    std::vector<ModelResult> results;
+    for (const Model* model : models) {
+        // A model that starts from another's fit takes it from this target's results where it was fitted already.
+        const ModelResult* related = nullptr;
+        for (const ModelResult& done : results)
+            if (!model->starts_from().empty() && done.model->id() == model->starts_from()) related = &done;
+        results.push_back(fit_model(*model, reference, input, timings, constraints, related));
+    }
+    return results;
 }
 
 MaterialFit fit_material(const Material& material, const Colorimetry& colorimetry, const ColorSpaceConverter& converter,
                          const MaterialFitRequest& request) {
     PhaseClock clock;
     FitTimings timings;
-    const ReferenceCurve curve(material, colorimetry, converter, request.spectral);
-    auto shared_reference = std::make_shared<const SampledReference>(curve, request.error);
-    const SampledReference& reference = *shared_reference;
+    const MaterialTarget target(material, colorimetry, converter, request.spectral, request.error);
     clock.charge(timings.reference);
-    if (request.error.metric == ErrorMetric::rel && reference.rel_undefined())
-        throw InputError(InputLocation(material.provenance.file), "relative error undefined for " + material.id + ": " +
-                                                                      *reference.rel_undefined() +
-                                                                      " (use the abs error metric)");
-    MaterialFit result{material, curve.raw_white(), curve(1.0), {}, {}, shared_reference};
+    const ReferenceCurve& curve = target.curve();
+    MaterialFit result{material, curve.raw_white(), curve(1.0), {}, {}, target.reference()};
     // What --extrapolate did travels with the material's own warnings: the record, the CLI and the exports say it.
     result.material.warnings.insert(result.material.warnings.end(), curve.held_constant().begin(),
                                     curve.held_constant().end());
-    const ClosedFormInput input = closed_form_input(curve, material, request.spectral);
-    for (const Model* model : request.models) {
-        // A model that starts from another's fit takes it from this material's results where it was fitted already.
-        const ModelResult* related = nullptr;
-        for (const ModelResult& done : result.models)
-            if (!model->starts_from().empty() && done.model->id() == model->starts_from()) related = &done;
-        result.models.push_back(fit_model(*model, reference, input, &timings, request.constraints, related));
-    }
+    result.models = fit_models(target, request.models, request.constraints, &timings);  // InputError: rel undefined
     result.timings = timings;
     return result;
 }

@@ -22,12 +22,15 @@ inline std::string wavelength_form_id(const std::array<double, 3>& nm) {
 
 inline std::string format_number(double x) { return significant_text(x, 6); }
 
-// η at λ, or the reason it is not available (outside the data).
+// η at λ, or the reason it is not available (outside the data; a target without a complex index, such as a
+// measured reflectance: fit/fit_target.hpp).
 struct SampledEta {
     std::complex<double> eta;
     std::string error;
 };
+inline constexpr const char* kNoComplexIndex = "undefined: the target has no complex index";
 inline SampledEta sample_eta(const ClosedFormInput& input, double nm) {
+    if (!input.eta) return {{}, kNoComplexIndex};
     try {
         return {input.eta(nm), {}};
     } catch (const std::exception& e) {

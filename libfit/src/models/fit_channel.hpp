@@ -1,4 +1,6 @@
-// Ceres least squares of one channel of one model (internal: the model adapters in model.cpp instantiate it for every registered model).
+// Ceres least squares of one channel of one model (internal: the model adapters in model.cpp instantiate it for every
+// registered model), under the active constraints composed by ConstraintSet (models/constraints/: --pin F0,
+// --f0-tolerance, --gamut-fit), which say what each does to the solve; nothing here branches on a constraint.
 #pragma once
 
 #include <ceres/ceres.h>
@@ -19,6 +21,7 @@
 #include "libfit/models/model.hpp"
 #include "libfit/models/model_math.hpp"
 #include "libfit/models/registry.hpp"
+#include "models/constraints/constraint_set.hpp"
 #include <vector>
 
 namespace metalfit::detail {
@@ -75,90 +78,6 @@ private:
     std::vector<model_math::CurveNode> nodes_;
 };
 
-// The same with F(1) pinned (--pin F0): the pinned parameter is recomputed from the others before each evaluation
-// (its own value, held constant by the solver, is ignored), so the derivatives carry the constraint.
-template <class M>
-struct PinnedCurveResidual {
-    const ChannelTarget* target;
-    double F0;
-
-    template <class T>
-    bool operator()(const T* params, T* residuals) const {
-        std::array<T, M::kParameters.size()> q;
-        for (std::size_t i = 0; i < q.size(); ++i) q[i] = params[i];
-        q[M::kPinnedParameter] = M::pinned_value(q.data(), T(F0));
-        const auto n = target->mu.size();
-        for (std::size_t i = 0; i < n; ++i)
-            residuals[i] = T(target->scale[i]) * (M::evaluate(q.data(), T(target->mu[i])) - T(target->value[i]));
-        return true;
-    }
-};
-
-// --f0-tolerance: F(1) is an unknown of the solve held in the pinned parameter's slot of the parameter block, bounded
-// to the tolerance's interval; the pinned parameter is recomputed from the others and that F(1) before each evaluation
-// (as PinnedCurveResidual), so the solve is the bounded least squares of the reparameterised curve: a true optimum
-// under |F(1)/R(1) − 1| ≤ T, not a penalty. Where the computed parameter leaves its own bounds the evaluation fails,
-// which Ceres treats as an infeasible step (it shrinks the trust region): the solve stays inside the model's bounds.
-template <class M>
-struct F0RangeResidual {
-    const ChannelTarget* target;
-
-    template <class T>
-    bool operator()(const T* params, T* residuals) const {
-        std::array<T, M::kParameters.size()> q;
-        for (std::size_t i = 0; i < q.size(); ++i) q[i] = params[i];
-        q[M::kPinnedParameter] = M::pinned_value(q.data(), params[M::kPinnedParameter]);
-        const Parameter& bounds = M::kParameters[M::kPinnedParameter];
-        if (!(q[M::kPinnedParameter] >= T(bounds.lower) && q[M::kPinnedParameter] <= T(bounds.upper))) return false;
-        const auto n = target->mu.size();
-        for (std::size_t i = 0; i < n; ++i)
-            residuals[i] = T(target->scale[i]) * (M::evaluate(q.data(), T(target->mu[i])) - T(target->value[i]));
-        return true;
-    }
-};
-
-// --gamut-fit: weight · (how far M(p, μ_j) is outside [0, upper]) on the uniform grid of μ the constraint is checked
-// on, zero inside. `limits` is
-// the solver's own: its weight grows and its upper end tightens between solves of the same problem.
-struct GamutLimits {
-    static constexpr int kGrid = 4097;  // the grid --gamut-fit is checked on (gamut_excess)
-    double weight = 0;                  // 0 and stride kGrid: the first solve is the unconstrained one
-    double upper = 1;
-    int stride = kGrid;  // every stride-th point: 257 while the penalty stiffens, then every point
-};
-
-template <class M>
-struct GamutPenalty {
-    const GamutLimits* limits;
-
-    template <class T>
-    bool operator()(const T* params, T* residuals) const {
-        for (int j = 0; j < GamutLimits::kGrid; ++j) {
-            if (j % limits->stride != 0) {
-                residuals[j] = T(0);
-                continue;
-            }
-            const T F = M::evaluate(params, T(static_cast<double>(j) / (GamutLimits::kGrid - 1)));
-            const T w(limits->weight);
-            residuals[j] = F > T(limits->upper) ? w * (F - T(limits->upper)) : (F < T(0) ? -w * F : T(0));
-        }
-        return true;
-    }
-};
-
-// The largest excursion of the curve outside [0, 1] on a 4097-point grid (0 inside): what --gamut-fit guarantees.
-// At μ = 0 every model's F = 1 by construction, which may round to 1 + 1 ulp: there 1e-15 is allowed.
-inline constexpr double kGamutTolerance = 0;
-template <class M>
-double gamut_excess(const ChannelParameters& p) {
-    double excess = std::max(0.0, std::abs(M::evaluate(p.data(), 0.0) - 1) - 1e-15);
-    for (int j = 1; j <= 4096; ++j) {
-        const double F = M::evaluate(p.data(), j / 4096.0);
-        excess = std::max({excess, F - 1, -F});
-    }
-    return excess;
-}
-
 template <class M>
 ChannelParameters clamp_to_bounds(ChannelParameters p) {
     for (std::size_t i = 0; i < M::kParameters.size(); ++i)
@@ -166,7 +85,7 @@ ChannelParameters clamp_to_bounds(ChannelParameters p) {
     return p;
 }
 
-// Start pruning of the plain fits (no --pin F0, no --gamut-fit): a start whose cost after kIteration iterations of
+// Start pruning of the plain fits (where every active constraint keeps it: none does today): a start whose cost after kIteration iterations of
 // Levenberg–Marquardt is still above kFactor × the best final cost of the starts before it is abandoned. This is a
 // rule measured on the catalog's solver traces, not a bound: there the starts it abandons end in other valleys or
 // at the same optimum reached a few ulps higher (then a record's rel_rms moves by ≤ 3.5e-12 relative), and it
@@ -289,56 +208,31 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
     options.num_threads = 1;
     options.logging_type = ceres::SILENT;
 
-    // One solve from x with the parameters in `fixed` held at their values (besides the pinned one); x is updated.
-    // Returns the cost of the parameters returned (NaN when not finite).
-    int pinned = -1;
-    if constexpr (PinnableF0<M>)
-        if (constraints.pinned_f0) pinned = static_cast<int>(M::kPinnedParameter);
-    if (constraints.pinned_f0 && pinned < 0) throw std::logic_error(std::string(M::kId) + " cannot pin F0");
-    // --f0-tolerance: the pinned parameter's slot holds F(1) during the solves, bounded to f0_range.
-    int ranged = -1;
-    if constexpr (PinnableF0<M>)
-        if (constraints.f0_range) ranged = static_cast<int>(M::kPinnedParameter);
-    if (constraints.f0_range && ranged < 0) throw std::logic_error(std::string(M::kId) + " cannot bound F0");
-    const auto lower_bound = [&](int i) { return i == ranged ? (*constraints.f0_range)[0] : M::kParameters[i].lower; };
-    const auto upper_bound = [&](int i) { return i == ranged ? (*constraints.f0_range)[1] : M::kParameters[i].upper; };
+    const ConstraintSet active = constraint_set<M>(constraints);
+    const int held = active.held_parameter();  // held by the solver, computed inside the residual
+    // One solve from x with the parameters in `fixed` held at their values (besides the held one); x is updated.
+    // Returns the cost of the parameters returned (NaN when not finite, or where the start cannot hold a constraint).
     const auto solve = [&](ChannelParameters& x, std::vector<int> fixed, ceres::Solver::Summary& summary,
                            StartPruning* pruning = nullptr) {
         ceres::Problem problem;
-        GamutLimits limits;
-        if (constraints.unit_range)
-            problem.AddResidualBlock(new ceres::AutoDiffCostFunction<GamutPenalty<M>, GamutLimits::kGrid, kCount>(
-                                         new GamutPenalty<M>{&limits}),
-                                     nullptr, x.data());
-        const int residuals = static_cast<int>(target.mu.size());
-        if constexpr (PinnableF0<M>) {
-            if (pinned >= 0)
-                problem.AddResidualBlock(
-                    new ceres::AutoDiffCostFunction<PinnedCurveResidual<M>, ceres::DYNAMIC, kCount>(
-                        new PinnedCurveResidual<M>{&target, *constraints.pinned_f0}, residuals),
-                    nullptr, x.data());
-        }
-        if constexpr (PinnableF0<M>) {
-            if (ranged >= 0)
-                problem.AddResidualBlock(new ceres::AutoDiffCostFunction<F0RangeResidual<M>, ceres::DYNAMIC, kCount>(
-                                             new F0RangeResidual<M>{&target}, residuals),
-                                         nullptr, x.data());
-        }
-        if (pinned < 0 && ranged < 0) {
+        active.add_residuals(problem, x.data());
+        if (ceres::CostFunction* constrained = active.curve_residual(target)) {
+            problem.AddResidualBlock(constrained, nullptr, x.data());
+        } else {
             if constexpr (AnalyticGradient<M>)
                 problem.AddResidualBlock(new AnalyticCurveResidual<M>(&target), nullptr, x.data());
             else
                 problem.AddResidualBlock(new ceres::AutoDiffCostFunction<CurveResidual<M>, ceres::DYNAMIC, kCount>(
-                                             new CurveResidual<M>{&target}, residuals),
+                                             new CurveResidual<M>{&target}, static_cast<int>(target.mu.size())),
                                          nullptr, x.data());
         }
-        if (pinned >= 0) fixed.push_back(pinned);
+        if (held >= 0) fixed.push_back(held);
         std::sort(fixed.begin(), fixed.end());
         fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
         for (int i = 0; i < kCount; ++i) {
             if (std::find(fixed.begin(), fixed.end(), i) != fixed.end()) continue;
-            problem.SetParameterLowerBound(x.data(), i, lower_bound(i));
-            problem.SetParameterUpperBound(x.data(), i, upper_bound(i));
+            problem.SetParameterLowerBound(x.data(), i, active.lower(i));
+            problem.SetParameterUpperBound(x.data(), i, active.upper(i));
         }
         if (static_cast<int>(fixed.size()) == kCount)
             problem.SetParameterBlockConstant(x.data());
@@ -352,29 +246,7 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         } else {
             ceres::Solve(options, &problem, &summary);
         }
-        if (constraints.unit_range) {
-            // Where the unconstrained solution leaves [0, 1]: continuation, a stiffer penalty from the last solution,
-            // then the upper end lowered by what is still outside until the 4097-point grid holds the curve. The cost returned is the penalty-free curve cost.
-            const double initial_cost = summary.initial_cost;
-            if (gamut_excess<M>(x) > kGamutTolerance) {  // else the unconstrained optimum of this start holds already
-                limits.stride = 16;
-                for (const double weight : {1e2, 1e4, 1e6}) {
-                    limits.weight = weight;
-                    ceres::Solve(options, &problem, &summary);
-                }
-            }
-            limits.stride = 1;
-            for (int round = 0; round < 8; ++round) {
-                const double excess = gamut_excess<M>(x);
-                if (!(excess > kGamutTolerance)) break;
-                limits.upper -= 2 * excess + 1e-12;
-                ceres::Solve(options, &problem, &summary);
-            }
-            summary.initial_cost = initial_cost;
-            if (!(gamut_excess<M>(x) <= kGamutTolerance))
-                return std::numeric_limits<double>::quiet_NaN();  // this start cannot hold it
-            limits.weight = 0;
-        }
+        if (!active.after_solve(problem, options, x, summary)) return std::numeric_limits<double>::quiet_NaN();
         // With an active bound the summary's final cost can differ (1e-4 relative) from the cost of the parameters
         // returned: evaluate them, so that starts are compared and reported on what is kept.
         double cost = std::numeric_limits<double>::quiet_NaN();
@@ -389,7 +261,7 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         // parameters are not used); the cost compared and kept is that of the full parameters returned. Starts with
         // the same non-linear parameter take the same path, and a start whose bracket holds the minimum of an earlier
         // one ends there: both skipped, ties keep the first (docs/decisions.md).
-        if (!constraints.unit_range && !constraints.pinned_f0 && !constraints.f0_range) {
+        if (active.keeps_projection()) {
             constexpr auto kNonlinear = M::Projection::kNonlinearParameters;
             static_assert(kNonlinear.size() <= 2, "variable projection leaves at most two non-linear parameters");
             typename M::Projection projection(target);
@@ -448,12 +320,10 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
     // A start equal to an earlier one (after clamping) takes the same path to the same cost, and ties keep the
     // first: it is skipped (rational's linearised starts and the closed forms repeat each other).
     std::vector<ChannelParameters> tried;
-    const bool prune = !constraints.unit_range && !constraints.pinned_f0 && !constraints.f0_range;
+    const bool prune = active.keeps_start_pruning();
     for (std::size_t s = 0; s < starts.size(); ++s) {
         ChannelParameters x = clamp_to_bounds<M>(starts[s].params);
-        if constexpr (PinnableF0<M>)
-            if (ranged >= 0)
-                x[ranged] = std::clamp(M::evaluate(x.data(), 1.0), lower_bound(ranged), upper_bound(ranged));
+        active.prepare_start(x);
         const auto same_bits = [&x](const ChannelParameters& y) {
             return std::equal(x.begin(), x.end(), y.begin(), y.end(), [](double a, double b) {
                 return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
@@ -472,8 +342,8 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
         std::vector<int> on_bound;
         ChannelParameters y = x;
         for (int i = 0; i < kCount; ++i) {
-            if (i == pinned) continue;
-            const double lo = lower_bound(i), hi = upper_bound(i), tol = 1e-9 * (hi - lo);
+            if (i == held) continue;
+            const double lo = active.lower(i), hi = active.upper(i), tol = 1e-9 * (hi - lo);
             if (y[i] <= lo + tol)
                 y[i] = lo, on_bound.push_back(i);
             else if (y[i] >= hi - tol)
@@ -488,12 +358,7 @@ ChannelFit fit_channel(const ChannelTarget& target, std::span<const NamedStart> 
                 summary.termination_type = polished.termination_type;
             }
         }
-        if constexpr (PinnableF0<M>) {
-            if (pinned >= 0)
-                x[M::kPinnedParameter] = M::pinned_value(x.data(), *constraints.pinned_f0);
-            else if (ranged >= 0)
-                x[M::kPinnedParameter] = M::pinned_value(x.data(), x[M::kPinnedParameter]);
-        }
+        active.finish(x);
         // Parameters that are no curve (rational: a root of the denominator in [0, 1], a pole) are discarded: the
         // best start without one is kept (docs/fitting.md).
         if constexpr (CheckedCurve<M>)

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <stdexcept>
+#include <utility>
 
 #include "libfit/base/errors.hpp"
 #include "libfit/base/number_text.hpp"
@@ -25,7 +27,13 @@ ErrorMetric parse_error_metric(const std::string& text) { return kErrorMetricNam
 AngularWeight parse_angular_weight(const std::string& text) { return kAngularWeightNames.parse(text); }
 
 SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSettings& settings)
-    : curve_(curve), converter_(curve.converter()), raw_white_(curve.raw_white()), settings_(settings) {
+    : SampledReference(
+          [copy = std::make_shared<const ReferenceCurve>(curve)](std::span<const double> mu) { return (*copy)(mu); },
+          curve.converter(), curve.raw_white(), settings) {}
+
+SampledReference::SampledReference(Curve curve, ColorSpaceConverter converter, RGB raw_white,
+                                   const ErrorSettings& settings)
+    : curve_(std::move(curve)), converter_(std::move(converter)), raw_white_(raw_white), settings_(settings) {
     if (settings.nodes < 2 || settings.nodes > 4096)
         throw UsageError("the number of quadrature nodes must be in [2, 4096], got " + std::to_string(settings.nodes));
     white_ = converter_.to_xyz(raw_white_);
@@ -41,7 +49,8 @@ SampledReference::SampledReference(const ReferenceCurve& curve, const ErrorSetti
     for (const Sample& s : nodes_) mu.push_back(s.mu);
     mu.push_back(grid_.front().mu);
     mu.push_back(grid_.back().mu);
-    const std::vector<RGB> values = curve(std::span<const double>(mu));
+    const std::vector<RGB> values = curve_(std::span<const double>(mu));
+    if (values.size() != mu.size()) throw std::logic_error("a reference curve gave a value count other than asked");
     const std::vector<Lab> labs = lab(values);
     for (std::size_t i = 0; i < nodes_.size(); ++i) nodes_[i].value = values[i], nodes_[i].lab = labs[i];
     for (const std::size_t i : {std::size_t{0}, grid_.size() - 1}) {

@@ -5,11 +5,13 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "libfit/base/phase_clock.hpp"
 #include "libfit/color/colorimetry.hpp"
+#include "libfit/fit/fit_target.hpp"
 #include "libfit/fit/metrics.hpp"
 #include "libfit/io/material.hpp"
 #include "libfit/models/model.hpp"
@@ -111,6 +113,12 @@ ModelResult fit_model(const Model& model, const SampledReference& reference, con
                       FitTimings* timings = nullptr, const FitConstraints& constraints = {},
                       const ModelResult* related = nullptr);
 
+// Every model of `models`, in that order, fitted to one target (fit/fit_target.hpp: a spectral metal, a layered
+// stack, a measured reflectance): its closed forms from the target's closed_form_input, then fit_model on its
+// sampled reference. Throws InputError at the target's location when the chosen metric is relative and undefined on it.
+std::vector<ModelResult> fit_models(const FitTarget& target, std::span<const Model* const> models,
+                                    const FitConstraints& constraints = {}, FitTimings* timings = nullptr);
+
 struct MaterialFitRequest {
     SpectralOptions spectral;
     ErrorSettings error;
@@ -132,7 +140,7 @@ struct MaterialFit {
     std::shared_ptr<const MaterialFit> bare_metal = nullptr;
 };
 
-// Everything for one material. Throws InputError naming the material's file when the data do not cover the
+// Everything for one material: its MaterialTarget (fit/material_target.hpp) through fit_models. Throws InputError naming the material's file when the data do not cover the
 // visible range or the relative metric is undefined (R_c ≤ 0 somewhere: use the absolute metric).
 MaterialFit fit_material(const Material& material, const Colorimetry& colorimetry, const ColorSpaceConverter& converter,
                          const MaterialFitRequest& request);

@@ -71,7 +71,7 @@ private:
 // What closed forms are computed from.
 struct ClosedFormInput {
     std::function<RGB(double mu)> reference;             // R_c(μ), white balanced
-    std::function<std::complex<double>(double nm)> eta;  // measured η(λ)
+    std::function<std::complex<double>(double nm)> eta;  // measured η(λ); empty where the target has none
 };
 
 // One closed form of a model: parameters per channel, or why it is undefined there.

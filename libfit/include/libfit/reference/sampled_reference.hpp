@@ -4,6 +4,7 @@
 // point once.
 #pragma once
 
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <span>
@@ -58,7 +59,15 @@ public:
         Lab lab;                     // its colour, white = perfect reflector
     };
 
+    // A white-balanced curve R_c(μ) at several μ at once (values equal to one μ at a time, bit for bit).
+    using Curve = std::function<std::vector<RGB>(std::span<const double> mu)>;
+
+    // The spectral reference curve (a bare metal or a layered stack): sampled through a copy of it.
     SampledReference(const ReferenceCurve& curve, const ErrorSettings& settings);
+    // Any curve of white-balanced RGBs in the converter's space, where `raw_white` is the RGB of the perfect reflector
+    // before white balance in that space (the white of the colours' L*a*b*): what a fit target without a spectrum
+    // (fit/fit_target.hpp, a measured reflectance) samples.
+    SampledReference(Curve curve, ColorSpaceConverter converter, RGB raw_white, const ErrorSettings& settings);
 
     std::span<const Sample> nodes() const { return nodes_; }
     // Grid point i (μ = i / kDenseIntervals). Sampled at construction: both ends (μ = 0 and 1), or every point where
@@ -83,7 +92,7 @@ public:
     ChannelTarget target(int channel) const;
 
 private:
-    ReferenceCurve curve_;  // for the grid points sampled later
+    Curve curve_;  // for the grid points sampled later
     ColorSpaceConverter converter_;
     RGB raw_white_;
     XYZ white_;
