@@ -340,6 +340,10 @@ TEST_F(Report, RendersOneColumnGroupPerModelOfTheReport) {
             columns.insert(c["model"].get<int>());
             columns.insert(c["difference"].get<int>());
             EXPECT_GT(c["image_rmse"].get<double>(), 0.0);
+            // The error view's scale (the images carry no labels: the page prints it), the row's: one per material.
+            EXPECT_GE(c["error_view"][0].get<double>(), 1e-5);
+            EXPECT_GT(c["error_view"][1].get<double>(), c["error_view"][0].get<double>());
+            EXPECT_EQ(c["error_view"], models[0]["cells"][0]["error_view"]);
         }
         EXPECT_EQ(columns.size(), 6u) << "each model's cells have columns of their own";
     }

@@ -143,15 +143,17 @@ ErrorScale paint_error_views(Image& out, const Image& renders, const std::vector
 
 // A --sheet-rows row (`image`: its renders, `cells`: its labels, at row 0) as sheet.png draws a sheet — the exposure,
 // the error views on the row's own scale, the labels — written to rows/<row>.png.
-void write_row_image(const Image& image, const SheetCells& cells, std::size_t row, bool labels,
-                     const FresnelLibrary& library, PreviewRun& run) {
+// Returns the row's error scale.
+ErrorScale write_row_image(const Image& image, const SheetCells& cells, std::size_t row, bool labels,
+                           const FresnelLibrary& library, PreviewRun& run) {
     const int w = run.scene.width, h = run.scene.height;
     Image out = exposed(image, run.exposure);
     const ErrorScale scale = paint_error_views(out, image, cells, w, h, luminance_weights(library.converter()));
     if (labels) draw_text(out, sheet_labels(cells, w, h, scale));
-    if (run.output_dir.empty()) return;
+    if (run.output_dir.empty()) return scale;
     const std::filesystem::path file = run.output_file(sheet_row_image(row));  // sets run.display for a PNG
     write_png(file, out, *run.display);
+    return scale;
 }
 
 // The sheet's passes. `library` and `run` are null when the graph is only planned (--explain): nothing executes.
@@ -326,9 +328,12 @@ graph::Handle<Json> add_sheet_passes(graph::PassGraph& graph, const Scene& base,
                     }
                 }
                 if (row_images) {
-                    // The row's Fresnel is let go with its library: what the frame keeps for it goes first (its
-                    // textures are keyed by address, which the next row's Fresnel may reuse).
-                    write_row_image(sheet, labels, row, request.labels, *library, *run);
+                    // The row's error scale in each of its entries: what its labels say, for a reader without them.
+                    const ErrorScale scale = write_row_image(sheet, labels, row, request.labels, *library, *run);
+                    for (Json& entry : row_record)
+                        entry["error_view"] = {{"smallest", scale.smallest}, {"largest", scale.largest}};
+                    // The row's Fresnel is let go: what the frame keeps for it goes first (its textures are keyed by
+                    // address, which the next row's Fresnel may reuse).
                     if (made_here) {
                         gpu.forget_fresnel(*made_here->reference);
                         for (const SphereFresnel* model : made_here->models) gpu.forget_fresnel(*model);

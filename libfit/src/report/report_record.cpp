@@ -403,6 +403,8 @@ Json report_record_without_materials(const CatalogSummary& summary, const Report
                    "procedural room, mirror spheres; one image per material, labels drawn by glpreview"},
             {"cell", {s.cell_width, s.cell_height}},
             {"columns", {"reference (exact Fresnel)", "model", "model / reference − 1 (false colour, log scale)"}},
+            {"labels", "none in the images: the page captions each cell (material, model, roughness, image RMSE, "
+                       "the error view's scale)"},
             {"models", s.models},
             {"rows", Json::array()}};
         for (std::size_t r = 0; r < s.materials.size(); ++r) {
@@ -414,7 +416,8 @@ Json report_record_without_materials(const CatalogSummary& summary, const Report
                                      {"reference", c.reference},
                                      {"model", c.model},
                                      {"difference", c.difference},
-                                     {"image_rmse", c.image_rmse}});
+                                     {"image_rmse", c.image_rmse},
+                                     {"error_view", {c.error_smallest, c.error_largest}}});
                 models.push_back({{"model", s.models[m]}, {"cells", cells}});
             }
             renders["rows"].push_back(

@@ -99,7 +99,10 @@ SphereRowImages run_glpreview(const SphereRenderRequest& r) {
                                   "--sheet-models", join(r.models, ","), "--size", size,
                                   // a folder inside the scratch folder: glpreview's own staging then lives there too
                                   "-o", (folder.path / "sheet").string(), "--data-dir", r.data_dir.string(),
-                                  "--ocio-config", r.ocio.path.string(), "--sheet-rows"};
+                                  "--ocio-config", r.ocio.path.string(), "--sheet-rows",
+                                  // The pages caption the cells themselves (the error scale from sheet.json): no
+                                  // labels, and no OpenImageIO in glpreview (about 110 MiB of its libraries).
+                                  "--sheet-labels", "off"};
     if (!r.film.empty()) args.insert(args.end(), {"--sheet-film", r.film});
     if (!r.coat.empty()) args.insert(args.end(), {"--sheet-coat", r.coat});
     if (r.progress) args.emplace_back("--sheet-progress");
@@ -152,7 +155,8 @@ SphereRowImages run_glpreview(const SphereRenderRequest& r) {
         const auto& columns = entry.at("columns");
         sheet.cells[row][static_cast<std::size_t>(model - r.models.begin())].push_back(
             {entry.at("roughness").get<double>(), columns.at("reference").get<int>(), columns.at("model").get<int>(),
-             columns.at("difference").get<int>(), entry.at("image_rmse_model_vs_reference").get<double>()});
+             columns.at("difference").get<int>(), entry.at("image_rmse_model_vs_reference").get<double>(),
+             entry.at("error_view").at("smallest").get<double>(), entry.at("error_view").at("largest").get<double>()});
     }
     bool complete = true;
     for (std::size_t row = 0; row < sheet.cells.size(); ++row) {

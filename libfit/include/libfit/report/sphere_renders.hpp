@@ -27,6 +27,8 @@ struct SphereSheetCells {
     double roughness = 0;
     int reference = 0, model = 0, difference = 0;
     double image_rmse = 0;  // of the model cell against the reference cell (linear radiance)
+    // The difference cell's error-view scale (|model / reference − 1| from `smallest` to `largest`, log), the row's.
+    double error_smallest = 0, error_largest = 0;
 };
 
 // Where glpreview left the row images until the report is written (removed when the last copy of the renders goes).

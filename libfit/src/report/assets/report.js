@@ -397,7 +397,7 @@
     else if (mat.render_row == null) renders.append(el('p', { class: 'renders-skipped', text: 'renders skipped: glpreview rendered no row for ' + mat.id }));
     else {
       // Per model of the report one render: reference | model | its signed error (false colour), one line per roughness, each cell
-      // cropped from the material's row image (glpreview drew its labels in it).
+      // cropped from the material's row image (unlabelled: each line captioned here, with the error view's scale).
       const r = report.renders, row = r.rows[mat.render_row];
       const [w, h] = r.cell;
       const crop = (column, alt, id) => el('div', { class: 'sheet-crop', style: `width:${w}px;height:${h}px` },
@@ -410,7 +410,7 @@
           crop(c.reference, `${row.material}: reference, roughness ${c.roughness}`, first ? 'render' : null),
           crop(c.model, `${row.material}: ${m.model}, roughness ${c.roughness}`),
           crop(c.difference, `${row.material}: ${m.model} / reference - 1 in false colour (log scale), roughness ${c.roughness}`),
-          el('span', { class: 'sheet-row-label', text: `roughness ${c.roughness}, image RMSE ${c.image_rmse.toPrecision(2)}` })));
+          el('span', { class: 'sheet-row-label', text: `roughness ${c.roughness}, image RMSE ${c.image_rmse.toPrecision(2)}, error view ±${c.error_view[0].toPrecision(2)}..${c.error_view[1].toPrecision(2)} (log)` })));
         first = false;
         renders.append(el('figure', { class: 'sheet render-model', 'data-model': m.model },
           el('figcaption', { text: `${row.material}: ${m.model}` }),
