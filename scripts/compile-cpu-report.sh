@@ -7,7 +7,7 @@ log="$1"
 top="${2:-25}"
 # /usr/bin/time writes "Command exited with non-zero status N" before the line of a failed command: skipped.
 grep -E '^[0-9.]+ [0-9.]+ [0-9.]+ ' "$log" | awk -v top="$top" '
-  { cpu = $1 + $2; kind = ($4 ~ /\.o$/) ? "compile" : "link"; sum[kind] += cpu; n[kind]++; total += cpu
+  { cpu = $1 + $2; kind = ($4 ~ /\.(o|gch)$/) ? "compile" : "link"; sum[kind] += cpu; n[kind]++; total += cpu
     line[NR] = sprintf("%8.1f %s", cpu, $4) }
   END {
     printf "compiles: %d, %.0f CPU s; links: %d, %.0f CPU s; all: %.0f CPU s = %.0f s on 2 cores\n",
