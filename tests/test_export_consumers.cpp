@@ -20,6 +20,7 @@
 #include "libfit/fit/metrics.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/models/model.hpp"
+#include "test_environment.hpp"
 #include "test_support.hpp"
 
 namespace metalfit {
@@ -27,18 +28,6 @@ namespace {
 
 using namespace metalfit::test;
 using Json = nlohmann::json;
-
-const OcioConfigChoice kShipped{kData / "ocio" / "config.ocio", "test"};
-
-struct Environment {
-    Catalog catalog = Catalog::load(kData);
-    Colorimetry colorimetry = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::D65);
-    ColorSpaceConverter converter = ColorSpaceConverter::create(kShipped);
-};
-const Environment& env() {
-    static const Environment e;
-    return e;
-}
 
 const std::vector<std::string> kModels{"schlick", "f82-tint", "lazanyi-comp", "conductor-rgb", "gulbrandsen"};
 

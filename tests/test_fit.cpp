@@ -5,6 +5,7 @@
 // divergent closed forms, bad starts, synthetic recovery and byte-identical records.
 #include <gtest/gtest.h>
 
+#include "test_environment.hpp"
 #include "test_support.hpp"
 
 #include <Eigen/Dense>
@@ -49,20 +50,9 @@ using namespace metalfit::test;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr const char* kChannel[] = {"red", "green", "blue"};
-const OcioConfigChoice kShipped{kData / "ocio" / "config.ocio", "test"};
 
 // ---------------------------------------------------------------------------------------------------------------
-// Shared set-up: the catalog, CIE 1931 2° + D65, and the shipped config's scene_linear (Linear Rec.709).
-
-struct Environment {
-    Catalog catalog = Catalog::load(kData);
-    Colorimetry colorimetry = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::D65);
-    ColorSpaceConverter converter = ColorSpaceConverter::create(kShipped);
-};
-const Environment& env() {
-    static const Environment e;
-    return e;
-}
+// Shared set-up: env() (test_environment.hpp), every model, the default request.
 
 std::vector<const Model*> every_model() { return {all_models().begin(), all_models().end()}; }
 

@@ -3,6 +3,7 @@
 // the first error in input order, and the streamed record byte for byte against fit_record on catalog materials.
 #include <gtest/gtest.h>
 
+#include "test_environment.hpp"
 #include "test_support.hpp"
 
 #include <algorithm>
@@ -27,19 +28,6 @@ namespace metalfit {
 namespace {
 
 using namespace metalfit::test;
-
-const OcioConfigChoice kShipped{kData / "ocio" / "config.ocio", "test"};
-
-struct Environment {
-    Catalog catalog = Catalog::load(kData);
-    Colorimetry colorimetry = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::D65);
-    ColorSpaceConverter converter = ColorSpaceConverter::create(kShipped);
-    BatchColour colour() const { return {kShipped, colorimetry, converter}; }
-};
-const Environment& env() {
-    static const Environment e;
-    return e;
-}
 
 // Two cheap models: the batch's order and bounds do not depend on which.
 MaterialFitRequest cheap_request() {

@@ -4,6 +4,7 @@
 // pinned F(1), the gamut on 4097 points, |err_f0| within T, the closed forms that may not be kept.
 #include <gtest/gtest.h>
 
+#include "test_environment.hpp"
 #include "test_support.hpp"
 
 #include <algorithm>
@@ -28,18 +29,7 @@ namespace {
 
 using namespace metalfit::test;
 
-const OcioConfigChoice kShipped{kData / "ocio" / "config.ocio", "test"};
 constexpr const char* kChannel[] = {"red", "green", "blue"};
-
-struct Environment {
-    Catalog catalog = Catalog::load(kData);
-    Colorimetry colorimetry = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::D65);
-    ColorSpaceConverter converter = ColorSpaceConverter::create(kShipped);
-};
-const Environment& env() {
-    static const Environment e;
-    return e;
-}
 
 std::vector<const Model*> every_model() { return {all_models().begin(), all_models().end()}; }
 

@@ -22,24 +22,13 @@
 #include "libfit/fit/model_cost.hpp"
 #include "libfit/io/catalog.hpp"
 #include "libfit/models/model.hpp"
+#include "test_environment.hpp"
 #include "test_support.hpp"
 
 namespace metalfit {
 namespace {
 
 using namespace metalfit::test;
-
-const OcioConfigChoice kShipped{kData / "ocio" / "config.ocio", "test"};
-
-struct Environment {
-    Catalog catalog = Catalog::load(kData);
-    Colorimetry colorimetry = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::D65);
-    ColorSpaceConverter converter = ColorSpaceConverter::create(kShipped);
-};
-const Environment& env() {
-    static const Environment e;
-    return e;
-}
 
 // A material fitted as `fit --recommend` fits it: every model, F0 error held to the tolerance's.
 const MaterialFit& fitted(const std::string& id) {

@@ -5,6 +5,7 @@
 // test_bench_scaling.cpp.
 #include <gtest/gtest.h>
 
+#include "test_environment.hpp"
 #include "test_support.hpp"
 
 #include <map>
@@ -31,24 +32,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace metalfit::test;
-
-const OcioConfigChoice kShipped{kData / "ocio" / "config.ocio", "test"};
-
-struct Environment {
-    Catalog catalog = Catalog::load(kData);
-    Colorimetry colorimetry = Colorimetry::load(kData, Observer::cie1931_2deg, Illuminant::D65);
-    ColorSpaceConverter converter = ColorSpaceConverter::create(kShipped);
-    BatchColour colour() const { return {kShipped, colorimetry, converter}; }
-    FitRecordContext context() const {
-        FitRecordContext c{kShipped, converter.space(), Observer::cie1931_2deg, Illuminant::D65, {}, {}};
-        c.data_dir = kData;
-        return c;
-    }
-};
-const Environment& env() {
-    static const Environment e;
-    return e;
-}
 
 // Catalog metals and a layered finish (anodized titanium: a film over the metal).
 std::vector<std::function<Material()>> loaders(const std::vector<std::string>& names) {
