@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
 #include "libfit/base/errors.hpp"
@@ -14,6 +13,7 @@
 #include "libfit/base/version.hpp"
 #include "libfit/export/consumer_curve.hpp"
 #include "libfit/fit/catalog_summary.hpp"
+#include "libfit/fit/metal_table.hpp"
 #include "libfit/fit/renderer_film_scores.hpp"
 #include "libfit/io/layer_stack.hpp"
 #include "libfit/optics/fresnel.hpp"
@@ -47,12 +47,6 @@ Json rgb_json(const RGB& v) { return Json::array({v.r, v.g, v.b}); }
 
 double mu_of_degrees(double theta) { return theta == 90 ? 0.0 : std::cos(theta * std::numbers::pi / 180); }
 
-std::string hex(const unsigned char* rgb) {
-    char text[8];
-    std::snprintf(text, sizeof text, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
-    return text;
-}
-
 // Scene-linear colours of the working space's values (the display transform takes scene_linear), as #rrggbb.
 class Swatches {
 public:
@@ -69,7 +63,8 @@ public:
         }
         const std::vector<unsigned char> display = in_.display.apply(pixels, static_cast<int>(working.size()), 1);
         std::vector<std::string> out;
-        for (std::size_t i = 0; i < working.size(); ++i) out.push_back(hex(&display[3 * i]));
+        for (std::size_t i = 0; i < working.size(); ++i)
+            out.push_back(hex(Display8{display[3 * i], display[3 * i + 1], display[3 * i + 2]}));
         return out;
     }
 
