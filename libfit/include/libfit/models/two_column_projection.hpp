@@ -91,11 +91,18 @@ inline void project_out_free_columns(const std::vector<double>& x1, const std::v
                                      const std::array<bool, 2>& free_columns, std::initializer_list<int> columns,
                                      int stride, double* J) {
     const std::size_t n = x1.size();
-    std::vector<std::vector<double>> q;
-    for (const std::vector<double>* x : {&x1, &x2}) {
-        if (!free_columns[x == &x1 ? 0 : 1]) continue;
-        std::vector<double> v = *x;
-        for (const auto& b : q) {
+    // The orthonormal basis in two scratch columns kept by the thread, not allocated at every evaluation of the
+    // projected residuals (callgrind of `fit --all --model schlick-comp-general,rational -j1 --json`: 2.023 G →
+    // 2.006 G instructions, the records identical).
+    thread_local std::array<std::vector<double>, 2> basis;
+    std::size_t count = 0;
+    for (std::size_t which = 0; which < 2; ++which) {
+        if (!free_columns[which]) continue;
+        const std::vector<double>& x = which == 0 ? x1 : x2;
+        std::vector<double>& v = basis[count];
+        v.assign(x.begin(), x.end());
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::vector<double>& b = basis[k];
             double d = 0;
             for (std::size_t i = 0; i < n; ++i) d += b[i] * v[i];
             for (std::size_t i = 0; i < n; ++i) v[i] -= d * b[i];
@@ -105,11 +112,12 @@ inline void project_out_free_columns(const std::vector<double>& x1, const std::v
         norm = std::sqrt(norm);
         if (!(norm > 0)) continue;
         for (double& e : v) e /= norm;
-        q.push_back(std::move(v));
+        ++count;
     }
     for (int column : columns) {
         if (column < 0) continue;
-        for (const auto& b : q) {
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::vector<double>& b = basis[k];
             double d = 0;
             for (std::size_t i = 0; i < n; ++i) d += b[i] * J[i * stride + column];
             for (std::size_t i = 0; i < n; ++i) J[i * stride + column] -= d * b[i];
