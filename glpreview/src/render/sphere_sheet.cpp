@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <functional>
-#include <memory>
 #include <numbers>
 #include <optional>
 #include <stdexcept>

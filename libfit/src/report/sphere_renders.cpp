@@ -181,10 +181,8 @@ std::optional<std::size_t> SphereRowImages::row_of(const std::string& material) 
 
 std::string SphereRowImages::image_bytes(std::size_t row) const {
     const fs::path& file = images.at(row);
-    std::ifstream in(file, std::ios::binary);
-    std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (!in.good() && !in.eof()) throw InputError(InputLocation(file), "cannot read glpreview's render");
-    if (bytes.empty()) throw InputError(InputLocation(file), "glpreview's render is empty");
+    std::string bytes = read_bytes(file);
+    if (bytes.empty()) throw InputError(InputLocation(file), "glpreview's render cannot be read or is empty");
     return bytes;
 }
 
