@@ -22,24 +22,10 @@
 #include "libfit/models/model_math.hpp"
 #include "libfit/models/registry.hpp"
 #include "models/constraints/constraint_set.hpp"
+#include "models/curve_residual.hpp"
 #include <vector>
 
 namespace metalfit::detail {
-
-// Residuals of one channel at the quadrature nodes: scale_i (M(p, μ_i) − R_i). A tiny templated functor
-// evaluated with Jets, as in the Ceres examples.
-template <class M>
-struct CurveResidual {
-    const ChannelTarget* target;
-
-    template <class T>
-    bool operator()(const T* params, T* residuals) const {
-        const auto n = target->mu.size();
-        for (std::size_t i = 0; i < n; ++i)
-            residuals[i] = T(target->scale[i]) * (M::evaluate(params, T(target->mu[i])) - T(target->value[i]));
-        return true;
-    }
-};
 
 // CurveResidual with the model's analytic gradient (AnalyticGradient) as the Jacobian: the same residuals and
 // derivatives as autodiff (residual-only evaluations through evaluate<double>, as AutoDiffCostFunction does; those

@@ -5,6 +5,7 @@
 #include <array>
 
 #include "models/constraints/channel_constraint.hpp"
+#include "models/curve_residual.hpp"
 
 namespace metalfit::detail {
 
@@ -24,10 +25,7 @@ struct F0RangeResidual {
         q[M::kPinnedParameter] = M::pinned_value(q.data(), params[M::kPinnedParameter]);
         const Parameter& bounds = M::kParameters[M::kPinnedParameter];
         if (!(q[M::kPinnedParameter] >= T(bounds.lower) && q[M::kPinnedParameter] <= T(bounds.upper))) return false;
-        const auto n = target->mu.size();
-        for (std::size_t i = 0; i < n; ++i)
-            residuals[i] = T(target->scale[i]) * (M::evaluate(q.data(), T(target->mu[i])) - T(target->value[i]));
-        return true;
+        return CurveResidual<M>{target}(q.data(), residuals);
     }
 };
 

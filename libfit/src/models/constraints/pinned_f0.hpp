@@ -4,6 +4,7 @@
 #include <array>
 
 #include "models/constraints/channel_constraint.hpp"
+#include "models/curve_residual.hpp"
 
 namespace metalfit::detail {
 
@@ -19,10 +20,7 @@ struct PinnedCurveResidual {
         std::array<T, M::kParameters.size()> q;
         for (std::size_t i = 0; i < q.size(); ++i) q[i] = params[i];
         q[M::kPinnedParameter] = M::pinned_value(q.data(), T(F0));
-        const auto n = target->mu.size();
-        for (std::size_t i = 0; i < n; ++i)
-            residuals[i] = T(target->scale[i]) * (M::evaluate(q.data(), T(target->mu[i])) - T(target->value[i]));
-        return true;
+        return CurveResidual<M>{target}(q.data(), residuals);
     }
 };
 
