@@ -23,7 +23,7 @@
 #include "libfit/base/staged_folder.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_atomic_file {
 
 using namespace metalfit::test;
 
@@ -455,11 +455,11 @@ TEST(AtomicFileDigest, MissingFileThrowsInputError) {
     }
 }
 
-}  // namespace
+}  // namespace test_atomic_file
 }  // namespace metalfit
 
 namespace metalfit {
-namespace {
+namespace test_atomic_file {
 
 // ---- Messages (issue 13, item 12) --------------------------------------------------------------------------------
 
@@ -478,5 +478,5 @@ TEST(SanitisedMessage, ControlBytesInvisibleCharactersAndHugeTokensAreMadeSafe) 
     EXPECT_STREQ(e.what(), "f.csv:2: non-numeric value '<U+FEFF>1.0 '");
 }
 
-}  // namespace
+}  // namespace test_atomic_file
 }  // namespace metalfit

@@ -16,7 +16,7 @@
 
 #include "libfit/base/errors.hpp"
 
-namespace {
+namespace test_bad_input_sweep {
 
 namespace fs = std::filesystem;
 using metalfit::sanitised_message;
@@ -275,4 +275,4 @@ TEST_F(BadInputSweep, GlpreviewScene) {
     }
 }
 
-}  // namespace
+}  // namespace test_bad_input_sweep

@@ -5,7 +5,7 @@
 
 #include "metalfit_bench/convergence.hpp"
 
-namespace {
+namespace test_bench_convergence {
 
 using namespace metalfit::bench;
 
@@ -42,4 +42,4 @@ TEST(Convergence, TheIssueNodeCountsConvergeOnARungeFunction) {
     EXPECT_LT(c.points.back().to_reference, 1e-13);
 }
 
-}  // namespace
+}  // namespace test_bench_convergence

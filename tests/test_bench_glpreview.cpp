@@ -8,7 +8,7 @@
 #include "metalfit_bench/glpreview_results.hpp"
 #include "test_support.hpp"
 
-namespace {
+namespace test_bench_glpreview {
 
 using namespace metalfit::bench;
 using metalfit::test::TempDir;
@@ -121,4 +121,4 @@ TEST(BenchMarkdown, KeepsTheHandWrittenReading) {
     EXPECT_EQ(to_markdown(report, again), again);  // regeneration is a fixed point
 }
 
-}  // namespace
+}  // namespace test_bench_glpreview

@@ -10,7 +10,7 @@
 #include "metalfit_bench/reference_lut.hpp"
 #include "test_support.hpp"
 
-namespace {
+namespace test_bench_kernels {
 
 using namespace metalfit;
 using namespace metalfit::bench;
@@ -84,4 +84,4 @@ TEST(BenchKernels, SummaryIsMedianAndWorstIgnoringUndefined) {
     EXPECT_DOUBLE_EQ(s.worst, 0.5);
 }
 
-}  // namespace
+}  // namespace test_bench_kernels

@@ -9,7 +9,7 @@
 #include "metalfit_bench/nk_database.hpp"
 #include "test_support.hpp"
 
-namespace {
+namespace test_bench_nk_database {
 
 namespace fs = std::filesystem;
 using metalfit::test::kData;
@@ -111,4 +111,4 @@ TEST(BenchNkDatabase, AFolderThatIsNotOneIsAUsageError) {
     EXPECT_EQ(r.out, "");
 }
 
-}  // namespace
+}  // namespace test_bench_nk_database

@@ -6,7 +6,7 @@
 #include "metalfit_bench/bench_report.hpp"
 #include "metalfit_bench/pareto.hpp"
 
-namespace {
+namespace test_bench_pareto {
 
 using namespace metalfit::bench;
 
@@ -72,4 +72,4 @@ TEST(Pareto, ReportRowsAreMarkedAmongModelsAndAmongAllRows) {
     EXPECT_EQ(rows[2].front_all.gpu, true);          // the LUT has no shader figure here: only models compete
 }
 
-}  // namespace
+}  // namespace test_bench_pareto

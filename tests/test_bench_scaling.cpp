@@ -11,7 +11,7 @@
 #include "metalfit_bench/scaling.hpp"
 #include "test_support.hpp"
 
-namespace {
+namespace test_bench_scaling {
 
 using metalfit::Catalog;
 using metalfit::Material;
@@ -160,4 +160,4 @@ TEST(BenchScaling, BadSizesAndModelsAreUsageErrors) {
               2);
 }
 
-}  // namespace
+}  // namespace test_bench_scaling

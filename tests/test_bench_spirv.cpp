@@ -14,7 +14,7 @@
 #include "metalfit_bench/subprocess.hpp"
 #include "test_paths.hpp"
 
-namespace {
+namespace test_bench_spirv {
 
 using namespace metalfit::bench;
 
@@ -151,4 +151,4 @@ TEST_F(CompiledSpirv, TheMeasuredCostTableHasTheBenchCounts) {
     EXPECT_EQ(file.size(), metalfit::all_models().size());
 }
 
-}  // namespace
+}  // namespace test_bench_spirv

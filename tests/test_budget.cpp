@@ -16,7 +16,7 @@
 #include "test_support.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_budget {
 
 using namespace metalfit::test;
 
@@ -195,5 +195,5 @@ TEST(ModelCost, ReadsABenchReportPreferringGpuRatios) {
     EXPECT_THROW(cost_table_from_bench_json(dir / "missing.json"), InputError);
 }
 
-}  // namespace
+}  // namespace test_budget
 }  // namespace metalfit

@@ -14,7 +14,7 @@
 #include "libfit/io/csv.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_catalog {
 
 using namespace metalfit::test;
 
@@ -297,5 +297,5 @@ TEST(CatalogErrors, MinimalCatalogResolvesFilesAgainstItsDirectory) {
     EXPECT_EQ(m.provenance.format, "CSV");
 }
 
-}  // namespace
+}  // namespace test_catalog
 }  // namespace metalfit

@@ -15,7 +15,7 @@
 #include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_chromatic_adaptation {
 
 using namespace metalfit::test;
 
@@ -160,5 +160,5 @@ TEST(ColorimetryAdaptation, GoldUnderAAgreesWithBradfordToTheNominalD65White) {
     EXPECT_NEAR(metalfit.b, 0.357, 5e-4);  // the figure; 0.200 without adaptation
 }
 
-}  // namespace
+}  // namespace test_chromatic_adaptation
 }  // namespace metalfit

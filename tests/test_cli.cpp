@@ -13,7 +13,7 @@
 #include <map>
 #include <sstream>
 
-namespace {
+namespace test_cli {
 
 using metalfit::test::kMetalfitExe;
 using metalfit::test::read_file;
@@ -695,11 +695,11 @@ TEST_F(Cli, ExtrapolationIsNamedInTheRecordShowAndExports) {
     EXPECT_NE(glsl.find("DATA WARNING: n held at its 700 nm value over 700–830 nm"), std::string::npos) << glsl;
 }
 
-}  // namespace
+}  // namespace test_cli
 
 // --- colour conventions, observers, illuminants, adaptation (docs/colour.md) ------------------------------------
 
-namespace {
+namespace test_cli {
 
 class CliColour : public ::testing::Test {
 protected:
@@ -777,9 +777,9 @@ TEST_F(CliColour, HelpShowsEveryDefaultAndBadValuesAreUsageErrors) {
     EXPECT_TRUE(metalfit::test::Contains(bad.err, "D<T>"));
 }
 
-}  // namespace
+}  // namespace test_cli
 
-namespace {
+namespace test_cli {
 
 // Every file under `dir`, recursively, with its text.
 std::vector<std::pair<fs::path, std::string>> files_under(const fs::path& dir) {
@@ -788,8 +788,6 @@ std::vector<std::pair<fs::path, std::string>> files_under(const fs::path& dir) {
         if (e.is_regular_file()) files.emplace_back(e.path(), read_file(e.path()));
     return files;
 }
-
-}  // namespace
 
 // Tantalum's only visible data set is a DFT calculation: list, show, fit (human and JSON) and every export file must
 // say so, and every export must carry the literature reference next to the file name and hash.
@@ -1078,3 +1076,5 @@ TEST_F(Cli, ZeroIndexOverABandIsBadInputForEveryCommand) {
         expect_one_line_error(r, "zero.csv:3: n = k = 0");
     }
 }
+
+}  // namespace test_cli

@@ -11,7 +11,7 @@
 #include "metalfit_bench/bench_report.hpp"
 #include "test_support.hpp"
 
-namespace {
+namespace test_cli_bench {
 
 using metalfit::test::read_file;
 using metalfit::test::TempDir;
@@ -118,4 +118,4 @@ TEST(CliBench, UnknownMaterialIsAUsageError) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
-}  // namespace
+}  // namespace test_cli_bench

@@ -15,7 +15,7 @@
 
 #include "test_support.hpp"
 
-namespace {
+namespace test_cli_layers {
 
 namespace fs = std::filesystem;
 using Result = metalfit::test::CommandResult;
@@ -477,4 +477,4 @@ TEST_F(CliLayers, BadChartInputIsOneLineAndWritesNothing) {
                           "named finish with layers of its own");
 }
 
-}  // namespace
+}  // namespace test_cli_layers

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace test_cli_record_paths {
 
 namespace fs = std::filesystem;
 using metalfit::test::kData;
@@ -210,4 +210,4 @@ TEST_F(RecordPaths, AbsoluteDataFolderConfigAndOutputsLeaveNoAbsolutePath) {
     EXPECT_GE(files, 10);
 }
 
-}  // namespace
+}  // namespace test_cli_record_paths

@@ -15,7 +15,7 @@
 
 #include "test_support.hpp"
 
-namespace {
+namespace test_cli_renderer_scores {
 
 using Result = metalfit::test::CommandResult;
 using metalfit::test::Contains;
@@ -126,4 +126,4 @@ TEST_F(CliRendererScores, AFilmedMaterialsReportCarriesTheTablesScoresAtItsThick
     }
 }
 
-}  // namespace
+}  // namespace test_cli_renderer_scores

@@ -11,7 +11,7 @@
 
 #include "test_support.hpp"
 
-namespace {
+namespace test_cli_report {
 
 namespace fs = std::filesystem;
 using metalfit::test::read_file;
@@ -426,4 +426,4 @@ TEST_F(Report, WithoutGlpreviewTheRendersAreSkippedWithTheReason) {
     EXPECT_FALSE(fs::exists(tmp_.path() / "on"));
 }
 
-}  // namespace
+}  // namespace test_cli_report

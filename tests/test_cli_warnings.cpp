@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace test_cli_warnings {
 
 namespace fs = std::filesystem;
 using metalfit::test::Contains;
@@ -156,4 +156,4 @@ TEST(PinF0, APinTheModelsBoundsForbidIsRefusedForThatChannelAndSaid) {
     EXPECT_NEAR(fit["err_f0"][1].get<double>(), 0.0, 1e-9);
 }
 
-}  // namespace
+}  // namespace test_cli_warnings

@@ -13,7 +13,7 @@
 #include "libfit/color/color_difference.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_color_difference {
 
 struct SharmaPair {
     Lab first, second;
@@ -331,5 +331,5 @@ TEST(ColorDifference, ChromaticAxesHaveTheRightSigns) {
     EXPECT_LT(xyz_to_lab({0.5 * white.X, 0.5, 0.7}, white).b, 0.0);
 }
 
-}  // namespace
+}  // namespace test_color_difference
 }  // namespace metalfit

@@ -18,7 +18,7 @@
 #include "libfit/color/display_transform.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_color_space {
 
 using namespace metalfit::test;
 
@@ -217,5 +217,5 @@ TEST(DisplayTransform, TheDisplaysEncodingIsMeasuredThroughOcio) {
     std::filesystem::remove_all(temp_config_dir());
 }
 
-}  // namespace
+}  // namespace test_color_space
 }  // namespace metalfit

@@ -9,7 +9,7 @@
 #include "libfit/color/colorimetry.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_colorimetry {
 
 using namespace metalfit::test;
 
@@ -91,5 +91,5 @@ TEST(Colorimetry, BadInputsAreNamedErrors) {
     EXPECT_EQ(parse_illuminant("A"), Illuminant::A);
 }
 
-}  // namespace
+}  // namespace test_colorimetry
 }  // namespace metalfit

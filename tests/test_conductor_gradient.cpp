@@ -16,7 +16,7 @@
 #include "libfit/models/model_math.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_conductor_gradient {
 
 const std::vector<double> kN{1e-3, 0.01, 0.05, 0.2, 0.5, 0.9, 0.999, 1.0, 1.001, 1.1, 1.5, 2.5, 5.0, 20.0, 100.0};
 const std::vector<double> kK{0.0, 1e-3, 0.01, 0.1, 0.3, 0.7, 1.0, 2.0, 3.5, 8.0, 30.0, 300.0, 1e4};
@@ -199,5 +199,5 @@ TEST(ConductorFresnelGradient, GulbrandsenAgreesWithFiniteDifferences) {
     expect_finite_differences<models::Gulbrandsen>(sets);
 }
 
-}  // namespace
+}  // namespace test_conductor_gradient
 }  // namespace metalfit

@@ -15,7 +15,7 @@
 #include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_conventions {
 
 using namespace metalfit::test;
 
@@ -124,5 +124,5 @@ TEST(Convention, PresetsAndNames) {
     EXPECT_THROW(parse_convention("aces"), UsageError);
 }
 
-}  // namespace
+}  // namespace test_conventions
 }  // namespace metalfit

@@ -14,7 +14,7 @@
 #include "libfit/color/illuminant.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_daylight {
 
 using namespace metalfit::test;
 
@@ -138,5 +138,5 @@ TEST(Cie2015Observers, ZeroBelow390NmAndTheCiesColumnSums) {
     EXPECT_EQ(option_name(Observer::cie2015_10deg), "2015-10");
 }
 
-}  // namespace
+}  // namespace test_daylight
 }  // namespace metalfit

@@ -17,7 +17,7 @@
 #include "libfit/report/sphere_renders.hpp"
 #include "libfit/spectral/spectrum.hpp"
 
-namespace {
+namespace test_enum_names {
 
 using namespace metalfit;
 
@@ -116,4 +116,4 @@ TEST(EnumNames, TheKnownNamesWordings) {
     static_assert(two.name(Two::a) == "a");
 }
 
-}  // namespace
+}  // namespace test_enum_names

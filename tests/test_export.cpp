@@ -22,7 +22,7 @@
 #include "libfit/reference/reference_curve.hpp"
 #include "test_support.hpp"
 
-namespace {
+namespace test_export {
 
 namespace fs = std::filesystem;
 using metalfit::test::catalog_material_count;
@@ -558,18 +558,17 @@ TEST(MaterialxColorspace, MatchesTheSpacesNameOrAliasesCaseInsensitively) {
     EXPECT_EQ(materialx_colorspace({studio, "test"}, "Linear Rec.709"), "lin_rec709");  // a name configs use
 }
 
-}  // namespace
+}  // namespace test_export
 
 // ---- A second export into a folder (issue 12, item 5) and parallel exports (issue 13, item 6) ------------------------
 
-namespace {
+namespace test_export {
 std::map<std::string, std::string> files_below(const fs::path& dir) {
     std::map<std::string, std::string> files;
     for (const auto& e : fs::recursive_directory_iterator(dir))
         if (e.is_regular_file()) files[e.path().lexically_relative(dir).string()] = metalfit::test::read_file(e.path());
     return files;
 }
-}  // namespace
 
 TEST(ExportMerge, ASecondMaterialIsAddedToTheIndexesNotSwappedForThem) {
     TempDir tmp;
@@ -625,3 +624,5 @@ TEST(ExportMerge, TheCurrentFolderIsRefusedWithAReason) {
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("current folder"), std::string::npos) << r.err;
 }
+
+}  // namespace test_export

@@ -24,7 +24,7 @@
 #include "test_support.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_export_consumers {
 
 using namespace metalfit::test;
 using Json = nlohmann::json;
@@ -80,8 +80,6 @@ const ModelResult& result_of(const MaterialFit& fit, std::string_view model) {
         if (r.model->id() == model) return r;
     throw std::logic_error("not fitted");
 }
-
-}  // namespace
 
 TEST(ExportConsumers, GltfMetricsAreSchlickFromTheBaseColorFactorTheFileWrites) {
     for (const std::string id : {"Al", "Cu", "Au", "TiN"}) {
@@ -182,5 +180,7 @@ TEST(ExportConsumers, ALayeredMaterialUnderAFormatsOwnLayersIsNotEvaluated) {
         EXPECT_TRUE(consumers[layered].contains("not_evaluated")) << layered;
     }
 }
+
+}  // namespace test_export_consumers
 
 }  // namespace metalfit

@@ -13,7 +13,7 @@
 #include "metalfit_materials.hpp"
 #include "test_support.hpp"
 
-namespace {
+namespace test_export_cpp {
 
 TEST(ExportCpp, HeaderFunctionsEvaluateLikeLibfitAtThousandsOfMu) {
     ASSERT_EQ(metalfit_materials::all.size(), metalfit::test::catalog_material_count() * metalfit::all_models().size());
@@ -70,4 +70,4 @@ TEST(ExportCpp, ConstantsAreTheRecordsWrittenParameters) {
     }
 }
 
-}  // namespace
+}  // namespace test_export_cpp

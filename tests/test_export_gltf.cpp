@@ -16,7 +16,7 @@
 #include "libfit/models/model.hpp"
 #include "test_support.hpp"
 
-namespace {
+namespace test_export_gltf {
 
 namespace fs = std::filesystem;
 using metalfit::test::read_file;
@@ -71,8 +71,6 @@ std::string base64_decode(const std::string& text) {
     }
     return out;
 }
-
-}  // namespace
 
 TEST(ExportGltf, EveryAssetIsTheModelsF0ClippedMetallicAndTheDefaultRoughness) {
     const Json record = Json::parse(read_file(kCatalogExport / "metalfit_export.json"));
@@ -221,3 +219,5 @@ TEST(ExportGltf, AnotherColourSpaceIsRefusedBeforeAnyWork) {
     EXPECT_TRUE(fs::exists(all / "mtlx"));
     EXPECT_FALSE(fs::exists(all / "gltf"));
 }
+
+}  // namespace test_export_gltf

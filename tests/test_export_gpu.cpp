@@ -14,7 +14,7 @@
 #include "libfit/models/model.hpp"
 #include "test_support.hpp"
 
-namespace {
+namespace test_export_gpu {
 
 using metalfit::glpreview::GlContext;
 
@@ -105,4 +105,4 @@ TEST(ExportGlsl, ModelFunctionsOnTheGpuEqualTheCppModels) {
     }
 }
 
-}  // namespace
+}  // namespace test_export_gpu

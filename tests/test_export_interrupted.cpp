@@ -18,7 +18,7 @@
 
 extern char** environ;
 
-namespace {
+namespace test_export_interrupted {
 
 namespace fs = std::filesystem;
 using metalfit::test::read_file;
@@ -100,4 +100,4 @@ TEST(ExportInterrupted, AKilledExportLeavesTheOldFolderOrTheNewOne) {
     std::cout << "kills that left the old folder: " << old_seen << ", the new one: " << new_seen << "\n";
 }
 
-}  // namespace
+}  // namespace test_export_interrupted

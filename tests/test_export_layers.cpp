@@ -15,7 +15,7 @@
 
 #include "test_support.hpp"
 
-namespace {
+namespace test_export_layers {
 
 namespace fs = std::filesystem;
 using metalfit::test::read_file;
@@ -240,4 +240,4 @@ TEST(ExportLayers, ADispersiveFilmsIndexIsItsNAt550nmAndTheHeadersSaySo) {
     EXPECT_EQ(stack["coat"]["n"], 1.6);
 }
 
-}  // namespace
+}  // namespace test_export_layers

@@ -44,7 +44,7 @@
 #include "libfit/reference/sampled_reference.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_fit {
 
 using namespace metalfit::test;
 
@@ -1451,7 +1451,7 @@ TEST(FitRecord, TwoRunsOfGoldAreByteIdentical) {
     EXPECT_EQ(a.find("NaN"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace test_fit
 TEST(CatalogSummary, SpreadLeavesUndefinedValuesOut) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const Spread s = spread_of_defined({0.4, nan, 0.1, 0.3, nan, 0.2});

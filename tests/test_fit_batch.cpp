@@ -25,7 +25,7 @@
 #include "libfit/models/model.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_fit_batch {
 
 using namespace metalfit::test;
 
@@ -173,5 +173,5 @@ TEST(FitRecordStream, AMaterialNamedTwiceIsWrittenOnceAsTheWholeRecordKeepsIt) {
     EXPECT_EQ(streamed(twice, context()), fit_record(twice, context()).dump(2));
 }
 
-}  // namespace
+}  // namespace test_fit_batch
 }  // namespace metalfit

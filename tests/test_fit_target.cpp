@@ -25,7 +25,7 @@
 #include "libfit/models/model.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_fit_target {
 
 using namespace metalfit::test;
 
@@ -246,5 +246,5 @@ TEST(FitTarget, BadMeasuredRowsAreRefusedNamingTheRow) {
     }
 }
 
-}  // namespace
+}  // namespace test_fit_target
 }  // namespace metalfit

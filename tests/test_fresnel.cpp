@@ -8,7 +8,7 @@
 #include "libfit/optics/fresnel.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_fresnel {
 
 using C = std::complex<double>;
 
@@ -136,5 +136,5 @@ TEST(Fresnel, DenseSweepStaysFiniteAndInUnitInterval) {
     EXPECT_EQ(bad, 0);
 }
 
-}  // namespace
+}  // namespace test_fresnel
 }  // namespace metalfit

@@ -11,7 +11,7 @@
 #include "libfit/optics/fresnel_real.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_fresnel_real {
 
 using C = std::complex<double>;
 
@@ -115,5 +115,5 @@ TEST(FresnelReal, ExactInsideTheImportRange) {
               0.1);
 }
 
-}  // namespace
+}  // namespace test_fresnel_real
 }  // namespace metalfit

@@ -21,7 +21,7 @@
 
 extern char** environ;
 
-namespace {
+namespace test_hostile_inputs {
 
 using namespace metalfit::test;
 namespace fs = std::filesystem;
@@ -310,4 +310,4 @@ TEST(HostileInputs, AnExrPreviewDeclaringMorePixelsThanItHolds) {
         3, "env.exr");
 }
 
-}  // namespace
+}  // namespace test_hostile_inputs

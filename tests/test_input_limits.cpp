@@ -17,7 +17,7 @@
 #include "libfit/io/refractiveindex.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_input_limits {
 
 using namespace metalfit::test;
 namespace fs = std::filesystem;
@@ -98,11 +98,11 @@ TEST(InputLimits, OversizedFilesAndTablesAreRefused) {
     EXPECT_TRUE(Contains(many, ":" + std::to_string(kMaxTableRows + 2) + ": more than 100000 data rows")) << many;
 }
 
-}  // namespace
+}  // namespace test_input_limits
 }  // namespace metalfit
 
 namespace metalfit {
-namespace {
+namespace test_input_limits {
 
 // Found by fuzz/fuzz_catalog: a number beyond double range was nlohmann's out_of_range, an "internal error".
 TEST(InputLimits, ACatalogNumberBeyondDoubleRangeIsBadInput) {
@@ -203,5 +203,5 @@ TEST(InputLimits, BothAngstromCodePointsAreAngstrom) {
     }
 }
 
-}  // namespace
+}  // namespace test_input_limits
 }  // namespace metalfit

@@ -17,7 +17,7 @@
 #include "libfit/io/refractiveindex.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_io_csv {
 
 using namespace metalfit::test;
 
@@ -380,5 +380,5 @@ TEST(IoCsvUnphysicalRows, UltravioletNegativeEps2IsDropped) {
     expect_same_visible_index(m, trimmed);
 }
 
-}  // namespace
+}  // namespace test_io_csv
 }  // namespace metalfit

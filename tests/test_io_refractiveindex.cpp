@@ -20,7 +20,7 @@
 #include "libfit/io/refractiveindex.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_io_refractiveindex {
 
 using namespace metalfit::test;
 
@@ -507,5 +507,5 @@ TEST(IoRefractiveIndexUnphysicalRows, UltravioletRowsAreDroppedToo) {
     expect_same_visible_index(m, trimmed);
 }
 
-}  // namespace
+}  // namespace test_io_refractiveindex
 }  // namespace metalfit

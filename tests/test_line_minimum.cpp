@@ -11,7 +11,7 @@
 #include "libfit/base/line_minimum.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_line_minimum {
 
 // Counts its evaluations, so that the search's own count can be checked.
 struct Counted {
@@ -116,5 +116,5 @@ TEST(LineMinimum, ANonFiniteSlopeAtTheStartIsNotConvergence) {
     EXPECT_EQ(m.evaluations, 0);
 }
 
-}  // namespace
+}  // namespace test_line_minimum
 }  // namespace metalfit

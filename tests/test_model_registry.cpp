@@ -13,7 +13,7 @@
 #include "libfit/models/registry.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_model_registry {
 
 template <class List>
 struct GtestTypes;
@@ -267,5 +267,5 @@ TEST(ModelRegistry, TheTestModelEvaluatesItsOwnCurve) {
         EXPECT_NEAR(FreeExponentSchlick::evaluate(p, mu), models::Schlick::evaluate(p, mu), 1e-15);
 }
 
-}  // namespace
+}  // namespace test_model_registry
 }  // namespace metalfit

@@ -23,7 +23,7 @@
 #include "test_support.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_models {
 
 using C = std::complex<double>;
 using Params = std::vector<double>;
@@ -701,5 +701,5 @@ TEST(ModelGlsl, LibraryOfAllModelsDefinesEachFunctionOnce) {
     EXPECT_THROW((void)shader_file("no_such_file"), std::out_of_range);
 }
 
-}  // namespace
+}  // namespace test_models
 }  // namespace metalfit

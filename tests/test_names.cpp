@@ -6,7 +6,7 @@
 
 #include "libfit/base/names.hpp"
 
-namespace {
+namespace test_names {
 
 using metalfit::c_string_literal;
 using metalfit::comment_text;
@@ -152,4 +152,4 @@ TEST(Names, PathComponentsStayInTheirFolder) {
     for (const std::string s : {"Au", "Cu-Zn", "TiN", "my_gold.v2", "Messing-Ä"}) EXPECT_EQ(path_component(s), s);
 }
 
-}  // namespace
+}  // namespace test_names

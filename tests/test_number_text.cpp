@@ -12,7 +12,7 @@
 
 #include "libfit/base/number_text.hpp"
 
-namespace {
+namespace test_number_text {
 
 using metalfit::fixed_text;
 using metalfit::scientific_text;
@@ -134,4 +134,4 @@ TEST(NumberText, NotFiniteNumbers) {
     EXPECT_EQ(fixed_text(-std::numeric_limits<double>::infinity(), 2), "-inf");
 }
 
-}  // namespace
+}  // namespace test_number_text

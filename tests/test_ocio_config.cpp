@@ -17,7 +17,7 @@
 #include <string>
 
 namespace metalfit {
-namespace {
+namespace test_ocio_config {
 
 namespace OCIO = OCIO_NAMESPACE;
 using namespace metalfit::test;
@@ -190,5 +190,5 @@ TEST(ShippedOcioConfig, AliasesNameTheirOwnSpaceOnly) {
     }
 }
 
-}  // namespace
+}  // namespace test_ocio_config
 }  // namespace metalfit

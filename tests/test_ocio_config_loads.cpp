@@ -15,7 +15,7 @@
 #include "libfit/color/rgb_conversion.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_ocio_config_loads {
 
 namespace OCIO = OCIO_NAMESPACE;
 using namespace metalfit::test;
@@ -89,5 +89,5 @@ TEST(OcioConfigLoads, OneParsePerProcessAndFile) {
     EXPECT_EQ(a({0.2, 0.3, 0.4}).g, e({0.2, 0.3, 0.4}).g);
 }
 
-}  // namespace
+}  // namespace test_ocio_config_loads
 }  // namespace metalfit

@@ -8,7 +8,7 @@
 #include "libfit/base/phase_clock.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_phase_clock {
 
 TEST(PhaseClock, SleepingIsWallTimeNotCpuTime) {
     PhaseClock clock;
@@ -33,5 +33,5 @@ TEST(PhaseClock, PhasesAdd) {
     EXPECT_EQ(a.wall, 2.25);
 }
 
-}  // namespace
+}  // namespace test_phase_clock
 }  // namespace metalfit

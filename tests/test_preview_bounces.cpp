@@ -26,7 +26,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_bounces {
 
 using test::kData;
 
@@ -385,5 +385,5 @@ TEST(PreviewBounces, TheBenchTableHasEveryModelAtEveryOrder) {
     EXPECT_GT(rgb[3]["reaching"]["de2000_p95"].get<double>(), rgb[0]["reaching"]["de2000_p95"].get<double>());
 }
 
-}  // namespace
+}  // namespace test_preview_bounces
 }  // namespace metalfit::glpreview

@@ -22,7 +22,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_caustics {
 
 using test::kData;
 
@@ -241,5 +241,5 @@ TEST(CausticsGpu, ASphereBeforeTheRingShadowsItsCausticAsInTheReference) {
     EXPECT_NEAR(gpu[0] / reference[0], 1.0, 0.03);
 }
 
-}  // namespace
+}  // namespace test_preview_caustics
 }  // namespace metalfit::glpreview

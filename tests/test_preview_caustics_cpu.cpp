@@ -23,7 +23,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_caustics_cpu {
 
 using test::kData;
 namespace fs = std::filesystem;
@@ -447,5 +447,5 @@ TEST(CausticsCli, BadRingsAndCausticsAreExit3NamingTheFileAndField) {
     EXPECT_FALSE(fs::exists(dir.path() / "out"));
 }
 
-}  // namespace
+}  // namespace test_preview_caustics_cpu
 }  // namespace metalfit::glpreview

@@ -16,7 +16,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::test {
-namespace {
+namespace test_preview_cli {
 
 using CommandRun = CommandResult;
 
@@ -486,5 +486,5 @@ TEST(PreviewImageInput, HostileHeadersAndSpecialFilesAreBadInputNotMemoryOrAHang
     EXPECT_EQ(message_of("/dev/zero"), "/dev/zero: cannot read the image: not a regular file");
 }
 
-}  // namespace
+}  // namespace test_preview_cli
 }  // namespace metalfit::test

@@ -16,7 +16,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_delta_e {
 
 using test::kData;
 
@@ -164,5 +164,5 @@ TEST(PreviewDeltaE, TheScenesDeltaEFilesAndMetricsComeFromItsImages) {
     }
 }
 
-}  // namespace
+}  // namespace test_preview_delta_e
 }  // namespace metalfit::glpreview

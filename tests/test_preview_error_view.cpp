@@ -7,7 +7,7 @@
 #include "glpreview/render/error_view.hpp"
 
 namespace metalfit::test {
-namespace {
+namespace test_preview_error_view {
 
 using namespace metalfit::glpreview;
 
@@ -89,5 +89,5 @@ TEST(ErrorView, TheColourBarRunsFromPlusToMinusTheScaleThroughBlack) {
     EXPECT_NEAR(quarter.r, expected.r, 1e-6);
 }
 
-}  // namespace
+}  // namespace test_preview_error_view
 }  // namespace metalfit::test

@@ -18,7 +18,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_fit_error {
 
 using test::kData;
 
@@ -112,5 +112,5 @@ TEST(PreviewFitError, ThePlanMakesTheExactFrameOnlyWhereASphereUsesAModel) {
     EXPECT_TRUE(said_why);
 }
 
-}  // namespace
+}  // namespace test_preview_fit_error
 }  // namespace metalfit::glpreview

@@ -29,7 +29,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_glossy {
 
 using test::kData;
 
@@ -390,11 +390,11 @@ TEST(PreviewGlossy, ARoughSceneRunsThroughTheGraphWithItsNoiseInTheMetrics) {
     }
 }
 
-}  // namespace
+}  // namespace test_preview_glossy
 }  // namespace metalfit::glpreview
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_glossy {
 
 // --- the localized method (thesis ch. 5) on GL ---
 
@@ -606,5 +606,5 @@ TEST(PreviewLocalizedGlossy, GrowingMApproachesTheMonteCarloReference) {
     EXPECT_GT(prefiltered, rmse[16]);
 }
 
-}  // namespace
+}  // namespace test_preview_glossy
 }  // namespace metalfit::glpreview

@@ -10,7 +10,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_glossy_bench {
 
 using test::kData;
 
@@ -58,5 +58,5 @@ TEST(PreviewGlossyBench, TheTableHasEveryRoughnessAndMethodAndItsRmseIsThePrevie
     }
 }
 
-}  // namespace
+}  // namespace test_preview_glossy_bench
 }  // namespace metalfit::glpreview

@@ -16,7 +16,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_glossy_choice {
 
 using test::kData;
 using Json = nlohmann::json;
@@ -193,5 +193,5 @@ TEST(PreviewGlossyChoice, TheSheetPlansEachColumnsMethod) {
     EXPECT_TRUE(plan.runs("downsample-environment 8"));
 }
 
-}  // namespace
+}  // namespace test_preview_glossy_choice
 }  // namespace metalfit::glpreview

@@ -29,7 +29,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_gpu {
 
 using test::kData;
 namespace fs = std::filesystem;
@@ -564,5 +564,5 @@ TEST(PreviewGpu, ShaderBenchmarkTimesEveryModelAndTheReferenceLut) {
     }
 }
 
-}  // namespace
+}  // namespace test_preview_gpu
 }  // namespace metalfit::glpreview

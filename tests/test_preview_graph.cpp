@@ -9,7 +9,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview::graph {
-namespace {
+namespace test_preview_graph {
 
 std::vector<std::string> events;  // "run A", "create t", "free t", in the order they happened
 
@@ -216,5 +216,5 @@ TEST(PreviewGraph, TwoWritersAndUndeclaredAccessAreErrors) {
     }
 }
 
-}  // namespace
+}  // namespace test_preview_graph
 }  // namespace metalfit::glpreview::graph

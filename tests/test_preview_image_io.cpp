@@ -16,7 +16,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::test {
-namespace {
+namespace test_preview_image_io {
 
 using glpreview::ExrColour;
 using glpreview::Image;
@@ -135,5 +135,5 @@ TEST(PreviewImageIo, AMissingOpenImageIoModuleIsOneLineNamingIt) {
     EXPECT_EQ(std::count(hdr.err.begin(), hdr.err.end(), '\n'), 1) << hdr.err;
 }
 
-}  // namespace
+}  // namespace test_preview_image_io
 }  // namespace metalfit::test

@@ -23,7 +23,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_indirect {
 
 using test::kData;
 
@@ -172,5 +172,5 @@ TEST(IndirectReference, TheVirtualLightsAgreeWithMonteCarloAwayFromTheWalls) {
     EXPECT_NEAR(gathered / reference, 1.0, 0.1) << gathered << " vs " << reference;
 }
 
-}  // namespace
+}  // namespace test_preview_indirect
 }  // namespace metalfit::glpreview

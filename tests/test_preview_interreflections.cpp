@@ -20,7 +20,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_interreflections {
 
 using test::kData;
 
@@ -315,5 +315,5 @@ TEST(InterreflectionsGpu, OneBounceIsTodaysFrame) {
         }
 }
 
-}  // namespace
+}  // namespace test_preview_interreflections
 }  // namespace metalfit::glpreview

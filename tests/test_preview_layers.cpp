@@ -20,7 +20,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_layers {
 
 using test::kData;
 
@@ -214,5 +214,5 @@ TEST(PreviewLayers, LayeredSpheresRenderAgainstTheirReference) {
     EXPECT_LT(spheres[2].at("fit_rmse").get<double>(), 0.02);
 }
 
-}  // namespace
+}  // namespace test_preview_layers
 }  // namespace metalfit::glpreview

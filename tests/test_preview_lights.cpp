@@ -18,7 +18,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_lights {
 
 using test::kData;
 
@@ -270,5 +270,5 @@ TEST(LightsGpu, AMirrorSeesASphereLightAsItsFresnelTimesItsRadiance) {
     EXPECT_GT(agreeing, emitter_pixels * 8 / 10);
 }
 
-}  // namespace
+}  // namespace test_preview_lights
 }  // namespace metalfit::glpreview

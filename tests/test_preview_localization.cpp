@@ -28,7 +28,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_localization {
 
 using test::kData;
 
@@ -628,5 +628,5 @@ TEST(PreviewLocalizationProbe, RhoAtTheLookupNeverGrowsWithTheLimit) {
     }
 }
 
-}  // namespace
+}  // namespace test_preview_localization
 }  // namespace metalfit::glpreview

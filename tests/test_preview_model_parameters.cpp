@@ -15,7 +15,7 @@
 #include "libfit/models/model.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_model_parameters {
 
 // F(μ) = Σ_k p_k (1 − μ)^k, k = 0..5: every parameter weighs differently at each μ.
 class SixParameterModel final : public Model {
@@ -152,5 +152,5 @@ TEST(PreviewModelParameters, ParametersSetWithoutTheirFloatValuesAreRefused) {
     EXPECT_THROW(f(0.5), std::logic_error);
 }
 
-}  // namespace
+}  // namespace test_preview_model_parameters
 }  // namespace metalfit::glpreview

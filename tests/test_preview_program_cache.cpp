@@ -12,7 +12,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_program_cache {
 
 using test::kData;
 
@@ -69,5 +69,5 @@ TEST(PreviewProgramCache, RenderersOfOneContextShareItsProgramsAndKeepTheirOwnUn
     EXPECT_NE(alone.beauty->rgb, shared_first->rgb);
 }
 
-}  // namespace
+}  // namespace test_preview_program_cache
 }  // namespace metalfit::glpreview

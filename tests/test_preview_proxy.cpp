@@ -19,7 +19,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_proxy {
 
 using test::kData;
 namespace fs = std::filesystem;
@@ -308,5 +308,5 @@ TEST(PreviewProxy, ASphereProxyOfHugeRadiusApproachesThePlainEquirectAtInfinity)
     }
 }
 
-}  // namespace
+}  // namespace test_preview_proxy
 }  // namespace metalfit::glpreview

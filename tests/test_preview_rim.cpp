@@ -10,7 +10,7 @@
 #include "glpreview/scene/camera.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_rim {
 
 constexpr int kWidth = 200, kHeight = 160;
 constexpr double kFov = 45;  // the sphere at distance 3 fills 68 of the 80 rows above the centre
@@ -135,5 +135,5 @@ TEST(RimUnwrap, TheRimsMuRangeIsThatOfItsInnerEdge) {
     }
 }
 
-}  // namespace
+}  // namespace test_preview_rim
 }  // namespace metalfit::glpreview

@@ -17,7 +17,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_scene {
 
 const char* kMinimal = R"({"spheres": [{"center": [0, 1, 0]}]})";
 
@@ -662,5 +662,5 @@ TEST(PreviewDisplay, LibfitsDisplayTransformEncodesSceneLinearAsSrgb) {
     }
 }
 
-}  // namespace
+}  // namespace test_preview_scene
 }  // namespace metalfit::glpreview

@@ -14,7 +14,7 @@
 #include "libfit/models/model.hpp"
 
 namespace metalfit::glpreview {
-namespace {
+namespace test_preview_shader_builder {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
@@ -162,5 +162,5 @@ TEST(ShaderBuilderGl, ALinkedProgramThatReadsAnUndeclaredSamplerIsRefused) {
     EXPECT_THROW(link(cache, undeclared), std::logic_error);
 }
 
-}  // namespace
+}  // namespace test_preview_shader_builder
 }  // namespace metalfit::glpreview

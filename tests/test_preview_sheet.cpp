@@ -14,7 +14,7 @@
 #include "test_support.hpp"
 
 namespace metalfit::test {
-namespace {
+namespace test_preview_sheet {
 
 using namespace metalfit::glpreview;
 
@@ -476,5 +476,5 @@ TEST(PreviewSheet, SheetRowsWritesEachRowAsTheSheetOfItsMaterialAlone) {
     EXPECT_EQ(glpreview(sheet_scene() + " --sheet-rows -o " + (dir.path() / "x").string(), dir).exit_code, 2);
 }
 
-}  // namespace
+}  // namespace test_preview_sheet
 }  // namespace metalfit::test

@@ -12,7 +12,7 @@
 #include "libfit/base/quadrature.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_quadrature {
 
 double integrate(const std::vector<QuadratureNode>& rule, const std::function<double(double)>& f) {
     double sum = 0.0;
@@ -208,5 +208,5 @@ TEST(Quadrature, SqrtConvergesAlgebraically) {
     EXPECT_LT(previous, 1e-7);
 }
 
-}  // namespace
+}  // namespace test_quadrature
 }  // namespace metalfit

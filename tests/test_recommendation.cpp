@@ -26,7 +26,7 @@
 #include "test_support.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_recommendation {
 
 using namespace metalfit::test;
 
@@ -202,5 +202,5 @@ TEST(Budget, SeveralLimitsAndAFilter) {
     EXPECT_EQ(filtered.candidates[2].reason, "not here");
 }
 
-}  // namespace
+}  // namespace test_recommendation
 }  // namespace metalfit

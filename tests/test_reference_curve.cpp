@@ -15,7 +15,7 @@
 #include "libfit/reference/reference_curve.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_reference_curve {
 
 using namespace metalfit::test;
 
@@ -236,5 +236,5 @@ TEST_F(ReferenceCurveTest, AluminiumHasItsMinimumNearGrazing) {
     EXPECT_LT(at, 0.4);
 }
 
-}  // namespace
+}  // namespace test_reference_curve
 }  // namespace metalfit

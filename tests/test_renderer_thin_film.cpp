@@ -22,7 +22,7 @@
 #include "libfit/reference/stack_grid.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_renderer_thin_film {
 using test::kData;
 
 using L = long double;
@@ -307,5 +307,5 @@ TEST(RendererFilmScores, AtZeroThicknessMaterialxScoresAsTheConductorRgbFit) {
     for (const RendererScore& s : scores.rows[1].scores) EXPECT_GT(s.metrics.de2000_mean, 0.1);
 }
 
-}  // namespace
+}  // namespace test_renderer_thin_film
 }  // namespace metalfit

@@ -7,7 +7,7 @@
 #include "libfit/report/report.hpp"
 #include "test_support.hpp"
 
-namespace {
+namespace test_report_folder {
 
 namespace fs = std::filesystem;
 using metalfit::ReportFile;
@@ -78,4 +78,4 @@ TEST(ReportFolder, ATargetThatIsAFileOrUnderNoFolderIsAnInputError) {
     EXPECT_EQ(entries(tmp.path()), 1u);
 }
 
-}  // namespace
+}  // namespace test_report_folder

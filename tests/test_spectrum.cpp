@@ -12,7 +12,7 @@
 #include "libfit/spectral/spectrum.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_spectrum {
 
 using namespace metalfit::test;
 
@@ -296,5 +296,5 @@ TEST(SpectrumRange, WavelengthRangeHelpers) {
     EXPECT_TRUE(kVisibleRange.covers(kVisibleRange));
 }
 
-}  // namespace
+}  // namespace test_spectrum
 }  // namespace metalfit

@@ -18,7 +18,7 @@
 #include "libfit/optics/stack_reflectance.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_stack_reflectance {
 
 using C = std::complex<double>;
 
@@ -282,5 +282,5 @@ TEST(StackReflectance, ACoatOverAPerfectMirrorReflectsEverythingWithoutAbsorptio
     }
 }
 
-}  // namespace
+}  // namespace test_stack_reflectance
 }  // namespace metalfit

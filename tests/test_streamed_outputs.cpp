@@ -28,7 +28,7 @@
 #include "libfit/report/report_stream.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_streamed_outputs {
 
 namespace fs = std::filesystem;
 using namespace metalfit::test;
@@ -207,5 +207,5 @@ TEST(ReportStream, RefusesAMaterialNamedTwiceAsReportFilesDoes) {
     EXPECT_FALSE(fs::exists(tmp.path() / "out"));
 }
 
-}  // namespace
+}  // namespace test_streamed_outputs
 }  // namespace metalfit

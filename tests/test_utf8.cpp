@@ -8,7 +8,7 @@
 #include "libfit/base/utf8.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_utf8 {
 
 TEST(Utf8, WellFormedTextPasses) {
     for (const char* text :
@@ -67,5 +67,5 @@ TEST(Utf8, CommandLineValuesAreUsageErrorsNamingTheArgument) {
     EXPECT_NO_THROW(require_utf8_arguments(4, fine));
 }
 
-}  // namespace
+}  // namespace test_utf8
 }  // namespace metalfit

@@ -15,7 +15,7 @@
 #include "libfit/models/two_column_projection.hpp"
 
 namespace metalfit {
-namespace {
+namespace test_variable_projection {
 
 // Rosenbrock as least squares: r = (10 (y − x²), 1 − x), minimum 0 at (1, 1).
 bool rosenbrock(const double* z, double* r, double* J) {
@@ -186,5 +186,5 @@ TEST(VariableProjection, RationalRefusesADenominatorWithoutSignAtTheNodes) {
     EXPECT_TRUE(rational(fine.data(), r.data(), J.data()));
 }
 
-}  // namespace
+}  // namespace test_variable_projection
 }  // namespace metalfit

@@ -22,7 +22,7 @@
 
 extern char** environ;
 
-namespace {
+namespace test_writers_interrupted {
 
 namespace fs = std::filesystem;
 using metalfit::test::Contains;
@@ -297,4 +297,4 @@ TEST(WritersInterrupted, ASymlinkedSubfolderOfTheOutputIsRefused) {
     EXPECT_EQ(names_in(tmp.path()), (std::vector<std::string>{"out", "outside"}));
 }
 
-}  // namespace
+}  // namespace test_writers_interrupted
