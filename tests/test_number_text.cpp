@@ -134,4 +134,56 @@ TEST(NumberText, NotFiniteNumbers) {
     EXPECT_EQ(fixed_text(-std::numeric_limits<double>::infinity(), 2), "-inf");
 }
 
+// A table's column: pad_left(text, width) is printf's "%<width>s", and with fixed_text printf's "%<width>.<d>f" (the
+// bench's Markdown tables), for every sign, size and width, wider numbers included (nothing cut).
+TEST(NumberText, PaddedColumnsAreWhatPrintfWrites) {
+    std::mt19937_64 random(2031);
+    std::uniform_real_distribution<double> exponent(-8.0, 14.0);
+    std::vector<double> values{0.0,
+                               -0.0,
+                               0.5,
+                               -0.0004,
+                               999.9995,
+                               std::numeric_limits<double>::infinity(),
+                               -std::numeric_limits<double>::infinity(),
+                               std::numeric_limits<double>::quiet_NaN(),
+                               1e300};
+    for (int i = 0; i < 5000; ++i) values.push_back((i % 3 ? 1 : -1) * std::pow(10.0, exponent(random)));
+    char text[512];
+    for (const double v : values)
+        for (int width : {0, 1, 7, 9, 13}) {
+            for (int decimals : {0, 1, 2, 3}) {
+                std::snprintf(text, sizeof text, "%*.*f", width, decimals, v);
+                ASSERT_EQ(metalfit::pad_left(fixed_text(v, decimals), static_cast<std::size_t>(width)), text) << v;
+            }
+            std::snprintf(text, sizeof text, "%*g", width, v);
+            ASSERT_EQ(metalfit::pad_left(significant_text(v, 6), static_cast<std::size_t>(width)), text) << v;
+        }
+    for (const char* word : {"", "a", "materials", "window wait s", "longer than the column"})
+        for (int width = 0; width < 30; ++width) {
+            std::snprintf(text, sizeof text, "%*s", width, word);
+            ASSERT_EQ(metalfit::pad_left(word, static_cast<std::size_t>(width)), text);
+        }
+}
+
+// hex_text(value, digits, letters) is printf's "%0<digits>x" / "%0<digits>X": zeros in front up to `digits`, never
+// cut, every bit of a 64-bit value.
+TEST(NumberText, HexDigitsAreWhatPrintfWrites) {
+    using metalfit::hex_text;
+    using metalfit::HexLetters;
+    std::mt19937_64 random(0x31);
+    std::vector<std::uint64_t> values{0, 1, 9, 10, 15, 16, 0xff, 0x100, 0xabcdef, 0x10ffff, UINT32_MAX, UINT64_MAX};
+    for (int i = 0; i < 20000; ++i) values.push_back(random() >> (random() % 64));
+    char text[64];
+    for (const std::uint64_t v : values)
+        for (int digits : {0, 1, 2, 4, 8, 17, 20}) {
+            std::snprintf(text, sizeof text, "%0*llx", digits, static_cast<unsigned long long>(v));
+            ASSERT_EQ(hex_text(v, digits, HexLetters::lower), text);
+            std::snprintf(text, sizeof text, "%0*llX", digits, static_cast<unsigned long long>(v));
+            ASSERT_EQ(hex_text(v, digits, HexLetters::upper), text);
+        }
+    EXPECT_EQ(hex_text(0x500, 4, HexLetters::lower), "0500");  // GL_INVALID_ENUM, as glpreview's errors name it
+    EXPECT_EQ(hex_text(0xe9, 2, HexLetters::upper), "E9");
+}
+
 }  // namespace test_number_text

@@ -2,6 +2,7 @@
 // well-formed sequences only, and the place and reason of the first byte that is not one.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 
 #include "libfit/base/errors.hpp"
@@ -65,6 +66,28 @@ TEST(Utf8, CommandLineValuesAreUsageErrorsNamingTheArgument) {
     }
     const char* fine[] = {"metalfit", "show", "--name", "caf\xc3\xa9"};
     EXPECT_NO_THROW(require_utf8_arguments(4, fine));
+}
+
+// The escapes messages and literals write: byte_escape is printf's "\\x%02X" (messages) or "\\x%02x" (Python
+// literals) for every byte, code_point_name printf's "U+%04X" for every code point and beyond (a decoded sequence
+// above U+10FFFF is named too).
+TEST(Utf8, EscapesAreWhatPrintfWrites) {
+    char text[32];
+    for (unsigned byte = 0; byte < 256; ++byte) {
+        std::snprintf(text, sizeof text, "\\x%02X", byte);
+        ASSERT_EQ(byte_escape(static_cast<unsigned char>(byte)), text);
+        std::snprintf(text, sizeof text, "\\x%02x", byte);
+        ASSERT_EQ(byte_escape(static_cast<unsigned char>(byte), HexLetters::lower), text);
+    }
+    for (char32_t code = 0; code <= 0x1FFFFF; code += code < 0x1000 ? 1 : 97) {
+        std::snprintf(text, sizeof text, "U+%04X", static_cast<unsigned>(code));
+        ASSERT_EQ(code_point_name(code), text);
+    }
+    EXPECT_EQ(byte_escape(0xE9), "\\xE9");
+    EXPECT_EQ(code_point_name(0x200B), "U+200B");
+    EXPECT_EQ(code_point_name(0x1F600), "U+1F600");
+    // What sanitised_message writes with them: a stray byte, a control character, an invisible code point.
+    EXPECT_EQ(sanitised_message("a\xff\x01\xe2\x80\x8b"), "a\\xFF\\x01<U+200B>");
 }
 
 }  // namespace test_utf8

@@ -1,10 +1,10 @@
 #include "metalfit_bench/model_costs.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "libfit/base/interleaved_timer.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/sample_statistics.hpp"
 #include "libfit/models/registry.hpp"
 #include "metalfit_bench/environment.hpp"
@@ -26,12 +26,6 @@ MeasuredRatio measured(const std::vector<double>& a, const std::vector<double>& 
 
 ordered_json to_json(const MeasuredRatio& r) {
     return {{"ratio", r.ratio}, {"noise", r.noise}, {"quartiles", {r.quartiles[0], r.quartiles[1]}}};
-}
-
-std::string fixed(double v, int digits) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
 }
 
 }  // namespace
@@ -172,12 +166,13 @@ std::string to_text(const ModelCosts& c) {
                     " interleaved rounds, thread-cpu clock; ± half the interquartile range\n\n";
     t += "| model | llvmpipe | CPU array | SPIR-V ops | SPIR-V weighted |\n|---|---|---|---|---|\n";
     for (const ModelCostRow& r : c.rows)
-        t += "| " + r.model + " | " + fixed(r.gpu.ratio, 3) + " ± " + fixed(r.gpu.noise, 3) + " | " +
-             fixed(r.cpu_array.ratio, 3) + " ± " + fixed(r.cpu_array.noise, 3) + " | " + std::to_string(r.spirv_ops) +
-             " | " + fixed(r.spirv_weighted, 0) + " |\n";
-    t += "\nSpearman rank correlation: SPIR-V weighted vs llvmpipe " + fixed(c.weighted_vs_gpu, 2) + ", vs CPU array " +
-         fixed(c.weighted_vs_cpu, 2) + "; SPIR-V ops vs llvmpipe " + fixed(c.ops_vs_gpu, 2) + ", vs CPU array " +
-         fixed(c.ops_vs_cpu, 2) + "; CPU array vs llvmpipe " + fixed(c.cpu_vs_gpu, 2) + "\n";
+        t += "| " + r.model + " | " + fixed_text(r.gpu.ratio, 3) + " ± " + fixed_text(r.gpu.noise, 3) + " | " +
+             fixed_text(r.cpu_array.ratio, 3) + " ± " + fixed_text(r.cpu_array.noise, 3) + " | " +
+             std::to_string(r.spirv_ops) + " | " + fixed_text(r.spirv_weighted, 0) + " |\n";
+    t += "\nSpearman rank correlation: SPIR-V weighted vs llvmpipe " + fixed_text(c.weighted_vs_gpu, 2) +
+         ", vs CPU array " + fixed_text(c.weighted_vs_cpu, 2) + "; SPIR-V ops vs llvmpipe " +
+         fixed_text(c.ops_vs_gpu, 2) + ", vs CPU array " + fixed_text(c.ops_vs_cpu, 2) + "; CPU array vs llvmpipe " +
+         fixed_text(c.cpu_vs_gpu, 2) + "\n";
     return t;
 }
 

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -13,6 +14,7 @@
 #include <stdexcept>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/color/display_transform.hpp"
 #include "libfit/export/export.hpp"
 #include "libfit/export/export_stream.hpp"
@@ -399,43 +401,42 @@ std::string to_text(const ScalingTable& t) {
                          std::to_string(t.seed) + ")"
                    : std::string("metalfit bench --scaling-database: fit every metal nk file of a database folder")) +
         ", models " + join_models(t.models) + "\n" + t.machine + "\n";
-    char line[256];
-    std::snprintf(line, sizeof line, "| %9s | %7s | %9s | %9s | %9s | %13s | %11s | %11s | %12s | %10s | %13s |\n",
-                  "materials", "threads", "wall s", "CPU s", "peak MiB", "fits / CPU s", "wall / mat", "set-up CPU s",
-                  "record CPU s", "record MiB", "window wait s");
-    text += line;
+    // A Markdown row, each cell right-aligned in its column's width (what printf's "%<width>s" did).
+    constexpr std::size_t kWidths[] = {9, 7, 9, 9, 9, 13, 11, 11, 12, 10, 13};
+    const auto row = [&](const std::array<std::string, std::size(kWidths)>& cells) {
+        std::string line = "|";
+        for (std::size_t i = 0; i < cells.size(); ++i) line += " " + pad_left(cells[i], kWidths[i]) + " |";
+        return line + "\n";
+    };
+    text += row({"materials", "threads", "wall s", "CPU s", "peak MiB", "fits / CPU s", "wall / mat", "set-up CPU s",
+                 "record CPU s", "record MiB", "window wait s"});
     text += "|----------:|--------:|----------:|----------:|----------:|--------------:|------------:|------------:|"
             "-------------:|-----------:|--------------:|\n";
-    for (const ScalingCell& c : t.cells) {
-        std::snprintf(
-            line, sizeof line,
-            "| %9zu | %7d | %9.3f | %9.3f | %9.1f | %13.1f | %8.2f ms | %11.3f | %12.3f | %10.1f | %13.3f |\n",
-            c.materials, c.threads, c.wall_s, c.cpu_s, c.peak_mib,
-            c.cpu_s > 0 ? static_cast<double>(c.fits) / c.cpu_s : 0.0,
-            c.materials ? 1e3 * c.wall_s / static_cast<double>(c.materials) : 0.0, c.setup_cpu_s, c.record_cpu_s,
-            c.record_mib, c.window_wait_s);
-        text += line;
-    }
-    std::snprintf(line, sizeof line, "fit throughput: %.1f materials x models per CPU second (largest 1-thread cell)\n",
-                  t.fits_per_cpu_second());
-    text += line;
     for (const ScalingCell& c : t.cells)
-        if (c.renders_wall_s > 0) {
-            std::snprintf(line, sizeof line,
-                          "renders (%zu materials, %d thread%s): glpreview --sheet-rows %.1f s wall, peak %.1f MiB\n",
-                          c.materials, c.threads, c.threads == 1 ? "" : "s", c.renders_wall_s, c.renders_peak_mib);
-            text += line;
-        }
+        text += row(
+            {std::to_string(c.materials), std::to_string(c.threads), fixed_text(c.wall_s, 3), fixed_text(c.cpu_s, 3),
+             fixed_text(c.peak_mib, 1), fixed_text(c.cpu_s > 0 ? static_cast<double>(c.fits) / c.cpu_s : 0.0, 1),
+             pad_left(fixed_text(c.materials ? 1e3 * c.wall_s / static_cast<double>(c.materials) : 0.0, 2), 8) + " ms",
+             fixed_text(c.setup_cpu_s, 3), fixed_text(c.record_cpu_s, 3), fixed_text(c.record_mib, 1),
+             fixed_text(c.window_wait_s, 3)});
+    text += "fit throughput: " + fixed_text(t.fits_per_cpu_second(), 1) +
+            " materials x models per CPU second (largest 1-thread cell)\n";
+    const auto threads = [](const ScalingCell& c) {
+        return std::to_string(c.threads) + (c.threads == 1 ? " thread" : " threads");
+    };
     for (const ScalingCell& c : t.cells)
-        if (c.source == "database") {
-            std::snprintf(line, sizeof line,
-                          "database (%d thread%s): %zu files: %zu fitted; skipped %zu not nk, %zu unreadable, %zu not "
-                          "covering 360-830 nm, %zu not metal; scan %.3f s CPU\n",
-                          c.threads, c.threads == 1 ? "" : "s", c.files, c.materials, c.skipped_not_nk,
-                          c.skipped_unreadable, c.skipped_outside_visible, c.skipped_not_metal, c.scan_cpu_s);
-            text += "database " + c.folder.string() + "\n";
-            text += line;
-        }
+        if (c.renders_wall_s > 0)
+            text += "renders (" + std::to_string(c.materials) + " materials, " + threads(c) +
+                    "): glpreview --sheet-rows " + fixed_text(c.renders_wall_s, 1) + " s wall, peak " +
+                    fixed_text(c.renders_peak_mib, 1) + " MiB\n";
+    for (const ScalingCell& c : t.cells)
+        if (c.source == "database")
+            text += "database " + c.folder.string() + "\ndatabase (" + threads(c) + "): " + std::to_string(c.files) +
+                    " files: " + std::to_string(c.materials) + " fitted; skipped " + std::to_string(c.skipped_not_nk) +
+                    " not nk, " + std::to_string(c.skipped_unreadable) + " unreadable, " +
+                    std::to_string(c.skipped_outside_visible) + " not covering 360-830 nm, " +
+                    std::to_string(c.skipped_not_metal) + " not metal; scan " + fixed_text(c.scan_cpu_s, 3) +
+                    " s CPU\n";
     return text;
 }
 

@@ -1,11 +1,11 @@
 #include "glpreview/gl/gl_context.hpp"
 
 #include "glpreview/gl/program_cache.hpp"
+#include "libfit/base/number_text.hpp"
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
-#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 
@@ -13,9 +13,7 @@ namespace metalfit::glpreview {
 namespace {
 
 std::string egl_error_text() {
-    char text[32];
-    std::snprintf(text, sizeof text, "EGL error 0x%04x", static_cast<unsigned>(eglGetError()));
-    return text;
+    return "EGL error 0x" + hex_text(static_cast<unsigned>(eglGetError()), 4, HexLetters::lower);
 }
 
 template <typename F>
@@ -179,10 +177,8 @@ std::string GlContext::version() const {
 void check_gl(std::string_view what) {
     const GLenum error = glGetError();
     if (error == GL_NO_ERROR) return;
-    char code[16];
-    std::snprintf(code, sizeof code, "0x%04x", error);
     while (glGetError() != GL_NO_ERROR) {}
-    throw GlError(std::string(what) + ": GL error " + code);
+    throw GlError(std::string(what) + ": GL error 0x" + hex_text(error, 4, HexLetters::lower));
 }
 
 gl::Program link_program(const std::vector<ShaderStage>& stages, std::string_view name) {

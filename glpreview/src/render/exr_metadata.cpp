@@ -1,25 +1,18 @@
 #include "glpreview/render/exr_metadata.hpp"
 
-#include <cstdio>
-
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/version.hpp"
 
 namespace metalfit::glpreview {
 namespace {
-
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", v);
-    return text;
-}
 
 std::string parameters_text(const SphereFresnel& f) {
     std::string out;
     const auto names = f.model->parameters();
     for (std::size_t i = 0; i < names.size(); ++i) {
         const RGB v = f.parameters.parameter(i);
-        out += (i ? "; " : "") + std::string(names[i].name) + " = (" + number(v.r) + ", " + number(v.g) + ", " +
-               number(v.b) + ")";
+        out += (i ? "; " : "") + std::string(names[i].name) + " = (" + significant_text(v.r, 9) + ", " +
+               significant_text(v.g, 9) + ", " + significant_text(v.b, 9) + ")";
     }
     return out;
 }

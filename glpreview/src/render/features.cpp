@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "glpreview/render/sphere_shader.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/text.hpp"
 
 namespace metalfit::glpreview {
@@ -32,9 +32,7 @@ const char* strategy_define(Strategy strategy) {
 }
 
 std::string glsl_float(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", value);
-    std::string s = text;
+    std::string s = significant_text(value, 9);
     if (s.find_first_of(".e") == std::string::npos) s += ".0";
     return s;
 }

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "frame_timing.hpp"
 #include "glpreview/effects/registry.hpp"
@@ -15,6 +14,7 @@
 #include "glpreview/render/sphere_metrics.hpp"
 #include "libfit/base/atomic_file.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/sample_statistics.hpp"
 #include "libfit/base/text.hpp"
 
@@ -39,9 +39,9 @@ const Image& image_of(const ReferenceRender& render) { return render.image; }
 std::string caption_text(const std::string& caption, const PreviewRun& run) {
     std::string display = run.display ? run.display->description() : std::string();
     for (std::size_t at; (at = display.find("\u2192")) != std::string::npos;) display.replace(at, 3, "->");
-    char exposure[32];
-    std::snprintf(exposure, sizeof exposure, "%+g EV", std::log2(run.exposure));
-    return caption + "; " + display + ", exposure " + exposure;
+    const double stops = std::log2(run.exposure);
+    return caption + "; " + display + ", exposure " + (std::signbit(stops) ? "" : "+") + significant_text(stops, 6) +
+           " EV";  // printf's "%+g EV"
 }
 
 template <typename T>

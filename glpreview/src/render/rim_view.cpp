@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
 #include "glpreview/io/image_text.hpp"
 #include "glpreview/render/rim_unwrap.hpp"
 #include "glpreview/scene/camera.hpp"
+#include "libfit/base/number_text.hpp"
 
 namespace metalfit::glpreview {
 namespace {
@@ -26,12 +26,6 @@ void blit(Image& image, int x0, int y0, const Image& strip, double scale = 1.0) 
             const RGB c = strip.at(x, y);
             image.set(x0 + x, y0 + y, {c.r * scale, c.g * scale, c.b * scale});
         }
-}
-
-std::string fixed(double v, int digits = 2) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.*f", digits, v);
-    return text;
 }
 
 // F(μ) of both curves per channel over μ in [0, 1] (left to right), F in [0, 1] (bottom to top), the rim's μ
@@ -113,9 +107,10 @@ Image rim_view_image(const RimInputs& in) {
         paint_fresnel_plot(view, plot_x, top + kRimLabelRows, kRimPlotWidth, plot_h, *in.shown[i], *in.exact[i], mu);
         text.push_back({plot_x, top, kRimPlotWidth, kRimLabelRows, "F(mu) 0..1: model solid, exact dotted; R G B",
                         kRimLabelRows - 2});
-        const std::string range = mu.pixels > 0 ? "rim pixels' mu " + fixed(mu.min) + ".." + fixed(mu.max) + " (" +
-                                                      std::to_string(mu.pixels) + " px, shaded)"
-                                                : "no rim pixels";
+        const std::string range = mu.pixels > 0
+                                      ? "rim pixels' mu " + fixed_text(mu.min, 2) + ".." + fixed_text(mu.max, 2) +
+                                            " (" + std::to_string(mu.pixels) + " px, shaded)"
+                                      : "no rim pixels";
         text.push_back({plot_x, top + kRimLabelRows + plot_h, kRimPlotWidth, kRimLabelRows, "mu 0..1; " + range,
                         kRimLabelRows - 2});
     }

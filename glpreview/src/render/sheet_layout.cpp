@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/models/model.hpp"
 
 namespace metalfit::glpreview {
@@ -54,16 +54,6 @@ int sheet_column(SheetCellKind kind, int group, int roughness, int roughness_val
 
 int label_band_height(int cell_height) { return std::clamp(static_cast<int>(std::lround(cell_height * 0.08)), 8, 28); }
 
-namespace {
-
-std::string format(const char* pattern, double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, pattern, value);
-    return text;
-}
-
-}  // namespace
-
 std::vector<TextBox> sheet_labels(const std::vector<SheetCell>& cells, int cell_width, int cell_height,
                                   const ErrorScale& scale) {
     const int band = std::min(label_band_height(cell_height), cell_height / 2);
@@ -71,12 +61,12 @@ std::vector<TextBox> sheet_labels(const std::vector<SheetCell>& cells, int cell_
     std::vector<TextBox> boxes;
     for (const SheetCell& c : cells) {
         const int x = c.column * cell_width, y = c.row * cell_height;
-        std::string top, bottom = "roughness " + format("%g", c.roughness) + (c.lit ? ", lit" : "");
+        std::string top, bottom = "roughness " + significant_text(c.roughness, 6) + (c.lit ? ", lit" : "");
         switch (c.kind) {
             case SheetCellKind::reference: top = c.material + ": reference"; break;
             case SheetCellKind::model:
                 top = c.material + ": " + c.model + (c.best ? " (best)" : "");
-                bottom += ", rel_rms " + format("%.2g", 100.0 * c.error) + "%";
+                bottom += ", rel_rms " + significant_text(100.0 * c.error, 2) + "%";
                 break;
             case SheetCellKind::difference:
                 top = c.model + " / ref - 1";

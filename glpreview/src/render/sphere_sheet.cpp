@@ -19,6 +19,7 @@
 #include "glpreview/scene/glossy_choice.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/json_text.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/text.hpp"
 
 namespace metalfit::glpreview {
@@ -102,11 +103,7 @@ Lights grazing_light(const Scene& scene) {
 
 std::string roughness_list(const std::vector<double>& roughness) {
     std::vector<std::string> text;
-    for (double r : roughness) {
-        char value[32];
-        std::snprintf(value, sizeof value, "%g", r);
-        text.emplace_back(value);
-    }
+    for (double r : roughness) text.push_back(significant_text(r, 6));  // printf's %g
     return join(text);
 }
 

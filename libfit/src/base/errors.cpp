@@ -31,7 +31,6 @@ bool invisible(char32_t code) {
 std::string sanitised_message(std::string_view message, std::size_t max_bytes) {
     std::string out;
     std::size_t i = 0;
-    char buffer[16];
     while (i < message.size()) {
         if (out.size() >= max_bytes) {
             out += "… (" + std::to_string(message.size() - i) + " more bytes)";
@@ -40,19 +39,16 @@ std::string sanitised_message(std::string_view message, std::size_t max_bytes) {
         char32_t code = 0;
         const std::size_t length = utf8_sequence(message, i, code);
         if (length == 0) {
-            std::snprintf(buffer, sizeof buffer, "\\x%02X", static_cast<unsigned char>(message[i]));
-            out += buffer;
+            out += byte_escape(static_cast<unsigned char>(message[i]));
             ++i;
             continue;
         }
         if (code == '\n' || code == '\r' || code == '\t') {
             out += ' ';
         } else if (code < 0x20 || code == 0x7F) {
-            std::snprintf(buffer, sizeof buffer, "\\x%02X", static_cast<unsigned>(code));
-            out += buffer;
+            out += byte_escape(static_cast<unsigned char>(code));
         } else if (invisible(code)) {
-            std::snprintf(buffer, sizeof buffer, "<U+%04X>", static_cast<unsigned>(code));
-            out += buffer;
+            out += "<" + code_point_name(code) + ">";
         } else {
             out.append(message.substr(i, length));
         }

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "libfit/base/errors.hpp"
+#include "libfit/base/utf8.hpp"
 
 namespace metalfit {
 
@@ -38,15 +39,13 @@ std::string python_string_expression(std::string_view text) {
         return byte >= 0x20 && byte <= 0x7E;
     });
     std::string out = plain ? "'" : "b'";
-    char hex[8];
     for (const char ch : text) {
         const auto byte = static_cast<unsigned char>(ch);
         if (ch == '\'' || ch == '\\') {
             out += '\\';
             out += ch;
         } else if (byte < 0x20 || byte > 0x7E) {
-            std::snprintf(hex, sizeof hex, "\\x%02x", static_cast<unsigned>(byte));
-            out += hex;
+            out += byte_escape(byte, HexLetters::lower);
         } else {
             out += ch;
         }

@@ -36,6 +36,23 @@ std::string fixed_text(double v, int decimals) { return to_text(v, std::chars_fo
 
 std::string scientific_text(double v, int decimals) { return to_text(v, std::chars_format::scientific, decimals); }
 
+std::string pad_left(std::string text, std::size_t width) {
+    if (text.size() < width) text.insert(0, width - text.size(), ' ');
+    return text;
+}
+
+std::string hex_text(std::uint64_t value, int digits, HexLetters letters) {
+    char text[16];
+    const auto end = std::to_chars(text, text + sizeof text, value, 16).ptr;
+    std::string out(text, end);
+    if (letters == HexLetters::upper)
+        for (char& c : out)
+            if (c >= 'a' && c <= 'f') c = static_cast<char>(c - 'a' + 'A');
+    if (digits > 0 && out.size() < static_cast<std::size_t>(digits))
+        out.insert(0, static_cast<std::size_t>(digits) - out.size(), '0');
+    return out;
+}
+
 std::optional<double> whole_number(std::string_view text) {
     text = trim(text);
     if (text.empty()) return std::nullopt;

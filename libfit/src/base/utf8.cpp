@@ -1,7 +1,5 @@
 #include "libfit/base/utf8.hpp"
 
-#include <cstdio>
-
 #include "libfit/base/errors.hpp"
 
 namespace metalfit {
@@ -36,37 +34,30 @@ bool overlong(const Decoded& d) {
 
 bool surrogate(char32_t code) { return code >= 0xD800 && code <= 0xDFFF; }
 
+// "C0 AF": each byte as two upper-case hex digits.
 std::string hex_bytes(std::string_view bytes) {
     std::string out;
-    char buffer[8];
-    for (const char b : bytes) {
-        std::snprintf(buffer, sizeof buffer, "%s%02X", out.empty() ? "" : " ", static_cast<unsigned char>(b));
-        out += buffer;
-    }
+    for (const char b : bytes)
+        out += (out.empty() ? "" : " ") + hex_text(static_cast<unsigned char>(b), 2, HexLetters::upper);
     return out;
-}
-
-std::string code_point(char32_t code) {
-    char buffer[16];
-    std::snprintf(buffer, sizeof buffer, "U+%04X", static_cast<unsigned>(code));
-    return buffer;
 }
 
 // Why text[i] starts no UTF-8 sequence (utf8_sequence returned 0 there).
 std::string why_not(std::string_view text, std::size_t i) {
     const Decoded d = decode(text, i);
-    if (!d.complete) {  // no lead byte, or a truncated sequence
-        char buffer[48];
-        std::snprintf(buffer, sizeof buffer, "byte 0x%02X is not UTF-8", static_cast<unsigned char>(text[i]));
-        return buffer;
-    }
+    if (!d.complete)  // no lead byte, or a truncated sequence
+        return "byte 0x" + hex_text(static_cast<unsigned char>(text[i]), 2, HexLetters::upper) + " is not UTF-8";
     const std::string bytes = hex_bytes(text.substr(i, d.length));
-    if (overlong(d)) return "overlong encoding " + bytes + " of " + code_point(d.code);
-    if (surrogate(d.code)) return "UTF-16 surrogate " + code_point(d.code) + " (" + bytes + ") in UTF-8";
-    return "code point " + code_point(d.code) + " (" + bytes + ") above U+10FFFF";
+    if (overlong(d)) return "overlong encoding " + bytes + " of " + code_point_name(d.code);
+    if (surrogate(d.code)) return "UTF-16 surrogate " + code_point_name(d.code) + " (" + bytes + ") in UTF-8";
+    return "code point " + code_point_name(d.code) + " (" + bytes + ") above U+10FFFF";
 }
 
 }  // namespace
+
+std::string byte_escape(unsigned char byte, HexLetters letters) { return "\\x" + hex_text(byte, 2, letters); }
+
+std::string code_point_name(char32_t code) { return "U+" + hex_text(code, 4, HexLetters::upper); }
 
 std::size_t utf8_sequence(std::string_view text, std::size_t i, char32_t& code) {
     const Decoded d = decode(text, i);

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <initializer_list>
 #include <sstream>
@@ -19,6 +18,7 @@
 
 #include "glpreview/scene/vec3.hpp"
 #include "libfit/base/errors.hpp"
+#include "libfit/base/utf8.hpp"
 #include "libfit/color/color.hpp"
 
 namespace metalfit::glpreview {
@@ -36,9 +36,7 @@ inline std::string scene_excerpt(std::string_view text, std::size_t max = 40) {
         if (c >= 0x20 && c < 0x7f) {
             out += static_cast<char>(c);
         } else {
-            char hex[8];
-            std::snprintf(hex, sizeof hex, "\\x%02X", c);
-            out += hex;
+            out += byte_escape(c);
         }
     }
     return out;
