@@ -5,6 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
   build-essential cmake pkg-config     # toolchain
+  ninja-build                          # the presets' generator: one scheduler for the whole build
   ccache                               # compiler cache (the build uses it when present; CMakeLists.txt)
   libgtest-dev                         # tests
   libceres-dev libeigen3-dev           # fitting, linear algebra
