@@ -310,8 +310,6 @@ TEST_F(CliLayers, EveryShippedFinishLoadsAndStatesItsSources) {
 
 // --- the oxide colour chart ---------------------------------------------------------------------------------------
 
-namespace {
-
 // The hue (degrees) and HSV saturation and value of an 8-bit display colour.
 struct Hsv {
     double h = 0, s = 0, v = 0;
@@ -339,8 +337,6 @@ std::string colour_name(const Hsv& c) {
     if (c.h >= 180 && c.h < 270) return "blue";
     return "green";
 }
-
-}  // namespace
 
 TEST_F(CliLayers, TitaniumsOxideColoursFollowThePublishedOrderWithThickness) {
     // Published order of anodized titanium with voltage (thickness): yellow/gold (bronze) - purple - blue - light

@@ -176,7 +176,6 @@ TEST(ModelLazanyiComp, MatchesThesisEquation) {
 // The fit's variable projection: for a fixed α, F0 and a are the least-squares solution (a target built from a known
 // curve comes back exactly; elsewhere moving F0 or a raises the cost), the residuals are the full curve's at the
 // parameters it returns, and the derivative of the projected cost in α is its finite difference.
-namespace {
 ChannelTarget lazanyi_comp_target(const std::array<double, 4>& p) {
     ChannelTarget t;
     for (const QuadratureNode& q : gauss_legendre_unit(64)) {
@@ -194,7 +193,6 @@ double projected_cost(const ChannelTarget& t, const ChannelParameters& p) {
     }
     return cost;
 }
-}  // namespace
 
 TEST(ModelLazanyiComp, ProjectionSolvesF0AndAmplitudeExactly) {
     const std::array<double, 4> truth{0.4, 3.0, 0.25, 5.0};
