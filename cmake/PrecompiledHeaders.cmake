@@ -1,6 +1,6 @@
 # metalfit_precompile_headers(<target> [<header>...]): the standard library headers and nlohmann-json, which nearly
-# every translation unit of libfit, glpreview, the CLI and the bench parses, are parsed once per target into a
-# precompiled header that each of its files loads instead (plus the target's own <header>s, e.g. CLI11 for the CLI).
+# every translation unit of libfit, glpreview and the bench parses, are parsed once per target into a precompiled
+# header that each of its files loads instead (plus the target's own <header>s).
 # Call it at the end of the target's CMakeLists.txt: a file compiled with options of its own (-fno-math-errno) is
 # left out, since GCC cannot use a header precompiled under other options for it.
 #
