@@ -166,6 +166,24 @@ TEST(NumberText, PaddedColumnsAreWhatPrintfWrites) {
         }
 }
 
+// A table's left-aligned column: pad_right(text, width) is printf's "%-<width>s" (glpreview's names beside their
+// numbers), and with fixed_text printf's "%-<width>.<d>f", for every width, wider text included (nothing cut).
+TEST(NumberText, LeftAlignedColumnsAreWhatPrintfWrites) {
+    char text[512];
+    for (const char* word : {"", "a", "gold", "conductor-rgb", "distance-impostor", "longer than the column", "é"})
+        for (int width = 0; width < 30; ++width) {
+            std::snprintf(text, sizeof text, "%-*s", width, word);
+            ASSERT_EQ(metalfit::pad_right(word, static_cast<std::size_t>(width)), text) << word << " " << width;
+        }
+    for (const double v : {0.0, -0.0, 0.5, -12.345, 999.9995, 1e300, -std::numeric_limits<double>::infinity(),
+                           std::numeric_limits<double>::quiet_NaN()})
+        for (int width : {0, 1, 5, 9, 13})
+            for (int decimals : {0, 2, 3}) {
+                std::snprintf(text, sizeof text, "%-*.*f", width, decimals, v);
+                ASSERT_EQ(metalfit::pad_right(fixed_text(v, decimals), static_cast<std::size_t>(width)), text) << v;
+            }
+}
+
 // hex_text(value, digits, letters) is printf's "%0<digits>x" / "%0<digits>X": zeros in front up to `digits`, never
 // cut, every bit of a 64-bit value.
 TEST(NumberText, HexDigitsAreWhatPrintfWrites) {

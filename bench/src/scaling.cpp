@@ -92,12 +92,14 @@ void write_nk_table(const std::filesystem::path& file, const Material& m) {
     const Spectrum* k = m.index.k.tabulated();
     if (!n || !k || !std::ranges::equal(n->wavelengths(), k->wavelengths()))
         throw std::runtime_error("scaling: " + m.id + ": n and k are not one table");
+    std::string text = "wl,n,k\n";
+    for (std::size_t i = 0; i < n->size(); ++i)
+        text += significant_text(n->wavelengths()[i] / 1000.0, 17) + "," + significant_text(n->values()[i], 17) + "," +
+                significant_text(k->values()[i], 17) + "\n";
     std::FILE* out = std::fopen(file.c_str(), "w");
     if (!out) throw std::runtime_error("scaling: cannot write " + file.string());
-    std::fprintf(out, "wl,n,k\n");
-    for (std::size_t i = 0; i < n->size(); ++i)
-        std::fprintf(out, "%.17g,%.17g,%.17g\n", n->wavelengths()[i] / 1000.0, n->values()[i], k->values()[i]);
-    if (std::fclose(out) != 0) throw std::runtime_error("scaling: cannot write " + file.string());
+    const bool written = std::fputs(text.c_str(), out) >= 0;
+    if (std::fclose(out) != 0 || !written) throw std::runtime_error("scaling: cannot write " + file.string());
 }
 
 }  // namespace

@@ -30,8 +30,10 @@
 #include "libfit/base/data_dir.hpp"
 #include "libfit/base/errors.hpp"
 #include "libfit/base/library_logging.hpp"
+#include "libfit/base/number_text.hpp"
 #include "libfit/base/sample_statistics.hpp"
 #include "libfit/base/standard_output.hpp"
+#include "libfit/base/text.hpp"
 #include "libfit/base/utf8.hpp"
 #include "libfit/base/version.hpp"
 #include "libfit/export/roughness.hpp"
@@ -74,6 +76,12 @@ double parse_exposure(const std::string& text) {
 
 namespace {
 
+using metalfit::fixed_text;
+using metalfit::pad_left;
+using metalfit::pad_right;
+using metalfit::scientific_text;
+using metalfit::significant_text;
+
 // An image size WxH given to `option` (--size, --capture-probe).
 std::pair<int, int> parse_size(const std::string& option, const std::string& size, const char* example) {
     using namespace metalfit::glpreview;
@@ -101,96 +109,209 @@ void print_renderer(const metalfit::glpreview::PreviewResult& result) {
 void print_preview(const metalfit::glpreview::PreviewResult& result) {
     for (const auto& file : result.written) std::cout << file.string() << "\n";
     if (result.metrics.is_null()) return;
-    std::printf("ms per frame (median of %zu): %.2f\n", result.frame_ms.size(),
-                result.frame_ms.empty() ? 0.0 : metalfit::median(result.frame_ms));
+    std::string text = "ms per frame (median of " + std::to_string(result.frame_ms.size()) +
+                       "): " + fixed_text(result.frame_ms.empty() ? 0.0 : metalfit::median(result.frame_ms), 2) + "\n";
     for (const auto& s : result.metrics["spheres"]) {
-        std::printf("sphere %d %-12s %-13s %-18s ", s["sphere"].get<int>(), s["material"].get<std::string>().c_str(),
-                    s["fresnel"].get<std::string>().c_str(), s["mode"].get<std::string>().c_str());
-        if (s["pixels"].get<std::size_t>() == 0)
-            std::printf("not visible (no pixel shows it)\n");
-        else if (s["mean_iterations"].is_null())
-            std::printf("rmse %.5f mean_abs %.5f\n", s["rmse"].get<double>(), s["mean_abs"].get<double>());
-        else
-            std::printf("rmse %.5f mean_abs %.5f mean steps %.2f\n", s["rmse"].get<double>(),
-                        s["mean_abs"].get<double>(), s["mean_iterations"].get<double>());
+        text += "sphere " + std::to_string(s["sphere"].get<int>()) + " " +
+                pad_right(s["material"].get<std::string>(), 12) + " " + pad_right(s["fresnel"].get<std::string>(), 13) +
+                " " + pad_right(s["mode"].get<std::string>(), 18) + " ";
+        if (s["pixels"].get<std::size_t>() == 0) {
+            text += "not visible (no pixel shows it)\n";
+            continue;
+        }
+        text += "rmse " + fixed_text(s["rmse"].get<double>(), 5) + " mean_abs " +
+                fixed_text(s["mean_abs"].get<double>(), 5);
+        if (!s["mean_iterations"].is_null()) text += " mean steps " + fixed_text(s["mean_iterations"].get<double>(), 2);
+        text += "\n";
     }
+    std::cout << text;
 }
 
 // What a run prints on stdout, before its files are switched in: when stdout fails, flush_standard_output throws and
 // nothing is written. (The renderer line on stderr comes after, with the outcome: print_renderer.)
 void print_before_commit(const metalfit::glpreview::PreviewResult& result) {
     print_preview(result);
-    metalfit::flush_standard_output();  // cout and the printf lines (stdio) both
+    metalfit::flush_standard_output();
+}
+
+// One row of a Markdown table: "| a | b | c |" and the line's end.
+std::string markdown_row(const std::vector<std::string>& cells) { return "| " + metalfit::join(cells, " | ") + " |\n"; }
+
+// A ratio and its noise, "1.23 ± 0.04" (each to two decimals).
+std::string ratio_text(const nlohmann::ordered_json& ratio, const nlohmann::ordered_json& noise) {
+    return fixed_text(ratio.get<double>(), 2) + " ± " + fixed_text(noise.get<double>(), 2);
+}
+
+// The lines naming the models a CPU benchmark skipped, "\nskipped gulbrandsen (fit): why" each, and a line's end after
+// the last.
+std::string skipped_lines(const nlohmann::ordered_json& skipped) {
+    std::string text;
+    for (const auto& s : skipped)
+        text += "\nskipped " + s["model"].get<std::string>() + " (" + s["params"].get<std::string>() +
+                "): " + s["why"].get<std::string>();
+    return skipped.empty() ? text : text + "\n";
+}
+
+// A GPU benchmark's rows as ratios to its mirror frame (--bench-lights, --bench-caustic-maps): a Markdown table.
+std::string mirror_frame_ratios_table(const nlohmann::ordered_json& result) {
+    std::string text =
+        "renderer " + result["renderer"].get<std::string>() + "; " + std::to_string(result["size"][0].get<int>()) +
+        "x" + std::to_string(result["size"][1].get<int>()) + ", " + std::to_string(result["rounds"].get<int>()) +
+        " interleaved rounds\n\n| variant | ms | ratio to the mirror frame |\n|---|---:|---:|\n";
+    for (const auto& r : result["rows"])
+        text += markdown_row({r["variant"].get<std::string>(), fixed_text(r["ms"].get<double>(), 3),
+                              ratio_text(r["ratio_to_mirror_frame"], r["ratio_noise"])});
+    return text;
 }
 
 // The compounding table of --bench-bounces as Markdown.
-// A GPU benchmark's rows as ratios to its mirror frame (--bench-lights, --bench-caustic-maps): a Markdown table.
-void print_mirror_frame_ratios(const nlohmann::ordered_json& result) {
-    std::printf(
-        "renderer %s; %dx%d, %d interleaved rounds\n\n| variant | ms | ratio to the mirror frame |\n|---|---:|---:|\n",
-        result["renderer"].get<std::string>().c_str(), result["size"][0].get<int>(), result["size"][1].get<int>(),
-        result["rounds"].get<int>());
+std::string bounces_table(const nlohmann::ordered_json& result) {
+    std::string text = result["scene"].get<std::string>() + "; " + std::to_string(result["size"][0].get<int>()) + "x" +
+                       std::to_string(result["size"][1].get<int>()) +
+                       ", CPU. All: every sphere pixel; k-bounce paths: the pixels whose mirror path reaches bounce "
+                       "k\n\n";
+    text += "RGB reference vs spectral reference (the RGB rendering's own error):\n\n"
+            "| bounce order | RMSE, all | dE2000 mean, all | dE2000 p95, all | k-bounce pixels | dE2000 mean, "
+            "k-bounce | dE2000 p95, k-bounce |\n|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const auto& r : result["rgb_vs_spectral"])
+        text +=
+            markdown_row({std::to_string(r["order"].get<int>()), scientific_text(r["rmse"].get<double>(), 2),
+                          fixed_text(r["de2000_mean"].get<double>(), 3), fixed_text(r["de2000_p95"].get<double>(), 3),
+                          std::to_string(r["reaching"]["pixels"].get<std::size_t>()),
+                          fixed_text(r["reaching"]["de2000_mean"].get<double>(), 3),
+                          fixed_text(r["reaching"]["de2000_p95"].get<double>(), 3)});
+    text += "\nEach model against the RGB reference (reference LUTs along the same paths), and against the "
+            "spectral one:\n\n| model | params | k | RMSE, all | dE2000 mean, all | dE2000 p95, all | "
+            "dE2000 mean, k-bounce | dE2000 p95, k-bounce | dE2000 p95 vs spectral, k-bounce |\n"
+            "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const auto& r : result["rows"])
-        std::printf("| %s | %.3f | %.2f ± %.2f |\n", r["variant"].get<std::string>().c_str(), r["ms"].get<double>(),
-                    r["ratio_to_mirror_frame"].get<double>(), r["ratio_noise"].get<double>());
+        text += markdown_row(
+            {r["model"].get<std::string>(), r["params"].get<std::string>(), std::to_string(r["order"].get<int>()),
+             scientific_text(r["rmse"].get<double>(), 2), fixed_text(r["de2000_mean"].get<double>(), 3),
+             fixed_text(r["de2000_p95"].get<double>(), 3), fixed_text(r["reaching"]["de2000_mean"].get<double>(), 3),
+             fixed_text(r["reaching"]["de2000_p95"].get<double>(), 3),
+             fixed_text(r["reaching_vs_spectral"]["de2000_p95"].get<double>(), 3)});
+    return text + skipped_lines(result["skipped"]);
 }
 
-void print_bounces_table(const nlohmann::ordered_json& result) {
-    std::printf("%s; %dx%d, CPU. All: every sphere pixel; k-bounce paths: the pixels whose mirror path reaches "
-                "bounce k\n\n",
-                result["scene"].get<std::string>().c_str(), result["size"][0].get<int>(), result["size"][1].get<int>());
-    std::printf("RGB reference vs spectral reference (the RGB rendering's own error):\n\n"
-                "| bounce order | RMSE, all | dE2000 mean, all | dE2000 p95, all | k-bounce pixels | dE2000 mean, "
-                "k-bounce | dE2000 p95, k-bounce |\n|---:|---:|---:|---:|---:|---:|---:|\n");
-    for (const auto& r : result["rgb_vs_spectral"])
-        std::printf("| %d | %.2e | %.3f | %.3f | %zu | %.3f | %.3f |\n", r["order"].get<int>(), r["rmse"].get<double>(),
-                    r["de2000_mean"].get<double>(), r["de2000_p95"].get<double>(),
-                    r["reaching"]["pixels"].get<std::size_t>(), r["reaching"]["de2000_mean"].get<double>(),
-                    r["reaching"]["de2000_p95"].get<double>());
-    std::printf("\nEach model against the RGB reference (reference LUTs along the same paths), and against the "
-                "spectral one:\n\n| model | params | k | RMSE, all | dE2000 mean, all | dE2000 p95, all | "
-                "dE2000 mean, k-bounce | dE2000 p95, k-bounce | dE2000 p95 vs spectral, k-bounce |\n"
-                "|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
-    for (const auto& r : result["rows"])
-        std::printf("| %s | %s | %d | %.2e | %.3f | %.3f | %.3f | %.3f | %.3f |\n",
-                    r["model"].get<std::string>().c_str(), r["params"].get<std::string>().c_str(),
-                    r["order"].get<int>(), r["rmse"].get<double>(), r["de2000_mean"].get<double>(),
-                    r["de2000_p95"].get<double>(), r["reaching"]["de2000_mean"].get<double>(),
-                    r["reaching"]["de2000_p95"].get<double>(), r["reaching_vs_spectral"]["de2000_p95"].get<double>());
-    for (const auto& s : result["skipped"])
-        std::printf("\nskipped %s (%s): %s", s["model"].get<std::string>().c_str(),
-                    s["params"].get<std::string>().c_str(), s["why"].get<std::string>().c_str());
-    if (!result["skipped"].empty()) std::printf("\n");
+// A relative error in percent with its sign, "+1.25%" or "-0.40%" (printf's "%+.2f%%").
+std::string signed_percent(const nlohmann::ordered_json& relative) {
+    const double percent = 100 * relative.get<double>();
+    return (std::signbit(percent) ? "" : "+") + fixed_text(percent, 2) + "%";
+}
+
+// Three numbers to four significant digits, "(0.1234, 5.678, 9)".
+std::string triple_text(const nlohmann::ordered_json& v) {
+    return "(" + significant_text(v[0].get<double>(), 4) + ", " + significant_text(v[1].get<double>(), 4) + ", " +
+           significant_text(v[2].get<double>(), 4) + ")";
 }
 
 // The per-model caustic table of --bench-caustics as Markdown.
-void print_caustics_table(const nlohmann::ordered_json& result) {
-    std::printf("%s; light %s; %d photons, filter width %.3g m; CPU. Errors against the spectral reference (the "
-                "worst channel, signed): total caustic power, floor peak irradiance at the reference's peak, colour "
-                "(each channel's share of the power)\n",
-                result["scene"].get<std::string>().c_str(), result["light"].get<std::string>().c_str(),
-                result["photons"].get<int>(), result["filter_width"].get<double>());
+std::string caustics_table(const nlohmann::ordered_json& result) {
+    std::string text = result["scene"].get<std::string>() + "; light " + result["light"].get<std::string>() + "; " +
+                       std::to_string(result["photons"].get<int>()) + " photons, filter width " +
+                       significant_text(result["filter_width"].get<double>(), 3) +
+                       " m; CPU. Errors against the spectral reference (the worst channel, signed): total caustic "
+                       "power, floor peak irradiance at the reference's peak, colour (each channel's share of the "
+                       "power)\n";
     for (const auto& m : result["metals"]) {
         const auto& ref = m["reference"];
-        std::printf("\n%s (%s): reference power (%.4g, %.4g, %.4g) W, floor peak (%.4g, %.4g, %.4g) W/m2 at (%.3f, "
-                    "%.3f)",
-                    m["metal"].get<std::string>().c_str(), m["source"].get<std::string>().c_str(),
-                    ref["power"][0].get<double>(), ref["power"][1].get<double>(), ref["power"][2].get<double>(),
-                    ref["peak_irradiance"][0].get<double>(), ref["peak_irradiance"][1].get<double>(),
-                    ref["peak_irradiance"][2].get<double>(), ref["peak_position"][0].get<double>(),
-                    ref["peak_position"][2].get<double>());
+        text += "\n" + m["metal"].get<std::string>() + " (" + m["source"].get<std::string>() + "): reference power " +
+                triple_text(ref["power"]) + " W, floor peak " + triple_text(ref["peak_irradiance"]) + " W/m2 at (" +
+                fixed_text(ref["peak_position"][0].get<double>(), 3) + ", " +
+                fixed_text(ref["peak_position"][2].get<double>(), 3) + ")";
         if (ref.contains("focus_distance"))
-            std::printf(", %.3f m from the closed form's cusp", ref["focus_distance"].get<double>());
-        std::printf("\n\n| model | params | power | peak | colour |\n|---|---|---:|---:|---:|\n");
+            text += ", " + fixed_text(ref["focus_distance"].get<double>(), 3) + " m from the closed form's cusp";
+        text += "\n\n| model | params | power | peak | colour |\n|---|---|---:|---:|---:|\n";
         for (const auto& r : m["rows"])
-            std::printf("| %s | %s | %+.2f%% | %+.2f%% | %+.2f%% |\n", r["model"].get<std::string>().c_str(),
-                        r["params"].get<std::string>().c_str(), 100 * r["power_rel"]["worst"].get<double>(),
-                        100 * r["peak_rel"]["worst"].get<double>(), 100 * r["colour_rel"]["worst"].get<double>());
-        for (const auto& s : m["skipped"])
-            std::printf("\nskipped %s (%s): %s", s["model"].get<std::string>().c_str(),
-                        s["params"].get<std::string>().c_str(), s["why"].get<std::string>().c_str());
-        if (!m["skipped"].empty()) std::printf("\n");
+            text += markdown_row({r["model"].get<std::string>(), r["params"].get<std::string>(),
+                                  signed_percent(r["power_rel"]["worst"]), signed_percent(r["peak_rel"]["worst"]),
+                                  signed_percent(r["colour_rel"]["worst"])});
+        text += skipped_lines(m["skipped"]);
     }
+    return text;
+}
+
+// --bench-lights beyond the mirror-frame table: a light's own passes.
+std::string per_light_line(const nlohmann::ordered_json& result) {
+    const auto& light = result["light_pass_per_light"];
+    const auto& shadow = result["shadow_pass_per_light"];
+    return "\nper light: light pass " + ratio_text(light["ratio_to_mirror_frame"], light["ratio_noise"]) +
+           ", shadow pass " + ratio_text(shadow["ratio_to_mirror_frame"], shadow["ratio_noise"]) +
+           " (ratios to the mirror frame)\n";
+}
+
+// --bench-interreflections: the frames at max_bounces 1-4 and the making of one sphere's map, as Markdown.
+std::string interreflections_table(const nlohmann::ordered_json& result) {
+    std::string text =
+        "renderer " + result["renderer"].get<std::string>() + "; " + std::to_string(result["size"][0].get<int>()) +
+        "x" + std::to_string(result["size"][1].get<int>()) + ", maps " + std::to_string(result["map_size"].get<int>()) +
+        "², " + std::to_string(result["rounds"].get<int>()) +
+        " interleaved rounds\n\n| variant | ms | ratio to the one-bounce frame | vs the CPU reference: dE2000 mean, "
+        "p95 | on the pixels reaching bounce k: mean, p95 (pixels) |\n|---|---:|---:|---:|---:|\n";
+    for (const auto& r : result["rows"])
+        text += markdown_row({r["variant"].get<std::string>(), fixed_text(r["ms"].get<double>(), 3),
+                              ratio_text(r["ratio_to_one_bounce_frame"], r["ratio_noise"]),
+                              fixed_text(r["vs_reference"]["de2000_mean"].get<double>(), 3) + ", " +
+                                  fixed_text(r["vs_reference"]["de2000_p95"].get<double>(), 3),
+                              fixed_text(r["vs_reference_reaching"]["de2000_mean"].get<double>(), 3) + ", " +
+                                  fixed_text(r["vs_reference_reaching"]["de2000_p95"].get<double>(), 3) + " (" +
+                                  std::to_string(r["reaching_pixels"].get<int>()) + ")"});
+    const auto& update = result["map_update_per_sphere"];
+    // The last two cells empty, as "| |" (markdown_row would write two spaces in each).
+    return text + "| making one sphere's map (6 faces) | " + fixed_text(update["ms"].get<double>(), 3) + " | " +
+           ratio_text(update["ratio_to_one_bounce_frame"], update["ratio_noise"]) + " | | |\n";
+}
+
+// --bench-glossy: roughness x rough method against the Monte-Carlo reference, then the shipped mirror scenes.
+std::string glossy_table(const nlohmann::ordered_json& result) {
+    std::string text = "renderer " + result["renderer"].get<std::string>() + "; " +
+                       result["material"].get<std::string>() + " sphere (reference Fresnel), " +
+                       std::to_string(result["size"][0].get<int>()) + "x" +
+                       std::to_string(result["size"][1].get<int>()) + ", " +
+                       std::to_string(result["frames"].get<int>()) + " interleaved rounds, Monte-Carlo reference " +
+                       std::to_string(result["reference_samples"].get<int>()) + " samples per pixel\n\n";
+    text += "| roughness | method | ms per frame | ratio to mirror classic | rmse | mean abs | reference noise |\n"
+            "|---:|---|---:|---:|---:|---:|---:|\n";
+    for (const auto& r : result["rows"])
+        text += markdown_row({fixed_text(r["roughness"].get<double>(), 2), r["method"].get<std::string>(),
+                              fixed_text(r["ms_per_frame"].get<double>(), 3),
+                              ratio_text(r["ratio_to_mirror_classic"], r["ratio_noise"]),
+                              fixed_text(r["rmse"].get<double>(), 4), fixed_text(r["mean_abs"].get<double>(), 4),
+                              fixed_text(r["reference_noise"].get<double>(), 4)});
+    text += "\n| mirror scene | size | spheres | ms per frame |\n|---|---|---:|---:|\n";
+    for (const auto& m : result["mirror_scenes"])
+        text += markdown_row({m["scene"].get<std::string>(),
+                              std::to_string(m["size"][0].get<int>()) + "x" + std::to_string(m["size"][1].get<int>()),
+                              std::to_string(m["spheres"].get<std::size_t>()),
+                              fixed_text(m["ms_per_frame"].get<double>(), 2)});
+    return text;
+}
+
+// --bench-shaders: each model's full-screen pass, "conductor-rgb      1.23 ms  x1.00 of conductor-rgb".
+std::string shader_cost_lines(const nlohmann::ordered_json& result) {
+    std::string text;
+    for (const auto& m : result["models"])
+        text += pad_right(m["model"].get<std::string>(), 14) + " " +
+                pad_left(fixed_text(m["ms_per_frame"].get<double>(), 2), 8) + " ms  x" +
+                fixed_text(m["ratio_to_conductor_rgb"].get<double>(), 2) + " of conductor-rgb\n";
+    return text;
+}
+
+// --bench-localization: a line per room, reflection mode, strategy and iteration count.
+std::string localization_lines(const nlohmann::ordered_json& result) {
+    std::string text;
+    for (const auto& room : result["rooms"])
+        for (const auto& r : room["rows"])
+            text += pad_right(room["room"].get<std::string>(), 10) + " " + pad_right(r["mode"].get<std::string>(), 18) +
+                    " " + pad_right(r["strategy"].is_null() ? "-" : r["strategy"].get<std::string>(), 15) + " " +
+                    pad_left(std::to_string(r["iterations"].get<int>()), 2) + " (mean " +
+                    pad_left(fixed_text(r["mean_iterations"].get<double>(), 2), 5) + ") search " +
+                    pad_left(std::to_string(r["search_steps"].get<int>()), 2) + "  " +
+                    pad_left(fixed_text(r["ms_per_frame"].get<double>(), 2), 7) + " ms  x" +
+                    ratio_text(r["ratio_to_classic"], r["ratio_noise"]) + "  rmse " +
+                    fixed_text(r["rmse"].get<double>(), 5) + "\n";
+    return text;
 }
 
 int run_glpreview(int argc, char** argv) {
@@ -324,7 +445,7 @@ int run_glpreview(int argc, char** argv) {
                 std::cout << result.dump(2) << "\n";
                 return ok;
             }
-            print_caustics_table(result);
+            std::cout << caustics_table(result);
             return ok;
         }
         if (bench_bounces_cost) {
@@ -334,7 +455,7 @@ int run_glpreview(int argc, char** argv) {
                 std::cout << result.dump(2) << "\n";
                 return ok;
             }
-            print_bounces_table(result);
+            std::cout << bounces_table(result);
             return ok;
         }
         if (bench_lights_cost) {
@@ -345,12 +466,7 @@ int run_glpreview(int argc, char** argv) {
                 std::cout << result.dump(2) << "\n";
                 return ok;
             }
-            print_mirror_frame_ratios(result);
-            std::printf("\nper light: light pass %.2f ± %.2f, shadow pass %.2f ± %.2f (ratios to the mirror frame)\n",
-                        result["light_pass_per_light"]["ratio_to_mirror_frame"].get<double>(),
-                        result["light_pass_per_light"]["ratio_noise"].get<double>(),
-                        result["shadow_pass_per_light"]["ratio_to_mirror_frame"].get<double>(),
-                        result["shadow_pass_per_light"]["ratio_noise"].get<double>());
+            std::cout << mirror_frame_ratios_table(result) + per_light_line(result);
             return ok;
         }
         if (bench_caustic_maps_cost) {
@@ -361,9 +477,9 @@ int run_glpreview(int argc, char** argv) {
                 std::cout << result.dump(2) << "\n";
                 return ok;
             }
-            print_mirror_frame_ratios(result);
-            std::printf("\nthe article (Szirmay-Kalos et al. 2005, GPU of 2005): a 64² caustic map with shadows, "
-                        "reflection and refraction at 50 FPS; 32² photons splatted into a 256² light map\n");
+            std::cout << mirror_frame_ratios_table(result) +
+                             "\nthe article (Szirmay-Kalos et al. 2005, GPU of 2005): a 64² caustic map with shadows, "
+                             "reflection and refraction at 50 FPS; 32² photons splatted into a 256² light map\n";
             return ok;
         }
         if (bench_interreflections_cost) {
@@ -374,23 +490,7 @@ int run_glpreview(int argc, char** argv) {
                 std::cout << result.dump(2) << "\n";
                 return ok;
             }
-            std::printf(
-                "renderer %s; %dx%d, maps %d², %d interleaved rounds\n\n| variant | ms | ratio to the one-bounce "
-                "frame | vs the CPU reference: dE2000 mean, p95 | on the pixels reaching bounce k: mean, p95 (pixels) "
-                "|\n|---|---:|---:|---:|---:|\n",
-                result["renderer"].get<std::string>().c_str(), result["size"][0].get<int>(),
-                result["size"][1].get<int>(), result["map_size"].get<int>(), result["rounds"].get<int>());
-            for (const auto& r : result["rows"])
-                std::printf("| %s | %.3f | %.2f ± %.2f | %.3f, %.3f | %.3f, %.3f (%d) |\n",
-                            r["variant"].get<std::string>().c_str(), r["ms"].get<double>(),
-                            r["ratio_to_one_bounce_frame"].get<double>(), r["ratio_noise"].get<double>(),
-                            r["vs_reference"]["de2000_mean"].get<double>(),
-                            r["vs_reference"]["de2000_p95"].get<double>(),
-                            r["vs_reference_reaching"]["de2000_mean"].get<double>(),
-                            r["vs_reference_reaching"]["de2000_p95"].get<double>(), r["reaching_pixels"].get<int>());
-            const auto& update = result["map_update_per_sphere"];
-            std::printf("| making one sphere's map (6 faces) | %.3f | %.2f ± %.2f | | |\n", update["ms"].get<double>(),
-                        update["ratio_to_one_bounce_frame"].get<double>(), update["ratio_noise"].get<double>());
+            std::cout << interreflections_table(result);
             return ok;
         }
         if (bench_glossy_cost) {
@@ -401,24 +501,7 @@ int run_glpreview(int argc, char** argv) {
                 std::cout << result.dump(2) << "\n";
                 return ok;
             }
-            std::printf(
-                "renderer %s; %s sphere (reference Fresnel), %dx%d, %d interleaved rounds, Monte-Carlo reference %d samples per pixel\n\n",
-                result["renderer"].get<std::string>().c_str(), result["material"].get<std::string>().c_str(),
-                result["size"][0].get<int>(), result["size"][1].get<int>(), result["frames"].get<int>(),
-                result["reference_samples"].get<int>());
-            std::printf(
-                "| roughness | method | ms per frame | ratio to mirror classic | rmse | mean abs | reference noise |\n"
-                "|---:|---|---:|---:|---:|---:|---:|\n");
-            for (const auto& r : result["rows"])
-                std::printf("| %.2f | %s | %.3f | %.2f ± %.2f | %.4f | %.4f | %.4f |\n", r["roughness"].get<double>(),
-                            r["method"].get<std::string>().c_str(), r["ms_per_frame"].get<double>(),
-                            r["ratio_to_mirror_classic"].get<double>(), r["ratio_noise"].get<double>(),
-                            r["rmse"].get<double>(), r["mean_abs"].get<double>(), r["reference_noise"].get<double>());
-            std::printf("\n| mirror scene | size | spheres | ms per frame |\n|---|---|---:|---:|\n");
-            for (const auto& m : result["mirror_scenes"])
-                std::printf("| %s | %dx%d | %zu | %.2f |\n", m["scene"].get<std::string>().c_str(),
-                            m["size"][0].get<int>(), m["size"][1].get<int>(), m["spheres"].get<std::size_t>(),
-                            m["ms_per_frame"].get<double>());
+            std::cout << glossy_table(result);
             return ok;
         }
         if (bench_shader_cost || bench_localization_cost) {
@@ -430,22 +513,8 @@ int run_glpreview(int argc, char** argv) {
                 std::cout << result.dump(2) << "\n";
                 return ok;
             }
-            std::cout << "renderer " << result["renderer"].get<std::string>() << "\n";
-            if (bench_shader_cost)
-                for (const auto& m : result["models"])
-                    std::printf("%-14s %8.2f ms  x%.2f of conductor-rgb\n", m["model"].get<std::string>().c_str(),
-                                m["ms_per_frame"].get<double>(), m["ratio_to_conductor_rgb"].get<double>());
-            else
-                for (const auto& room : result["rooms"])
-                    for (const auto& r : room["rows"])
-                        std::printf(
-                            "%-10s %-18s %-15s %2d (mean %5.2f) search %2d  %7.2f ms  x%.2f ± %.2f  rmse %.5f\n",
-                            room["room"].get<std::string>().c_str(), r["mode"].get<std::string>().c_str(),
-                            r["strategy"].is_null() ? "-" : r["strategy"].get<std::string>().c_str(),
-                            r["iterations"].get<int>(), r["mean_iterations"].get<double>(),
-                            r["search_steps"].get<int>(), r["ms_per_frame"].get<double>(),
-                            r["ratio_to_classic"].get<double>(), r["ratio_noise"].get<double>(),
-                            r["rmse"].get<double>());
+            std::cout << "renderer " + result["renderer"].get<std::string>() + "\n" +
+                             (bench_shader_cost ? shader_cost_lines(result) : localization_lines(result));
             return ok;
         }
         if (scene_files.empty())
@@ -523,15 +592,17 @@ int run_glpreview(int argc, char** argv) {
         const bool terminal = isatty(STDERR_FILENO) != 0;
         if (sheet_progress)
             sheet_request.on_row = [](std::size_t done, std::size_t total) {
-                std::printf("sheet-progress %zu %zu\n", done, total);
-                std::fflush(stdout);
+                std::cout << "sheet-progress " + std::to_string(done) + " " + std::to_string(total) + "\n"
+                          << std::flush;
             };
         else if (terminal)
             sheet_request.on_row = [](std::size_t done, std::size_t total) {
                 if (done < total)
-                    std::fprintf(stderr, "\rglpreview: sheet %zu/%zu rows", done, total);
+                    std::fputs(
+                        ("\rglpreview: sheet " + std::to_string(done) + "/" + std::to_string(total) + " rows").c_str(),
+                        stderr);
                 else
-                    std::fprintf(stderr, "\r%40s\r", "");  // the line cleared once the last row is done
+                    std::fputs(("\r" + std::string(40, ' ') + "\r").c_str(), stderr);  // the line cleared at the end
             };
         sheet_request.row_images = sheet_rows;
         sheet_request.film = layer(sheet_film, "--sheet-film");
@@ -556,17 +627,18 @@ int run_glpreview(int argc, char** argv) {
             // Printed before the sheet is switched in: a stdout that fails writes nothing. With --sheet-rows the
             // record is in sheet.json only (nothing of a row is kept): the folder alone is printed.
             const auto print_sheet = [&](const SphereSheet& result) {
+                std::string text;
                 for (const auto& row : result.record) {
-                    std::printf(
-                        "%-12s reference | %-13s (worst-channel rel_rms %.4f) | |difference| x %g: image RMSE %.5f",
-                        row["material"].get<std::string>().c_str(), row["model"].get<std::string>().c_str(),
-                        row["model_worst_rel_rms"].get<double>(), kSheetDifferenceScale,
-                        row["image_rmse_model_vs_reference"].get<double>());
+                    text += pad_right(row["material"].get<std::string>(), 12) + " reference | " +
+                            pad_right(row["model"].get<std::string>(), 13) + " (worst-channel rel_rms " +
+                            fixed_text(row["model_worst_rel_rms"].get<double>(), 4) + ") | |difference| x " +
+                            significant_text(kSheetDifferenceScale, 6) + ": image RMSE " +
+                            fixed_text(row["image_rmse_model_vs_reference"].get<double>(), 5);
                     if (!sheet_request.roughness.empty())
-                        std::printf(" at roughness %g", row["roughness"].get<double>());
-                    std::printf("\n");
+                        text += " at roughness " + significant_text(row["roughness"].get<double>(), 6);
+                    text += "\n";
                 }
-                std::cout << (output_dir / (sheet_request.row_images ? "rows" : "sheet.png")).string() << "\n";
+                std::cout << text + (output_dir / (sheet_request.row_images ? "rows" : "sheet.png")).string() + "\n";
                 flush_standard_output();  // a stdout that fails: nothing written
             };
             render_sphere_sheet(scene, sheet_request, options, nullptr, print_sheet);

@@ -140,18 +140,23 @@ std::string human_table(const MaterialFit& fit, const FitRecordContext& context)
 // time and the process's CPU time (every thread, catalog loading and output included).
 void print_timings(const FitTimings& sum, std::size_t materials, double wall_seconds, double process_cpu, int jobs) {
     const PhaseTime total = sum.total();
+    // "  <phase, 44 wide> <thread CPU> s  <share> %  <wall> s", the numbers right-aligned under their headings.
     const auto line = [&](const char* phase, const PhaseTime& t) {
-        std::fprintf(stderr, "  %-44s %8.3f s  %5.1f %%  %8.3f s\n", phase, t.cpu,
-                     total.cpu > 0 ? 100 * t.cpu / total.cpu : 0.0, t.wall);
+        return "  " + pad_right(phase, 44) + " " + pad_left(fixed_text(t.cpu, 3), 8) + " s  " +
+               pad_left(fixed_text(total.cpu > 0 ? 100 * t.cpu / total.cpu : 0.0, 1), 5) + " %  " +
+               pad_left(fixed_text(t.wall, 3), 8) + " s\n";
     };
-    std::fprintf(stderr, "metalfit fit timings: %zu materials, %d threads, wall %.3f s, process CPU %.3f s\n",
-                 materials, jobs, wall_seconds, process_cpu);
-    std::fprintf(stderr, "  %-44s %10s  %7s  %10s\n", "phase", "thread CPU", "share", "wall");
-    line("reference curves (spectral integration + OCIO)", sum.reference);
-    line("closed forms", sum.closed_forms);
-    line("Ceres fits (all starts)", sum.ceres);
-    line("metrics (closed forms and fits)", sum.metrics);
-    line("total over the fitting threads", total);
+    std::string text = "metalfit fit timings: " + std::to_string(materials) + " materials, " + std::to_string(jobs) +
+                       " threads, wall " + fixed_text(wall_seconds, 3) + " s, process CPU " +
+                       fixed_text(process_cpu, 3) + " s\n";
+    text += "  " + pad_right("phase", 44) + " " + pad_left("thread CPU", 10) + "  " + pad_left("share", 7) + "  " +
+            pad_left("wall", 10) + "\n";
+    text += line("reference curves (spectral integration + OCIO)", sum.reference);
+    text += line("closed forms", sum.closed_forms);
+    text += line("Ceres fits (all starts)", sum.ceres);
+    text += line("metrics (closed forms and fits)", sum.metrics);
+    text += line("total over the fitting threads", total);
+    std::fputs(text.c_str(), stderr);
 }
 
 void run_fit(const FitOptions& o, const GlobalOptions& global) {

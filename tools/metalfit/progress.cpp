@@ -3,13 +3,14 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <string>
 
 namespace metalfit::cli {
 
 TerminalProgress::TerminalProgress(const char* label) : label_(label), terminal_(isatty(STDERR_FILENO) != 0) {}
 
 TerminalProgress::~TerminalProgress() {
-    if (shown_) std::fprintf(stderr, "\r%*s\r", 60, "");
+    if (shown_) std::fputs(("\r" + std::string(60, ' ') + "\r").c_str(), stderr);
 }
 
 BatchProgress TerminalProgress::callback() {
@@ -17,7 +18,9 @@ BatchProgress TerminalProgress::callback() {
     return [this](std::size_t finished, std::size_t total) {
         if (total < 2) return;
         shown_ = true;
-        std::fprintf(stderr, "\r%s: %zu/%zu materials", label_, finished, total);
+        const std::string line =
+            "\r" + std::string(label_) + ": " + std::to_string(finished) + "/" + std::to_string(total) + " materials";
+        std::fputs(line.c_str(), stderr);
         std::fflush(stderr);
     };
 }

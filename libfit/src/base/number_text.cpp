@@ -41,6 +41,11 @@ std::string pad_left(std::string text, std::size_t width) {
     return text;
 }
 
+std::string pad_right(std::string text, std::size_t width) {
+    if (text.size() < width) text.append(width - text.size(), ' ');
+    return text;
+}
+
 std::string hex_text(std::uint64_t value, int digits, HexLetters letters) {
     char text[16];
     const auto end = std::to_chars(text, text + sizeof text, value, 16).ptr;

@@ -1,7 +1,8 @@
 // Numbers as text: the one formatter every writer, message and table uses (std::to_chars, locale-independent).
 // Shortest round-trip for what is read back (records, exports), and a fixed number of digits where a format asks
 // for one (tables, messages: the printf conversions %.*g and %.*f, which std::to_chars reproduces exactly); a table's
-// padded column; hexadecimal with a fixed number of digits (byte escapes, code points, GL's error codes).
+// padded column, right- or left-aligned; hexadecimal with a fixed number of digits (byte escapes, code points, GL's
+// error codes).
 #pragma once
 
 #include <cstddef>
@@ -26,6 +27,9 @@ std::string scientific_text(double v, int decimals);
 // `text` with spaces in front up to `width` characters, as printf's "%<width>s" writes it (a table's column; text as
 // wide already is left as it is): pad_left(fixed_text(v, 3), 9) is "%9.3f".
 std::string pad_left(std::string text, std::size_t width);
+// `text` with spaces after it up to `width` characters, as printf's "%-<width>s" writes it (a table's left-aligned
+// column: names; text as wide already is left as it is).
+std::string pad_right(std::string text, std::size_t width);
 
 // The case of the letters a to f in hexadecimal digits.
 enum class HexLetters { lower, upper };
