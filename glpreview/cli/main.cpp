@@ -134,6 +134,11 @@ void print_before_commit(const metalfit::glpreview::PreviewResult& result) {
     metalfit::flush_standard_output();
 }
 
+// An image size as "WxH" from its [width, height].
+std::string size_text(const nlohmann::ordered_json& size) {
+    return std::to_string(size[0].get<int>()) + "x" + std::to_string(size[1].get<int>());
+}
+
 // One row of a Markdown table: "| a | b | c |" and the line's end.
 std::string markdown_row(const std::vector<std::string>& cells) { return "| " + metalfit::join(cells, " | ") + " |\n"; }
 
@@ -154,10 +159,9 @@ std::string skipped_lines(const nlohmann::ordered_json& skipped) {
 
 // A GPU benchmark's rows as ratios to its mirror frame (--bench-lights, --bench-caustic-maps): a Markdown table.
 std::string mirror_frame_ratios_table(const nlohmann::ordered_json& result) {
-    std::string text =
-        "renderer " + result["renderer"].get<std::string>() + "; " + std::to_string(result["size"][0].get<int>()) +
-        "x" + std::to_string(result["size"][1].get<int>()) + ", " + std::to_string(result["rounds"].get<int>()) +
-        " interleaved rounds\n\n| variant | ms | ratio to the mirror frame |\n|---|---:|---:|\n";
+    std::string text = "renderer " + result["renderer"].get<std::string>() + "; " + size_text(result["size"]) + ", " +
+                       std::to_string(result["rounds"].get<int>()) +
+                       " interleaved rounds\n\n| variant | ms | ratio to the mirror frame |\n|---|---:|---:|\n";
     for (const auto& r : result["rows"])
         text += markdown_row({r["variant"].get<std::string>(), fixed_text(r["ms"].get<double>(), 3),
                               ratio_text(r["ratio_to_mirror_frame"], r["ratio_noise"])});
@@ -166,8 +170,7 @@ std::string mirror_frame_ratios_table(const nlohmann::ordered_json& result) {
 
 // The compounding table of --bench-bounces as Markdown.
 std::string bounces_table(const nlohmann::ordered_json& result) {
-    std::string text = result["scene"].get<std::string>() + "; " + std::to_string(result["size"][0].get<int>()) + "x" +
-                       std::to_string(result["size"][1].get<int>()) +
+    std::string text = result["scene"].get<std::string>() + "; " + size_text(result["size"]) +
                        ", CPU. All: every sphere pixel; k-bounce paths: the pixels whose mirror path reaches bounce "
                        "k\n\n";
     text += "RGB reference vs spectral reference (the RGB rendering's own error):\n\n"
@@ -244,9 +247,8 @@ std::string per_light_line(const nlohmann::ordered_json& result) {
 // --bench-interreflections: the frames at max_bounces 1-4 and the making of one sphere's map, as Markdown.
 std::string interreflections_table(const nlohmann::ordered_json& result) {
     std::string text =
-        "renderer " + result["renderer"].get<std::string>() + "; " + std::to_string(result["size"][0].get<int>()) +
-        "x" + std::to_string(result["size"][1].get<int>()) + ", maps " + std::to_string(result["map_size"].get<int>()) +
-        "², " + std::to_string(result["rounds"].get<int>()) +
+        "renderer " + result["renderer"].get<std::string>() + "; " + size_text(result["size"]) + ", maps " +
+        std::to_string(result["map_size"].get<int>()) + "², " + std::to_string(result["rounds"].get<int>()) +
         " interleaved rounds\n\n| variant | ms | ratio to the one-bounce frame | vs the CPU reference: dE2000 mean, "
         "p95 | on the pixels reaching bounce k: mean, p95 (pixels) |\n|---|---:|---:|---:|---:|\n";
     for (const auto& r : result["rows"])
@@ -267,9 +269,8 @@ std::string interreflections_table(const nlohmann::ordered_json& result) {
 std::string glossy_table(const nlohmann::ordered_json& result) {
     std::string text = "renderer " + result["renderer"].get<std::string>() + "; " +
                        result["material"].get<std::string>() + " sphere (reference Fresnel), " +
-                       std::to_string(result["size"][0].get<int>()) + "x" +
-                       std::to_string(result["size"][1].get<int>()) + ", " +
-                       std::to_string(result["frames"].get<int>()) + " interleaved rounds, Monte-Carlo reference " +
+                       size_text(result["size"]) + ", " + std::to_string(result["frames"].get<int>()) +
+                       " interleaved rounds, Monte-Carlo reference " +
                        std::to_string(result["reference_samples"].get<int>()) + " samples per pixel\n\n";
     text += "| roughness | method | ms per frame | ratio to mirror classic | rmse | mean abs | reference noise |\n"
             "|---:|---|---:|---:|---:|---:|---:|\n";
@@ -281,8 +282,7 @@ std::string glossy_table(const nlohmann::ordered_json& result) {
                               fixed_text(r["reference_noise"].get<double>(), 4)});
     text += "\n| mirror scene | size | spheres | ms per frame |\n|---|---|---:|---:|\n";
     for (const auto& m : result["mirror_scenes"])
-        text += markdown_row({m["scene"].get<std::string>(),
-                              std::to_string(m["size"][0].get<int>()) + "x" + std::to_string(m["size"][1].get<int>()),
+        text += markdown_row({m["scene"].get<std::string>(), size_text(m["size"]),
                               std::to_string(m["spheres"].get<std::size_t>()),
                               fixed_text(m["ms_per_frame"].get<double>(), 2)});
     return text;
